@@ -1,0 +1,25 @@
+// cli/commands.hpp — the gsdot3 subcommands. Each lives in its own file and registers itself on
+// the CLI11 app; main.cpp only calls the add_* functions and maps errors to exit codes.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+namespace gsdot3::cli {
+
+// Set by the subcommand that ran; main returns it.
+struct context {
+  int exit_code = 0;
+};
+
+// Bad input from the user (malformed value, unknown name, unreadable file): main prints
+// "gsdot3: error: <what>" on one line of stderr and exits 2.
+struct usage_error : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// One line per subcommand (alphabetical).
+
+}  // namespace gsdot3::cli

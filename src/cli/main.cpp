@@ -1,0 +1,32 @@
+// gsdot3 — command-line entry: subcommands are registered from commands.hpp.
+#include <cstdio>
+#include <exception>
+#include <iostream>
+
+#include "commands.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"gsdot3 — bit-exact fixed-point verification of DOT3 normal mapping on the PS2 GS"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "gsdot3 0.1.0");
+  gsdot3::cli::context ctx;
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::cerr << "gsdot3: error: " << e.what() << " (see --help)\n";
+    return 2;
+  } catch (const gsdot3::cli::usage_error& e) {
+    std::cerr << "gsdot3: error: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "gsdot3: internal error: " << e.what() << "\n";
+    return 3;
+  }
+  return ctx.exit_code;
+}

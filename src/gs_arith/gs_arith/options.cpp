@@ -1,0 +1,65 @@
+#include "gs_arith/options.hpp"
+
+#include <algorithm>
+
+namespace gs {
+
+const std::vector<option_info>& option_catalogue() {
+  static const std::vector<option_info> rows = {
+      {"tfx_rounding", {"floor", "truncate"},
+       "floor: PCSX2 SW + DobieStation; truncate: PCSX2 HLSL. No HW test beyond 0x80*0x80."},
+      {"gouraud_fraction", {"keep_fraction", "truncate_to_8"},
+       "keep_fraction: PCSX2 SW (Ct*Cf_8.7)>>14. Unconfirmed on HW."},
+      {"blend_shift", {"floor", "truncate"},
+       "floor: HW-confirmed (486/486 ps2autotests); truncate: what-if, 24 HW mismatches."},
+      {"dither_decode", {"twos_complement", "sign_magnitude"},
+       "twos_complement: PCSX2 SW (s32 DM:3); sign_magnitude: DobieStation. Unconfirmed on HW."},
+      {"dither_targets", {"sixteen_bit_only", "all_formats"},
+       "sixteen_bit_only: PCSX2 SW; all_formats: DobieStation. Unconfirmed on HW."},
+      {"bilinear", {"lerp16_4", "nearest"},
+       "lerp16_4: PCSX2 SW 4-bit weights; nearest: filtering off. Unconfirmed on HW."},
+  };
+  return rows;
+}
+
+namespace {
+template <typename E>
+bool pick(E& field, std::string_view value, std::string_view a, E ea, std::string_view b, E eb) {
+  if (value == a) { field = ea; return true; }
+  if (value == b) { field = eb; return true; }
+  return false;
+}
+}  // namespace
+
+std::optional<std::string> set_option(model_options& o, std::string_view name, std::string_view value) {
+  bool ok = false;
+  if (name == "tfx_rounding") ok = pick(o.tfx, value, "floor", tfx_rounding::floor, "truncate", tfx_rounding::truncate);
+  else if (name == "gouraud_fraction") ok = pick(o.gouraud, value, "keep_fraction", gouraud_fraction::keep_fraction, "truncate_to_8", gouraud_fraction::truncate_to_8);
+  else if (name == "blend_shift") ok = pick(o.shift, value, "floor", blend_shift::floor, "truncate", blend_shift::truncate);
+  else if (name == "dither_decode") ok = pick(o.dither, value, "twos_complement", dither_decode::twos_complement, "sign_magnitude", dither_decode::sign_magnitude);
+  else if (name == "dither_targets") ok = pick(o.dither_on, value, "sixteen_bit_only", dither_targets::sixteen_bit_only, "all_formats", dither_targets::all_formats);
+  else if (name == "bilinear") ok = pick(o.bilinear, value, "lerp16_4", bilinear_mode::lerp16_4, "nearest", bilinear_mode::nearest);
+  else {
+    std::string known;
+    for (const auto& row : option_catalogue()) known += (known.empty() ? "" : ", ") + std::string(row.name);
+    return "unknown model option '" + std::string(name) + "' (known: " + known + ")";
+  }
+  if (ok) return std::nullopt;
+  const auto& rows = option_catalogue();
+  const auto it = std::find_if(rows.begin(), rows.end(), [&](const option_info& r) { return r.name == name; });
+  std::string values;
+  for (auto v : it->values) values += (values.empty() ? "" : ", ") + std::string(v);
+  return "bad value '" + std::string(value) + "' for model option " + std::string(name) + " (one of: " + values + ")";
+}
+
+std::string_view option_value(const model_options& o, std::string_view name) {
+  if (name == "tfx_rounding") return o.tfx == tfx_rounding::floor ? "floor" : "truncate";
+  if (name == "gouraud_fraction") return o.gouraud == gouraud_fraction::keep_fraction ? "keep_fraction" : "truncate_to_8";
+  if (name == "blend_shift") return o.shift == blend_shift::floor ? "floor" : "truncate";
+  if (name == "dither_decode") return o.dither == dither_decode::twos_complement ? "twos_complement" : "sign_magnitude";
+  if (name == "dither_targets") return o.dither_on == dither_targets::sixteen_bit_only ? "sixteen_bit_only" : "all_formats";
+  if (name == "bilinear") return o.bilinear == bilinear_mode::lerp16_4 ? "lerp16_4" : "nearest";
+  return {};
+}
+
+}  // namespace gs

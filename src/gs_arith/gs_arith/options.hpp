@@ -1,0 +1,64 @@
+// gs_arith/options.hpp — every GS behaviour no hardware recording confirms, as a named run-time option.
+//
+// Defaults follow the facts digest (shared/spec/gs-alu-facts.md); each enumerator names its evidence.
+// Options are plain values passed to the unit functions, so the proofs can evaluate a claim under
+// each of them without rebuilding.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace gs {
+
+// Rounding of the texture function's (Ct·Cf) >> 7.
+// floor: PCSX2 SW (GSDrawScanline) and DobieStation (gsthread.cpp); confidence medium, no HW test
+//        beyond 0x80·0x80. truncate: PCSX2 HLSL `trunc(C*T/128)`. Identical for non-negative inputs.
+enum class tfx_rounding { floor, truncate };
+
+// Gouraud colour into the texture function.
+// keep_fraction: SW keeps the 8.7 colour, (Ct·Cf_8.7) >> 14 (default; SW only, unconfirmed).
+// truncate_to_8: the colour is truncated to 8 bits before the multiply (what-if).
+enum class gouraud_fraction { keep_fraction, truncate_to_8 };
+
+// The blend's ((A − B)·C) >> 7. floor: HW-confirmed by all 486 ps2autotests blend results.
+// truncate (toward zero): refuted by 24 of them; kept as a what-if for the proofs.
+enum class blend_shift { floor, truncate };
+
+// DIMX 3-bit entries. twos_complement −4..+3: PCSX2 SW `s32 DM:3` (default). sign_magnitude: DobieStation.
+enum class dither_decode { twos_complement, sign_magnitude };
+
+// Which frame formats dithering applies to. sixteen_bit_only: PCSX2 SW (default). all_formats: DobieStation.
+enum class dither_targets { sixteen_bit_only, all_formats };
+
+// Bilinear filtering arithmetic. lerp16_4: PCSX2 SW `lerp16_4`, 4-bit weights, c0 + (((c1 − c0)·w) >> 4),
+// horizontal then vertical (default; DobieStation also uses 4-bit weights). nearest: filtering off (what-if).
+enum class bilinear_mode { lerp16_4, nearest };
+
+struct model_options {
+  tfx_rounding tfx = tfx_rounding::floor;
+  gouraud_fraction gouraud = gouraud_fraction::keep_fraction;
+  blend_shift shift = blend_shift::floor;
+  dither_decode dither = dither_decode::twos_complement;
+  dither_targets dither_on = dither_targets::sixteen_bit_only;
+  bilinear_mode bilinear = bilinear_mode::lerp16_4;
+
+  friend constexpr bool operator==(const model_options&, const model_options&) = default;
+};
+
+// One row per option: its name on the command line, its values (default first) and its evidence.
+struct option_info {
+  std::string_view name;
+  std::vector<std::string_view> values;
+  std::string_view evidence;
+};
+const std::vector<option_info>& option_catalogue();
+
+// Sets option NAME to VALUE in `opts`; returns an error message for an unknown name or value.
+std::optional<std::string> set_option(model_options& opts, std::string_view name, std::string_view value);
+// The current value of option NAME, e.g. "floor".
+std::string_view option_value(const model_options& opts, std::string_view name);
+
+}  // namespace gs
