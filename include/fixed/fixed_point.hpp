@@ -1,21 +1,43 @@
 // fixed/fixed_point.hpp — a fixed-point number: a raw integer of type Rep scaled by 2^-F.
 //
 // Conversions are explicit, rounding and overflow are named at the call site, raw access is
-// raw() / from_raw(). No operation has undefined behaviour: products are formed in 64 bits and
-// narrowed with a named overflow policy.
+// raw() / from_raw(). Every operation is constexpr and has no undefined behaviour: sums and products
+// are formed exactly in 64 bits and narrowed with a named overflow policy.
 #pragma once
 
-#include <cmath>
 #include <compare>
 #include <concepts>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <optional>
+#include <type_traits>
+#include <utility>
 
 #include "fixed/overflow.hpp"
 #include "fixed/rounding.hpp"
 
 namespace fixed {
+
+namespace detail {
+// A double rounded to an integer as r, exactly and in constant expressions. Doubles of magnitude
+// >= 2^52 (and ±infinity) are already integers; below that, int64 truncation, t - 1, f + 1 and the
+// midpoint f + 1/2 are all exact.
+constexpr double round_to_integer(double x, rounding r) noexcept {
+  if (!(x > -0x1p52 && x < 0x1p52)) return x;
+  const double t = static_cast<double>(static_cast<std::int64_t>(x));  // toward zero
+  const double f = t > x ? t - 1 : t;                                  // floor
+  const double mid = f + 0.5;
+  const bool odd = (static_cast<std::int64_t>(f) & 1) != 0;
+  switch (r) {
+    case rounding::floor: return f;
+    case rounding::toward_zero: return t;
+    case rounding::nearest_ties_up: return x >= mid ? f + 1 : f;
+    case rounding::nearest_ties_even: return x > mid || (x == mid && odd) ? f + 1 : f;
+  }
+  return f;
+}
+}  // namespace detail
 
 template <std::integral Rep, int F>
 class fixed_point {
@@ -33,34 +55,38 @@ class fixed_point {
   static constexpr fixed_point from_raw(Rep r) noexcept { return fixed_point(r); }
   constexpr Rep raw() const noexcept { return raw_; }
 
-  // From an integer: value · 2^F, with the named overflow behaviour.
+  // From an integer: value · 2^F, with the named overflow behaviour (exact for every value of I).
   template <overflow O, std::integral I>
   static constexpr fixed_point from_integer(I v) noexcept {
-    const std::int64_t scaled = static_cast<std::int64_t>(static_cast<std::uint64_t>(static_cast<std::int64_t>(v)) << F);
-    return fixed_point(static_cast<Rep>(narrow<width_v<Rep>, sign, O>(clamp64<I>(v, scaled))));
+    if constexpr (O == overflow::saturate) {
+      constexpr auto lo = static_cast<Rep>(std::numeric_limits<Rep>::min() >> F);  // exact: 0 or -2^(w-1-F)
+      constexpr auto hi = static_cast<Rep>(std::numeric_limits<Rep>::max() >> F);
+      if (std::cmp_less(v, lo)) return from_raw(std::numeric_limits<Rep>::min());
+      if (std::cmp_greater(v, hi)) return from_raw(std::numeric_limits<Rep>::max());
+      return from_raw(static_cast<Rep>(static_cast<std::int64_t>(v) * (std::int64_t{1} << F)));
+    } else {
+      // Modular 64-bit arithmetic keeps the low bits of v · 2^F exactly, and wrap needs only those.
+      const auto bits = static_cast<std::int64_t>(static_cast<std::uint64_t>(v) << F);
+      return from_raw(static_cast<Rep>(wrap<width_v<Rep>, sign>(bits)));
+    }
   }
-  // From a double: rounded as R, overflow as O; NaN gives nullopt.
+  // From a double: d · 2^F rounded as R (exactly, independent of the FP environment), overflow as O.
+  // NaN gives nullopt, and so does ±infinity under wrap (it has no residue mod 2^width).
   template <rounding R, overflow O>
-  static std::optional<fixed_point> from_double(double d) noexcept {
-    if (std::isnan(d)) return std::nullopt;
-    const double scaled = std::ldexp(d, F);
-    double r = 0;
-    switch (R) {
-      case rounding::floor: r = std::floor(scaled); break;
-      case rounding::toward_zero: r = std::trunc(scaled); break;
-      case rounding::nearest_ties_up: r = std::floor(scaled + 0.5); break;
-      case rounding::nearest_ties_even: r = std::nearbyint(scaled); break;  // default FE_TONEAREST
-    }
-    constexpr double lo = static_cast<double>(std::numeric_limits<Rep>::min());
-    constexpr double hi = static_cast<double>(std::numeric_limits<Rep>::max());
-    if (O == overflow::saturate) {
-      if (r < lo) return from_raw(std::numeric_limits<Rep>::min());
-      if (r > hi) return from_raw(std::numeric_limits<Rep>::max());
+  static constexpr std::optional<fixed_point> from_double(double d) noexcept {
+    if (d != d) return std::nullopt;
+    const double r = detail::round_to_integer(d * static_cast<double>(std::int64_t{1} << F), R);  // d·2^F is exact
+    if constexpr (O == overflow::saturate) {
+      if (r <= static_cast<double>(std::numeric_limits<Rep>::min())) return from_raw(std::numeric_limits<Rep>::min());
+      if (r >= static_cast<double>(std::numeric_limits<Rep>::max())) return from_raw(std::numeric_limits<Rep>::max());
       return from_raw(static_cast<Rep>(r));
+    } else {
+      if (r - r != 0) return std::nullopt;  // ±infinity
+      // r - trunc(r / 2^w) · 2^w is an integer in (-2^w, 2^w), so the subtraction is exact.
+      constexpr double modulus = static_cast<double>(std::int64_t{1} << width_v<Rep>);
+      const double low = r - detail::round_to_integer(r / modulus, rounding::toward_zero) * modulus;
+      return from_raw(static_cast<Rep>(wrap<width_v<Rep>, sign>(static_cast<std::int64_t>(low))));
     }
-    // wrap: reduce modulo 2^width in exact double arithmetic (values up to 2^53 are exact).
-    if (std::fabs(r) >= 9007199254740992.0) return std::nullopt;
-    return from_raw(static_cast<Rep>(wrap<width_v<Rep>, sign>(static_cast<std::int64_t>(r))));
   }
 
   explicit constexpr operator double() const noexcept { return static_cast<double>(raw_) / static_cast<double>(std::int64_t{1} << F); }
@@ -84,14 +110,6 @@ class fixed_point {
 
  private:
   explicit constexpr fixed_point(Rep r) noexcept : raw_(r) {}
-  // A value whose scaled form cannot be represented in 64 bits saturates before narrowing.
-  template <std::integral I>
-  static constexpr std::int64_t clamp64(I v, std::int64_t scaled) noexcept {
-    constexpr std::int64_t lim = std::int64_t{1} << (62 - F);
-    if (static_cast<std::int64_t>(v) >= lim) return std::numeric_limits<std::int64_t>::max() >> 1;
-    if (static_cast<std::int64_t>(v) <= -lim) return std::numeric_limits<std::int64_t>::min() >> 1;
-    return scaled;
-  }
   Rep raw_ = 0;
 };
 
@@ -106,15 +124,25 @@ constexpr fixed_point<Rep, F> sub(fixed_point<Rep, F> a, fixed_point<Rep, F> b) 
   const std::int64_t s = static_cast<std::int64_t>(a.raw()) - b.raw();
   return fixed_point<Rep, F>::from_raw(static_cast<Rep>(narrow<width_v<Rep>, fixed_point<Rep, F>::sign, O>(s)));
 }
-// a * b into format (RepOut, FOut): exact 64-bit product, then rounding R and overflow O.
+// a * b into format (RepOut, FOut): exact product, then rounding R and overflow O. The product fits
+// int64 (|a·b| <= 2^31 · (2^32 - 1)) unless both factors are unsigned; then it is formed in uint64.
 template <rounding R, overflow O, std::integral RepOut, int FOut, std::integral RA, int FA, std::integral RB, int FB>
 constexpr fixed_point<RepOut, FOut> mul(fixed_point<RA, FA> a, fixed_point<RB, FB> b) noexcept {
-  std::int64_t p = static_cast<std::int64_t>(a.raw()) * b.raw();  // |p| < 2^62
   constexpr int shift = FA + FB - FOut;
-  static_assert(shift >= 0 && shift < 63, "the output format may not have more fraction bits than the product");
-  p = shift_right<R>(p, shift);
+  static_assert(shift >= 0, "the output format may not have more fraction bits than the product");
+  using P = std::conditional_t<std::is_unsigned_v<RA> && std::is_unsigned_v<RB>, std::uint64_t, std::int64_t>;
+  const P p = shift_right<R>(static_cast<P>(static_cast<P>(a.raw()) * static_cast<P>(b.raw())), shift);
+  std::int64_t q = 0;
+  if constexpr (std::is_unsigned_v<P>) {
+    // Above 2^62, keep the low 32 bits (all wrap needs) and stay above every 32-bit maximum
+    // (all saturate needs).
+    constexpr std::uint64_t big = std::uint64_t{1} << 62;
+    q = static_cast<std::int64_t>(p > big ? (p & 0xFFFF'FFFFU) | big : p);
+  } else {
+    q = p;
+  }
   return fixed_point<RepOut, FOut>::from_raw(
-      static_cast<RepOut>(narrow<width_v<RepOut>, fixed_point<RepOut, FOut>::sign, O>(p)));
+      static_cast<RepOut>(narrow<width_v<RepOut>, fixed_point<RepOut, FOut>::sign, O>(q)));
 }
 
 // The GS's colour and alpha channels: 8-bit unsigned with 0x80 = 1.0 (so 0xFF = 1.9921875).
@@ -148,4 +176,10 @@ class std::numeric_limits<fixed::fixed_point<Rep, F>> {
   static constexpr T epsilon() noexcept { return T::from_raw(Rep{1}); }
   static constexpr T round_error() noexcept { return T::from_raw(Rep{1}); }
   static constexpr T denorm_min() noexcept { return T::from_raw(Rep{1}); }
+};
+
+// Hashes the raw bits, so equal values of one format hash equally.
+template <std::integral Rep, int F>
+struct std::hash<fixed::fixed_point<Rep, F>> {
+  std::size_t operator()(fixed::fixed_point<Rep, F> v) const noexcept { return std::hash<Rep>{}(v.raw()); }
 };

@@ -9,6 +9,7 @@
 #include <compare>
 #include <concepts>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <type_traits>
 
@@ -149,7 +150,7 @@ constexpr auto shift_right(integer<N, S> v) noexcept {
   static_assert(K >= 0 && K < N, "shift within the width");
   constexpr bool nearest = R == rounding::nearest_ties_up || R == rounding::nearest_ties_even;
   constexpr int w = (K == 0) ? N : (nearest ? N - K + 1 : N - K);
-  using Out = integer<(w < 1 ? 1 : w), S>;
+  using Out = integer<w, S>;  // K < N, so w >= 1
   return Out::from_wrapped(fixed::shift_right<R>(static_cast<std::int64_t>(v.value()), K));
 }
 
@@ -161,3 +162,11 @@ constexpr integer<(K == 0 ? N : N - K + 1), S> shift_right(integer<N, S> v, roun
 }
 
 }  // namespace fixed
+
+// Hashes the value, so equal integers of one type hash equally.
+template <int N, fixed::signedness S>
+struct std::hash<fixed::integer<N, S>> {
+  std::size_t operator()(fixed::integer<N, S> v) const noexcept {
+    return std::hash<typename fixed::integer<N, S>::rep>{}(v.value());
+  }
+};

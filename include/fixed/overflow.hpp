@@ -29,8 +29,10 @@ template <int N, signedness S>
 struct bit_range {
   static_assert(N >= 1 && N <= 63, "widths from 1 to 63 bits");
   static constexpr std::int64_t min = S == signedness::is_signed ? -(std::int64_t{1} << (N - 1)) : 0;
-  static constexpr std::int64_t max = S == signedness::is_signed ? (std::int64_t{1} << (N - 1)) - 1
-                                                                 : (std::int64_t{1} << N) - 1;
+  // 2^N - 1 is formed as (2^(N-1) - 1) + 2^(N-1) so that N = 63 does not overflow.
+  static constexpr std::int64_t max = S == signedness::is_signed
+                                          ? (std::int64_t{1} << (N - 1)) - 1
+                                          : ((std::int64_t{1} << (N - 1)) - 1) + (std::int64_t{1} << (N - 1));
   template <std::integral T>
   static constexpr bool contains(T v) noexcept {
     if constexpr (std::is_signed_v<T>) {
@@ -45,6 +47,7 @@ struct bit_range {
 // N-bit range fits T (checked at compile time).
 template <int N, signedness S, std::integral T>
 constexpr T wrap(T v) noexcept {
+  static_assert(N >= 1, "widths from 1 bit");
   static_assert(N < width_v<T> || (N == width_v<T> && (S == signedness::is_signed) == std::is_signed_v<T>),
                 "the N-bit range must fit the type");
   static_assert(S == signedness::is_unsigned || std::is_signed_v<T>, "a signed result needs a signed type");
