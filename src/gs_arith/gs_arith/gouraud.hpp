@@ -1,0 +1,135 @@
+// gs_arith/gouraud.hpp — Gouraud colour interpolation in 8.7 fixed point (PRIM.IIP = 1).
+//
+// Evidence (facts digest, "Rasterisation and interpolation"): PCSX2 SW steps the RGBA colour per pixel
+// in 8.7 fixed point and clamps the stepped value at >= 0; flat shading (IIP = 0) takes the last
+// vertex's colour. SW only, no hardware recording: confidence low for the exact rounding of the setup.
+//
+// The model, at value level (how to use it for "light vectors after the model's Gouraud interpolation"):
+//   1. setup per primitive: a start value (8.7, signed, at a reference pixel) and a step per pixel
+//      (8.7, signed). Rounding of the setup, named `toward_zero`: the exact rational gradient
+//      (c1 − c0)·128 / distance is truncated toward zero (PCSX2 converts its float gradient with a
+//      truncating conversion). Truncating the step never overshoots the far endpoint.
+//   2. per pixel, k steps from the start: value = start + k·step, exactly (no per-step rounding),
+//   3. clamped to the 15-bit 8.7 range 0 .. 0x7FFF (255 + 127/128); the >= 0 clamp is the digest's,
+//      the upper one only matters outside the primitive's own colour range.
+// The result is a gs::gouraud_channel (fixed::uint<15>), the texture function's Cf input
+// (gs::fragment_colour); integer_part() gives the 8-bit colour the blend and the alpha test see.
+//
+//   auto span = gs::gouraud_span(left, right, 16);  // 16 pixels from left to right
+//   gs::fragment_colour cf = gs::gouraud_at(span, 5);  // the 6th pixel
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+
+#include "fixed/integer.hpp"
+#include "fixed/rounding.hpp"
+#include "gs_arith/colour.hpp"
+#include "gs_arith/texture_function.hpp"
+
+namespace gs {
+
+// A per-pixel step in 8.7. A span's step |(c1 − c0)·128 / n| <= 32640 fits 16 bits signed; a thin
+// triangle's plane can be far steeper (up to 255·128·16·131070 / 1 < 2^37), so steps carry 40 bits.
+using gouraud_step = fixed::sint<40>;
+// A start value in 8.7: 0 .. 32640 at a vertex; a prestep to a reference pixel may leave that range
+// (|prestep| < 2^53 for 12.4 coordinates).
+using gouraud_start = fixed::sint<56>;
+// Pixel distances are clamped to ±2^16 (the GS's coordinate space is 4096 pixels), so that
+// start + k·step stays below 2^62 and never overflows.
+constexpr std::int64_t clamp_distance(std::int64_t k) noexcept { return k < -65536 ? -65536 : k > 65536 ? 65536 : k; }
+
+// The 8.7 value of an 8-bit vertex colour channel.
+constexpr gouraud_start gouraud_value(u8 c) noexcept { return gouraud_start::from_wrapped(c.value() << 7); }
+
+// trunc(num / den) for den != 0, in 64-bit (callers keep |num| < 2^62).
+constexpr std::int64_t divide_toward_zero(std::int64_t num, std::int64_t den) noexcept { return num / den; }
+
+// Step per pixel from c0 to c1 over `pixels` pixels (>= 1; 0 or less gives step 0).
+constexpr gouraud_step gouraud_gradient(u8 c0, u8 c1, int pixels) noexcept {
+  if (pixels <= 0) return gouraud_step{};
+  return gouraud_step::from_wrapped(divide_toward_zero((c1.value() - c0.value()) * 128, pixels));
+}
+
+// start + k·step, clamped to 0 .. 0x7FFF.
+constexpr gouraud_channel gouraud_at(gouraud_start start, gouraud_step step, std::int64_t k) noexcept {
+  return gouraud_channel::from_saturated(start.value() + clamp_distance(k) * step.value());
+}
+
+// A span (line or scanline) from colour c0 at pixel 0 to c1 at pixel `pixels`.
+struct gouraud_span_setup {
+  std::array<gouraud_start, 4> start;  // r, g, b, a
+  std::array<gouraud_step, 4> step;
+};
+
+constexpr gouraud_span_setup gouraud_span(rgba8 c0, rgba8 c1, int pixels) noexcept {
+  const std::array<u8, 4> a{c0.r, c0.g, c0.b, c0.a}, b{c1.r, c1.g, c1.b, c1.a};
+  gouraud_span_setup s{};
+  for (int i = 0; i < 4; ++i) {
+    s.start[i] = gouraud_value(a[i]);
+    s.step[i] = gouraud_gradient(a[i], b[i], pixels);
+  }
+  return s;
+}
+
+constexpr fragment_colour gouraud_at(const gouraud_span_setup& s, std::int64_t k) noexcept {
+  return {gouraud_at(s.start[0], s.step[0], k), gouraud_at(s.start[1], s.step[1], k),
+          gouraud_at(s.start[2], s.step[2], k), gouraud_at(s.start[3], s.step[3], k)};
+}
+
+// A triangle vertex: XY in 12.4 fixed point (after XYOFFSET), colour from RGBAQ.
+struct gouraud_vertex {
+  std::int32_t x16, y16;  // 0 .. 65535 (16 bits, units of 1/16 pixel)
+  rgba8 c;
+};
+
+// A triangle's colour plane: the value at reference pixel (x_ref, y_ref) and the steps per pixel in x
+// and in y, each truncated toward zero from the exact rational plane through the three vertices.
+struct gouraud_plane {
+  std::int32_t x_ref, y_ref;
+  std::array<gouraud_start, 4> base;
+  std::array<gouraud_step, 4> dx, dy;
+};
+
+// Empty for a degenerate (zero-area) triangle. Pixel centres are at integer coordinates.
+constexpr std::optional<gouraud_plane> gouraud_triangle(const gouraud_vertex& v0, const gouraud_vertex& v1,
+                                                        const gouraud_vertex& v2, std::int32_t x_ref,
+                                                        std::int32_t y_ref) noexcept {
+  // Coordinates are taken as 16-bit 12.4 values (clamped to 0..65535), so |nx|, |ny| < 2^25,
+  // |px|, |py| <= 2^20 and every product below stays under 2^62; dx, dy < 2^36, base < 2^54.
+  auto c16 = [](std::int64_t v) { return v < 0 ? 0 : v > 65535 ? 65535 : v; };
+  const std::int64_t x0 = c16(v0.x16), y0 = c16(v0.y16);
+  const std::int64_t ax = c16(v1.x16) - x0, ay = c16(v1.y16) - y0, bx = c16(v2.x16) - x0, by = c16(v2.y16) - y0;
+  const std::int64_t det = ax * by - bx * ay;  // twice the area in (1/16 pixel)^2
+  if (det == 0) return std::nullopt;
+  const std::array<u8, 4> c0{v0.c.r, v0.c.g, v0.c.b, v0.c.a}, c1{v1.c.r, v1.c.g, v1.c.b, v1.c.a},
+      c2{v2.c.r, v2.c.g, v2.c.b, v2.c.a};
+  const std::int64_t px = clamp_distance(x_ref) * 16 - x0, py = clamp_distance(y_ref) * 16 - y0;
+  gouraud_plane p{x_ref, y_ref, {}, {}, {}};
+  for (int i = 0; i < 4; ++i) {
+    const std::int64_t d1 = c1[i].value() - c0[i].value(), d2 = c2[i].value() - c0[i].value();
+    // dC per 1/16 pixel: gx = (d1·by − d2·ay) / det, gy = (d2·ax − d1·bx) / det.
+    const std::int64_t nx = d1 * by - d2 * ay, ny = d2 * ax - d1 * bx;
+    p.dx[i] = gouraud_step::from_wrapped(divide_toward_zero(nx * 128 * 16, det));
+    p.dy[i] = gouraud_step::from_wrapped(divide_toward_zero(ny * 128 * 16, det));
+    p.base[i] = gouraud_start::from_wrapped(gouraud_value(c0[i]).value() +
+                                              divide_toward_zero((nx * px + ny * py) * 128, det));
+  }
+  return p;
+}
+
+// The fragment colour at pixel (x, y): base + (x − x_ref)·dx + (y − y_ref)·dy, clamped.
+constexpr fragment_colour gouraud_at(const gouraud_plane& p, std::int32_t x, std::int32_t y) noexcept {
+  auto ch = [&](int i) {
+    const std::int64_t v = p.base[i].value() + clamp_distance(std::int64_t{x} - p.x_ref) * p.dx[i].value() +
+                           clamp_distance(std::int64_t{y} - p.y_ref) * p.dy[i].value();
+    return gouraud_channel::from_saturated(v);
+  };
+  return {ch(0), ch(1), ch(2), ch(3)};
+}
+
+// PRIM.IIP = 0: the whole primitive takes the last vertex's colour.
+constexpr fragment_colour flat_shading(rgba8 last_vertex) noexcept { return fragment_colour::flat(last_vertex); }
+
+}  // namespace gs
