@@ -21,5 +21,6 @@ struct usage_error : std::runtime_error {
 };
 
 // One line per subcommand (alphabetical).
+void add_alu_command(CLI::App& app, context& ctx);
 
 }  // namespace gsdot3::cli

@@ -7,7 +7,7 @@ namespace {
 
 std::string hex32(std::uint32_t v) {
   char buf[16];
-  std::snprintf(buf, sizeof buf, "0x%08X", static_cast<unsigned>(v));
+  std::snprintf(buf, sizeof buf, "0x%08x", static_cast<unsigned>(v));
   return buf;
 }
 
