@@ -1,0 +1,67 @@
+// The catalogue: every claim of "DOT3 Normal Mapping on the PS2" (Mikkelsen 2004) the proofs settle,
+// in the paper's order. This table is the only list of claims: the runner, the CLI, the ledger,
+// docs/claims.md and the tests all read it.
+#include <algorithm>
+
+#include "proofs/claim.hpp"
+#include "proofs/claims.hpp"
+
+namespace gsdot3::proofs {
+
+const char* name(method m) noexcept { return m == method::exhaustive ? "exhaustive" : "reduction + argument"; }
+
+const std::vector<claim>& catalogue() {
+  using M = method;
+  namespace c = claims;
+  static const std::vector<claim> rows = {
+      {"eq1-eq2.ranges", "§3.2 eq. (1), (2)",
+       "a2 = 128 − a and b2 = b + 128 are 8-bit unsigned, and a·b (>> 7) is a signed byte, for a ∈ [−127, 128], b ∈ [−128, 127]",
+       "every (a, b)", M::exhaustive, {}, c::eq1_eq2_ranges},
+      {"eq3.identity", "§3.2 eq. (3)", "(128 − a2)·(b2 − 128) = 128·b2 − a2·b2 + 128·a2 − 128², exactly (no shifts)",
+       "every (a2, b2) ∈ [0, 255]²", M::exhaustive, {}, c::eq3_identity},
+      {"eq4.signed-multiply", "§3.2 eq. (4)",
+       "a·b (signed >> 7) = (128 − a2)·b2 + a2 − 128, evaluated by the GS blend (Cs − Cd)·As + Cd",
+       "every (a, b)", M::exhaustive, {"blend_shift"}, c::eq4_signed_multiply},
+      {"eq5-eq7.split-multiply", "§3.2 eq. (5)-(7)",
+       "a·b = Max(a,0)·b2 − Max(−a,0)·b2 + c2 − 128, as the GS evaluates it (MODULATE, then a subtracting blend)",
+       "every (a, b)", M::exhaustive, {"tfx_rounding", "blend_shift"}, c::eq5_eq7_split_multiply},
+      {"eq10.split-offset-multiply", "§3.3 eq. (10)",
+       "a·b + 128 = Max(a,0)·b2 − Max(−a,0)·b2 + c2 in the DPB byte (COLCLAMP off)", "every (a, b)", M::exhaustive,
+       {"tfx_rounding", "blend_shift"}, c::eq10_split_offset_multiply},
+      {"eq8.offset-multiply", "§3.3 eq. (8)",
+       "a·b + 128 = (128 − a2)·b2 + a2 exactly by the blend, without clamp or wrap", "every (a, b)", M::exhaustive,
+       {"blend_shift"}, c::eq8_offset_multiply},
+      {"eq9.rgb-sum", "§3.3 eq. (9)",
+       "(r + g + b − 128) mod 256 with COLCLAMP off is the dot product; exact iff the summed products are in [−128, 127]",
+       "every DPB pixel (r, g, b)", M::exhaustive, {"blend_shift"}, c::eq9_rgb_sum},
+      {"ilp.palette-permutation", "§3.3",
+       "the ILP for the offset-keeping sum r + g + b is a permutation (rotation) of the ILP for the plain sum",
+       "every sum byte 0..255", M::exhaustive, {"blend_shift"}, c::ilp_palette_permutation},
+      {"ilp.dpb-clear-zero", "§3.4, §3.1 step 2.1",
+       "with the DPB cleared to 0x00808080 and the ILP 1..128, 0.., never-rendered pixels get intensity zero",
+       "the clear value under both methods' post filters", M::exhaustive, {"blend_shift"}, c::ilp_dpb_clear_zero},
+      {"appendix2.packing", "Appendix 2",
+       "both asserts hold, B_neg is always 0, and the alpha clamp keeps alpha in a byte",
+       "every (iX, iY) the code produces from a unit normal", M::exhaustive, {}, c::appendix2_packing},
+      {"two-pass.na-rounding", "§3.5", "n_a can exceed 255; n'_a = (n_a + 1)/3 fits a byte and loses at most 1",
+       "every Appendix 2 normal", M::exhaustive, {}, c::two_pass_na_rounding},
+      {"appendix1.sphere-map", "Appendix 1", "the asserts r, g, b ∈ [0, 255] hold; how far packed vectors are from exact",
+       "every texel at sizes 16, 32, 64, 128, 256", M::exhaustive, {}, c::appendix1_sphere_map},
+      {"two-pass.error-bound", "§3.5",
+       "the two-pass per-pixel dot product (s = 122) against the exact integer dot product floor(n·l/128)",
+       "every Appendix 2 normal × every packed light (char)(122·T)", M::reduction,
+       {"tfx_rounding", "blend_shift"}, c::two_pass_error_bound},
+      {"two-pass.max-s.vertex", "§3.5", "s = 122 avoids wrapping (found by trial and error); the largest safe s",
+       "every Appendix 2 normal × every packed light, s = 126, 127 (s <= 125 by argument)", M::reduction,
+       {"tfx_rounding", "blend_shift"}, c::two_pass_max_s_vertex},
+  };
+  return rows;
+}
+
+const claim* find_claim(std::string_view id) noexcept {
+  const auto& rows = catalogue();
+  const auto it = std::find_if(rows.begin(), rows.end(), [&](const claim& c) { return c.id == id; });
+  return it == rows.end() ? nullptr : &*it;
+}
+
+}  // namespace gsdot3::proofs

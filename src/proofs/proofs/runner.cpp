@@ -1,0 +1,46 @@
+#include "proofs/runner.hpp"
+
+#include <chrono>
+
+namespace gsdot3::proofs {
+
+namespace {
+bool same(const outcome& a, const outcome& b) {
+  return a.result == b.result && a.counterexamples == b.counterexamples && a.figures == b.figures;
+}
+}  // namespace
+
+claim_result run_claim(const claim& c, const gs::model_options& base, const run_config& cfg) {
+  const auto t0 = std::chrono::steady_clock::now();
+  claim_result r{&c, base, c.evaluate(base, cfg.sweep), {}, 0};
+  if (cfg.variants) {
+    for (auto name : c.depends_on) {
+      const auto current = gs::option_value(base, name);
+      for (const auto& info : gs::option_catalogue()) {
+        if (info.name != name) continue;
+        for (auto value : info.values) {
+          if (value == current) continue;
+          gs::model_options o = base;
+          gs::set_option(o, name, value);
+          option_variant v{std::string(name), std::string(value), c.evaluate(o, cfg.sweep), false};
+          v.changed = !same(v.result, r.result);
+          r.variants.push_back(std::move(v));
+        }
+      }
+    }
+  }
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return r;
+}
+
+std::vector<claim_result> run(const std::vector<const claim*>& claims, const gs::model_options& base,
+                              const run_config& cfg) {
+  std::vector<claim_result> out;
+  for (const claim* c : claims) {
+    if (cfg.starting) cfg.starting(*c);
+    out.push_back(run_claim(*c, base, cfg));
+  }
+  return out;
+}
+
+}  // namespace gsdot3::proofs

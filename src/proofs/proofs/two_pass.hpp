@@ -1,0 +1,95 @@
+// proofs/two_pass.hpp — section 3.5's two-pass method on one pixel, through the model, plus the
+// per-channel fast path and the pruned wrap search the s_max claims use.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "gs_arith/options.hpp"
+#include "gs_arith/texture_function.hpp"
+#include "proofs/domains.hpp"
+#include "proofs/paper_code.hpp"
+#include "proofs/sweep.hpp"
+#include "proofs/verdict.hpp"
+
+namespace gsdot3::proofs::two_pass {
+
+// The palettes of one normal-map texel (Appendix 2): positive side (alpha unused), negative side
+// with alpha n'_a.
+struct palette_pair {
+  gs::rgba8 pos, neg;
+};
+palette_pair palettes(const paper::packed_normal& p) noexcept;
+
+// One pixel: pass 1, pass 2, the post filter r+g+b+3a. `value` is the same sum at value level
+// (pass-2 blend outputs before COLCLAMP, + 3·As − 384): the dot product the method computes when
+// nothing wraps. `dot` is what the DPB holds after the post filter, read as a signed dot product
+// (the byte minus 128, mod 256). The pixel wraps iff dot != value.
+struct pixel_result {
+  int value;
+  int dot;
+};
+pixel_result pixel(const paper::packed_normal& p, gs::fragment_colour light, const gs::model_options& o) noexcept;
+
+// The light colour of a packed tolight vector l (section 3.5): 128 + l per channel, flat.
+gs::fragment_colour vertex_light(const ivec3& l) noexcept;
+
+// Fast path for vertex (flat) lights: the per-channel pass-1 + pass-2 values and the pass-2 alpha,
+// tabulated through the model once. Passes 1 and 2 treat the channels independently (MODULATE and
+// the blend are per channel), so value = Σ channel(n_c, l_c) + 3·alpha(n'_a) − 384; tests check it
+// against pixel() bit for bit.
+class table {
+ public:
+  explicit table(const gs::model_options& o);
+  int channel(int n, int l) const noexcept { return channel_[static_cast<std::size_t>((n + 127) * 256 + (l + 128))]; }
+  int alpha(int a) const noexcept { return alpha_[static_cast<std::size_t>(a)]; }
+  int value(const paper::packed_normal& p, const ivec3& l) const noexcept {
+    return channel(p.iX, l[0]) + channel(p.iY, l[1]) + channel(p.iZ, l[2]) + 3 * alpha(p.alpha) - 384;
+  }
+  // 3·n'_a − n_a as the pixel sees it (the alpha after pass 2).
+  int alpha_error(const paper::packed_normal& p) const noexcept { return 3 * alpha(p.alpha) - (384 + p.delta); }
+
+ private:
+  std::vector<std::int16_t> channel_;  // n in [−127, 128] × l in [−128, 127]
+  std::vector<std::int16_t> alpha_;    // 0..255
+};
+
+// The packed lights of one s, indexed by (x, y) cell for the cap enumeration below.
+struct light_grid {
+  int s;
+  std::vector<ivec3> lights;         // sorted by (x, y, z)
+  std::vector<std::uint32_t> start;  // cell (x + s)·(2s + 1) + (y + s) -> first index; one past the end last
+  explicit light_grid(int s);
+  std::uint32_t cell_begin(int x, int y) const noexcept { return start[cell(x, y)]; }
+  std::uint32_t cell_end(int x, int y) const noexcept { return start[cell(x, y) + 1]; }
+
+ private:
+  std::size_t cell(int x, int y) const noexcept { return static_cast<std::size_t>((x + s) * (2 * s + 1) + (y + s)); }
+};
+
+// Pairs (normal i, light j), index i·|lights| + j, whose value is >= hi or <= lo.
+struct wrap_hits {
+  tally hits;
+  std::uint64_t evaluated = 0;  // pairs actually evaluated (the rest were pruned)
+  void merge(const wrap_hits& later) { hits.merge(later.hits); evaluated += later.evaluated; }
+};
+
+// Pruned search. Argument (with q_c = channel(n_c, l_c) − n_c and e = 3·n'_a − n_a, so that
+// value = Σ q_c + e): the model floors every product, so q_c = floor(n_c·l_c / 128) for n_c >= 0 and
+// q_c = −floor(−n_c·l_c / 128) = ceil(n_c·l_c / 128) for n_c < 0; since n_c·l_c is an integer,
+//   (n·l − 127·#{n_c >= 0}) / 128 + e  <=  value  <=  (n·l + 127·#{n_c < 0}) / 128 + e.
+// So value >= hi needs n·l >= 128·(hi − e) − 127·#{n_c < 0}, and value <= lo needs
+// n·l <= 128·(lo − e) + 127·#{n_c >= 0}. For |l| <= s those lights lie in a spherical cap around ±n,
+// whose bounding box of (x, y) cells is enumerated; every light in it is evaluated exactly. The
+// tests compare this against brute force (wrap_search_brute) on smaller instances.
+wrap_hits wrap_search(const std::vector<paper::packed_normal>& normals, const light_grid& grid, const table& t,
+                      int hi, int lo, const sweep_config& cfg);
+wrap_hits wrap_search_brute(const std::vector<paper::packed_normal>& normals, const light_grid& grid,
+                            const table& t, int hi, int lo, const sweep_config& cfg);
+
+// floor(n·l / 128): the exact integer dot product of the packed normal and light.
+constexpr int exact_dot(const paper::packed_normal& p, const ivec3& l) noexcept {
+  return (p.iX * l[0] + p.iY * l[1] + p.iZ * l[2]) >> 7;
+}
+
+}  // namespace gsdot3::proofs::two_pass
