@@ -1,0 +1,80 @@
+// pipeline/gs_pass.hpp — one GS drawing pass: the register state, the texture it samples, and the
+// per-pixel chain, all through the gs_arith model (register level):
+//   texture:  gs::sample (TEX1 nearest / bilinear lerp16_4) of gs::clut_t8 look-ups (PSMT8, PSMT8H)
+//             or of 32-bit texels (PSMCT32/24)
+//   colour:   gs::gouraud_at (PRIM.IIP = 1, 8.7)  or  gs::fragment_colour::flat (sprites, RGBAQ)
+//   pixel:    gs::pixel_pipeline (TFX/TCC, alpha test, blend, dither, COLCLAMP, FBA, FBMSK write)
+// The methods leave the alpha test, PABE, FBA and dither off (PSMCT32 targets). The depth test is
+// ZTST = GEQUAL (larger Z is nearer), with ZMSK set in every pass after the first (render.cpp).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "gs_arith/bilinear.hpp"
+#include "gs_arith/clut.hpp"
+#include "gs_arith/options.hpp"
+#include "gs_arith/pixel_pipeline.hpp"
+#include "gs_arith/registers.hpp"
+
+namespace gsdot3::pipeline {
+
+// The registers a pass sets (context 1); everything else keeps gs_registers' neutral values, the
+// frame buffer is PSMCT32.
+struct pass_regs {
+  bool TME = false;                     // PRIM.TME
+  bool ABE = false;                     // PRIM.ABE
+  gs::tfx TFX = gs::tfx::MODULATE;      // TEX0_1.TFX
+  gs::tcc TCC = gs::tcc::RGB;           // TEX0_1.TCC
+  gs::alpha_reg ALPHA{};                // ALPHA_1
+  bool CLAMP = true;                    // COLCLAMP.CLAMP
+  std::uint32_t FBMSK = 0;              // FRAME_1.FBMSK
+
+  gs::gs_registers registers() const noexcept {
+    gs::gs_registers r;
+    r.PRIM.TME = TME;
+    r.PRIM.ABE = ABE;
+    r.TEX0_1.TFX = TFX;
+    r.TEX0_1.TCC = TCC;
+    r.ALPHA_1 = ALPHA;
+    r.COLCLAMP.CLAMP = CLAMP;
+    r.FRAME_1.FBMSK = FBMSK;
+    return r;
+  }
+};
+
+// One pixel: the new frame-buffer word.
+inline std::uint32_t gs_pixel(const gs::gs_registers& r, gs::rgba8 texel, const gs::fragment_colour& cf, std::uint32_t old,
+                              int x, int y, const gs::model_options& o) noexcept {
+  return gs::pixel_pipeline(r, {cf, texel, old, static_cast<unsigned>(x), static_cast<unsigned>(y)}, o).out;
+}
+
+// A texture as TEX0/TEX1/CLAMP_1 describe it: PSMT8 indices through a CLUT, or 32-bit texels;
+// power-of-two sizes; CLAMP_1.WMS/WMT = REPEAT or CLAMP; TEX1.MMAG = NEAREST or LINEAR.
+struct texture_ref {
+  int width = 0, height = 0;
+  const std::uint8_t* index = nullptr;      // PSMT8 (with clut)
+  const gs::clut_buffer* clut = nullptr;
+  const std::uint32_t* texels = nullptr;    // PSMCT32 / PSMCT24 (alpha as stored)
+  bool clamp = false;
+  gs::bilinear_mode filter = gs::bilinear_mode::nearest;
+
+  gs::rgba8 fetch(std::int32_t u, std::int32_t v) const noexcept {
+    if (clamp) {
+      u = u < 0 ? 0 : u >= width ? width - 1 : u;
+      v = v < 0 ? 0 : v >= height ? height - 1 : v;
+    } else {
+      u &= width - 1;
+      v &= height - 1;
+    }
+    const std::size_t at = static_cast<std::size_t>(v) * static_cast<std::size_t>(width) + static_cast<std::size_t>(u);
+    if (index != nullptr) return gs::clut_t8(*clut, gs::u8::from_wrapped(index[at]));
+    return gs::rgba8::from_u32(texels[at]);
+  }
+  // u16, v16: texel coordinates in 12.4 (UV with PRIM.FST = 1).
+  gs::rgba8 sample(std::int32_t u16, std::int32_t v16) const noexcept {
+    return gs::sample([this](std::int32_t u, std::int32_t v) { return fetch(u, v); }, u16, v16, filter);
+  }
+};
+
+}  // namespace gsdot3::pipeline

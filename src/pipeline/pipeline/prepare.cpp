@@ -1,0 +1,91 @@
+// pipeline/prepare.cpp — the vertex stage (what the paper's VU1 program does), in float.
+#include "pipeline/prepare.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/ext/matrix_clip_space.hpp>
+#include <glm/ext/matrix_transform.hpp>
+#include <glm/geometric.hpp>
+#include <glm/mat4x4.hpp>
+#include <glm/trigonometric.hpp>
+
+namespace gsdot3::pipeline {
+
+namespace {
+
+struct screen_vertex {
+  bool ok = false;
+  xy124 xy;
+  std::int32_t z = 0;
+};
+
+}  // namespace
+
+prepared_scene prepare(const scene& s, float yaw_degrees) {
+  prepared_scene ps;
+  ps.width = s.width;
+  ps.height = s.height;
+  const glm::mat4 model = glm::rotate(glm::mat4(1.0f), glm::radians(yaw_degrees), glm::vec3(0, 1, 0));
+  const glm::mat4 view = glm::lookAt(s.view.eye, s.view.target, glm::vec3(0, 1, 0));
+  const glm::mat4 proj = glm::perspective(glm::radians(s.view.fov_y_degrees),
+                                          static_cast<float>(s.width) / static_cast<float>(s.height), 0.1f, 100.0f);
+  const glm::mat4 mvp = proj * view * model;
+  const auto& verts = s.model.vertices;
+
+  std::vector<screen_vertex> sv(verts.size());
+  for (std::size_t i = 0; i < verts.size(); ++i) {
+    const glm::vec4 c = mvp * glm::vec4(verts[i].position, 1.0f);
+    if (!(c.w > 1e-3f)) continue;
+    const float x = (c.x / c.w * 0.5f + 0.5f) * static_cast<float>(s.width);
+    const float y = (0.5f - c.y / c.w * 0.5f) * static_cast<float>(s.height);
+    const float z = std::clamp((1.0f - c.z / c.w) * 0.5f, 0.0f, 1.0f);
+    const float lim = xy_offset_pixels - 1.0f;
+    if (!(std::fabs(x) < lim && std::fabs(y) < lim)) continue;
+    sv[i] = {true, {static_cast<std::int32_t>(std::lround(x * 16.0f)), static_cast<std::int32_t>(std::lround(y * 16.0f))},
+             static_cast<std::int32_t>(std::lround(z * 16777215.0f))};
+  }
+
+  // Light vectors in tangent space, from the light positions taken into object space.
+  const glm::mat4 to_object = glm::inverse(model);
+  ps.lights.resize(s.lights.size());
+  for (std::size_t l = 0; l < s.lights.size(); ++l) {
+    const glm::vec3 lp = glm::vec3(to_object * glm::vec4(s.lights[l].position, 1.0f));
+    ps.lights[l].resize(verts.size());
+    for (std::size_t i = 0; i < verts.size(); ++i) {
+      const vertex& v = verts[i];
+      const glm::vec3 L = glm::normalize(lp - v.position);
+      ps.lights[l][i].T = glm::normalize(glm::vec3(glm::dot(L, v.tangent), glm::dot(L, v.bitangent), glm::dot(L, v.normal)));
+      ps.lights[l][i].fade = std::clamp(6.0f * glm::dot(v.normal, L), 0.0f, 1.0f);
+    }
+  }
+
+  const float tw = static_cast<float>(s.normals.width) * 16.0f, th = static_cast<float>(s.normals.height) * 16.0f;
+  for (const auto& tri : s.model.triangles) {
+    if (!sv[tri[0]].ok || !sv[tri[1]].ok || !sv[tri[2]].ok) {
+      ++ps.dropped_outside;
+      continue;
+    }
+    prepared_triangle pt;
+    pt.vertex = tri;
+    pt.setup = setup_triangle({sv[tri[0]].xy, sv[tri[1]].xy, sv[tri[2]].xy});
+    if (!pt.setup.front) {
+      ++ps.culled_back;
+      continue;
+    }
+    pt.z = make_plane(pt.setup.v, {sv[tri[0]].z, sv[tri[1]].z, sv[tri[2]].z}, 0, 0xFFFFFF);
+    // UVs in 12.4 texels; the whole triangle moved by whole repeats so its smallest U and V are in
+    // the first repeat (REPEAT wrapping makes that invisible), as a VU1 program would.
+    std::array<glm::vec2, 3> uv{};
+    for (int k = 0; k < 3; ++k) uv[k] = verts[tri[k]].uv * glm::vec2(tw, th);
+    const float su = std::floor(std::min({uv[0].x, uv[1].x, uv[2].x}) / tw) * tw;
+    const float sv2 = std::floor(std::min({uv[0].y, uv[1].y, uv[2].y}) / th) * th;
+    for (int k = 0; k < 3; ++k)
+      pt.uv16[k] = {static_cast<std::int32_t>(std::lround(std::min(uv[k].x - su, 16383.0f))),
+                    static_cast<std::int32_t>(std::lround(std::min(uv[k].y - sv2, 16383.0f)))};
+    ps.triangles.push_back(pt);
+  }
+  return ps;
+}
+
+}  // namespace gsdot3::pipeline

@@ -1,0 +1,42 @@
+// pipeline/prepare.hpp — the VU1's share (float, value level): transform, project to 12.4, cull,
+// and the per-vertex tangent-space tolight vectors T and fade_att for every light.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "pipeline/raster.hpp"
+#include "pipeline/scene.hpp"
+
+namespace gsdot3::pipeline {
+
+// XYOFFSET: window pixel (0, 0) is primitive coordinate 2048.0, the middle of the GS's 4096² space;
+// vertices outside the space (guard band) cannot be drawn.
+inline constexpr std::int32_t xy_offset_pixels = 2048;
+
+struct light_vertex {
+  glm::vec3 T{};      // unit tolight vector in tangent space (t, b, n)
+  float fade = 0.0f;  // fade_att = clamp(6·(n·l), 0, 1), section 3.6
+};
+
+struct prepared_triangle {
+  std::array<std::uint32_t, 3> vertex{};   // mesh vertex indices
+  triangle_setup setup;                    // window 12.4 coordinates
+  plane z;                                 // 24-bit depth, larger is nearer
+  std::array<std::array<std::int32_t, 2>, 3> uv16{};  // normal-map texel coordinates in 12.4
+};
+
+struct prepared_scene {
+  int width = 0, height = 0;
+  std::vector<prepared_triangle> triangles;  // front-facing, drawable, in mesh order
+  std::vector<std::vector<light_vertex>> lights;  // [light][mesh vertex]
+  int culled_back = 0, dropped_outside = 0;
+};
+
+// `yaw_degrees` turns the model about its vertical axis (180 = the back view of figure 7).
+prepared_scene prepare(const scene& s, float yaw_degrees = 0.0f);
+
+}  // namespace gsdot3::pipeline

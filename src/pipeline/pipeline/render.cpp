@@ -1,0 +1,355 @@
+// pipeline/render.cpp — the pass sequences of the three methods, run over horizontal frame bands.
+//
+// Register level (through gs::pixel_pipeline and the gs_arith units, see gs_pass.hpp): every triangle pass (step 1, 2.3, 3), the
+// clear values, the two-pass alpha post pass (PSMT8H reads the DPB's own alpha byte at the same
+// pixel: gs::t8h_index), the ILP look-up × light colour added into the LAB, the diffuse pass and
+// the per-channel blend of the multiply.
+// Value level (composed here, not through GS memory): the channel fetch of the R+G+B post filter
+// (the GS reads the DPB as PSMT8 with swizzled sprites, section 3.3, so that a texel is one byte of
+// the 32-bit pixel; here the byte is taken from the same pixel's word directly), the ILP's read of
+// the summed byte, and in step 4 the LAB channel moved into the destination alpha that the
+// multiply blends with (C = Ad). The PSMT8 swizzle tables themselves are not modelled.
+#include "pipeline/render.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <thread>
+
+#include "gs_arith/gouraud.hpp"
+#include "pipeline/encoders.hpp"
+#include "pipeline/gs_pass.hpp"
+
+namespace gsdot3::pipeline {
+
+std::string_view name(method m) {
+  switch (m) {
+    case method::two_pass: return "two-pass";
+    case method::four_pass: return "four-pass";
+    case method::baseline: return "baseline";
+  }
+  return "?";
+}
+
+namespace {
+
+using gs::blend_alpha;
+using gs::blend_colour;
+
+constexpr std::uint32_t clear_dpb = 0x00808080u;        // step 2.1
+constexpr std::uint32_t keep_alpha = 0xFF000000u;       // FBMSK: write RGB only
+constexpr std::uint32_t only_channel[3] = {0xFFFFFF00u, 0xFFFF00FFu, 0xFF00FFFFu};  // FBMSK: R, G, B only
+
+gs::u8 byte(int v) { return gs::u8::from_wrapped(v); }
+
+// ALPHA_1 settings used by the methods.
+constexpr gs::alpha_reg add_source{blend_colour::Cs, blend_colour::zero, blend_alpha::FIX, blend_colour::Cd,
+                                   gs::u8::literal(0x80)};  // Cs + Cd
+constexpr gs::alpha_reg subtract_source{blend_colour::Cd, blend_colour::Cs, blend_alpha::FIX, blend_colour::zero,
+                                        gs::u8::literal(0x80)};  // Cd − Cs
+constexpr gs::alpha_reg signed_multiply{blend_colour::Cs, blend_colour::Cd, blend_alpha::As, blend_colour::Cd,
+                                        gs::u8{}};  // (Cs − Cd)·As + Cd, section 3.6
+constexpr gs::alpha_reg multiply_by_ad{blend_colour::Cs, blend_colour::zero, blend_alpha::Ad, blend_colour::zero,
+                                       gs::u8{}};  // Cs·Ad, step 4
+
+// The textures and palettes, built once per frame (VU1/tool side).
+struct gs_inputs {
+  const normal_map* nm = nullptr;
+  gs::clut_buffer pos, neg, axis[3], ilp, grey;
+  std::vector<std::uint32_t> sphere;
+  const texture32* diffuse = nullptr;
+};
+
+gs_inputs make_inputs(const scene& s, method m, const render_options& o) {
+  gs_inputs in;
+  in.nm = &s.normals;
+  in.diffuse = &s.diffuse;
+  in.ilp = intensity_palette(o.specular_power);
+  in.grey = identity_palette();
+  switch (m) {
+    case method::two_pass:
+      in.pos = two_pass_palette(s.normals.palette, false);
+      in.neg = two_pass_palette(s.normals.palette, true);
+      break;
+    case method::four_pass:
+      for (int a = 0; a < 3; ++a) in.axis[a] = reordered_palette(s.normals.palette, a);
+      in.sphere = sphere_map(64, 64);
+      break;
+    case method::baseline:
+      in.pos = signed_side_palette(s.normals.palette, false);
+      in.neg = signed_side_palette(s.normals.palette, true);
+      break;
+  }
+  return in;
+}
+
+// Per-triangle attributes of one pass: the Gouraud plane (gs::gouraud_triangle) and the UV planes.
+struct tri_attr {
+  gs::gouraud_plane colour{};
+  plane u, v;
+};
+
+struct fragment {
+  std::int32_t tri;
+  std::int16_t x, y;
+};
+
+// One band of the frame and its buffers (rows [band.y0, band.y1) of the frame-sized buffers).
+class band_renderer {
+ public:
+  band_renderer(const prepared_scene& ps, const render_options& o, scissor band, std::vector<std::uint32_t>& z,
+                std::vector<std::int32_t>& visible)
+      : ps_(ps), o_(o), band_(band), z_(z), visible_(visible) {}
+
+  // Step 1: Z buffer and the LAB's ambient colour (ZTST = GEQUAL, Z written).
+  void depth_and_ambient(std::vector<std::uint32_t>& lab, gs::rgba8 ambient) {
+    fill(lab, 0);
+    for (int y = band_.y0; y < band_.y1; ++y)
+      for (int x = band_.x0; x < band_.x1; ++x) z_[index(x, y)] = 0, visible_[index(x, y)] = -1;
+    const gs::gs_registers regs = pass_regs{}.registers();  // TME = 0, ABE = 0, COLCLAMP = 1
+    const gs::fragment_colour cf = gs::fragment_colour::flat(ambient);
+    for (std::size_t t = 0; t < ps_.triangles.size(); ++t) {
+      const prepared_triangle& tri = ps_.triangles[t];
+      rasterise_triangle(tri.setup, band_, [&](int x, int y) {
+        const std::size_t i = index(x, y);
+        const auto z = static_cast<std::uint32_t>(tri.z.at(x, y));
+        if (z < z_[i]) return;
+        z_[i] = z;
+        visible_[i] = static_cast<std::int32_t>(t);
+        lab[i] = gs_pixel(regs, gs::rgba8{}, cf, lab[i], x, y, o_.model);
+      });
+    }
+    if (o_.path == raster_path::cached) {
+      frags_.clear();
+      for (std::size_t t = 0; t < ps_.triangles.size(); ++t) {
+        const prepared_triangle& tri = ps_.triangles[t];
+        rasterise_triangle(tri.setup, band_, [&](int x, int y) {
+          if (static_cast<std::uint32_t>(tri.z.at(x, y)) >= z_[index(x, y)])
+            frags_.push_back({static_cast<std::int32_t>(t), static_cast<std::int16_t>(x), static_cast<std::int16_t>(y)});
+        });
+      }
+    }
+  }
+
+  // A triangle pass with ZTST = GEQUAL and ZMSK = 1.
+  void draw(const pass_regs& pass, const texture_ref* tex, const std::vector<tri_attr>& attr, std::vector<std::uint32_t>& fb) {
+    const gs::gs_registers regs = pass.registers();
+    auto shade = [&](std::size_t t, int x, int y) {
+      const tri_attr& a = attr[t];
+      const gs::fragment_colour cf = gs::gouraud_at(a.colour, x + xy_offset_pixels, y + xy_offset_pixels);
+      const gs::rgba8 texel = tex != nullptr ? tex->sample(a.u.at(x, y), a.v.at(x, y)) : gs::rgba8{};
+      std::uint32_t& word = fb[index(x, y)];
+      word = gs_pixel(regs, texel, cf, word, x, y, o_.model);
+    };
+    if (o_.path == raster_path::cached) {
+      for (const fragment& f : frags_) shade(static_cast<std::size_t>(f.tri), f.x, f.y);
+      return;
+    }
+    for (std::size_t t = 0; t < ps_.triangles.size(); ++t) {
+      const prepared_triangle& tri = ps_.triangles[t];
+      rasterise_triangle(tri.setup, band_, [&](int x, int y) {
+        if (static_cast<std::uint32_t>(tri.z.at(x, y)) >= z_[index(x, y)]) shade(t, x, y);
+      });
+    }
+  }
+
+  // A full-band sprite pass with a flat colour; `texel(i)` gives the texel the sprite's 1:1 mapping
+  // fetches for frame-buffer pixel i.
+  template <class Texel>
+  void sprite(const pass_regs& pass, gs::rgba8 colour, Texel&& texel, std::vector<std::uint32_t>& fb) {
+    const gs::gs_registers regs = pass.registers();
+    const gs::fragment_colour cf = gs::fragment_colour::flat(colour);
+    rasterise_sprite({band_.x0 * 16, band_.y0 * 16}, {band_.x1 * 16, band_.y1 * 16}, band_, [&](int x, int y) {
+      const std::size_t i = index(x, y);
+      fb[i] = gs_pixel(regs, texel(i), cf, fb[i], x, y, o_.model);
+    });
+  }
+
+  void fill(std::vector<std::uint32_t>& fb, std::uint32_t v) {
+    for (int y = band_.y0; y < band_.y1; ++y)
+      std::fill(fb.begin() + static_cast<std::ptrdiff_t>(index(band_.x0, y)),
+                fb.begin() + static_cast<std::ptrdiff_t>(index(band_.x1, y)), v);
+  }
+
+  std::size_t index(int x, int y) const { return static_cast<std::size_t>(y) * static_cast<std::size_t>(ps_.width) + static_cast<std::size_t>(x); }
+  const scissor& band() const { return band_; }
+
+ private:
+  const prepared_scene& ps_;
+  const render_options& o_;
+  scissor band_;
+  std::vector<std::uint32_t>& z_;
+  std::vector<std::int32_t>& visible_;
+  std::vector<fragment> frags_;
+};
+
+// Vertex colours → per-triangle attributes; `uv` picks the 12.4 texture coordinates per corner.
+template <class Colour, class UV>
+std::vector<tri_attr> attributes(const prepared_scene& ps, Colour&& colour, UV&& uv) {
+  std::vector<tri_attr> out(ps.triangles.size());
+  for (std::size_t t = 0; t < ps.triangles.size(); ++t) {
+    const prepared_triangle& tri = ps.triangles[t];
+    std::array<gs::gouraud_vertex, 3> gv{};
+    std::array<std::int32_t, 3> us{}, vs{};
+    int x_ref = 1 << 16, y_ref = 1 << 16;
+    for (int k = 0; k < 3; ++k) {
+      const xy124 p = tri.setup.v[static_cast<std::size_t>(k)];
+      gv[static_cast<std::size_t>(k)] = {p.x + xy_offset_pixels * 16, p.y + xy_offset_pixels * 16, colour(tri.vertex[static_cast<std::size_t>(k)])};
+      const auto [u, v] = uv(tri, k);
+      us[static_cast<std::size_t>(k)] = u;
+      vs[static_cast<std::size_t>(k)] = v;
+      x_ref = std::min(x_ref, ceil_124(p.x));
+      y_ref = std::min(y_ref, ceil_124(p.y));
+    }
+    // The plane's reference pixel is the triangle's top-left pixel (the step error grows with distance).
+    out[t].colour = *gs::gouraud_triangle(gv[0], gv[1], gv[2], x_ref + xy_offset_pixels, y_ref + xy_offset_pixels);
+    out[t].u = make_plane(tri.setup.v, us, -(1 << 20), 1 << 20);
+    out[t].v = make_plane(tri.setup.v, vs, -(1 << 20), 1 << 20);
+  }
+  return out;
+}
+
+std::array<std::int32_t, 2> normal_map_uv(const prepared_triangle& t, int k) { return t.uv16[static_cast<std::size_t>(k)]; }
+
+gs::rgba8 rgb(int r, int g, int b, int a) { return {byte(r), byte(g), byte(b), byte(a)}; }
+
+struct frame_buffers {
+  std::vector<std::uint32_t> z, lab, dpb, diff, out;
+};
+
+void render_band(const scene& s, const prepared_scene& ps, method m, const render_options& o, const gs_inputs& in,
+                 scissor band, frame_buffers& fb, frame& result) {
+  band_renderer r(ps, o, band, fb.z, result.visible_triangle);
+  r.depth_and_ambient(fb.lab, rgb(s.ambient[0], s.ambient[1], s.ambient[2], 0x80));
+
+  const gs::bilinear_mode filter = o.bilinear ? o.model.bilinear : gs::bilinear_mode::nearest;
+  auto nm_texture = [&](const gs::clut_buffer& clut) {
+    return texture_ref{in.nm->width, in.nm->height, in.nm->index.data(), &clut, nullptr, false, filter};
+  };
+  const gs::rgba8 white = rgb(0x80, 0x80, 0x80, 0x80);
+  auto flat_white = [&](std::uint32_t) { return white; };
+  auto dpb_byte = [&](int channel) {  // value-level channel fetch (see the file comment)
+    return [&fb, &in, channel](std::size_t i) { return gs::clut_t8(in.grey, byte(static_cast<int>(fb.dpb[i] >> (8 * channel)))); };
+  };
+
+  for (std::size_t l = 0; l < s.lights.size(); ++l) {
+    const std::vector<light_vertex>& lv = ps.lights[l];
+    r.fill(fb.dpb, clear_dpb);  // 2.1; 2.2 COLCLAMP = 0 in every pass of 2.3 and 2.4
+    switch (m) {
+      case method::two_pass: {
+        const auto attr = attributes(ps, [&](std::uint32_t v) { return pack_tolight(lv[v].T * lv[v].fade, o.s); }, normal_map_uv);
+        const texture_ref pos = nm_texture(in.pos), neg = nm_texture(in.neg);
+        r.draw({true, false, gs::tfx::MODULATE, gs::tcc::RGB, {}, false, 0}, &pos, attr, fb.dpb);
+        r.draw({true, true, gs::tfx::MODULATE, gs::tcc::RGBA, subtract_source, false, 0}, &neg, attr, fb.dpb);
+        // 2.4a: n'_a into R, G and B: the DPB read as PSMT8H (its own alpha byte) through a grey CLUT.
+        r.sprite({true, true, gs::tfx::DECAL, gs::tcc::RGB, add_source, false, keep_alpha}, white,
+                 [&](std::size_t i) { return gs::clut_t8(in.grey, gs::t8h_index(fb.dpb[i])); }, fb.dpb);
+        break;
+      }
+      case method::four_pass: {
+        const auto pass1 = attributes(
+            ps,
+            [&](std::uint32_t v) {
+              const int scale = std::clamp(static_cast<int>(std::lround(lv[v].fade * 128.0f)), 0, 128);
+              return rgb(scale, scale, scale, 128 - scale);  // HIGHLIGHT: sph·scale + (1 − scale)·128
+            },
+            [&](const prepared_triangle& t, int k) {
+              const st c = sphere_coordinates(lv[t.vertex[static_cast<std::size_t>(k)]].T);
+              return std::array<std::int32_t, 2>{static_cast<std::int32_t>(std::lround(c.s * 64 * 16)),
+                                                 static_cast<std::int32_t>(std::lround(c.t * 64 * 16))};
+            });
+        const texture_ref sphere{64, 64, nullptr, nullptr, in.sphere.data(), true, gs::bilinear_mode::nearest};
+        r.draw({true, false, gs::tfx::HIGHLIGHT, gs::tcc::RGB, {}, false, keep_alpha}, &sphere, pass1, fb.dpb);
+        const auto attr = attributes(ps, flat_white, normal_map_uv);
+        for (int a = 0; a < 3; ++a) {
+          const texture_ref axis = nm_texture(in.axis[a]);
+          r.draw({true, true, gs::tfx::DECAL, gs::tcc::RGBA, signed_multiply, false, only_channel[a]}, &axis, attr, fb.dpb);
+        }
+        break;
+      }
+      case method::baseline: {
+        auto side = [&](bool negative) {
+          return attributes(
+              ps,
+              [&, negative](std::uint32_t v) {
+                const glm::vec3 t = lv[v].T * lv[v].fade * (negative ? -1.0f : 1.0f);
+                return rgb(nearest(std::max(t.x, 0.0f) * 127), nearest(std::max(t.y, 0.0f) * 127),
+                           nearest(std::max(t.z, 0.0f) * 127), 0x80);
+              },
+              normal_map_uv);
+        };
+        const auto tl_pos = side(false), tl_neg = side(true);
+        const texture_ref pos = nm_texture(in.pos), neg = nm_texture(in.neg);
+        const pass_regs add{true, true, gs::tfx::MODULATE, gs::tcc::RGB, add_source, false, keep_alpha};
+        const pass_regs sub{true, true, gs::tfx::MODULATE, gs::tcc::RGB, subtract_source, false, keep_alpha};
+        r.draw(add, &pos, tl_pos, fb.dpb);  // NM_pos·TL_pos
+        r.draw(add, &neg, tl_neg, fb.dpb);  // NM_neg·TL_neg
+        r.draw(sub, &neg, tl_pos, fb.dpb);  // −NM_neg·TL_pos
+        r.draw(sub, &pos, tl_neg, fb.dpb);  // −NM_pos·TL_neg
+        break;
+      }
+    }
+    // 2.4: R += G, R += B (mod 256): additive sprites writing red only.
+    const pass_regs add_red{true, true, gs::tfx::DECAL, gs::tcc::RGB, add_source, false, only_channel[0]};
+    r.sprite(add_red, white, dpb_byte(1), fb.dpb);
+    r.sprite(add_red, white, dpb_byte(2), fb.dpb);
+    for (int y = band.y0; y < band.y1; ++y)
+      for (int x = band.x0; x < band.x1; ++x) result.dot[l][r.index(x, y)] = static_cast<std::uint8_t>(fb.dpb[r.index(x, y)] & 0xFF);
+    // 2.5, 2.6: COLCLAMP = 1; ILP[sum] × light colour (MODULATE) added into the LAB.
+    const auto& lc = s.lights[l].colour;
+    r.sprite({true, true, gs::tfx::MODULATE, gs::tcc::RGB, add_source, true, keep_alpha}, rgb(lc[0], lc[1], lc[2], 0x80),
+             [&](std::size_t i) { return gs::clut_t8(in.ilp, byte(static_cast<int>(fb.dpb[i] & 0xFF))); }, fb.lab);
+  }
+
+  // Step 3: the unlit diffuse layer.
+  r.fill(fb.diff, 0);
+  const texture_ref diffuse{in.diffuse->width, in.diffuse->height, nullptr, nullptr, in.diffuse->texels.data(), false, filter};
+  r.draw({true, false, gs::tfx::DECAL, gs::tcc::RGB, {}, true, 0}, &diffuse, attributes(ps, flat_white, normal_map_uv), fb.diff);
+
+  // Step 4: diffuse × LAB per channel: (Cs − 0)·Ad >> 7 with the LAB channel in the destination
+  // alpha (value level), writing that channel only.
+  for (int y = band.y0; y < band.y1; ++y)
+    for (int x = band.x0; x < band.x1; ++x) fb.out[r.index(x, y)] = fb.lab[r.index(x, y)];
+  for (int c = 0; c < 3; ++c) {
+    const pass_regs mul{true, true, gs::tfx::DECAL, gs::tcc::RGB, multiply_by_ad, true, only_channel[c]};
+    for (int y = band.y0; y < band.y1; ++y)
+      for (int x = band.x0; x < band.x1; ++x) {
+        const std::size_t i = r.index(x, y);
+        fb.out[i] = (fb.out[i] & 0x00FFFFFFu) | (((fb.lab[i] >> (8 * c)) & 0xFFu) << 24);
+      }
+    r.sprite(mul, white, [&](std::size_t i) { return gs::rgba8::from_u32(fb.diff[i]); }, fb.out);
+  }
+  for (int y = band.y0; y < band.y1; ++y)
+    for (int x = band.x0; x < band.x1; ++x) {
+      const std::size_t i = r.index(x, y);
+      result.colour[i] = fb.out[i] | 0xFF000000u;
+    }
+}
+
+}  // namespace
+
+frame render(const scene& s, const prepared_scene& ps, method m, const render_options& o) {
+  const gs_inputs in = make_inputs(s, m, o);
+  frame result;
+  result.width = ps.width;
+  result.height = ps.height;
+  const std::size_t n = static_cast<std::size_t>(ps.width) * static_cast<std::size_t>(ps.height);
+  result.colour.assign(n, 0);
+  result.visible_triangle.assign(n, -1);
+  result.dot.assign(s.lights.size(), std::vector<std::uint8_t>(n, 0));
+  frame_buffers fb{std::vector<std::uint32_t>(n), std::vector<std::uint32_t>(n), std::vector<std::uint32_t>(n),
+                   std::vector<std::uint32_t>(n), std::vector<std::uint32_t>(n)};
+  const int bands = std::clamp(o.threads, 1, std::max(1, ps.height));
+  std::vector<std::thread> workers;
+  for (int b = 0; b < bands; ++b) {
+    const scissor band{0, ps.height * b / bands, ps.width, ps.height * (b + 1) / bands};
+    if (b + 1 == bands) {
+      render_band(s, ps, m, o, in, band, fb, result);
+    } else {
+      workers.emplace_back([&, band] { render_band(s, ps, m, o, in, band, fb, result); });
+    }
+  }
+  for (std::thread& t : workers) t.join();
+  return result;
+}
+
+}  // namespace gsdot3::pipeline

@@ -1,0 +1,46 @@
+// pipeline/render.hpp — whole frames through the modeled GS: the paper's steps 1–4 (section 3.1)
+// with the two-pass (3.5), four-pass (3.6) or Breugelmans 2002 (section 2) signed multiplications.
+#pragma once
+
+#include <cstdint>
+#include <string_view>
+#include <vector>
+
+#include "gs_arith/options.hpp"
+#include "pipeline/prepare.hpp"
+#include "pipeline/scene.hpp"
+
+namespace gsdot3::pipeline {
+
+enum class method { two_pass, four_pass, baseline };
+std::string_view name(method m);
+
+// reference: every pass rasterises every triangle again with ZTST = GEQUAL, as the GS does.
+// cached: the fragments passing GEQUAL after step 1 are recorded once (in draw order) and every
+// later pass replays them; identical by construction since no later pass writes Z (tests check it).
+enum class raster_path { reference, cached };
+
+struct render_options {
+  int s = 122;                     // two-pass tolight scale (section 3.5), 1..127
+  bool bilinear = false;           // TEX1.MMAG for the normal map and the diffuse texture
+  double specular_power = 1.0;     // ILP exponent (section 3.7); 1 = diffuse
+  gs::model_options model{};
+  raster_path path = raster_path::cached;
+  int threads = 2;                 // horizontal bands rendered in parallel
+};
+
+struct frame {
+  int width = 0, height = 0;
+  std::vector<std::uint32_t> colour;             // the lit frame after step 4 (A8B8G8R8)
+  std::vector<std::vector<std::uint8_t>> dot;    // per light: the DPB byte after the post filter
+                                                 // (dot product + 128, mod 256)
+  std::vector<std::int32_t> visible_triangle;    // per pixel: index into prepared_scene::triangles, −1 = none
+};
+
+
+frame render(const scene& s, const prepared_scene& ps, method m, const render_options& o);
+
+// The signed dot product (1/128 units) a DPB byte stands for: (v − 128) as a signed byte.
+constexpr int dot_value(std::uint8_t v) noexcept { return static_cast<std::int8_t>(static_cast<std::uint8_t>(v - 128)); }
+
+}  // namespace gsdot3::pipeline

@@ -1,0 +1,289 @@
+// pipeline/report.cpp — statistics, images and the HTML/JSON report (see report.hpp).
+#include "pipeline/report.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include <nlohmann/json.hpp>
+
+#include "pipeline/files.hpp"
+
+namespace gsdot3::pipeline {
+
+namespace {
+
+struct accumulator {
+  error_stats s;
+  double sum = 0, sum_abs = 0, sum_sq = 0;
+  std::size_t near = 0;
+  void add(double e) {
+    ++s.samples;
+    sum += e;
+    sum_abs += std::fabs(e);
+    sum_sq += e * e;
+    s.max_abs = std::max(s.max_abs, std::fabs(e));
+    if (std::fabs(e) <= 1.0) ++near;
+    if (std::fabs(e) > 128.0) ++s.wraps;
+  }
+  error_stats done() {
+    if (s.samples == 0) return s;
+    const double n = static_cast<double>(s.samples);
+    s.mean = sum / n;
+    s.mean_abs = sum_abs / n;
+    s.rmse = std::sqrt(sum_sq / n);
+    s.psnr = s.rmse > 0 ? 20.0 * std::log10(255.0 / s.rmse) : INFINITY;
+    s.within_1 = static_cast<double>(near) / n;
+    return s;
+  }
+};
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+image rgb_image(int w, int h, const std::vector<std::uint32_t>& words) {
+  image img{w, h, 3, std::vector<std::uint8_t>(static_cast<std::size_t>(w) * static_cast<std::size_t>(h) * 3)};
+  for (std::size_t i = 0; i < words.size(); ++i)
+    for (int c = 0; c < 3; ++c) img.data[3 * i + static_cast<std::size_t>(c)] = static_cast<std::uint8_t>(words[i] >> (8 * c));
+  return img;
+}
+
+image grey_image(int w, int h, const std::vector<std::uint8_t>& bytes) { return {w, h, 1, bytes}; }
+
+// Reference dot products as the byte a DPB would hold: nearest(dot) + 128, clamped to 0..255.
+std::vector<std::uint8_t> reference_bytes(const std::vector<float>& ref) {
+  std::vector<std::uint8_t> b(ref.size(), 128);
+  for (std::size_t i = 0; i < ref.size(); ++i)
+    if (!std::isnan(ref[i])) b[i] = static_cast<std::uint8_t>(std::clamp(std::lround(ref[i]) + 128, 0L, 255L));
+  return b;
+}
+
+// Heat-map colour of a signed error: white at 0, red for positive, blue for negative, saturated at ±limit.
+std::array<std::uint8_t, 3> heat(double e, double limit) {
+  const double t = std::clamp(std::fabs(e) / limit, 0.0, 1.0);
+  const auto fade = static_cast<std::uint8_t>(std::lround(255.0 * (1.0 - t)));
+  return e >= 0 ? std::array<std::uint8_t, 3>{255, fade, fade} : std::array<std::uint8_t, 3>{fade, fade, 255};
+}
+
+constexpr double heat_limit = 8.0;  // 1/128 units at full saturation
+constexpr int legend_rows = 20;
+
+// The error map of one light, plus a legend strip under it: −limit .. +limit left to right, with a
+// dark tick at every whole unit and a long one at 0.
+image error_map(int w, int h, const std::vector<std::uint8_t>& dot, const std::vector<float>& ref) {
+  image img{w, h + legend_rows, 3, std::vector<std::uint8_t>(static_cast<std::size_t>(w) * static_cast<std::size_t>(h + legend_rows) * 3, 0x30)};
+  for (std::size_t i = 0; i < ref.size(); ++i) {
+    if (std::isnan(ref[i])) continue;
+    const auto c = heat(dot_value(dot[i]) - ref[i], heat_limit);
+    for (int k = 0; k < 3; ++k) img.data[3 * i + static_cast<std::size_t>(k)] = c[static_cast<std::size_t>(k)];
+  }
+  for (int y = h + 4; y < h + legend_rows; ++y)
+    for (int x = 0; x < w; ++x) {
+      const double e = (2.0 * x / (w - 1) - 1.0) * heat_limit;
+      auto c = heat(e, heat_limit);
+      const double unit = std::fabs(e - std::round(e)) * (w - 1) / (2.0 * heat_limit);
+      const bool tick = unit < 0.5 && (y < h + 10 || std::lround(e) == 0);
+      if (tick) c = {0, 0, 0};
+      const std::size_t at = (static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x)) * 3;
+      for (int k = 0; k < 3; ++k) img.data[at + static_cast<std::size_t>(k)] = c[static_cast<std::size_t>(k)];
+    }
+  return img;
+}
+
+// Four frames of equal size in a 2×2 grid: a b / c d (figure 7).
+image montage(const image& a, const image& b, const image& c, const image& d) {
+  const int w = a.width, h = a.height;
+  image m{2 * w, 2 * h, 3, std::vector<std::uint8_t>(static_cast<std::size_t>(4 * w * h) * 3)};
+  const image* parts[4] = {&a, &b, &c, &d};
+  for (int p = 0; p < 4; ++p)
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x)
+        for (int k = 0; k < 3; ++k)
+          m.data[(static_cast<std::size_t>((p / 2) * h + y) * static_cast<std::size_t>(2 * w) + static_cast<std::size_t>((p % 2) * w + x)) * 3 + static_cast<std::size_t>(k)] =
+              parts[p]->data[(static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x)) * 3 + static_cast<std::size_t>(k)];
+  return m;
+}
+
+nlohmann::json to_json(const error_stats& s) {
+  return {{"samples", s.samples},   {"max_abs", s.max_abs},   {"mean", s.mean},     {"mean_abs", s.mean_abs},
+          {"rmse", s.rmse},         {"psnr_db", std::isfinite(s.psnr) ? nlohmann::json(s.psnr) : nlohmann::json("inf")},
+          {"within_1", s.within_1}, {"wrap_errors", s.wraps}};
+}
+
+std::string fmt(double v, int digits = 3) {
+  std::ostringstream o;
+  o.setf(std::ios::fixed);
+  o.precision(digits);
+  o << v;
+  return o.str();
+}
+
+std::string stats_row(const std::string& label, const error_stats& s) {
+  return "<tr><td>" + label + "</td><td>" + fmt(s.max_abs, 2) + "</td><td>" + fmt(s.mean) + "</td><td>" + fmt(s.mean_abs) +
+         "</td><td>" + fmt(s.rmse) + "</td><td>" + (std::isfinite(s.psnr) ? fmt(s.psnr, 2) : "inf") + "</td><td>" +
+         fmt(100.0 * s.within_1, 2) + "%</td><td>" + std::to_string(s.wraps) + "</td></tr>\n";
+}
+
+void write_text(const std::filesystem::path& file, const std::string& text) {
+  const std::filesystem::path tmp = file.string() + ".tmp";
+  {
+    std::ofstream out(tmp, std::ios::binary);
+    out << text;
+    out.flush();
+    if (!out) throw std::runtime_error(tmp.string() + ": cannot write");
+  }
+  std::filesystem::rename(tmp, file);
+}
+
+}  // namespace
+
+error_stats compare(const std::vector<std::vector<std::uint8_t>>& dot, const std::vector<std::vector<float>>& ref) {
+  accumulator a;
+  for (std::size_t l = 0; l < ref.size(); ++l)
+    for (std::size_t i = 0; i < ref[l].size(); ++i)
+      if (!std::isnan(ref[l][i])) a.add(dot_value(dot[l][i]) - static_cast<double>(ref[l][i]));
+  return a.done();
+}
+
+error_stats compare(const std::vector<std::vector<float>>& x, const std::vector<std::vector<float>>& ref) {
+  accumulator a;
+  for (std::size_t l = 0; l < ref.size(); ++l)
+    for (std::size_t i = 0; i < ref[l].size(); ++i)
+      if (!std::isnan(ref[l][i])) a.add(static_cast<double>(x[l][i]) - static_cast<double>(ref[l][i]));
+  return a.done();
+}
+
+report_summary write_report(const scene& s, const report_request& r) {
+  namespace fs = std::filesystem;
+  auto say = [&](const std::string& m) { if (r.progress) r.progress(m); };
+  std::error_code ec;
+  fs::create_directories(r.out_dir, ec);
+  if (ec || !fs::is_directory(r.out_dir)) throw std::runtime_error(r.out_dir.string() + ": cannot create the output directory");
+  report_summary sum;
+  sum.html = r.out_dir / "report.html";
+  sum.json = r.out_dir / "report.json";
+  fs::remove(sum.html, ec);
+  fs::remove(sum.json, ec);
+  {  // fail early, before minutes of work, if the directory is not writable
+    const fs::path probe = r.out_dir / ".gsdot3-write-test";
+    std::ofstream p(probe);
+    if (!p) throw std::runtime_error(r.out_dir.string() + ": the output directory is not writable");
+    p.close();
+    fs::remove(probe, ec);
+  }
+  const int w = s.width, h = s.height;
+
+  say("preparing the scene (" + std::to_string(s.model.triangles.size()) + " triangles, " + std::to_string(w) + "x" +
+      std::to_string(h) + ")");
+  const prepared_scene front = prepare(s, 0.0f);
+
+  std::vector<frame> frames;
+  for (method m : r.methods) {
+    say(std::string("rendering ") + std::string(name(m)) + " through the GS model");
+    const auto t0 = std::chrono::steady_clock::now();
+    frames.push_back(render(s, front, m, r.options));
+    sum.methods.push_back({m, seconds_since(t0), {}, {}});
+  }
+  say("rendering the float reference");
+  const auto t0 = std::chrono::steady_clock::now();
+  const std::vector<std::int32_t>& visible = frames.front().visible_triangle;
+  const reference_frame ref = render_reference(s, front, visible, r.options.bilinear);
+  sum.reference_seconds = seconds_since(t0);
+  sum.normalisation = compare(ref.unnormalised, ref.renormalised);
+
+  say("writing images to " + r.out_dir.string());
+  nlohmann::json j;
+  j["scene"] = {{"description", r.scene_description}, {"width", w}, {"height", h},
+                {"triangles", s.model.triangles.size()}, {"drawn_triangles", front.triangles.size()},
+                {"culled_back_facing", front.culled_back}, {"dropped_outside_guard_band", front.dropped_outside},
+                {"normal_map", {{"width", s.normals.width}, {"height", s.normals.height}, {"palette", s.normals.palette.size()}}},
+                {"lights", s.lights.size()}};
+  j["options"] = {{"s", r.options.s}, {"filter", r.options.bilinear ? "bilinear" : "nearest"},
+                  {"specular_power", r.options.specular_power},
+                  {"path", r.options.path == raster_path::cached ? "cached" : "reference"}, {"threads", r.options.threads}};
+  for (const auto& opt : gs::option_catalogue())
+    j["options"]["model"][std::string(opt.name)] = std::string(gs::option_value(r.options.model, opt.name));
+  j["units"] = "dot products in 1/128 (a DPB byte 0x80 + d stands for d/128)";
+  j["reference"] = {{"seconds", sum.reference_seconds}, {"normalisation_error", to_json(sum.normalisation)}};
+  write_png(r.out_dir / "reference-lit.png", rgb_image(w, h, ref.colour));
+  for (std::size_t l = 0; l < s.lights.size(); ++l)
+    write_png(r.out_dir / ("reference-dot-light" + std::to_string(l) + ".png"), grey_image(w, h, reference_bytes(ref.renormalised[l])));
+
+  std::string rows_norm, rows_unnorm, images;
+  for (std::size_t k = 0; k < frames.size(); ++k) {
+    method_result& mr = sum.methods[k];
+    const std::string nm(name(mr.m));
+    mr.vs_renormalised = compare(frames[k].dot, ref.renormalised);
+    mr.vs_unnormalised = compare(frames[k].dot, ref.unnormalised);
+    j["methods"][nm] = {{"frame_seconds", mr.seconds},
+                        {"vs_renormalised", to_json(mr.vs_renormalised)},
+                        {"vs_unnormalised", to_json(mr.vs_unnormalised)}};
+    write_png(r.out_dir / (nm + "-lit.png"), rgb_image(w, h, frames[k].colour));
+    images += "<h3>" + nm + "</h3>\n<p><img src=\"" + nm + "-lit.png\" alt=\"" + nm + " lit frame\">\n";
+    for (std::size_t l = 0; l < s.lights.size(); ++l) {
+      const std::string dot = nm + "-dot-light" + std::to_string(l) + ".png", err = nm + "-error-light" + std::to_string(l) + ".png";
+      write_png(r.out_dir / dot, grey_image(w, h, frames[k].dot[l]));
+      write_png(r.out_dir / err, error_map(w, h, frames[k].dot[l], ref.renormalised[l]));
+      images += "<img src=\"" + dot + "\" alt=\"" + nm + " DPB light " + std::to_string(l) + "\"> <img src=\"" + err +
+                "\" alt=\"" + nm + " error light " + std::to_string(l) + "\">\n";
+    }
+    images += "</p>\n";
+    rows_norm += stats_row(nm + " (" + fmt(mr.seconds * 1000.0, 1) + " ms)", mr.vs_renormalised);
+    rows_unnorm += stats_row(nm, mr.vs_unnormalised);
+  }
+
+  // Figure 7: two-pass and four-pass, front and back.
+  std::string figure7;
+  const bool have2 = std::find(r.methods.begin(), r.methods.end(), method::two_pass) != r.methods.end();
+  const bool have4 = std::find(r.methods.begin(), r.methods.end(), method::four_pass) != r.methods.end();
+  if (have2 && have4) {
+    say("rendering the back views for the side-by-side");
+    const prepared_scene back = prepare(s, 180.0f);
+    auto lit = [&](const prepared_scene& ps, method m) { return rgb_image(w, h, render(s, ps, m, r.options).colour); };
+    write_png(r.out_dir / "side-by-side.png", montage(lit(front, method::two_pass), lit(front, method::four_pass),
+                                                      lit(back, method::two_pass), lit(back, method::four_pass)));
+    figure7 = "<h2>Side by side (after the paper's figure 7)</h2>\n<p>Top: front, bottom: back; left: two-pass, right: "
+              "four-pass.</p>\n<p><img src=\"side-by-side.png\" alt=\"two-pass and four-pass, front and back\"></p>\n";
+  }
+
+  write_text(sum.json, j.dump(2) + "\n");
+  if (r.write_html) {
+    const std::string head =
+        "<tr><th>method</th><th>max |e|</th><th>mean e</th><th>mean |e|</th><th>RMSE</th><th>PSNR (dB, peak 255)</th>"
+        "<th>within ±1</th><th>wrap errors</th></tr>\n";
+    std::string html =
+        "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>gsdot3 render report</title>\n"
+        "<style>body{font-family:sans-serif;max-width:1200px;margin:auto}table{border-collapse:collapse}"
+        "td,th{border:1px solid #999;padding:3px 8px;text-align:right}img{margin:2px;vertical-align:top}"
+        ".legend{display:inline-block;width:512px;height:14px;background:linear-gradient(to right,#00f,#fff,#f00)}</style>"
+        "</head><body>\n<h1>DOT3 through the modeled GS vs the float dot product</h1>\n<p>Scene: " + r.scene_description + ", " +
+        std::to_string(w) + "×" + std::to_string(h) + ", " + std::to_string(front.triangles.size()) + " of " +
+        std::to_string(s.model.triangles.size()) + " triangles drawn, " + std::to_string(s.lights.size()) +
+        " lights, normal map " + std::to_string(s.normals.width) + "×" + std::to_string(s.normals.height) + " (" +
+        std::to_string(s.normals.palette.size()) + " palette entries), s = " + std::to_string(r.options.s) + ", filter " +
+        (r.options.bilinear ? "bilinear" : "nearest") + ".</p>\n"
+        "<p>Errors e = GS dot product − float dot product, in 1/128 units, over every covered pixel and every light. "
+        "A wrap error is |e| &gt; 128 (the modulo-256 sum wrapped). Frame times are one wall-clock run of this "
+        "command; the benchmarks give stable figures.</p>\n"
+        "<h2>Against the renormalised float reference (128·fade·N·normalize(L))</h2>\n<table>\n" + head + rows_norm +
+        "</table>\n<h2>Against the float reference without renormalisation (128·N·L)</h2>\n<table>\n" + head + rows_unnorm +
+        "</table>\n<h2>Normalisation error of the float reference itself (not renormalised − renormalised)</h2>\n<table>\n" +
+        head + stats_row("float", sum.normalisation) + "</table>\n<p>Float reference: " + fmt(sum.reference_seconds * 1000.0, 1) +
+        " ms.</p>\n" + figure7 +
+        "<h2>Frames</h2>\n<p>For each method: the lit frame; per light the 8-bit DPB after the post filter (0x80 = dot 0) "
+        "and the error against the renormalised reference.</p>\n<p>Error legend: <span class=\"legend\"></span> −" +
+        fmt(heat_limit, 0) + " … 0 … +" + fmt(heat_limit, 0) +
+        " (1/128 units, saturating; ticks under each map at every unit; dark grey = not covered)</p>\n" + images +
+        "<h3>float reference</h3>\n<p><img src=\"reference-lit.png\" alt=\"reference lit\">";
+    for (std::size_t l = 0; l < s.lights.size(); ++l)
+      html += " <img src=\"reference-dot-light" + std::to_string(l) + ".png\" alt=\"reference dot light " + std::to_string(l) + "\">";
+    html += "</p>\n</body></html>\n";
+    write_text(sum.html, html);  // last: its presence means the report is complete
+  }
+  return sum;
+}
+
+}  // namespace gsdot3::pipeline

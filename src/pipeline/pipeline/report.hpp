@@ -1,0 +1,54 @@
+// pipeline/report.hpp — comparing the GS renders with the float reference, in numbers (JSON, HTML
+// tables) and in pictures (PNG frames, dot-product buffers, error heat maps, a figure-7 montage).
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "pipeline/reference.hpp"
+#include "pipeline/render.hpp"
+
+namespace gsdot3::pipeline {
+
+// Error of a method's dot products against a float reference over covered pixels and all lights, in
+// 1/128 units: e = dot_value(byte) − reference. PSNR uses the 8-bit peak 255. A wrap error is a
+// pixel with |e| > 128: only a modulo-256 wrap of the sum can put the value that far away.
+struct error_stats {
+  std::size_t samples = 0;
+  double max_abs = 0, mean = 0, mean_abs = 0, rmse = 0, psnr = 0, within_1 = 0;
+  std::size_t wraps = 0;
+};
+error_stats compare(const std::vector<std::vector<std::uint8_t>>& dot, const std::vector<std::vector<float>>& reference);
+// The same statistics for reference minus reference (the normalisation error).
+error_stats compare(const std::vector<std::vector<float>>& a, const std::vector<std::vector<float>>& b);
+
+struct report_request {
+  std::filesystem::path out_dir = "gsdot3-out";
+  std::vector<method> methods{method::two_pass, method::four_pass, method::baseline};
+  render_options options{};
+  std::string scene_description = "embedded procedural scene";
+  bool write_html = true;                                 // false: `render` (images + JSON only)
+  std::function<void(const std::string&)> progress;       // one line of stderr progress
+};
+
+struct method_result {
+  method m;
+  double seconds = 0;
+  error_stats vs_renormalised, vs_unnormalised;
+};
+
+struct report_summary {
+  std::vector<method_result> methods;
+  double reference_seconds = 0;
+  error_stats normalisation;  // unnormalised − renormalised reference
+  std::filesystem::path html, json;
+};
+
+// Renders, compares and writes everything into out_dir (created if missing). Throws
+// std::runtime_error (one line) when the directory cannot be written; report.html / report.json are
+// written last, to temporary names renamed when complete, after any old ones are removed.
+report_summary write_report(const scene& s, const report_request& r);
+
+}  // namespace gsdot3::pipeline

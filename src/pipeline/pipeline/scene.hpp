@@ -1,0 +1,73 @@
+// pipeline/scene.hpp — what a render is made of: a mesh with per-vertex tangent frames, a
+// palettised tangent-space normal map, a diffuse texture, point lights and a camera.
+// Everything here is float "VU1-side" data; the GS side starts in raster.hpp.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+namespace gsdot3::pipeline {
+
+struct vertex {
+  glm::vec3 position{};
+  glm::vec3 normal{};      // unit
+  glm::vec3 tangent{};     // unit, orthogonal to normal (Gram-Schmidt)
+  glm::vec3 bitangent{};   // unit, normal × tangent with the UV handedness
+  glm::vec2 uv{};          // normal-map coordinates, 1.0 = one repeat of the map
+};
+
+struct mesh {
+  std::vector<vertex> vertices;
+  std::vector<std::array<std::uint32_t, 3>> triangles;  // counter-clockwise seen from outside
+};
+
+// An 8-bit palettised normal map: `index` is width·height palette indices, `palette` holds up to
+// 256 unit tangent-space normals (z towards the viewer of the surface).
+struct normal_map {
+  int width = 0, height = 0;
+  std::vector<std::uint8_t> index;
+  std::vector<glm::vec3> palette;
+};
+
+// An RGB texture (A8B8G8R8 words, alpha 0x80) for the unlit diffuse pass.
+struct texture32 {
+  int width = 0, height = 0;
+  std::vector<std::uint32_t> texels;
+};
+
+struct point_light {
+  glm::vec3 position{};
+  std::array<std::uint8_t, 3> colour{};  // GS colour units: 0x80 = 1.0
+};
+
+struct camera {
+  glm::vec3 eye{0.0f, 0.0f, 3.0f};
+  glm::vec3 target{0.0f, 0.0f, 0.0f};
+  float fov_y_degrees = 40.0f;
+};
+
+struct scene {
+  mesh model;
+  normal_map normals;
+  texture32 diffuse;
+  std::vector<point_light> lights;
+  std::array<std::uint8_t, 3> ambient{0x10, 0x10, 0x10};
+  camera view;
+  int width = 512, height = 448;
+};
+
+// Fills tangent and bitangent of every vertex from positions, normals and UVs (per-triangle UV
+// derivatives accumulated per vertex, then Gram-Schmidt against the normal). Throws
+// std::runtime_error naming the first triangle whose positions are degenerate (zero area).
+void compute_tangents(mesh& m);
+
+// Checks the mesh can be rendered: indices in range, finite values, unit-length normals after
+// normalisation. Throws std::runtime_error with a one-line message.
+void validate(const mesh& m);
+
+}  // namespace gsdot3::pipeline

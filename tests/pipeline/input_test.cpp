@@ -1,0 +1,131 @@
+// Bad input: each case fails with a one-line message naming the problem, and leaves no report.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <functional>
+
+#include <glm/geometric.hpp>
+
+#include "pipeline/default_scene.hpp"
+#include "pipeline/files.hpp"
+#include "pipeline/report.hpp"
+
+namespace gsdot3::pipeline {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path temp_dir() {
+  const fs::path d = fs::temp_directory_path() / ("gsdot3-pipeline-test-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
+                                                  "-" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+  fs::create_directories(d);
+  return d;
+}
+
+fs::path write(const fs::path& dir, const std::string& name, const std::string& text) {
+  const fs::path p = dir / name;
+  std::ofstream(p, std::ios::binary) << text;
+  return p;
+}
+
+void expect_error(const std::function<void()>& f, const std::string& part) {
+  try {
+    f();
+    FAIL() << "no error; expected one containing '" << part << "'";
+  } catch (const std::runtime_error& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find(part), std::string::npos) << "message: " << what;
+    EXPECT_EQ(what.find('\n'), std::string::npos) << "message spans lines: " << what;
+  }
+}
+
+const std::string good_quad =
+    "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nvn 0 0 1\n"
+    "f 1/1/1 2/2/1 3/3/1 4/4/1\n";
+
+TEST(BadInput, Obj) {
+  const fs::path d = temp_dir();
+  expect_error([&] { load_obj(d / "missing.obj"); }, "cannot open the mesh");
+  expect_error([&] { load_obj(write(d, "nan.obj", "v 0 0 nan\n")); }, "non-finite value");
+  expect_error([&] { load_obj(write(d, "word.obj", "v 0 zero 0\n")); }, "'zero' is not a number");
+  expect_error([&] { load_obj(write(d, "short.obj", "v 0 0\n")); }, "'v' needs 3 numbers");
+  expect_error([&] { load_obj(write(d, "index.obj", "v 0 0 0\nvt 0 0\nvn 0 0 1\nf 1/1/1 2/1/1 3/1/1\n")); }, "position index 2 is out of range");
+  expect_error([&] { load_obj(write(d, "nouv.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\n")); }, "needs v/vt/vn");
+  expect_error([&] { load_obj(write(d, "empty.obj", "# nothing\n")); }, "no faces");
+  expect_error([&] {
+    load_obj(write(d, "degenerate.obj", "v 0 0 0\nv 1 1 1\nv 2 2 2\nvt 0 0\nvn 0 0 1\nf 1/1/1 2/1/1 3/1/1\n"));
+  }, "triangle 0 is degenerate");
+  EXPECT_EQ(load_obj(write(d, "good.obj", good_quad)).triangles.size(), 2u);
+  fs::remove_all(d);
+}
+
+TEST(BadInput, NormalMapPng) {
+  const fs::path d = temp_dir();
+  expect_error([&] { load_normal_map_png(d / "missing.png"); }, "cannot open the normal map");
+  expect_error([&] { load_normal_map_png(write(d, "text.png", "not a png at all")); }, "not a PNG file");
+  // A valid PNG of the wrong size, and a truncated one.
+  image img{100, 60, 3, std::vector<std::uint8_t>(100 * 60 * 3, 128)};
+  write_png(d / "odd.png", img);
+  expect_error([&] { load_normal_map_png(d / "odd.png"); }, "must be powers of two");
+  image grey{16, 16, 1, std::vector<std::uint8_t>(256, 128)};
+  write_png(d / "grey.png", grey);
+  expect_error([&] { load_normal_map_png(d / "grey.png"); }, "must be 8-bit RGB");
+  image ok{16, 16, 3, std::vector<std::uint8_t>(16 * 16 * 3, 128)};
+  for (std::size_t i = 2; i < ok.data.size(); i += 3) ok.data[i] = 255;
+  write_png(d / "ok.png", ok);
+  {
+    std::ifstream in(d / "ok.png", std::ios::binary);
+    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    write(d, "cut.png", bytes.substr(0, bytes.size() / 2));
+  }
+  expect_error([&] { load_normal_map_png(d / "cut.png"); }, "malformed PNG data");
+  const normal_map m = load_normal_map_png(d / "ok.png");
+  EXPECT_EQ(m.width, 16);
+  ASSERT_EQ(m.palette.size(), 1u);
+  EXPECT_NEAR(m.palette[0].z, 1.0f, 1e-2f);
+  fs::remove_all(d);
+}
+
+TEST(BadInput, UnwritableOutputLeavesNoReport) {
+  const fs::path d = temp_dir();
+  const fs::path file = write(d, "a-file", "x");
+  scene s = default_scene(16);
+  s.width = 32;
+  s.height = 32;
+  report_request r;
+  r.out_dir = file / "sub";
+  expect_error([&] { write_report(s, r); }, "cannot create the output directory");
+  EXPECT_FALSE(fs::exists(file / "sub" / "report.html"));
+  fs::remove_all(d);
+}
+
+TEST(Report, WritesHtmlLastAndReplacesAnOldOne) {
+  const fs::path d = temp_dir();
+  scene s = default_scene(16);
+  s.width = 64;
+  s.height = 56;
+  report_request r;
+  r.out_dir = d;
+  const report_summary sum = write_report(s, r);
+  EXPECT_TRUE(fs::exists(sum.html));
+  EXPECT_TRUE(fs::exists(sum.json));
+  EXPECT_TRUE(fs::exists(d / "side-by-side.png"));
+  for (const auto& e : fs::directory_iterator(d)) EXPECT_NE(e.path().extension(), ".tmp") << e.path();
+  ASSERT_EQ(sum.methods.size(), 3u);
+  for (const auto& m : sum.methods) EXPECT_GT(m.vs_renormalised.samples, 0u);
+  fs::remove_all(d);
+}
+
+TEST(Mesh, DegenerateUvStillGivesUnitOrthogonalTangents) {
+  const fs::path d = temp_dir();
+  const mesh m = load_obj(write(d, "flatuv.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0.5 0.5\nvn 0 0 1\nf 1/1/1 2/1/1 3/1/1\n"));
+  for (const vertex& v : m.vertices) {
+    EXPECT_NEAR(glm::length(v.tangent), 1.0f, 1e-5f);
+    EXPECT_NEAR(glm::dot(v.tangent, v.normal), 0.0f, 1e-5f);
+  }
+  fs::remove_all(d);
+}
+
+}  // namespace
+}  // namespace gsdot3::pipeline

@@ -1,0 +1,180 @@
+// The default scene (at a small size): random pixels against the per-pixel formulas, the cached
+// raster path against the reference path, bands against one thread.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+
+#include "gs_arith/gouraud.hpp"
+#include "pipeline/default_scene.hpp"
+#include "pipeline/encoders.hpp"
+#include "pipeline/reference.hpp"
+#include "pipeline/render.hpp"
+
+namespace gsdot3::pipeline {
+namespace {
+
+scene small_scene() {
+  scene s = default_scene(64);
+  s.width = 160;
+  s.height = 140;
+  return s;
+}
+
+const scene& shared_scene() {
+  static const scene s = small_scene();
+  return s;
+}
+
+int ch(std::uint32_t w, int k) { return static_cast<int>((w >> (8 * k)) & 0xFF); }
+
+// The inputs one pixel sees, interpolated as the model documents it (gs::gouraud_triangle with the
+// triangle's top-left pixel as reference; UV planes), and the per-pixel formula in plain integers.
+struct pixel_inputs {
+  std::array<std::int32_t, 4> colour87{};  // 8.7 Gouraud r, g, b, a
+  std::int32_t u16 = 0, v16 = 0;
+};
+
+pixel_inputs inputs_at(const prepared_triangle& t, const std::array<gs::rgba8, 3>& c, const std::array<std::array<std::int32_t, 2>, 3>& uv, int x, int y) {
+  std::array<gs::gouraud_vertex, 3> gv{};
+  int xr = 1 << 16, yr = 1 << 16;
+  for (std::size_t k = 0; k < 3; ++k) {
+    gv[k] = {t.setup.v[k].x + xy_offset_pixels * 16, t.setup.v[k].y + xy_offset_pixels * 16, c[k]};
+    xr = std::min(xr, ceil_124(t.setup.v[k].x));
+    yr = std::min(yr, ceil_124(t.setup.v[k].y));
+  }
+  const gs::gouraud_plane gp = *gs::gouraud_triangle(gv[0], gv[1], gv[2], xr + xy_offset_pixels, yr + xy_offset_pixels);
+  const gs::fragment_colour f = gs::gouraud_at(gp, x + xy_offset_pixels, y + xy_offset_pixels);
+  pixel_inputs in;
+  in.colour87 = {f.r.value(), f.g.value(), f.b.value(), f.a.value()};
+  in.u16 = make_plane(t.setup.v, {uv[0][0], uv[1][0], uv[2][0]}, -(1 << 20), 1 << 20).at(x, y);
+  in.v16 = make_plane(t.setup.v, {uv[0][1], uv[1][1], uv[2][1]}, -(1 << 20), 1 << 20).at(x, y);
+  return in;
+}
+
+// MODULATE of one channel with an 8.7 colour, clamped (facts digest: (Ct·Cf_8.7) >> 14, min 255).
+int modulate(int texel, int cf87) { return std::min(255, (texel * cf87) >> 14); }
+
+int expected_dot(method m, const scene& s, const prepared_scene& ps, int tri, int x, int y) {
+  const prepared_triangle& t = ps.triangles[static_cast<std::size_t>(tri)];
+  const auto& lv = ps.lights[0];
+  std::array<gs::rgba8, 3> colour{};
+  const pixel_inputs nm_in = inputs_at(t, colour, t.uv16, x, y);
+  const int size = s.normals.width;
+  const glm::vec3 n = s.normals.palette[s.normals.index[static_cast<std::size_t>(((nm_in.v16 >> 4) & (size - 1)) * size + ((nm_in.u16 >> 4) & (size - 1)))]];
+  int sum = 0;
+  switch (m) {
+    case method::four_pass: {
+      std::array<std::array<std::int32_t, 2>, 3> uv{};
+      for (std::size_t k = 0; k < 3; ++k) {
+        const light_vertex& l = lv[t.vertex[k]];
+        const int sc = std::clamp(static_cast<int>(std::lround(l.fade * 128.0f)), 0, 128);
+        colour[k] = {gs::u8::from_wrapped(sc), gs::u8::from_wrapped(sc), gs::u8::from_wrapped(sc), gs::u8::from_wrapped(128 - sc)};
+        const st c = sphere_coordinates(l.T);
+        uv[k] = {static_cast<std::int32_t>(std::lround(c.s * 1024)), static_cast<std::int32_t>(std::lround(c.t * 1024))};
+      }
+      const pixel_inputs in = inputs_at(t, colour, uv, x, y);
+      const int su = std::clamp(in.u16 >> 4, 0, 63), sv = std::clamp(in.v16 >> 4, 0, 63);
+      const std::uint32_t sph = sphere_map(64, 64)[static_cast<std::size_t>(sv * 64 + su)];
+      for (int k = 0; k < 3; ++k) {
+        const int a2 = std::min(255, ((ch(sph, k) * in.colour87[static_cast<std::size_t>(k)]) >> 14) + (in.colour87[3] >> 7));  // HIGHLIGHT
+        const int b2 = 128 + nearest(n[k] * 127);
+        sum += (((128 - a2) * b2) >> 7) + a2;
+      }
+      break;
+    }
+    case method::two_pass: {
+      for (std::size_t k = 0; k < 3; ++k) colour[k] = pack_tolight(lv[t.vertex[k]].T * lv[t.vertex[k]].fade, 122);
+      const pixel_inputs in = inputs_at(t, colour, t.uv16, x, y);
+      const two_pass_texel p = pack_two_pass(n);
+      const int P[3] = {p.positive.r.value(), p.positive.g.value(), p.positive.b.value()};
+      const int N[3] = {p.negative.r.value(), p.negative.g.value(), p.negative.b.value()};
+      const int na = modulate(p.negative.a.value(), in.colour87[3]);
+      for (int k = 0; k < 3; ++k) {
+        const int L = in.colour87[static_cast<std::size_t>(k)];
+        sum += ((modulate(P[k], L) - modulate(N[k], L)) & 0xFF) + na;
+      }
+      break;
+    }
+    case method::baseline: {
+      std::array<gs::rgba8, 3> pos{}, neg{};
+      for (std::size_t k = 0; k < 3; ++k) {
+        const glm::vec3 T = lv[t.vertex[k]].T * lv[t.vertex[k]].fade;
+        auto q = [](float v) { return gs::u8::from_wrapped(nearest(std::max(v, 0.0f) * 127)); };
+        pos[k] = {q(T.x), q(T.y), q(T.z), gs::u8::literal(0x80)};
+        neg[k] = {q(-T.x), q(-T.y), q(-T.z), gs::u8::literal(0x80)};
+      }
+      const pixel_inputs ip = inputs_at(t, pos, t.uv16, x, y), in = inputs_at(t, neg, t.uv16, x, y);
+      for (int k = 0; k < 3; ++k) {
+        const int np = nearest(std::max(n[k], 0.0f) * 127), nn = nearest(std::max(-n[k], 0.0f) * 127);
+        const auto K = static_cast<std::size_t>(k);
+        sum += 128 + modulate(np, ip.colour87[K]) + modulate(nn, in.colour87[K]) - modulate(nn, ip.colour87[K]) - modulate(np, in.colour87[K]);
+      }
+      break;
+    }
+  }
+  return sum & 0xFF;
+}
+
+class EveryMethod : public ::testing::TestWithParam<method> {};
+
+TEST_P(EveryMethod, RandomPixelsMatchThePerPixelFormula) {
+  const scene& s = shared_scene();
+  const prepared_scene ps = prepare(s);
+  const frame f = render(s, ps, GetParam(), {});
+  std::vector<std::size_t> covered;
+  for (std::size_t i = 0; i < f.visible_triangle.size(); ++i)
+    if (f.visible_triangle[i] >= 0) covered.push_back(i);
+  ASSERT_GT(covered.size(), 3000u);
+  std::mt19937 rng(17);
+  std::shuffle(covered.begin(), covered.end(), rng);
+  covered.resize(2000);
+  for (std::size_t i : covered) {
+    const int x = static_cast<int>(i) % s.width, y = static_cast<int>(i) / s.width;
+    const int expect = expected_dot(GetParam(), s, ps, f.visible_triangle[i], x, y);
+    ASSERT_EQ(f.dot[0][i], expect) << name(GetParam()) << " pixel " << x << "," << y << " got 0x" << std::hex
+                                   << int{f.dot[0][i]} << " expected 0x" << expect;
+  }
+}
+
+TEST_P(EveryMethod, CachedPathAndBandsEqualTheReferencePath) {
+  const scene& s = shared_scene();
+  for (float yaw : {0.0f, 180.0f, 63.0f}) {
+    const prepared_scene ps = prepare(s, yaw);
+    render_options ref;
+    ref.path = raster_path::reference;
+    ref.threads = 1;
+    render_options fast;
+    fast.threads = 3;
+    for (bool bilinear : {false, true}) {
+      ref.bilinear = fast.bilinear = bilinear;
+      const frame a = render(s, ps, GetParam(), ref), b = render(s, ps, GetParam(), fast);
+      ASSERT_EQ(a.colour, b.colour) << "yaw " << yaw;
+      ASSERT_EQ(a.dot, b.dot) << "yaw " << yaw;
+      ASSERT_EQ(a.visible_triangle, b.visible_triangle) << "yaw " << yaw;
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Methods, EveryMethod, ::testing::Values(method::two_pass, method::four_pass, method::baseline),
+                         [](const auto& info) { return std::string(info.param == method::two_pass ? "TwoPass" : info.param == method::four_pass ? "FourPass" : "Baseline"); });
+
+// The reference's dot products are in range and the head-on float value is 128.
+TEST(Reference, CoversTheSamePixelsAndStaysInRange) {
+  const scene& s = shared_scene();
+  const prepared_scene ps = prepare(s);
+  const frame f = render(s, ps, method::four_pass, {});
+  const reference_frame r = render_reference(s, ps, f.visible_triangle, false);
+  std::size_t covered = 0;
+  for (std::size_t i = 0; i < f.visible_triangle.size(); ++i) {
+    ASSERT_EQ(std::isnan(r.renormalised[0][i]), f.visible_triangle[i] < 0);
+    if (f.visible_triangle[i] < 0) continue;
+    ++covered;
+    ASSERT_LE(std::fabs(r.renormalised[0][i]), 128.001f);
+    ASSERT_LE(std::fabs(r.unnormalised[0][i]), 128.001f);
+  }
+  EXPECT_GT(covered, 3000u);
+}
+
+}  // namespace
+}  // namespace gsdot3::pipeline
