@@ -1,0 +1,140 @@
+// Sections 3.6 - 3.8: HIGHLIGHT attenuation, specular power compensation, and the two-pass /
+// four-pass level-of-detail switch.
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "proofs/claim_util.hpp"
+#include "proofs/claims.hpp"
+#include "proofs/domains.hpp"
+#include "proofs/four_pass.hpp"
+#include "proofs/methods.hpp"
+#include "proofs/paper_code.hpp"
+#include "proofs/two_pass.hpp"
+
+namespace gsdot3::proofs::claims {
+
+namespace m = methods;
+
+outcome highlight_attenuation(const gs::model_options& o, const sweep_config&) {
+  // 128 − (128 − sph)·scale = sph·scale + (1 − scale)·128 via HIGHLIGHT: vertex RGB = k = 128·scale,
+  // vertex A = 128 − k. Error in 1/128 units: 128·GS − (128·128 − (128 − sph)·k), exact integers.
+  extremes err;
+  std::uint64_t clamps = 0, index = 0;
+  for (int sph = 0; sph < 256; ++sph)
+    for (int k = 0; k <= 128; ++k, ++index) {
+      const auto colour = gs::fragment_colour::flat({m::byte(k), m::byte(k), m::byte(k), m::byte(128 - k)});
+      const auto c = gs::texture_function(gs::tfx::HIGHLIGHT, gs::tcc::RGB, m::grey(sph, 0), colour, o);
+      if (gs::modulate_channel(m::byte(sph), colour.r, o).value() + (128 - k) > 255) ++clamps;
+      err.add(128 * c.r.value() - (128 * 128 - (128 - sph) * k), index);
+    }
+  auto at = [](std::uint64_t i) {
+    const int sph = static_cast<int>(i / 129), k = static_cast<int>(i % 129);
+    return "sph = " + hexdec(sph) + ", k = " + hexdec(k);
+  };
+  outcome out;
+  out.result = verdict::bound;
+  out.domain_size = index;
+  out.figures = {fig("err_min_128ths", err.min), fig("err_max_128ths", err.max),
+                 fig_real("err_min", err.min / 128.0), fig_real("err_max", err.max / 128.0),
+                 fig("clamps", static_cast<std::int64_t>(clamps))};
+  out.witnesses = {"err_min at " + at(err.arg_min), "err_max at " + at(err.arg_max)};
+  out.note = "HIGHLIGHT floors sph·k/128, so the attenuated texel is up to 127/128 below the exact value "
+             "(the signed vector up to 127/128 longer); the clamp never bites";
+  return out;
+}
+
+outcome specular_attenuation_compensation(const gs::model_options& o, const sweep_config&) {
+  // Model (section 3.7): the diffuse ILP holds i + 1 at dot index i (so index i stands for dot
+  // (i + 1)/128); the specular ILP of power n holds round(128·((i + 1)/128)^n). Compensated
+  // attenuation scales the dot by k = round(128·att^(1/n)) — on the GS, MODULATE of the dot byte by
+  // the colour k — before the look-up; the wanted value is 128·att·((i + 1)/128)^n. The
+  // uncompensated variant scales by round(128·att). Errors in ILP units (1/128 of the light).
+  auto ilp = [](int n, int i) { return std::round(128.0 * std::pow((i + 1) / 128.0, n)); };
+  auto scaled = [&](int i, int k) {
+    return gs::texture_function(gs::tfx::MODULATE, gs::tcc::RGB, m::grey(i, 0),
+                                gs::fragment_colour::flat(m::grey(k, 0x80)), o).r.value();
+  };
+  double cmin = 1e9, cmax = -1e9, umin = 1e9, umax = -1e9;
+  std::string cmin_at, cmax_at;
+  std::uint64_t size = 0;
+  for (int n = 2; n <= 64; ++n)
+    for (int a = 0; a <= 128; ++a)
+      for (int i = 0; i < 128; ++i, ++size) {
+        const double att = a / 128.0, want = 128.0 * att * std::pow((i + 1) / 128.0, n);
+        const int k = static_cast<int>(std::lround(128.0 * std::pow(att, 1.0 / n)));
+        const double comp = ilp(n, scaled(i, k)) - want, unc = ilp(n, scaled(i, a)) - want;
+        auto where = [&] { return "n = " + std::to_string(n) + ", att = " + std::to_string(a) + "/128, dot index " + std::to_string(i); };
+        if (comp < cmin) cmin = comp, cmin_at = where();
+        if (comp > cmax) cmax = comp, cmax_at = where();
+        umin = std::min(umin, unc), umax = std::max(umax, unc);
+      }
+  outcome out;
+  out.result = verdict::bound;
+  out.domain_size = size;
+  out.figures = {fig_real("err_min", cmin), fig_real("err_max", cmax), fig_real("uncompensated_err_min", umin),
+                 fig_real("uncompensated_err_max", umax)};
+  out.witnesses = {"err_min at " + cmin_at, "err_max at " + cmax_at};
+  out.note = "(att^(1/n)·dot)^n through an 8-bit dot index stays within the bound shown (ILP units); without the "
+             "compensation the error is the uncompensated range";
+  return out;
+}
+
+outcome lod_two_vs_four(const gs::model_options& o, const sweep_config& cfg) {
+  // The same 8-bit palette index means the same unit normal n̂: the four-pass palette holds
+  // b = round(127·n̂) (taken from normal_map_vectors(), n̂ = b/|b|) and the two-pass palettes hold
+  // Appendix 2's packing of n̂. Lights: every 64×64 sphere-map texel inside the disc; four-pass reads
+  // its packed vector, two-pass gets (char)(122·L) of the texel's float unit vector L at the vertices.
+  // Both dot products come from their tables (built through the model): two_pass::table (value, no
+  // wrap for s = 122) and four_pass::table (sum; wraps are counted by four-pass.sum-wrap).
+  const auto normals = normal_map_vectors();
+  const two_pass::table t2(o);
+  const four_pass::table t4(o);
+  std::vector<paper::packed_normal> packed;
+  for (const auto& b : normals) {
+    const double len = std::sqrt(double(b[0]) * b[0] + double(b[1]) * b[1] + double(b[2]) * b[2]);
+    packed.push_back(paper::pack_normal(static_cast<float>(b[0] / len), static_cast<float>(b[1] / len)));
+  }
+  struct light {
+    ivec3 a, l;
+  };
+  std::vector<light> lights;
+  for (int y = 0; y < 64; ++y)
+    for (int x = 0; x < 64; ++x) {
+      const auto t = paper::sphere_map_texel(x, y, 64, 64);
+      if (!t.inside) continue;
+      lights.push_back({{128 - t.r, 128 - t.g, 128 - t.b},
+                        {paper::pack_light_component(122.0f, t.lx), paper::pack_light_component(122.0f, t.ly),
+                         paper::pack_light_component(122.0f, t.lz)}});
+    }
+  const std::uint64_t nn = normals.size();
+  struct acc {
+    extremes diff;
+    void merge(const acc& l) { diff.merge(l.diff); }
+  };
+  const auto r = sweep<acc>(lights.size(), cfg, [&](acc& s, std::uint64_t lo, std::uint64_t hi) {
+    for (auto i = lo; i < hi; ++i)
+      for (std::uint64_t j = 0; j < nn; ++j)
+        s.diff.add(t2.value(packed[j], lights[i].l) - t4.dot(lights[i].a, normals[j]), i * nn + j);
+  });
+  auto at = [&](std::uint64_t i) {
+    const auto& L = lights[i / nn];
+    const auto& b = normals[i % nn];
+    const auto& p = packed[i % nn];
+    return "b = (" + std::to_string(b[0]) + ", " + std::to_string(b[1]) + ", " + std::to_string(b[2]) + "), two-pass n = (" +
+           std::to_string(p.iX) + ", " + std::to_string(p.iY) + ", " + std::to_string(p.iZ) + "), sphere a = (" +
+           std::to_string(L.a[0]) + ", " + std::to_string(L.a[1]) + ", " + std::to_string(L.a[2]) + "), l = (" +
+           std::to_string(L.l[0]) + ", " + std::to_string(L.l[1]) + ", " + std::to_string(L.l[2]) + ") => two-pass " +
+           std::to_string(t2.value(p, L.l)) + ", four-pass " + std::to_string(t4.dot(L.a, b));
+  };
+  outcome out;
+  out.result = verdict::bound;
+  out.domain_size = lights.size() * nn;
+  out.figures = {fig("diff_min", r.diff.min), fig("diff_max", r.diff.max)};
+  out.witnesses = {"diff_min at " + at(r.diff.arg_min), "diff_max at " + at(r.diff.arg_max)};
+  out.note = "two-pass minus four-pass dot product for the same palette index and light direction: the scales "
+             "differ (128·122/128 vs 127·127/128) and both round, so switching LOD shifts the intensity by this much";
+  return out;
+}
+
+}  // namespace gsdot3::proofs::claims
