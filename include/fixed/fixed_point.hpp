@@ -170,7 +170,8 @@ class std::numeric_limits<fixed::fixed_point<Rep, F>> {
   static constexpr int radix = 2;
   static constexpr int digits = L::digits;
   static constexpr int digits10 = L::digits10;
-  static constexpr T min() noexcept { return T::from_raw(Rep{1}); }  // smallest positive, like float
+  // Smallest positive value, as for floating point; for F = 0 the lowest value, as for integers.
+  static constexpr T min() noexcept { return F == 0 ? lowest() : T::from_raw(Rep{1}); }
   static constexpr T lowest() noexcept { return T::from_raw(L::min()); }
   static constexpr T max() noexcept { return T::from_raw(L::max()); }
   static constexpr T epsilon() noexcept { return T::from_raw(Rep{1}); }
