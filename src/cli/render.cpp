@@ -143,7 +143,7 @@ void add_options(CLI::App* cmd, render_args& a) {
                   "8-bit RGB PNG tangent-space normal map (power-of-two sides 8..1024), quantised to 256 entries");
   cmd->add_option("--light", a.lights,
                   "point light X,Y,Z:RRGGBB (world position; colour in hex, 0x80 = 1.0); repeat for more lights; "
-                  "default: green 10E020 at -2.2,1.4,2.2 and blue 1040F0 at 2.4,0.2,-1.6");
+                  "default: green 109820 at -2.2,1.4,2.2 and blue 1038B0 at 2.6,-0.2,0.4");
   cmd->add_option("--camera", a.camera, "camera position X,Y,Z looking at the origin (default 0,0.15,3.6)");
   cmd->add_option("--size", a.size, "frame size WxH")->capture_default_str();
   cmd->add_option("--s", a.s, "two-pass tolight scale s (section 3.5), 1..127")->capture_default_str();

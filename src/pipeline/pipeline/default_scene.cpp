@@ -96,7 +96,7 @@ texture32 procedural_diffuse(int width, int height) {
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x) {
       const bool line = (x % std::max(width / 4, 1)) < 2 || (y % std::max(height / 4, 1)) < 2;
-      const std::uint32_t r = line ? 0x90 : 0xD8, g = line ? 0x88 : 0xD0, b = line ? 0x80 : 0xC4;
+      const std::uint32_t r = line ? 0x58 : 0x98, g = line ? 0x50 : 0x90, b = line ? 0x48 : 0x88;
       t.texels[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)] = r | g << 8 | b << 16 | 0x80u << 24;
     }
   return t;
@@ -107,8 +107,8 @@ scene default_scene(int normal_map_size) {
   s.model = head_mesh();
   s.normals = procedural_normal_map(normal_map_size);
   s.diffuse = procedural_diffuse(normal_map_size, normal_map_size);
-  s.lights = {{{-2.2f, 1.4f, 2.2f}, {0x10, 0xE0, 0x20}},   // green, front left above
-              {{2.4f, 0.2f, -1.6f}, {0x10, 0x40, 0xF0}}};  // blue, right and behind
+  s.lights = {{{-2.2f, 1.4f, 2.2f}, {0x10, 0x98, 0x20}},   // green, front left above
+              {{2.6f, -0.2f, 0.4f}, {0x10, 0x38, 0xB0}}};  // blue, right, level with the face
   s.view.eye = {0.0f, 0.15f, 3.6f};
   s.view.target = {0.0f, 0.0f, 0.0f};
   return s;

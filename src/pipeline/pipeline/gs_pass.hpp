@@ -30,7 +30,7 @@ struct pass_regs {
   bool CLAMP = true;                    // COLCLAMP.CLAMP
   std::uint32_t FBMSK = 0;              // FRAME_1.FBMSK
 
-  gs::gs_registers registers() const noexcept {
+  constexpr gs::gs_registers registers() const noexcept {
     gs::gs_registers r;
     r.PRIM.TME = TME;
     r.PRIM.ABE = ABE;

@@ -51,6 +51,26 @@ constexpr gs::alpha_reg signed_multiply{blend_colour::Cs, blend_colour::Cd, blen
 constexpr gs::alpha_reg multiply_by_ad{blend_colour::Cs, blend_colour::zero, blend_alpha::Ad, blend_colour::zero,
                                        gs::u8{}};  // Cs·Ad, step 4
 
+// The register sets of the passes. Each is a constant the pass loops are instantiated with, so the
+// compiler folds gs::pixel_pipeline for it (the same model function, specialised, not a copy).
+//                                              TME    ABE    TFX                 TCC             ALPHA_1          CLAMP  FBMSK
+constexpr pass_regs step1_ambient{};  // TME = 0, ABE = 0, COLCLAMP = 1
+constexpr pass_regs two_pass_positive{          true,  false, gs::tfx::MODULATE,  gs::tcc::RGB,   {},              false, 0};
+constexpr pass_regs two_pass_negative{          true,  true,  gs::tfx::MODULATE,  gs::tcc::RGBA,  subtract_source, false, 0};
+constexpr pass_regs two_pass_add_alpha{         true,  true,  gs::tfx::DECAL,     gs::tcc::RGB,   add_source,      false, keep_alpha};
+constexpr pass_regs four_pass_sphere{           true,  false, gs::tfx::HIGHLIGHT, gs::tcc::RGB,   {},              false, keep_alpha};
+constexpr pass_regs four_pass_x{                true,  true,  gs::tfx::DECAL,     gs::tcc::RGBA,  signed_multiply, false, only_channel[0]};
+constexpr pass_regs four_pass_y{                true,  true,  gs::tfx::DECAL,     gs::tcc::RGBA,  signed_multiply, false, only_channel[1]};
+constexpr pass_regs four_pass_z{                true,  true,  gs::tfx::DECAL,     gs::tcc::RGBA,  signed_multiply, false, only_channel[2]};
+constexpr pass_regs baseline_add{               true,  true,  gs::tfx::MODULATE,  gs::tcc::RGB,   add_source,      false, keep_alpha};
+constexpr pass_regs baseline_subtract{          true,  true,  gs::tfx::MODULATE,  gs::tcc::RGB,   subtract_source, false, keep_alpha};
+constexpr pass_regs post_add_into_red{          true,  true,  gs::tfx::DECAL,     gs::tcc::RGB,   add_source,      false, only_channel[0]};
+constexpr pass_regs ilp_into_lab{               true,  true,  gs::tfx::MODULATE,  gs::tcc::RGB,   add_source,      true,  keep_alpha};
+constexpr pass_regs diffuse_layer{              true,  false, gs::tfx::DECAL,     gs::tcc::RGB,   {},              true,  0};
+constexpr pass_regs multiply_red{               true,  true,  gs::tfx::DECAL,     gs::tcc::RGB,   multiply_by_ad,  true,  only_channel[0]};
+constexpr pass_regs multiply_green{             true,  true,  gs::tfx::DECAL,     gs::tcc::RGB,   multiply_by_ad,  true,  only_channel[1]};
+constexpr pass_regs multiply_blue{              true,  true,  gs::tfx::DECAL,     gs::tcc::RGB,   multiply_by_ad,  true,  only_channel[2]};
+
 // The textures and palettes, built once per frame (VU1/tool side).
 struct gs_inputs {
   const normal_map* nm = nullptr;
@@ -98,14 +118,14 @@ class band_renderer {
  public:
   band_renderer(const prepared_scene& ps, const render_options& o, scissor band, std::vector<std::uint32_t>& z,
                 std::vector<std::int32_t>& visible)
-      : ps_(ps), o_(o), band_(band), z_(z), visible_(visible) {}
+      : ps_(ps), o_(o), band_(band), sprite_area_(drawn_area(ps, band)), z_(z), visible_(visible) {}
 
   // Step 1: Z buffer and the LAB's ambient colour (ZTST = GEQUAL, Z written).
   void depth_and_ambient(std::vector<std::uint32_t>& lab, gs::rgba8 ambient) {
     fill(lab, 0);
     for (int y = band_.y0; y < band_.y1; ++y)
       for (int x = band_.x0; x < band_.x1; ++x) z_[index(x, y)] = 0, visible_[index(x, y)] = -1;
-    const gs::gs_registers regs = pass_regs{}.registers();  // TME = 0, ABE = 0, COLCLAMP = 1
+    constexpr gs::gs_registers regs = step1_ambient.registers();
     const gs::fragment_colour cf = gs::fragment_colour::flat(ambient);
     for (std::size_t t = 0; t < ps_.triangles.size(); ++t) {
       const prepared_triangle& tri = ps_.triangles[t];
@@ -116,6 +136,7 @@ class band_renderer {
         z_[i] = z;
         visible_[i] = static_cast<std::int32_t>(t);
         lab[i] = gs_pixel(regs, gs::rgba8{}, cf, lab[i], x, y, o_.model);
+        ++ops_;
       });
     }
     if (o_.path == raster_path::cached) {
@@ -131,14 +152,16 @@ class band_renderer {
   }
 
   // A triangle pass with ZTST = GEQUAL and ZMSK = 1.
-  void draw(const pass_regs& pass, const texture_ref* tex, const std::vector<tri_attr>& attr, std::vector<std::uint32_t>& fb) {
-    const gs::gs_registers regs = pass.registers();
+  template <const pass_regs& Pass>
+  [[gnu::flatten]] void draw(const texture_ref* tex, const std::vector<tri_attr>& attr, std::vector<std::uint32_t>& fb) {
+    constexpr gs::gs_registers regs = Pass.registers();
     auto shade = [&](std::size_t t, int x, int y) {
       const tri_attr& a = attr[t];
       const gs::fragment_colour cf = gs::gouraud_at(a.colour, x + xy_offset_pixels, y + xy_offset_pixels);
       const gs::rgba8 texel = tex != nullptr ? tex->sample(a.u.at(x, y), a.v.at(x, y)) : gs::rgba8{};
       std::uint32_t& word = fb[index(x, y)];
       word = gs_pixel(regs, texel, cf, word, x, y, o_.model);
+      ++ops_;
     };
     if (o_.path == raster_path::cached) {
       for (const fragment& f : frags_) shade(static_cast<std::size_t>(f.tri), f.x, f.y);
@@ -152,15 +175,19 @@ class band_renderer {
     }
   }
 
-  // A full-band sprite pass with a flat colour; `texel(i)` gives the texel the sprite's 1:1 mapping
+  // A 2D sprite pass with a flat colour over the drawn triangles' bounding rectangle within the band
+  // (an engine scissors its post filter to the object; outside it the DPB keeps its clear value and
+  // the frame stays 0 = diffuse 0 × LAB); `texel(i)` gives the texel the sprite's 1:1 mapping
   // fetches for frame-buffer pixel i.
-  template <class Texel>
-  void sprite(const pass_regs& pass, gs::rgba8 colour, Texel&& texel, std::vector<std::uint32_t>& fb) {
-    const gs::gs_registers regs = pass.registers();
+  template <const pass_regs& Pass, class Texel>
+  [[gnu::flatten]] void sprite(gs::rgba8 colour, Texel&& texel, std::vector<std::uint32_t>& fb) {
+    constexpr gs::gs_registers regs = Pass.registers();
     const gs::fragment_colour cf = gs::fragment_colour::flat(colour);
-    rasterise_sprite({band_.x0 * 16, band_.y0 * 16}, {band_.x1 * 16, band_.y1 * 16}, band_, [&](int x, int y) {
+    const scissor& a = sprite_area_;
+    rasterise_sprite({a.x0 * 16, a.y0 * 16}, {a.x1 * 16, a.y1 * 16}, a, [&](int x, int y) {
       const std::size_t i = index(x, y);
       fb[i] = gs_pixel(regs, texel(i), cf, fb[i], x, y, o_.model);
+      ++ops_;
     });
   }
 
@@ -172,14 +199,29 @@ class band_renderer {
 
   std::size_t index(int x, int y) const { return static_cast<std::size_t>(y) * static_cast<std::size_t>(ps_.width) + static_cast<std::size_t>(x); }
   const scissor& band() const { return band_; }
+  std::size_t pixel_ops() const { return ops_; }
 
  private:
+  // The bounding rectangle of every drawn triangle's pixels, within the band (may be empty).
+  static scissor drawn_area(const prepared_scene& ps, scissor band) {
+    scissor a{band.x1, band.y1, band.x0, band.y0};
+    for (const prepared_triangle& t : ps.triangles)
+      for (const xy124& v : t.setup.v) {
+        a.x0 = std::min(a.x0, ceil_124(v.x) - 1);
+        a.y0 = std::min(a.y0, ceil_124(v.y) - 1);
+        a.x1 = std::max(a.x1, ceil_124(v.x) + 1);
+        a.y1 = std::max(a.y1, ceil_124(v.y) + 1);
+      }
+    return {std::max(a.x0, band.x0), std::max(a.y0, band.y0), std::min(a.x1, band.x1), std::min(a.y1, band.y1)};
+  }
+
   const prepared_scene& ps_;
   const render_options& o_;
-  scissor band_;
+  scissor band_, sprite_area_;
   std::vector<std::uint32_t>& z_;
   std::vector<std::int32_t>& visible_;
   std::vector<fragment> frags_;
+  std::size_t ops_ = 0;
 };
 
 // Vertex colours → per-triangle attributes; `uv` picks the 12.4 texture coordinates per corner.
@@ -216,8 +258,8 @@ struct frame_buffers {
   std::vector<std::uint32_t> z, lab, dpb, diff, out;
 };
 
-void render_band(const scene& s, const prepared_scene& ps, method m, const render_options& o, const gs_inputs& in,
-                 scissor band, frame_buffers& fb, frame& result) {
+std::size_t render_band(const scene& s, const prepared_scene& ps, method m, const render_options& o, const gs_inputs& in,
+                        scissor band, frame_buffers& fb, frame& result) {
   band_renderer r(ps, o, band, fb.z, result.visible_triangle);
   r.depth_and_ambient(fb.lab, rgb(s.ambient[0], s.ambient[1], s.ambient[2], 0x80));
 
@@ -238,10 +280,10 @@ void render_band(const scene& s, const prepared_scene& ps, method m, const rende
       case method::two_pass: {
         const auto attr = attributes(ps, [&](std::uint32_t v) { return pack_tolight(lv[v].T * lv[v].fade, o.s); }, normal_map_uv);
         const texture_ref pos = nm_texture(in.pos), neg = nm_texture(in.neg);
-        r.draw({true, false, gs::tfx::MODULATE, gs::tcc::RGB, {}, false, 0}, &pos, attr, fb.dpb);
-        r.draw({true, true, gs::tfx::MODULATE, gs::tcc::RGBA, subtract_source, false, 0}, &neg, attr, fb.dpb);
+        r.draw<two_pass_positive>(&pos, attr, fb.dpb);
+        r.draw<two_pass_negative>(&neg, attr, fb.dpb);
         // 2.4a: n'_a into R, G and B: the DPB read as PSMT8H (its own alpha byte) through a grey CLUT.
-        r.sprite({true, true, gs::tfx::DECAL, gs::tcc::RGB, add_source, false, keep_alpha}, white,
+        r.sprite<two_pass_add_alpha>(white,
                  [&](std::size_t i) { return gs::clut_t8(in.grey, gs::t8h_index(fb.dpb[i])); }, fb.dpb);
         break;
       }
@@ -258,12 +300,12 @@ void render_band(const scene& s, const prepared_scene& ps, method m, const rende
                                                  static_cast<std::int32_t>(std::lround(c.t * 64 * 16))};
             });
         const texture_ref sphere{64, 64, nullptr, nullptr, in.sphere.data(), true, gs::bilinear_mode::nearest};
-        r.draw({true, false, gs::tfx::HIGHLIGHT, gs::tcc::RGB, {}, false, keep_alpha}, &sphere, pass1, fb.dpb);
+        r.draw<four_pass_sphere>(&sphere, pass1, fb.dpb);
         const auto attr = attributes(ps, flat_white, normal_map_uv);
-        for (int a = 0; a < 3; ++a) {
-          const texture_ref axis = nm_texture(in.axis[a]);
-          r.draw({true, true, gs::tfx::DECAL, gs::tcc::RGBA, signed_multiply, false, only_channel[a]}, &axis, attr, fb.dpb);
-        }
+        const texture_ref x = nm_texture(in.axis[0]), y = nm_texture(in.axis[1]), z = nm_texture(in.axis[2]);
+        r.draw<four_pass_x>(&x, attr, fb.dpb);
+        r.draw<four_pass_y>(&y, attr, fb.dpb);
+        r.draw<four_pass_z>(&z, attr, fb.dpb);
         break;
       }
       case method::baseline: {
@@ -279,50 +321,50 @@ void render_band(const scene& s, const prepared_scene& ps, method m, const rende
         };
         const auto tl_pos = side(false), tl_neg = side(true);
         const texture_ref pos = nm_texture(in.pos), neg = nm_texture(in.neg);
-        const pass_regs add{true, true, gs::tfx::MODULATE, gs::tcc::RGB, add_source, false, keep_alpha};
-        const pass_regs sub{true, true, gs::tfx::MODULATE, gs::tcc::RGB, subtract_source, false, keep_alpha};
-        r.draw(add, &pos, tl_pos, fb.dpb);  // NM_pos·TL_pos
-        r.draw(add, &neg, tl_neg, fb.dpb);  // NM_neg·TL_neg
-        r.draw(sub, &neg, tl_pos, fb.dpb);  // −NM_neg·TL_pos
-        r.draw(sub, &pos, tl_neg, fb.dpb);  // −NM_pos·TL_neg
+        r.draw<baseline_add>(&pos, tl_pos, fb.dpb);       // NM_pos·TL_pos
+        r.draw<baseline_add>(&neg, tl_neg, fb.dpb);       // NM_neg·TL_neg
+        r.draw<baseline_subtract>(&neg, tl_pos, fb.dpb);  // −NM_neg·TL_pos
+        r.draw<baseline_subtract>(&pos, tl_neg, fb.dpb);  // −NM_pos·TL_neg
         break;
       }
     }
     // 2.4: R += G, R += B (mod 256): additive sprites writing red only.
-    const pass_regs add_red{true, true, gs::tfx::DECAL, gs::tcc::RGB, add_source, false, only_channel[0]};
-    r.sprite(add_red, white, dpb_byte(1), fb.dpb);
-    r.sprite(add_red, white, dpb_byte(2), fb.dpb);
+    r.sprite<post_add_into_red>(white, dpb_byte(1), fb.dpb);
+    r.sprite<post_add_into_red>(white, dpb_byte(2), fb.dpb);
     for (int y = band.y0; y < band.y1; ++y)
       for (int x = band.x0; x < band.x1; ++x) result.dot[l][r.index(x, y)] = static_cast<std::uint8_t>(fb.dpb[r.index(x, y)] & 0xFF);
     // 2.5, 2.6: COLCLAMP = 1; ILP[sum] × light colour (MODULATE) added into the LAB.
     const auto& lc = s.lights[l].colour;
-    r.sprite({true, true, gs::tfx::MODULATE, gs::tcc::RGB, add_source, true, keep_alpha}, rgb(lc[0], lc[1], lc[2], 0x80),
+    r.sprite<ilp_into_lab>(rgb(lc[0], lc[1], lc[2], 0x80),
              [&](std::size_t i) { return gs::clut_t8(in.ilp, byte(static_cast<int>(fb.dpb[i] & 0xFF))); }, fb.lab);
   }
 
   // Step 3: the unlit diffuse layer.
   r.fill(fb.diff, 0);
   const texture_ref diffuse{in.diffuse->width, in.diffuse->height, nullptr, nullptr, in.diffuse->texels.data(), false, filter};
-  r.draw({true, false, gs::tfx::DECAL, gs::tcc::RGB, {}, true, 0}, &diffuse, attributes(ps, flat_white, normal_map_uv), fb.diff);
+  r.draw<diffuse_layer>(&diffuse, attributes(ps, flat_white, normal_map_uv), fb.diff);
 
   // Step 4: diffuse × LAB per channel: (Cs − 0)·Ad >> 7 with the LAB channel in the destination
   // alpha (value level), writing that channel only.
   for (int y = band.y0; y < band.y1; ++y)
     for (int x = band.x0; x < band.x1; ++x) fb.out[r.index(x, y)] = fb.lab[r.index(x, y)];
-  for (int c = 0; c < 3; ++c) {
-    const pass_regs mul{true, true, gs::tfx::DECAL, gs::tcc::RGB, multiply_by_ad, true, only_channel[c]};
+  auto multiply = [&](int c, auto pass) {
     for (int y = band.y0; y < band.y1; ++y)
       for (int x = band.x0; x < band.x1; ++x) {
         const std::size_t i = r.index(x, y);
         fb.out[i] = (fb.out[i] & 0x00FFFFFFu) | (((fb.lab[i] >> (8 * c)) & 0xFFu) << 24);
       }
-    r.sprite(mul, white, [&](std::size_t i) { return gs::rgba8::from_u32(fb.diff[i]); }, fb.out);
-  }
+    pass(white, [&](std::size_t i) { return gs::rgba8::from_u32(fb.diff[i]); }, fb.out);
+  };
+  multiply(0, [&](auto&&... a) { r.sprite<multiply_red>(a...); });
+  multiply(1, [&](auto&&... a) { r.sprite<multiply_green>(a...); });
+  multiply(2, [&](auto&&... a) { r.sprite<multiply_blue>(a...); });
   for (int y = band.y0; y < band.y1; ++y)
     for (int x = band.x0; x < band.x1; ++x) {
       const std::size_t i = r.index(x, y);
       result.colour[i] = fb.out[i] | 0xFF000000u;
     }
+  return r.pixel_ops();
 }
 
 }  // namespace
@@ -340,15 +382,18 @@ frame render(const scene& s, const prepared_scene& ps, method m, const render_op
                    std::vector<std::uint32_t>(n), std::vector<std::uint32_t>(n)};
   const int bands = std::clamp(o.threads, 1, std::max(1, ps.height));
   std::vector<std::thread> workers;
+  std::vector<std::size_t> ops(static_cast<std::size_t>(bands), 0);
   for (int b = 0; b < bands; ++b) {
     const scissor band{0, ps.height * b / bands, ps.width, ps.height * (b + 1) / bands};
+    auto& count = ops[static_cast<std::size_t>(b)];
     if (b + 1 == bands) {
-      render_band(s, ps, m, o, in, band, fb, result);
+      count = render_band(s, ps, m, o, in, band, fb, result);
     } else {
-      workers.emplace_back([&, band] { render_band(s, ps, m, o, in, band, fb, result); });
+      workers.emplace_back([&, band] { count = render_band(s, ps, m, o, in, band, fb, result); });
     }
   }
   for (std::thread& t : workers) t.join();
+  for (std::size_t c : ops) result.pixel_ops += c;
   return result;
 }
 
