@@ -43,20 +43,11 @@ std::string describe(const Parts&... parts) {
   return os.str();
 }
 
-// Calls f.template operator()<R>() for each of the four rounding modes.
-template <class F>
-void for_each_rounding(F f) {
-  f.template operator()<rounding::floor>();
-  f.template operator()<rounding::toward_zero>();
-  f.template operator()<rounding::nearest_ties_up>();
-  f.template operator()<rounding::nearest_ties_even>();
-}
-
 // Every value of T, every shift 0..max_shift, every mode, both the compile-time-mode and the
 // run-time-mode overload.
 template <class T>
 void sweep_shift_right(sweep& s, int max_shift) {
-  for_each_rounding([&]<rounding R>() {
+  fixed_ref::for_each_rounding([&]<rounding R>() {
     for (std::int64_t i = std::numeric_limits<T>::min(); i <= std::numeric_limits<T>::max(); ++i) {
       const auto v = static_cast<T>(i);
       for (int k = 0; k <= max_shift; ++k) {
@@ -183,7 +174,7 @@ TEST(FixedExhaustive, IntegerArithmeticSmallDomains) {
 TEST(FixedExhaustive, IntegerShiftEveryS17) {
   // The GS blend's (A - B) * C >> 7 step: every s17 value, every mode, both overloads.
   sweep s;
-  for_each_rounding([&]<rounding R>() {
+  fixed_ref::for_each_rounding([&]<rounding R>() {
     for (std::int64_t x = fixed::s17::min_value; x <= fixed::s17::max_value; ++x) {
       const auto v = fixed::s17::from_wrapped(x);
       const auto q = fixed::shift_right<R, 7>(v);
@@ -223,7 +214,7 @@ TEST(FixedExhaustive, IntegerConstructionAndWidening) {
 TEST(FixedExhaustive, GsColourProductEveryPair) {
   // gs_colour x gs_colour -> gs_colour: the exact product a·b / 2^7, every mode, both overflows.
   sweep s;
-  for_each_rounding([&]<rounding R>() {
+  fixed_ref::for_each_rounding([&]<rounding R>() {
     for (std::int64_t a = 0; a < 256; ++a) {
       for (std::int64_t b = 0; b < 256; ++b) {
         const auto x = fixed::gs_colour::from_raw(static_cast<std::uint8_t>(a));

@@ -62,4 +62,13 @@ constexpr W saturate(W v, int n, bool is_signed) {
   return std::clamp(v, lowest<W>(n, is_signed), highest<W>(n, is_signed));
 }
 
+// Test helper: calls f.template operator()<R>() for each of the four rounding modes.
+template <class F>
+void for_each_rounding(F f) {
+  f.template operator()<fixed::rounding::floor>();
+  f.template operator()<fixed::rounding::toward_zero>();
+  f.template operator()<fixed::rounding::nearest_ties_up>();
+  f.template operator()<fixed::rounding::nearest_ties_even>();
+}
+
 }  // namespace fixed_ref
