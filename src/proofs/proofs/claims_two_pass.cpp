@@ -2,11 +2,14 @@
 #include <algorithm>
 #include <atomic>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 
 #include "proofs/claim_util.hpp"
 #include "proofs/claims.hpp"
+#include "gs_arith/gouraud.hpp"
 #include "proofs/domains.hpp"
+#include "proofs/methods.hpp"
 #include "proofs/two_pass.hpp"
 
 namespace gsdot3::proofs::claims {
@@ -157,6 +160,98 @@ outcome two_pass_max_s_vertex(const gs::model_options& o, const sweep_config& cf
   out.counterexamples = static_cast<std::uint64_t>(wrapping);
   out.note = "no Appendix 2 normal and no vertex-packed light wraps for s <= " + std::to_string(s_max) +
              " (s <= 125 by the bound, larger s by the pruned exhaustive search); the paper's 122 is safe";
+  return out;
+}
+
+}  // namespace gsdot3::proofs::claims
+
+namespace gsdot3::proofs::claims {
+
+namespace {
+// Wrapping pixels found by bench/proofs_span_search (a search over spans between nearby vertex
+// lights of the cap around each candidate normal). They are certificates: each run re-derives the
+// span through the model's Gouraud unit and the pixel through the two-pass passes, and a
+// certificate that no longer wraps is reported, not trusted.
+struct span_certificate {
+  int s, iX, iY;
+  ivec3 l0, l1;
+  int pixels, k;
+};
+constexpr span_certificate certificates[] = {
+    {125, -123, -26, {-121, -24, 20}, {-120, -26, 23}, 65, 35},
+};
+constexpr int span_max_pixels = 128;
+
+bool in_lights(int s, const ivec3& l) {
+  const int near = l[0] * l[0] + l[1] * l[1] + l[2] * l[2];
+  const int ax = std::abs(l[0]) + 1, ay = std::abs(l[1]) + 1, az = std::abs(l[2]) + 1;
+  return near <= s * s && s * s < ax * ax + ay * ay + az * az;
+}
+}  // namespace
+
+outcome two_pass_max_s_interpolated(const gs::model_options& o, const sweep_config& cfg) {
+  // Domain: every span (scanline or edge) of n <= 128 pixels between two vertex lights of L_s
+  // (packed_lights), every pixel k in 0..n, light colour from gs::gouraud_span / gouraud_at (8.7,
+  // steps truncated toward zero), against every Appendix 2 normal. Far too large to enumerate
+  // (|L_s|² · Σ (n + 1)); reduction:
+  // (1) s <= 123 never wraps. Pixel k's 8.7 channel is 128·l0 + k·trunc(128·Δ/n): it lags the exact
+  //     segment point p = l0 + (k/n)·Δ by less than k/128 <= 1 per component, and |p| <= s. The
+  //     bounds of two_pass::wrap_search hold for 8.7 lights too (q_c = floor / ceil of n_c·l_c/128),
+  //     so value < n·l/128 + 2 + e <= s + |n|_1/128 + 3 < s + 4.74 and value > −s − 1.74 − 4:
+  //     −s − 5 <= value <= s + 4, inside [−128, 127] for s <= 123.
+  // (2) Wraps at larger s are shown by certificates (above), re-verified here through the model; the
+  //     vertex wraps of two-pass.max-s.vertex (s = 126) are pixels k = 0 of every span.
+  //     With gouraud_fraction = truncate_to_8 the channel is further truncated to an integer (lag < 2
+  //     per component): −s − 7 <= value <= s + 6, safe for s <= 121.
+  // s between the proven bound and the first certified wrap is left undecided: reported as the gap.
+  (void)cfg;
+  const auto& normals = appendix2_normals();
+  const int proven_safe = o.gouraud == gs::gouraud_fraction::keep_fraction ? 123 : 121;
+  int first_wrap = 126;  // two-pass.max-s.vertex: vertex pixels wrap at s = 126
+  std::vector<std::string> witnesses;
+  tally failed;
+  std::uint64_t index = 0;
+  for (const auto& c : certificates) {
+    const auto p = paper::pack_normal_from(c.iX, c.iY);
+    const bool normal_ok = c.iX * c.iX + c.iY * c.iY <= 16358;
+    const bool lights_ok = in_lights(c.s, c.l0) && in_lights(c.s, c.l1) && c.pixels >= 1 &&
+                           c.pixels <= span_max_pixels && c.k >= 0 && c.k <= c.pixels;
+    auto colour = [](const ivec3& l) {
+      return gs::rgba8{methods::byte(128 + l[0]), methods::byte(128 + l[1]), methods::byte(128 + l[2]), methods::byte(0x80)};
+    };
+    const auto light = gs::gouraud_at(gs::gouraud_span(colour(c.l0), colour(c.l1), c.pixels), c.k);
+    const auto r = two_pass::pixel(p, light, o);
+    const bool wraps = r.dot != r.value;
+    if (normal_ok && lights_ok && wraps) {
+      first_wrap = std::min(first_wrap, c.s);
+      char buf[160];
+      std::snprintf(buf, sizeof buf, " => light 8.7 (0x%04x, 0x%04x, 0x%04x), value %d, DPB dot ", light.r.value(),
+                    light.g.value(), light.b.value(), r.value);
+      witnesses.push_back("s = " + std::to_string(c.s) + ": n = (" + std::to_string(p.iX) + ", " + std::to_string(p.iY) +
+                          ", " + std::to_string(p.iZ) + "), span of " + std::to_string(c.pixels) + " pixels from " +
+                          describe_light(c.l0) + " to " + describe_light(c.l1) + ", pixel " + std::to_string(c.k) + buf +
+                          hexdec(r.dot));
+    } else {
+      failed.add(index);
+    }
+    ++index;
+  }
+  outcome out;
+  out.result = verdict::bound;
+  // Per normal at s = 122: |L_122|² spans of each length n, n + 1 pixels each.
+  const std::uint64_t l122 = packed_lights(paper_s).size();
+  out.domain_size = l122 * l122 * static_cast<std::uint64_t>((span_max_pixels + 1) * (span_max_pixels + 2) / 2 - 1);
+  out.counterexamples = failed.count;
+  out.figures = {fig("s_max", proven_safe), fig("s_max_upper", first_wrap - 1), fig("first_wrapping_s", first_wrap),
+                 fig("paper_s", paper_s), fig("margin", proven_safe - paper_s), fig("span_max_pixels", span_max_pixels),
+                 fig("certificates_failed", static_cast<std::int64_t>(failed.count)),
+                 fig("normals", static_cast<std::int64_t>(normals.size()))};
+  out.witnesses = std::move(witnesses);
+  out.note = "Gouraud-interpolated lights never wrap for s <= " + std::to_string(proven_safe) +
+             " (argument); a pixel wraps at s = " + std::to_string(first_wrap) + " (certificate); s = " +
+             std::to_string(proven_safe + 1) + ".." + std::to_string(first_wrap - 1) +
+             " is undecided. The truncated Gouraud steps let a pixel's light stick out of the vertex sphere, so the "
+             "safe s is below the vertex one; the paper's 122 is still safe";
   return out;
 }
 
