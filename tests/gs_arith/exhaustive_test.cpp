@@ -76,16 +76,21 @@ TEST(GsArithExhaustive, AlphaBlendAllModes) {
       for (int C = 0; C < 3; ++C)
         for (int D = 0; D < 3; ++D) {
           for (int cval = 0; cval < 256; cval += big_stride) {
+            // The selected C source holds cval; the other two hold values the mode must ignore.
             const int as = C == 0 ? cval : 0x5A, ad = C == 1 ? cval : 0xA5, fix = C == 2 ? cval : 0x3C;
             const gs::alpha_reg reg{static_cast<gs::blend_colour>(A), static_cast<gs::blend_colour>(B),
                                     static_cast<gs::blend_alpha>(C), static_cast<gs::blend_colour>(D), u8v(fix)};
             int bad = 0;
             for (int s = 0; s < 256; ++s)
               for (int d = 0; d < 256; ++d) {
-                const std::uint32_t cs = gs_ref::word(s, d, s, as), cd = gs_ref::word(d, s, 255 - d, ad);
-                const auto got = gs::alpha_blend(reg, rgba8::from_u32(cs), rgba8::from_u32(cd), o);
-                const auto want = gs_ref::alpha_blend(A, B, C, D, fix, cs, cd, true);
-                bad += got.r.value() != want[0] || got.g.value() != want[1] || got.b.value() != want[2];
+                const rgba8 cs{u8v(s), u8v(d), u8v(s), u8v(as)}, cd{u8v(d), u8v(s), u8v(255 - d), u8v(ad)};
+                const auto got = gs::alpha_blend(reg, cs, cd, o);
+                // Reference per channel: the selected operands by table, then gs_ref::blend_channel.
+                auto want = [&](int cs_ch, int cd_ch) {
+                  const int colours[3] = {cs_ch, cd_ch, 0};
+                  return gs_ref::blend_channel(colours[A], colours[B], cval, colours[D], true);
+                };
+                bad += got.r.value() != want(s, d) || got.g.value() != want(d, s) || got.b.value() != want(s, 255 - d);
               }
             if (bad != 0) FAIL() << "mode " << A << B << C << D << " C " << cval << ": " << bad << " (Cs, Cd) wrong";
             n += 65536;
