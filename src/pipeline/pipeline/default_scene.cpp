@@ -64,8 +64,19 @@ mesh head_mesh(int rings, int segments) {
     for (int col = 0; col < segments; ++col) {
       const std::uint32_t a = id(row, col), b = id(row, col + 1), c = id(row + 1, col), d = id(row + 1, col + 1);
       // Counter-clockwise seen from outside (u grows to the viewer's right on the face, v down).
-      if (row != 0) m.triangles.push_back({a, c, b});
-      if (row != rings - 1) m.triangles.push_back({b, c, d});
+      // The quad diagonals mirror about the face's centre line, so the mesh is mirror-symmetric
+      // in x; the top pole triangle uses the pole vertex over its own quad.
+      if (row == 0) {
+        m.triangles.push_back({a, c, d});
+      } else if (row == rings - 1) {
+        m.triangles.push_back({a, c, b});
+      } else if (2 * col < segments) {
+        m.triangles.push_back({a, c, b});
+        m.triangles.push_back({b, c, d});
+      } else {
+        m.triangles.push_back({a, c, d});
+        m.triangles.push_back({a, d, b});
+      }
     }
   compute_tangents(m);
   return m;
