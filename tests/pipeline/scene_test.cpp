@@ -10,6 +10,7 @@
 #include "pipeline/encoders.hpp"
 #include "pipeline/reference.hpp"
 #include "pipeline/render.hpp"
+#include "proofs/methods.hpp"
 
 namespace gsdot3::pipeline {
 namespace {
@@ -55,14 +56,25 @@ pixel_inputs inputs_at(const prepared_triangle& t, const std::array<gs::rgba8, 3
 // MODULATE of one channel with an 8.7 colour, clamped (facts digest: (Ct·Cf_8.7) >> 14, min 255).
 int modulate(int texel, int cf87) { return std::min(255, (texel * cf87) >> 14); }
 
-int expected_dot(method m, const scene& s, const prepared_scene& ps, int tri, int x, int y) {
+// The DPB byte by plain integers (`formula`) and through src/proofs' per-pixel composition of the
+// paper's passes (`proofs`, proofs/methods.hpp; −1 where proofs has no composition: the baseline).
+struct expectation {
+  int formula = 0, proofs = -1;
+};
+
+expectation expected_dot(method m, const scene& s, const prepared_scene& ps, int tri, int x, int y) {
   const prepared_triangle& t = ps.triangles[static_cast<std::size_t>(tri)];
   const auto& lv = ps.lights[0];
   std::array<gs::rgba8, 3> colour{};
   const pixel_inputs nm_in = inputs_at(t, colour, t.uv16, x, y);
   const int size = s.normals.width;
   const glm::vec3 n = s.normals.palette[s.normals.index[static_cast<std::size_t>(((nm_in.v16 >> 4) & (size - 1)) * size + ((nm_in.u16 >> 4) & (size - 1)))]];
-  int sum = 0;
+  int sum = 0, via_proofs = -1;
+  const gs::model_options o{};
+  auto frag = [](const pixel_inputs& in) {
+    auto c = [](std::int32_t v) { return gs::gouraud_channel::from_wrapped(v); };
+    return gs::fragment_colour{c(in.colour87[0]), c(in.colour87[1]), c(in.colour87[2]), c(in.colour87[3])};
+  };
   switch (m) {
     case method::four_pass: {
       std::array<std::array<std::int32_t, 2>, 3> uv{};
@@ -76,11 +88,15 @@ int expected_dot(method m, const scene& s, const prepared_scene& ps, int tri, in
       const pixel_inputs in = inputs_at(t, colour, uv, x, y);
       const int su = std::clamp(in.u16 >> 4, 0, 63), sv = std::clamp(in.v16 >> 4, 0, 63);
       const std::uint32_t sph = sphere_map(64, 64)[static_cast<std::size_t>(sv * 64 + su)];
+      std::uint32_t dpb = 0;
       for (int k = 0; k < 3; ++k) {
         const int a2 = std::min(255, ((ch(sph, k) * in.colour87[static_cast<std::size_t>(k)]) >> 14) + (in.colour87[3] >> 7));  // HIGHLIGHT
         const int b2 = 128 + nearest(n[k] * 127);
         sum += (((128 - a2) * b2) >> 7) + a2;
+        dpb |= static_cast<std::uint32_t>(a2) << (8 * k);
       }
+      for (int k = 0; k < 3; ++k) dpb = proofs::methods::four_pass_channel(dpb, k, gs::u8::from_wrapped(128 + nearest(n[k] * 127)), o);
+      via_proofs = proofs::methods::sum_rgb(gs::rgba8::from_u32(dpb), o).value();
       break;
     }
     case method::two_pass: {
@@ -94,6 +110,8 @@ int expected_dot(method m, const scene& s, const prepared_scene& ps, int tri, in
         const int L = in.colour87[static_cast<std::size_t>(k)];
         sum += ((modulate(P[k], L) - modulate(N[k], L)) & 0xFF) + na;
       }
+      const gs::rgba8 dpb = proofs::methods::two_pass_pass1(p.positive, frag(in), o);
+      via_proofs = proofs::methods::sum_rgb_plus_3a(proofs::methods::two_pass_pass2(p.negative, frag(in), dpb, o), o).value();
       break;
     }
     case method::baseline: {
@@ -113,7 +131,7 @@ int expected_dot(method m, const scene& s, const prepared_scene& ps, int tri, in
       break;
     }
   }
-  return sum & 0xFF;
+  return {sum & 0xFF, via_proofs};
 }
 
 class EveryMethod : public ::testing::TestWithParam<method> {};
@@ -131,9 +149,13 @@ TEST_P(EveryMethod, RandomPixelsMatchThePerPixelFormula) {
   covered.resize(2000);
   for (std::size_t i : covered) {
     const int x = static_cast<int>(i) % s.width, y = static_cast<int>(i) / s.width;
-    const int expect = expected_dot(GetParam(), s, ps, f.visible_triangle[i], x, y);
-    ASSERT_EQ(f.dot[0][i], expect) << name(GetParam()) << " pixel " << x << "," << y << " got 0x" << std::hex
-                                   << int{f.dot[0][i]} << " expected 0x" << expect;
+    const expectation e = expected_dot(GetParam(), s, ps, f.visible_triangle[i], x, y);
+    ASSERT_EQ(f.dot[0][i], e.formula) << name(GetParam()) << " pixel " << x << "," << y << " got 0x" << std::hex
+                                      << int{f.dot[0][i]} << " expected 0x" << e.formula;
+    if (e.proofs >= 0) {
+      ASSERT_EQ(f.dot[0][i], e.proofs) << name(GetParam()) << " pixel " << x << "," << y << " got 0x" << std::hex
+                                       << int{f.dot[0][i]} << " proofs::methods gives 0x" << e.proofs;
+    }
   }
 }
 

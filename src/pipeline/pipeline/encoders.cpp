@@ -1,8 +1,10 @@
-// pipeline/encoders.cpp — see encoders.hpp. Float code, written as the paper's listings are.
+// pipeline/encoders.cpp — see encoders.hpp. Appendix 1 and 2 are src/proofs' transcriptions
+// (proofs::paper); the palettes built from them are here.
 #include "pipeline/encoders.hpp"
 
+#include "proofs/paper_code.hpp"
+
 #include <algorithm>
-#include <cassert>
 #include <cmath>
 
 namespace gsdot3::pipeline {
@@ -12,56 +14,20 @@ gs::u8 byte(int v) { return gs::u8::from_wrapped(v); }
 gs::rgba8 rgba(int r, int g, int b, int a) { return {byte(r), byte(g), byte(b), byte(a)}; }
 }  // namespace
 
-int nearest(float x) { return x < 0 ? -nearest(-x) : static_cast<int>(x + 0.5f); }
+int nearest(float x) { return proofs::paper::nearest(x); }
 
 two_pass_texel pack_two_pass(glm::vec3 n) {
-  const float scale = 127.9f;
-  int iX = static_cast<int>(n.x * scale);
-  int iY = static_cast<int>(n.y * scale);
-  iX = (iX < -127) ? -127 : ((iX > 128) ? 128 : iX);
-  iY = (iY < -127) ? -127 : ((iY > 128) ? 128 : iY);
-  const int iZ = static_cast<int>(std::sqrt(static_cast<float>(128 * 128 - (iX * iX + iY * iY))));
-  assert(iX * iX + iY * iY + iZ * iZ <= 128 * 128);
-  const int R_pos = std::max(iX, 0), G_pos = std::max(iY, 0), B_pos = std::max(iZ, 0);
-  const int R_neg = std::max(-iX, 0), G_neg = std::max(-iY, 0), B_neg = std::max(-iZ, 0);
-  const int delta = (R_neg - R_pos) + (G_neg - G_pos) + (B_neg - B_pos);
-  int alpha = (3 * 128 + delta + 1) / 3;
-  alpha = std::clamp(alpha, 0, 255);
-  return {rgba(R_pos, G_pos, B_pos, 0x80), rgba(R_neg, G_neg, B_neg, alpha)};
+  const proofs::paper::packed_normal p = proofs::paper::pack_normal(n.x, n.y);
+  return {rgba(p.R_pos, p.G_pos, p.B_pos, 0x80), rgba(p.R_neg, p.G_neg, p.B_neg, p.alpha)};
 }
 
 gs::rgba8 pack_tolight(glm::vec3 t, int s) {
-  auto c = [&](float v) { return 128 + static_cast<signed char>(static_cast<int>(static_cast<float>(s) * v)); };
-  return rgba(c(t.x), c(t.y), c(t.z), 0x80);
+  const auto sf = static_cast<float>(s);
+  return rgba(128 + proofs::paper::pack_light_component(sf, t.x), 128 + proofs::paper::pack_light_component(sf, t.y),
+              128 + proofs::paper::pack_light_component(sf, t.z), 0x80);
 }
 
-std::vector<std::uint32_t> sphere_map(int iWidth, int iHeight) {
-  std::vector<std::uint32_t> mem(static_cast<std::size_t>(iWidth) * iHeight);
-  for (int y = 0; y < iHeight; y++)
-    for (int x = 0; x < iWidth; x++) {
-      const float s = (x + 0.5f) / static_cast<float>(iWidth);
-      const float t = (y + 0.5f) / static_cast<float>(iHeight);
-      const float s2 = 2 * s - 1;
-      const float t2 = 2 * t - 1;
-      const float Lz0 = 1 - (s2 * s2 + t2 * t2) * 2;
-      int r = 128, g = 128, b = 128;  // zero vector
-      if (Lz0 >= -1) {
-        const float m = 2 * std::sqrt(2 * Lz0 + 2);
-        float Lx = static_cast<float>((s - 0.5) * m);
-        float Ly = static_cast<float>((t - 0.5) * m);
-        float Lz = Lz0;
-        const float div = std::sqrt(Lx * Lx + Ly * Ly + Lz * Lz);
-        Lx /= div;
-        Ly /= div;
-        Lz /= div;
-        r = 128 - nearest(Lx * 127);
-        g = 128 - nearest(Ly * 127);
-        b = 128 - nearest(Lz * 127);
-      }
-      mem[static_cast<std::size_t>(y) * iWidth + x] = static_cast<std::uint32_t>((b << 16) | (g << 8) | (r << 0));
-    }
-  return mem;
-}
+std::vector<std::uint32_t> sphere_map(int width, int height) { return proofs::paper::generate_sphere_map(width, height); }
 
 st sphere_coordinates(glm::vec3 t) {
   // m = 2·sqrt(2·Tz + 2); at Tz = −1 the map's rim is reached (m → 0): keep m away from zero.

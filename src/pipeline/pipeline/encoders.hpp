@@ -2,9 +2,8 @@
 // Appendix 1 (sphere map), Appendix 2 (two-pass normal packing), the four-pass reordered palettes
 // (figure 3), Breugelmans' positive/negative palettes (section 2) and the intensity look-up palette
 // (section 3.3). These produce the GS's inputs; the GS arithmetic that consumes them is in gs_arith.
-//
-// NOTE for dedup: src/proofs (issue 4) may carry its own Appendix 1/2 encoders; these are the
-// pipeline's copies until one shared version exists.
+// Appendix 1, Appendix 2 and the (char)(s·T) packing are src/proofs' transcriptions of the paper's
+// code (proofs/paper_code.hpp), used here, not copied.
 #pragma once
 
 #include <array>
@@ -18,12 +17,11 @@
 
 namespace gsdot3::pipeline {
 
-// Appendix 1's nearest(): round half away from zero.
+// Appendix 1's nearest() (proofs::paper::nearest): round half away from zero.
 int nearest(float x);
 
-// Appendix 2: (R_pos, G_pos, B_pos, 0x80) and (R_neg, G_neg, B_neg, n'_a) for a unit tangent-space
-// normal. The listing's final clamp tests `iX > 255` where `alpha > 255` is meant; alpha is in
-// 1..213 for every input, so neither reading clamps (noted, not changed).
+// Appendix 2 (proofs::paper::pack_normal): (R_pos, G_pos, B_pos, 0x80) and (R_neg, G_neg, B_neg, n'_a)
+// for a unit tangent-space normal.
 struct two_pass_texel {
   gs::rgba8 positive, negative;
 };
@@ -32,7 +30,7 @@ two_pass_texel pack_two_pass(glm::vec3 n);
 // The packed tolight vector of section 3.5: 128 + (char)(s·T) per component, alpha 0x80.
 gs::rgba8 pack_tolight(glm::vec3 t, int s);
 
-// Appendix 1: the 64×64 24-bit sphere map as A8B8G8R8 words (alpha 0).
+// Appendix 1 (proofs::paper::generate_sphere_map): the 24-bit sphere map as A8B8G8R8 words (alpha 0).
 std::vector<std::uint32_t> sphere_map(int width, int height);
 
 // Sphere-map texture coordinates (s, t) in 0..1 of a unit vector (section 3.6).
