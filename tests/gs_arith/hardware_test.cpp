@@ -6,10 +6,10 @@
 // vertex 0x80808080. Skips (the only GTEST_SKIP of the suite) when the recordings are absent.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <regex>
 #include <string>
 #include <vector>
 
@@ -26,21 +26,18 @@ struct blend_record {
   unsigned fix;
 };
 
+// Header lines "ABCD: ..." (digits 0..2) and rows "  src: SSSSSSSS, dst: DDDDDDDD, fix: FF => RRRRRRRR".
 std::vector<blend_record> read_blend_records(const std::filesystem::path& file) {
   std::ifstream in(file);
   std::vector<blend_record> out;
-  const std::regex header(R"(^([0-2]{4}): )");
-  const std::regex row(R"(^\s+src: ([0-9a-f]{8}), dst: ([0-9a-f]{8}), fix: ([0-9a-f]{2}) => ([0-9a-f]{8})\s*$)");
   std::string line, mode;
-  std::smatch m;
   while (std::getline(in, line)) {
-    if (std::regex_search(line, m, header)) {
-      mode = m[1];
-    } else if (std::regex_match(line, m, row)) {
-      out.push_back({mode, static_cast<std::uint32_t>(std::stoul(m[1], nullptr, 16)),
-                     static_cast<std::uint32_t>(std::stoul(m[2], nullptr, 16)),
-                     static_cast<std::uint32_t>(std::stoul(m[4], nullptr, 16)),
-                     static_cast<unsigned>(std::stoul(m[3], nullptr, 16))});
+    unsigned src = 0, dst = 0, fix = 0, result = 0;
+    if (line.size() > 5 && line[4] == ':' &&
+        std::all_of(line.begin(), line.begin() + 4, [](char c) { return c >= '0' && c <= '2'; })) {
+      mode = line.substr(0, 4);
+    } else if (std::sscanf(line.c_str(), " src: %8x, dst: %8x, fix: %2x => %8x", &src, &dst, &fix, &result) == 4) {
+      out.push_back({mode, src, dst, result, fix});
     }
   }
   return out;
@@ -135,12 +132,13 @@ TEST(GsArithHardware, SimpleTexture) {
   std::string line;
   std::uint32_t recorded = 0;
   bool found = false;
-  std::smatch m;
-  while (std::getline(in, line))
-    if (std::regex_search(line, m, std::regex(R"(color: ([0-9a-f]{8}))"))) {
-      recorded = static_cast<std::uint32_t>(std::stoul(m[1], nullptr, 16));
+  while (std::getline(in, line)) {
+    unsigned colour = 0;
+    if (std::sscanf(line.c_str(), "color: %8x", &colour) == 1) {
+      recorded = colour;
       found = true;
     }
+  }
   ASSERT_TRUE(found) << "no 'color:' line in " << file;
 
   for (auto tfx_round : {gs::tfx_rounding::floor, gs::tfx_rounding::truncate}) {
