@@ -64,7 +64,7 @@ const std::vector<claim>& catalogue() {
       {"four-pass.sum-wrap", "§3.6, §3.3",
        "R+G+B of the three channel products does not wrap, for sphere-map vectors against normal-map vectors",
        "every 64×64 Appendix 1 texel × every 8-bit normal-map vector (n_z >= 0)", M::exhaustive,
-       {"blend_shift", "tfx_rounding"}, c::four_pass_sum_wrap},
+       {"blend_shift"}, c::four_pass_sum_wrap},  // tfx_rounding: HIGHLIGHT's operands are unsigned, floor = truncation
       {"clamp-wrap.intermediates", "§3.2, §3.5, §3.6",
        "every intermediate of every pass stays in 0..255 or wraps exactly as the method needs; the TFX clamp never bites",
        "each pass's unit over its whole input range", M::exhaustive, {"tfx_rounding", "gouraud_fraction", "blend_shift"},

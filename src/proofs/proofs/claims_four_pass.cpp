@@ -61,8 +61,11 @@ struct sum_acc {
 };
 sum_acc sum_sweep(const std::vector<ivec3>& lights, const std::vector<ivec3>& normals, const four_pass::table& t,
                   const sweep_config& cfg) {
-  // normals are in (x, y, z) order with a contiguous z run per (x, y) cell: the x and y products are
-  // added once per cell and the z products run over contiguous memory. Every pair is evaluated.
+  // Every pair is accounted for. normals are in (x, y, z) order with one contiguous z run per (x, y)
+  // cell. For a fixed sphere vector a the z product is monotone in b_z (the table checks it: floor or
+  // truncation of a_z·b/128), so over a run the sum's extremes are at the run's ends; only a run whose
+  // extreme wraps or improves the running min / max is walked pair by pair (for the count and the
+  // first indices).
   struct cell {
     int x, y, z0;
     std::uint32_t first, count;
@@ -80,9 +83,15 @@ sum_acc sum_sweep(const std::vector<ivec3>& lights, const std::vector<ivec3>& no
   return sweep<sum_acc>(lights.size(), cfg, [&](sum_acc& acc, std::uint64_t lo, std::uint64_t hi) {
     for (auto i = lo; i < hi; ++i) {
       const auto *rx = t.row(lights[i][0]), *ry = t.row(lights[i][1]), *rz = t.row(lights[i][2]);
+      const bool monotone = t.monotone(lights[i][2]);
       for (const auto& c : cells) {
         const int partial = rx[c.x] + ry[c.y];
         const std::int16_t* z = rz + c.z0;
+        if (monotone) {
+          const int e0 = partial + z[0], e1 = partial + z[c.count - 1];
+          const int lo_s = std::min(e0, e1), hi_s = std::max(e0, e1);
+          if (lo_s >= acc.sum.min && hi_s <= acc.sum.max && lo_s >= -128 && hi_s <= 127) continue;
+        }
         for (std::uint32_t k = 0; k < c.count; ++k) {
           const int s = partial + z[k];
           if (s < acc.sum.min || s > acc.sum.max) acc.sum.add(s, i * nn + c.first + k);

@@ -32,39 +32,6 @@ std::string describe_pair(const paper::packed_normal& p, const ivec3& l, const g
          hexdec(r.dot) + ", floor(n·l/128) = " + std::to_string(two_pass::exact_dot(p, l));
 }
 
-// The first pair (in normal-major order) whose error equals `target`, among normals that pass
-// `eligible`; early exit once found (chunks after a found index stop), so the result is the same
-// for any thread count. Returns the pair index or UINT64_MAX.
-struct first_hit {
-  std::uint64_t index = UINT64_MAX;
-  std::uint64_t evaluated = 0;
-  void merge(const first_hit& l) {
-    index = std::min(index, l.index);
-    evaluated += l.evaluated;
-  }
-};
-template <class Eligible>
-first_hit find_error(const std::vector<paper::packed_normal>& normals, const two_pass::light_grid& g,
-                     const two_pass::table& t, int target, Eligible eligible, const sweep_config& cfg) {
-  const std::uint64_t nl = g.lights.size();
-  std::atomic<std::uint64_t> best{UINT64_MAX};
-  return sweep<first_hit>(normals.size(), cfg, [&](first_hit& acc, std::uint64_t b, std::uint64_t end) {
-    for (auto i = b; i < end && i * nl < best.load(); ++i) {
-      const auto& p = normals[i];
-      if (!eligible(p, t)) continue;
-      for (std::uint64_t j = 0; j < nl; ++j) {
-        ++acc.evaluated;
-        const auto& l = g.lights[j];
-        if (t.value(p, l) - two_pass::exact_dot(p, l) == target) {
-          acc.index = std::min(acc.index, i * nl + j);
-          std::uint64_t cur = best.load();
-          while (i * nl + j < cur && !best.compare_exchange_weak(cur, i * nl + j)) {}
-          return;
-        }
-      }
-    }
-  });
-}
 }  // namespace
 
 outcome two_pass_error_bound(const gs::model_options& o, const sweep_config& cfg) {
@@ -81,30 +48,8 @@ outcome two_pass_error_bound(const gs::model_options& o, const sweep_config& cfg
   const two_pass::light_grid g(paper_s);
   const two_pass::table t(o);
   const std::uint64_t size = normals.size() * g.lights.size();
-  auto hi = find_error(normals, g, t, 3,
-                       [](const paper::packed_normal& p, const two_pass::table& tt) {
-                         return tt.alpha_error(p) == 1 && p.iX < 0 && p.iY < 0;
-                       }, cfg);
-  auto lo = find_error(normals, g, t, -3,
-                       [](const paper::packed_normal& p, const two_pass::table& tt) {
-                         return tt.alpha_error(p) == -1 && p.iX >= 0 && p.iY >= 0;
-                       }, cfg);
-  extremes err;
-  if (hi.index == UINT64_MAX || lo.index == UINT64_MAX) {
-    struct acc {
-      extremes e;
-      void merge(const acc& l) { e.merge(l.e); }
-    };
-    const std::uint64_t nl = g.lights.size();
-    err = sweep<acc>(normals.size(), cfg, [&](acc& a, std::uint64_t b, std::uint64_t end) {
-            for (auto i = b; i < end; ++i)
-              for (std::uint64_t j = 0; j < nl; ++j)
-                a.e.add(t.value(normals[i], g.lights[j]) - two_pass::exact_dot(normals[i], g.lights[j]), i * nl + j);
-          }).e;
-  } else {
-    err.add(3, hi.index);
-    err.add(-3, lo.index);
-  }
+  const auto r = two_pass::error_extremes(normals, g, t, cfg);
+  const auto& err = r.err;
   const std::uint64_t nl = g.lights.size();
   outcome out;
   out.result = verdict::bound;
@@ -112,7 +57,7 @@ outcome two_pass_error_bound(const gs::model_options& o, const sweep_config& cfg
   out.figures = {fig("s", paper_s), fig("lights", static_cast<std::int64_t>(nl)),
                  fig("normals", static_cast<std::int64_t>(normals.size())), fig("err_min", err.min),
                  fig("err_max", err.max),
-                 fig("pairs_evaluated", static_cast<std::int64_t>(hi.evaluated + lo.evaluated))};
+                 fig("pairs_evaluated", static_cast<std::int64_t>(r.evaluated))};
   out.witnesses = {"err_min: " + describe_pair(normals[err.arg_min / nl], g.lights[err.arg_min % nl], o),
                    "err_max: " + describe_pair(normals[err.arg_max / nl], g.lights[err.arg_max % nl], o)};
   out.note = "per-pixel result − floor(n·l/128) over normals × packed lights (s = 122): the floors of the "

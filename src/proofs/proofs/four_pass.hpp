@@ -17,12 +17,15 @@ class table {
   explicit table(const gs::model_options& o);
   int product(int a, int b) const noexcept { return product_[static_cast<std::size_t>((a + 127) * 256 + (b + 128))]; }
   const std::int16_t* row(int a) const noexcept { return &product_[static_cast<std::size_t>((a + 127) * 256 + 128)]; }
+  // Whether product(a, ·) is monotone in b (checked when the table is built).
+  bool monotone(int a) const noexcept { return monotone_[static_cast<std::size_t>(a + 127)]; }
   int dot(const ivec3& a, const ivec3& b) const noexcept {
     return product(a[0], b[0]) + product(a[1], b[1]) + product(a[2], b[2]);
   }
 
  private:
   std::vector<std::int16_t> product_;
+  std::vector<bool> monotone_;
 };
 
 }  // namespace gsdot3::proofs::four_pass

@@ -1,6 +1,7 @@
 #include "proofs/two_pass.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 
 #include "proofs/methods.hpp"
@@ -114,6 +115,68 @@ wrap_hits wrap_search_brute(const std::vector<paper::packed_normal>& normals, co
         if (v >= hi || v <= lo) acc.hits.add(i * nl + j);
       }
   });
+}
+
+namespace {
+struct first_hit {
+  std::uint64_t index = UINT64_MAX;
+  std::uint64_t evaluated = 0;
+  void merge(const first_hit& l) {
+    index = std::min(index, l.index);
+    evaluated += l.evaluated;
+  }
+};
+// The first pair whose error equals `target`, among normals that pass `eligible`. A chunk stops at a
+// normal past the best index found so far, so the minimum found is the minimum overall.
+template <class Eligible>
+first_hit find_error(const std::vector<paper::packed_normal>& normals, const light_grid& g, const table& t, int target,
+                     Eligible eligible, const sweep_config& cfg) {
+  const std::uint64_t nl = g.lights.size();
+  std::atomic<std::uint64_t> best{UINT64_MAX};
+  return sweep<first_hit>(normals.size(), cfg, [&](first_hit& acc, std::uint64_t b, std::uint64_t end) {
+    for (auto i = b; i < end && i * nl < best.load(); ++i) {
+      const auto& p = normals[i];
+      if (!eligible(p)) continue;
+      for (std::uint64_t j = 0; j < nl; ++j) {
+        ++acc.evaluated;
+        if (t.value(p, g.lights[j]) - exact_dot(p, g.lights[j]) == target) {
+          acc.index = std::min(acc.index, i * nl + j);
+          std::uint64_t cur = best.load();
+          while (i * nl + j < cur && !best.compare_exchange_weak(cur, i * nl + j)) {}
+          return;
+        }
+      }
+    }
+  });
+}
+}  // namespace
+
+error_result error_extremes(const std::vector<paper::packed_normal>& normals, const light_grid& g, const table& t,
+                            const sweep_config& cfg) {
+  const auto hi = find_error(normals, g, t, 3,
+                             [&](const paper::packed_normal& p) { return t.alpha_error(p) == 1 && p.iX < 0 && p.iY < 0; }, cfg);
+  const auto lo = find_error(normals, g, t, -3,
+                             [&](const paper::packed_normal& p) { return t.alpha_error(p) == -1 && p.iX >= 0 && p.iY >= 0; }, cfg);
+  error_result r;
+  r.evaluated = hi.evaluated + lo.evaluated;
+  if (hi.index != UINT64_MAX && lo.index != UINT64_MAX) {
+    r.err.add(3, hi.index);
+    r.err.add(-3, lo.index);
+    return r;
+  }
+  struct acc {
+    extremes e;
+    void merge(const acc& l) { e.merge(l.e); }
+  };
+  const std::uint64_t nl = g.lights.size();
+  r.full_scan = true;
+  r.evaluated += normals.size() * nl;
+  r.err = sweep<acc>(normals.size(), cfg, [&](acc& a, std::uint64_t b, std::uint64_t end) {
+            for (auto i = b; i < end; ++i)
+              for (std::uint64_t j = 0; j < nl; ++j)
+                a.e.add(t.value(normals[i], g.lights[j]) - exact_dot(normals[i], g.lights[j]), i * nl + j);
+          }).e;
+  return r;
 }
 
 }  // namespace gsdot3::proofs::two_pass

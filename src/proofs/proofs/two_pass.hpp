@@ -43,6 +43,8 @@ class table {
   explicit table(const gs::model_options& o);
   int channel(int n, int l) const noexcept { return channel_[static_cast<std::size_t>((n + 127) * 256 + (l + 128))]; }
   int alpha(int a) const noexcept { return alpha_[static_cast<std::size_t>(a)]; }
+  // channel(n, ·) as an array indexed by l in [−128, 127].
+  const std::int16_t* row(int n) const noexcept { return &channel_[static_cast<std::size_t>((n + 127) * 256 + 128)]; }
   int value(const paper::packed_normal& p, const ivec3& l) const noexcept {
     return channel(p.iX, l[0]) + channel(p.iY, l[1]) + channel(p.iZ, l[2]) + 3 * alpha(p.alpha) - 384;
   }
@@ -86,6 +88,20 @@ wrap_hits wrap_search(const std::vector<paper::packed_normal>& normals, const li
                       int hi, int lo, const sweep_config& cfg);
 wrap_hits wrap_search_brute(const std::vector<paper::packed_normal>& normals, const light_grid& grid,
                             const table& t, int hi, int lo, const sweep_config& cfg);
+
+// The extremes of value − exact_dot over normals × grid lights. Reduction (argument in
+// claims_two_pass.cpp, two_pass_error_bound): without wraps the error is e − floor(Σ r_c) ∈ [−3, 3]
+// (n_z > 0), +3 only for e = +1 with n_x, n_y < 0 and −3 only for e = −1 with n_x, n_y >= 0. So those
+// normals are scanned against every light, stopping at the first pair (in normal-major order) that
+// reaches ±3; if either end is not reached, the whole domain is scanned. Either way the result is
+// the exact extremes (for wrap-free instances) and does not depend on the thread count.
+struct error_result {
+  extremes err;                 // indices i·|lights| + j
+  std::uint64_t evaluated = 0;  // pairs evaluated
+  bool full_scan = false;
+};
+error_result error_extremes(const std::vector<paper::packed_normal>& normals, const light_grid& grid, const table& t,
+                            const sweep_config& cfg);
 
 // floor(n·l / 128): the exact integer dot product of the packed normal and light.
 constexpr int exact_dot(const paper::packed_normal& p, const ivec3& l) noexcept {

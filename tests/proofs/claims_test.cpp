@@ -1,0 +1,394 @@
+// Every claim of the catalogue, run under the default options (and the variants it depends on), with
+// its verdict and figures checked against independent references: closed forms derived in the
+// comments, or brute force in plain int arithmetic (reference.hpp) — never the model, never pasted
+// output.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <string>
+
+#include "proofs/claim.hpp"
+#include "proofs/paper_code.hpp"
+#include "proofs/runner.hpp"
+#include "reference.hpp"
+
+namespace p = gsdot3::proofs;
+
+namespace {
+const p::claim_result& result(std::string_view id) {
+  static std::map<std::string, p::claim_result, std::less<>> cache;
+  auto it = cache.find(id);
+  if (it == cache.end()) {
+    const auto* c = p::find_claim(id);
+    if (c == nullptr) throw std::runtime_error("no claim " + std::string(id));
+    it = cache.emplace(std::string(id), p::run_claim(*c, {}, p::run_config{})).first;
+  }
+  return it->second;
+}
+const p::outcome& base(std::string_view id) { return result(id).result; }
+const p::outcome& variant(std::string_view id, std::string_view option, std::string_view value) {
+  for (const auto& v : result(id).variants)
+    if (v.option == option && v.value == value) return v.result;
+  throw std::runtime_error("no variant");
+}
+std::int64_t fig(const p::outcome& o, std::string_view name) { return o.integer(name); }
+
+// #{a ∈ [−127, −1], b ∈ [lo_b, 127] : a·b not a multiple of 128}.
+std::uint64_t negative_a_inexact(int lo_b) {
+  std::uint64_t n = 0;
+  for (int a = -127; a <= -1; ++a)
+    for (int b = lo_b; b <= 127; ++b)
+      if ((a * b) % 128 != 0) ++n;
+  return n;
+}
+}  // namespace
+
+TEST(Claims, EveryCatalogueRowRunsAndIsTested) {
+  // The ids of the issue, exactly; a new row must get its assertions here.
+  const std::vector<std::string_view> ids = {
+      "eq1-eq2.ranges", "eq3.identity", "eq4.signed-multiply", "eq5-eq7.split-multiply",
+      "eq10.split-offset-multiply", "eq8.offset-multiply", "eq9.rgb-sum", "ilp.palette-permutation",
+      "ilp.dpb-clear-zero", "appendix2.packing", "two-pass.na-rounding", "appendix1.sphere-map",
+      "two-pass.error-bound", "two-pass.max-s.vertex", "two-pass.max-s.interpolated", "four-pass.channel-exact",
+      "four-pass.sum-wrap", "clamp-wrap.intermediates", "highlight.attenuation", "lod.two-vs-four",
+      "specular.attenuation-compensation"};
+  EXPECT_EQ(p::catalogue().size(), ids.size());
+  for (auto id : ids) EXPECT_NE(p::find_claim(id), nullptr) << id;
+}
+
+TEST(Claims, Eq1Eq2Ranges) {
+  const auto& o = base("eq1-eq2.ranges");
+  EXPECT_EQ(o.result, p::verdict::proven);
+  EXPECT_EQ(o.domain_size, 65536u);
+  // a2 = 128 − a over a ∈ [−127, 128] is [0, 255]; b2 likewise. The product extremes: a = 128,
+  // b = −128 gives −128; a = −127, b = −128 gives 16256/128 = 127.
+  EXPECT_EQ(fig(o, "a2_min"), 0);
+  EXPECT_EQ(fig(o, "a2_max"), 255);
+  EXPECT_EQ(fig(o, "b2_min"), 0);
+  EXPECT_EQ(fig(o, "b2_max"), 255);
+  EXPECT_EQ(fig(o, "product_min"), ref::floor128(128 * -128));
+  EXPECT_EQ(fig(o, "product_max"), ref::floor128(-127 * -128));
+}
+
+TEST(Claims, Eq3IdentityIsExact) { EXPECT_EQ(base("eq3.identity").result, p::verdict::proven); }
+
+TEST(Claims, Eq4AndEq8ProvenUnderFloorRefutedUnderTruncation) {
+  // (128 − a2)·b2 = a·(b + 128) = a·b + 128·a, so floor(.../128) + a2 − 128 = floor(a·b/128): exact.
+  // Truncation differs from floor exactly when a·(b + 128) < 0 (a < 0, b > −128) is not a multiple
+  // of 128, i.e. when a·b is not.
+  for (auto id : {"eq4.signed-multiply", "eq8.offset-multiply"}) {
+    EXPECT_EQ(base(id).result, p::verdict::proven) << id;
+    const auto& t = variant(id, "blend_shift", "truncate");
+    EXPECT_EQ(t.result, p::verdict::refuted) << id;
+    EXPECT_EQ(t.counterexamples, negative_a_inexact(-127)) << id;
+  }
+  const auto& o = base("eq8.offset-multiply");
+  EXPECT_EQ(fig(o, "out_min"), 0);  // a·b + 128 with a·b ∈ [−128, 127]
+  EXPECT_EQ(fig(o, "out_max"), 255);
+  EXPECT_EQ(fig(o, "needs_clamp_or_wrap"), 0);
+}
+
+TEST(Claims, Eq5Eq7AndEq10AreOffByOneForNegativeA) {
+  // a >= 0: floor(a·b2/128) + c2 − 128 = floor(a·b/128) + a − a: exact. a < 0, m = −a:
+  // −floor(m·b2/128) + m = −floor(m·b/128) = ceil(a·b/128): one more than floor unless 128 | a·b.
+  // Count = 127·256 − Σ_{m=1}^{127} #{b : 128 | m·b} = 127·256 − Σ 2^(v2(m)+1).
+  std::uint64_t divisible = 0;
+  for (int m = 1; m <= 127; ++m) {
+    int v = 0;
+    while ((m >> v) % 2 == 0) ++v;
+    divisible += std::uint64_t{2} << v;
+  }
+  const std::uint64_t expected = 127 * 256 - divisible;
+  EXPECT_EQ(expected, negative_a_inexact(-128));
+  for (auto id : {"eq5-eq7.split-multiply", "eq10.split-offset-multiply"}) {
+    const auto& o = base(id);
+    EXPECT_EQ(o.result, p::verdict::refuted) << id;
+    EXPECT_EQ(o.counterexamples, expected) << id;
+    EXPECT_EQ(fig(o, "err_min"), 0) << id;
+    EXPECT_EQ(fig(o, "err_max"), 1) << id;
+    for (const auto& v : result(id).variants) EXPECT_FALSE(v.changed) << id << " " << v.option;
+  }
+}
+
+TEST(Claims, Eq9RgbSumExactIffInRange) {
+  const auto& o = base("eq9.rgb-sum");
+  EXPECT_EQ(o.result, p::verdict::proven);
+  EXPECT_EQ(fig(o, "sum_min"), -384);
+  EXPECT_EQ(fig(o, "sum_max"), 255 * 3 - 384);
+  // Triples with r + g + b outside [256, 511]: count sums by convolution.
+  std::vector<std::uint64_t> two(511, 0), three(766, 0);
+  for (int r = 0; r < 256; ++r)
+    for (int g = 0; g < 256; ++g) ++two[static_cast<std::size_t>(r + g)];
+  for (int t = 0; t < 511; ++t)
+    for (int b = 0; b < 256; ++b) three[static_cast<std::size_t>(t + b)] += two[static_cast<std::size_t>(t)];
+  std::uint64_t outside = 0;
+  for (int t = 0; t < 766; ++t)
+    if (t < 256 || t > 511) outside += three[static_cast<std::size_t>(t)];
+  EXPECT_EQ(fig(o, "wrapping_pixels"), static_cast<std::int64_t>(outside));
+}
+
+TEST(Claims, IlpRotationAndTheClearValue) {
+  EXPECT_EQ(base("ilp.palette-permutation").result, p::verdict::proven);
+  // Clear 0x00808080: r+g+b = 384 ≡ 128, the offset-keeping index of dot 0; entry 0 of the paper's
+  // ILP is 1. Two-pass adds 3·a = 0. So intensity 1, three times; 0x0080807F gives dot −1 -> 0.
+  const auto& o = base("ilp.dpb-clear-zero");
+  EXPECT_EQ(o.result, p::verdict::refuted);
+  EXPECT_EQ(o.counterexamples, 3u);
+  EXPECT_EQ(fig(o, "intensity_four_pass"), 1);
+  EXPECT_EQ(fig(o, "intensity_four_pass_minus_128"), 1);
+  EXPECT_EQ(fig(o, "intensity_two_pass"), 1);
+  EXPECT_EQ(fig(o, "intensity_clear_0x0080807F"), 0);
+}
+
+TEST(Claims, Appendix2PackingAndNaRounding) {
+  std::int64_t count = 0;
+  for (int x = -127; x <= 127; ++x)
+    if (x * x <= 16358) count += 2 * ref::isqrt(16358 - x * x) + 1;
+  int amin = 1000, amax = -1000, zmin = 1000, zmax = -1, namin = 1000, namax = -1000, over = 0;
+  for (const auto& n : ref::appendix2_normals()) {
+    const int na = 384 - (n.x + n.y + n.z);
+    amin = std::min(amin, n.alpha), amax = std::max(amax, n.alpha);
+    zmin = std::min(zmin, n.z), zmax = std::max(zmax, n.z);
+    namin = std::min(namin, na), namax = std::max(namax, na);
+    over += na > 255;
+  }
+  const auto& o = base("appendix2.packing");
+  EXPECT_EQ(o.result, p::verdict::proven);
+  EXPECT_EQ(fig(o, "normals"), count);
+  EXPECT_EQ(fig(o, "alpha_min"), amin);
+  EXPECT_EQ(fig(o, "alpha_max"), amax);
+  EXPECT_EQ(fig(o, "iz_min"), zmin);
+  EXPECT_EQ(fig(o, "iz_max"), 128);
+  EXPECT_EQ(zmax, 128);
+  EXPECT_EQ(fig(o, "b_neg_nonzero"), 0);
+  EXPECT_EQ(fig(o, "alpha_clamp_changes"), 0);
+  EXPECT_EQ(fig(o, "iX_gt_255_branch"), 0);
+  const auto& r = base("two-pass.na-rounding");
+  EXPECT_EQ(r.result, p::verdict::bound);
+  EXPECT_EQ(fig(r, "na_min"), namin);
+  EXPECT_EQ(fig(r, "na_max"), namax);
+  EXPECT_GT(namax, 255);  // the paper: "n_a is potentially larger than 255"
+  EXPECT_EQ(fig(r, "na_over_255"), over);
+  EXPECT_EQ(fig(r, "na_prime_min"), (namin + 1) / 3);
+  EXPECT_EQ(fig(r, "na_prime_max"), (namax + 1) / 3);
+  // 3·((n + 1) div 3) − n is −1, 0, +1 for n ≡ 1, 0, 2 (mod 3); all residues occur.
+  EXPECT_EQ(fig(r, "error_min"), -1);
+  EXPECT_EQ(fig(r, "error_max"), 1);
+}
+
+TEST(Claims, Appendix1SphereMap) {
+  const auto& o = base("appendix1.sphere-map");
+  EXPECT_EQ(o.result, p::verdict::proven);
+  EXPECT_EQ(o.domain_size, 16u * 16 + 32 * 32 + 64 * 64 + 128 * 128 + 256 * 256);
+  for (int w : {16, 32, 64, 128, 256}) {
+    // Inside the disc: ρ² = s2² + t2² <= 1 with s2 = (2x + 1 − w)/w: integers only.
+    std::int64_t inside = 0;
+    for (int y = 0; y < w; ++y)
+      for (int x = 0; x < w; ++x) inside += (2 * x + 1 - w) * (2 * x + 1 - w) + (2 * y + 1 - w) * (2 * y + 1 - w) <= w * w;
+    EXPECT_EQ(fig(o, "inside_" + std::to_string(w)), inside) << w;
+  }
+  // Each component is rounded by at most 1/2 (plus float noise), so the error vector is at most
+  // √3/2 long against a vector of length >= 127 − √3/2: angle <= asin(0.8661/126.13) = 0.3935°.
+  EXPECT_GT(o.real("worst_angle_deg"), 0.0);
+  EXPECT_LE(o.real("worst_angle_deg"), 0.3935);
+}
+
+TEST(Claims, TwoPassErrorBound) {
+  // error = e − floor(Σ r_c) with e ∈ {−1, 0, 1}, Σ r_c ∈ (−2, 3): |error| <= 3, and the claim must
+  // report witnesses reaching both ends (re-checked in plain ints in reduction_test).
+  const auto& o = base("two-pass.error-bound");
+  EXPECT_EQ(o.result, p::verdict::bound);
+  EXPECT_EQ(fig(o, "err_min"), -3);
+  EXPECT_EQ(fig(o, "err_max"), 3);
+  EXPECT_EQ(fig(o, "normals"), static_cast<std::int64_t>(ref::appendix2_normals().size()));
+}
+
+TEST(Claims, TwoPassMaxSVertex) {
+  const auto& o = base("two-pass.max-s.vertex");
+  EXPECT_EQ(o.result, p::verdict::bound);
+  EXPECT_EQ(fig(o, "s_max"), 125);  // bound −s−3 <= value <= s+2 rules out s <= 125; witness at 126
+  EXPECT_EQ(fig(o, "margin"), 3);
+  EXPECT_GT(fig(o, "wrapping_pairs_at_s_max_plus_1"), 0);
+  // The reported first witness, re-derived in plain ints: n = (−127, −15, 5), l = (−125, −15, 0):
+  // channels −floor(127·3/128) = −2, −floor(15·113/128) = −13, floor(5·128/128) = 5, alpha 174:
+  // −2 − 13 + 5 + 522 − 384 = 128 > 127.
+  const auto n = ref::appendix2(-127, -15);
+  EXPECT_EQ(n.z, 5);
+  EXPECT_EQ(n.alpha, 174);
+  EXPECT_EQ(ref::two_pass_value(n, -125, -15, 0), 128);
+  ASSERT_FALSE(o.witnesses.empty());
+  EXPECT_NE(o.witnesses[0].find("n = (-127, -15, 5)"), std::string::npos) << o.witnesses[0];
+}
+
+TEST(Claims, TwoPassMaxSInterpolated) {
+  const auto& o = base("two-pass.max-s.interpolated");
+  EXPECT_EQ(o.result, p::verdict::bound);
+  EXPECT_EQ(fig(o, "s_max"), 123);
+  EXPECT_EQ(fig(o, "first_wrapping_s"), 125);
+  EXPECT_EQ(fig(o, "certificates_failed"), 0);
+  // The certificate in plain ints: span of 65 pixels from colour 128 + (−121, −24, 20) to
+  // 128 + (−120, −26, 23), pixel 35; 8.7 channel = 128·c0 + 35·trunc(128·Δ/65); then
+  // pass 1 − pass 2 = ±floor(|n|·L87 / 2^14).
+  const int c0[3] = {7, 104, 148}, c1[3] = {8, 102, 151}, nn[3] = {-123, -26, 24};
+  const auto n = ref::appendix2(-123, -26);
+  int value = 3 * n.alpha - 384;
+  for (int c = 0; c < 3; ++c) {
+    const int L = 128 * c0[c] + 35 * ((128 * (c1[c] - c0[c])) / 65);
+    value += nn[c] >= 0 ? (nn[c] * L) / 16384 : -((-nn[c] * L) / 16384);
+  }
+  EXPECT_EQ(n.z, 24);
+  EXPECT_GE(value, 128);
+  // Both vertex lights are (char)(125·T) of unit vectors: Σ k² <= 125² < Σ (|k| + 1)².
+  EXPECT_LE(121 * 121 + 24 * 24 + 20 * 20, 125 * 125);
+  EXPECT_LE(120 * 120 + 26 * 26 + 23 * 23, 125 * 125);
+}
+
+TEST(Claims, FourPassChannelExact) {
+  EXPECT_EQ(base("four-pass.channel-exact").result, p::verdict::proven);
+  const auto& t = variant("four-pass.channel-exact", "blend_shift", "truncate");
+  EXPECT_EQ(t.counterexamples, 3 * negative_a_inexact(-127));
+}
+
+namespace {
+// Normal-map vectors written as distances: the cell of b meets the sphere of radius 127.
+std::vector<std::array<int, 3>> normal_map_vectors() {
+  std::vector<std::array<int, 3>> out;
+  for (int x = -127; x <= 127; ++x)
+    for (int y = -127; y <= 127; ++y)
+      for (int z = 0; z <= 127; ++z) {
+        double near = 0, far = 0;
+        for (int c : {x, y, z}) {
+          const double d = std::max(0.0, std::abs(c) - 0.5);
+          near += d * d;
+          far += (std::abs(c) + 0.5) * (std::abs(c) + 0.5);
+        }
+        if (near <= 127.0 * 127.0 && far >= 127.0 * 127.0) out.push_back({x, y, z});
+      }
+  return out;
+}
+}  // namespace
+
+TEST(Claims, FourPassSumWrapAgainstPlainIntegers) {
+  const auto normals = normal_map_vectors();
+  std::vector<std::array<int, 3>> plain, faded;
+  for (int y = 0; y < 64; ++y)
+    for (int x = 0; x < 64; ++x) {
+      const auto t = p::paper::sphere_map_texel(x, y, 64, 64);
+      plain.push_back({128 - t.r, 128 - t.g, 128 - t.b});
+      if (!t.inside) {
+        faded.push_back({0, 0, 0});
+        continue;
+      }
+      // HIGHLIGHT with RGB k, A 128 − k: min(255, floor(c·k/128) + 128 − k).
+      const int k = p::paper::nearest(std::clamp(6.0f * t.lz, 0.0f, 1.0f) * 128.0f);
+      auto f = [&](int c) { return 128 - std::min(255, c * k / 128 + 128 - k); };
+      faded.push_back({f(t.r), f(t.g), f(t.b)});
+    }
+  auto scan = [&](const std::vector<std::array<int, 3>>& lights, int& lo, int& hi, std::int64_t& wraps) {
+    int l2[2] = {1000, 1000}, h2[2] = {-1000, -1000};
+    std::int64_t w2[2] = {0, 0};
+    ref::two_halves(lights.size(), [&](std::size_t begin, std::size_t end) {
+      const int h = begin == 0 ? 0 : 1;
+      for (std::size_t i = begin; i < end; ++i)
+        for (const auto& b : normals) {
+          const auto& a = lights[i];
+          const int s = ref::floor128(a[0] * b[0]) + ref::floor128(a[1] * b[1]) + ref::floor128(a[2] * b[2]);
+          l2[h] = std::min(l2[h], s), h2[h] = std::max(h2[h], s);
+          w2[h] += s < -128 || s > 127;
+        }
+    });
+    lo = std::min(l2[0], l2[1]), hi = std::max(h2[0], h2[1]), wraps = w2[0] + w2[1];
+  };
+  int lo, hi, flo, fhi;
+  std::int64_t wraps, fwraps;
+  scan(plain, lo, hi, wraps);
+  scan(faded, flo, fhi, fwraps);
+  const auto& o = base("four-pass.sum-wrap");
+  EXPECT_EQ(fig(o, "normal_map_vectors"), static_cast<std::int64_t>(normals.size()));
+  EXPECT_EQ(o.domain_size, 4096u * normals.size());
+  EXPECT_EQ(fig(o, "sum_min"), lo);
+  EXPECT_EQ(fig(o, "sum_max"), hi);
+  EXPECT_EQ(fig(o, "count"), wraps);
+  EXPECT_EQ(o.result, wraps > 0 ? p::verdict::refuted : p::verdict::proven);
+  EXPECT_EQ(fig(o, "fade_sum_min"), flo);
+  EXPECT_EQ(fig(o, "fade_sum_max"), fhi);
+  EXPECT_EQ(fig(o, "fade_count"), fwraps);
+}
+
+TEST(Claims, ClampWrapIntermediates) {
+  const auto& o = base("clamp-wrap.intermediates");
+  EXPECT_EQ(o.result, p::verdict::proven);
+  EXPECT_EQ(fig(o, "tfx_clamp_bites"), 0);
+  EXPECT_EQ(fig(o, "two_pass_wrong_wraps"), 0);
+  EXPECT_EQ(fig(o, "four_pass_blend_outside_byte"), 0);
+  // Pass 2 is negative (and wraps, as wanted) when n = −m < 0 and floor(m·L87/2^14) >= 1, i.e.
+  // L87 >= ceil(16384/m): 32768 − ceil(16384/m) light values for each m.
+  std::int64_t wanted = 0;
+  for (int m = 1; m <= 127; ++m) wanted += 32768 - (16384 + m - 1) / m;
+  EXPECT_EQ(fig(o, "two_pass_wraps_wanted"), wanted);
+}
+
+TEST(Claims, HighlightAttenuation) {
+  // 128·GS − exact·128 = 128·floor(sph·k/128) − sph·k = −(sph·k mod 128) ∈ [−127, 0]; −127 is
+  // reached (sph·k = 127), 0 at k = 0. No clamp: floor(255·k/128) + 128 − k <= 255.
+  const auto& o = base("highlight.attenuation");
+  EXPECT_EQ(o.result, p::verdict::bound);
+  EXPECT_EQ(fig(o, "err_min_128ths"), -127);
+  EXPECT_EQ(fig(o, "err_max_128ths"), 0);
+  EXPECT_EQ(fig(o, "clamps"), 0);
+}
+
+TEST(Claims, SpecularCompensation) {
+  double cmin = 1e9, cmax = -1e9, umin = 1e9, umax = -1e9;
+  for (int n = 2; n <= 64; ++n)
+    for (int a = 0; a <= 128; ++a)
+      for (int i = 0; i < 128; ++i) {
+        const double want = 128.0 * (a / 128.0) * std::pow((i + 1) / 128.0, n);
+        const int k = static_cast<int>(std::lround(128.0 * std::pow(a / 128.0, 1.0 / n)));
+        auto ilp = [&](int j) { return std::round(128.0 * std::pow((j + 1) / 128.0, n)); };
+        const double c = ilp(i * k / 128) - want, u = ilp(i * a / 128) - want;
+        cmin = std::min(cmin, c), cmax = std::max(cmax, c), umin = std::min(umin, u), umax = std::max(umax, u);
+      }
+  const auto& o = base("specular.attenuation-compensation");
+  EXPECT_DOUBLE_EQ(o.real("err_min"), cmin);
+  EXPECT_DOUBLE_EQ(o.real("err_max"), cmax);
+  EXPECT_DOUBLE_EQ(o.real("uncompensated_err_min"), umin);
+  EXPECT_DOUBLE_EQ(o.real("uncompensated_err_max"), umax);
+}
+
+TEST(Claims, LodTwoVersusFourAgainstPlainIntegers) {
+  const auto normals = normal_map_vectors();
+  struct light {
+    int a[3], l[3];
+  };
+  std::vector<light> lights;
+  for (int y = 0; y < 64; ++y)
+    for (int x = 0; x < 64; ++x) {
+      const auto t = p::paper::sphere_map_texel(x, y, 64, 64);
+      if (!t.inside) continue;
+      lights.push_back({{128 - t.r, 128 - t.g, 128 - t.b},
+                        {static_cast<int>(122.0f * t.lx), static_cast<int>(122.0f * t.ly), static_cast<int>(122.0f * t.lz)}});
+    }
+  int l2[2] = {1000, 1000}, h2[2] = {-1000, -1000};
+  ref::two_halves(normals.size(), [&](std::size_t begin, std::size_t end) {
+    const int h = begin == 0 ? 0 : 1;
+    for (std::size_t j = begin; j < end; ++j) {
+      const auto& b = normals[j];
+      const double len = std::sqrt(double(b[0]) * b[0] + double(b[1]) * b[1] + double(b[2]) * b[2]);
+      const int ix = static_cast<int>(static_cast<float>(b[0] / len) * 127.9f);
+      const int iy = static_cast<int>(static_cast<float>(b[1] / len) * 127.9f);
+      const auto n = ref::appendix2(ix, iy);
+      for (const auto& L : lights) {
+        const int two = ref::two_pass_value(n, L.l[0], L.l[1], L.l[2]);
+        const int four = ref::floor128(L.a[0] * b[0]) + ref::floor128(L.a[1] * b[1]) + ref::floor128(L.a[2] * b[2]);
+        l2[h] = std::min(l2[h], two - four), h2[h] = std::max(h2[h], two - four);
+      }
+    }
+  });
+  const int lo = std::min(l2[0], l2[1]), hi = std::max(h2[0], h2[1]);
+  const auto& o = base("lod.two-vs-four");
+  EXPECT_EQ(fig(o, "diff_min"), lo);
+  EXPECT_EQ(fig(o, "diff_max"), hi);
+}

@@ -1,0 +1,148 @@
+// The reductions and fast paths of the catalogue, checked against brute force on smaller instances
+// (subsampled normal sets, smaller s) with plain int arithmetic (reference.hpp) or the full pixel
+// pipeline through the model.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <vector>
+
+#include "proofs/domains.hpp"
+#include "proofs/two_pass.hpp"
+#include "reference.hpp"
+
+namespace p = gsdot3::proofs;
+namespace tp = gsdot3::proofs::two_pass;
+
+namespace {
+// The normals with iX <= max_x (the corner where the s = 126 wraps are).
+std::vector<p::paper::packed_normal> normals_up_to_x(int max_x) {
+  std::vector<p::paper::packed_normal> out;
+  for (const auto& n : p::appendix2_normals())
+    if (n.iX <= max_x) out.push_back(n);
+  return out;
+}
+std::vector<p::paper::packed_normal> every_nth_normal(std::size_t n) {
+  std::vector<p::paper::packed_normal> out;
+  const auto& all = p::appendix2_normals();
+  for (std::size_t i = 0; i < all.size(); i += n) out.push_back(all[i]);
+  return out;
+}
+}  // namespace
+
+TEST(Reduction, Appendix2DomainMatchesThePaperCodeOnEveryNormal) {
+  // Same pairs as the plain enumeration, and the packed fields equal the closed forms.
+  const auto& all = p::appendix2_normals();
+  const auto ref_all = ref::appendix2_normals();
+  ASSERT_EQ(all.size(), ref_all.size());
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    ASSERT_EQ(all[i].iX, ref_all[i].x);
+    ASSERT_EQ(all[i].iY, ref_all[i].y);
+    ASSERT_EQ(all[i].iZ, ref_all[i].z);
+    ASSERT_EQ(all[i].alpha, ref_all[i].alpha);
+  }
+}
+
+TEST(Reduction, PackedLightsAreExactlyTheTruncationsOfUnitVectors) {
+  // Sampled directions must land in the set, and every member must be hit by its own cell's
+  // nearest point scaled to the sphere (a constructive check of Σk² <= s² < Σ(|k|+1)²) for s = 20.
+  const int s = 20;
+  const auto lights = p::packed_lights(s);
+  auto member = [&](int x, int y, int z) {
+    return std::binary_search(lights.begin(), lights.end(), p::ivec3{x, y, z});
+  };
+  for (int i = 0; i < 20000; ++i) {
+    const double u = (i * 0.6180339887) - static_cast<int>(i * 0.6180339887), v = (i + 0.5) / 20000.0;
+    const double zc = 2 * v - 1, r = std::sqrt(1 - zc * zc), ph = 2 * 3.14159265358979 * u;
+    const double T[3] = {r * std::cos(ph), r * std::sin(ph), zc};
+    EXPECT_TRUE(member(static_cast<int>(s * T[0]), static_cast<int>(s * T[1]), static_cast<int>(s * T[2])));
+  }
+  for (const auto& l : lights) {
+    int lo = 0, hi = 0;
+    for (int c : l) lo += c * c, hi += (std::abs(c) + 1) * (std::abs(c) + 1);
+    EXPECT_LE(lo, s * s);
+    EXPECT_GT(hi, s * s);
+  }
+}
+
+TEST(Reduction, TwoPassTableEqualsThePixelPipelineAndThePlainFormula) {
+  const gs::model_options o{};
+  const tp::table t(o);
+  for (int n = -127; n <= 128; ++n)
+    for (int l = -128; l <= 127; ++l) ASSERT_EQ(t.channel(n, l), ref::two_pass_channel(n, 128 + l)) << n << " " << l;
+  const auto normals = every_nth_normal(61);
+  const tp::light_grid g(122);
+  for (const auto& nm : normals)
+    for (std::size_t j = 0; j < g.lights.size(); j += 97) {
+      const auto& l = g.lights[j];
+      const auto px = tp::pixel(nm, tp::vertex_light(l), o);
+      ASSERT_EQ(t.value(nm, l), px.value);
+      ASSERT_EQ(px.value, ref::two_pass_value(ref::appendix2(nm.iX, nm.iY), l[0], l[1], l[2]));
+      ASSERT_EQ(px.dot, px.value);  // s = 122 never wraps
+    }
+}
+
+namespace {
+// Plain-int brute force: pairs with value >= hi or <= lo, and the first few indices.
+p::tally brute(const std::vector<p::paper::packed_normal>& normals, const tp::light_grid& g, int hi, int lo) {
+  p::tally t;
+  for (std::size_t i = 0; i < normals.size(); ++i) {
+    const auto n = ref::appendix2(normals[i].iX, normals[i].iY);
+    for (std::size_t j = 0; j < g.lights.size(); ++j) {
+      const auto& l = g.lights[j];
+      const int v = ref::two_pass_value(n, l[0], l[1], l[2]);
+      if (v >= hi || v <= lo) t.add(i * g.lights.size() + j);
+    }
+  }
+  return t;
+}
+}  // namespace
+
+TEST(Reduction, PrunedWrapSearchEqualsBruteForceOnSmallerInstances) {
+  const tp::table t(gs::model_options{});
+  p::sweep_config cfg;
+  struct instance {
+    int s, hi, lo;
+    std::vector<p::paper::packed_normal> normals;
+  };
+  // Thresholds just inside the bound −s − 3 <= value <= s + 2, so both searches find hits; s = 125
+  // and 126 on the normals with iX <= −122 (where the s = 126 wraps are).
+  for (const auto& in : {instance{40, 41, -42, every_nth_normal(8)}, instance{40, 42, -43, every_nth_normal(8)},
+                         instance{126, 128, -129, normals_up_to_x(-122)}, instance{125, 128, -129, normals_up_to_x(-122)}}) {
+    const auto& normals = in.normals;
+    const tp::light_grid g(in.s);
+    const auto pruned = tp::wrap_search(normals, g, t, in.hi, in.lo, cfg);
+    const auto table_brute = tp::wrap_search_brute(normals, g, t, in.hi, in.lo, cfg);
+    const auto plain = brute(normals, g, in.hi, in.lo);
+    EXPECT_EQ(pruned.hits.count, plain.count) << "s " << in.s << " hi " << in.hi;
+    EXPECT_EQ(pruned.hits.first, plain.first) << "s " << in.s;
+    EXPECT_EQ(table_brute.hits.count, plain.count);
+    EXPECT_LT(pruned.evaluated, table_brute.evaluated);
+    if (in.s == 125) {
+      EXPECT_EQ(plain.count, 0u) << "the bound says s = 125 cannot wrap";
+    } else {
+      EXPECT_GT(plain.count, 0u) << "s " << in.s << " hi " << in.hi;
+    }
+  }
+}
+
+TEST(Reduction, ErrorExtremesEqualBruteForceOnSubsampledNormals) {
+  const tp::table t(gs::model_options{});
+  p::sweep_config cfg;
+  for (std::size_t every : {std::size_t{37}, std::size_t{1000}}) {
+    const auto normals = every_nth_normal(every);
+    const tp::light_grid g(122);
+    const auto r = tp::error_extremes(normals, g, t, cfg);
+    int lo = 100, hi = -100;
+    for (const auto& nm : normals) {
+      const auto n = ref::appendix2(nm.iX, nm.iY);
+      for (const auto& l : g.lights) {
+        const int e = ref::two_pass_value(n, l[0], l[1], l[2]) - ref::floor128(n.x * l[0] + n.y * l[1] + n.z * l[2]);
+        lo = std::min(lo, e), hi = std::max(hi, e);
+      }
+    }
+    EXPECT_GE(lo, -3);  // the argument's bound
+    EXPECT_LE(hi, 3);
+    EXPECT_EQ(r.err.min, lo) << "every " << every;
+    EXPECT_EQ(r.err.max, hi) << "every " << every;
+  }
+}
