@@ -20,7 +20,7 @@ struct render_args {
   std::string camera;
   std::vector<std::string> lights, model_options;
   int s = 122, threads = 2;
-  double specular = 1.0;
+  double specular = 0.0;
 };
 
 std::vector<float> parse_floats(const std::string& what, const std::string& text, std::size_t n) {
@@ -84,8 +84,11 @@ void run(const render_args& a, bool html, context& ctx) {
   req.options.path = a.path == "cached" ? pipeline::raster_path::cached : pipeline::raster_path::reference;
   if (a.threads < 1 || a.threads > 64) throw usage_error("--threads: expected 1..64");
   req.options.threads = a.threads;
-  if (!(a.specular >= 1.0 && a.specular <= 256.0)) throw usage_error("--specular-power: expected 1..256");
-  req.options.specular_power = a.specular;
+  if (a.specular != 0.0) {
+    if (!(a.specular >= 1.0 && a.specular <= 256.0)) throw usage_error("--specular: the ILP power must be 1..256");
+    req.options.specular = true;
+    req.options.specular_power = a.specular;
+  }
   for (const std::string& kv : a.model_options) {
     const auto eq = kv.find('=');
     if (eq == std::string::npos) throw usage_error("--model-option: expected NAME=VALUE, got '" + kv + "'");
@@ -148,7 +151,8 @@ void add_options(CLI::App* cmd, render_args& a) {
   cmd->add_option("--size", a.size, "frame size WxH")->capture_default_str();
   cmd->add_option("--s", a.s, "two-pass tolight scale s (section 3.5), 1..127")->capture_default_str();
   cmd->add_option("--filter", a.filter, "normal-map sampling: nearest | bilinear")->capture_default_str();
-  cmd->add_option("--specular-power", a.specular, "ILP exponent (section 3.7), 1 = diffuse")->capture_default_str();
+  cmd->add_option("--specular", a.specular,
+                  "specular instead of diffuse (section 3.7): half vectors, and the ILP raised to this power (1..256)");
   cmd->add_option("--path", a.path, "rasteriser path: cached (fast) | reference (re-rasterise every pass)")->capture_default_str();
   cmd->add_option("--threads", a.threads, "frame bands rendered in parallel")->capture_default_str();
   cmd->add_option("--model-option", a.model_options, "GS model option NAME=VALUE (see `gsdot3 alu --help`)");

@@ -22,7 +22,7 @@ struct screen_vertex {
 
 }  // namespace
 
-prepared_scene prepare(const scene& s, float yaw_degrees) {
+prepared_scene prepare(const scene& s, float yaw_degrees, bool half_vectors) {
   prepared_scene ps;
   ps.width = s.width;
   ps.height = s.height;
@@ -48,6 +48,7 @@ prepared_scene prepare(const scene& s, float yaw_degrees) {
 
   // Light vectors in tangent space, from the light positions taken into object space.
   const glm::mat4 to_object = glm::inverse(model);
+  const glm::vec3 eye = glm::vec3(to_object * glm::vec4(s.view.eye, 1.0f));
   ps.lights.resize(s.lights.size());
   for (std::size_t l = 0; l < s.lights.size(); ++l) {
     const glm::vec3 lp = glm::vec3(to_object * glm::vec4(s.lights[l].position, 1.0f));
@@ -55,7 +56,8 @@ prepared_scene prepare(const scene& s, float yaw_degrees) {
     for (std::size_t i = 0; i < verts.size(); ++i) {
       const vertex& v = verts[i];
       const glm::vec3 L = glm::normalize(lp - v.position);
-      ps.lights[l][i].T = glm::normalize(glm::vec3(glm::dot(L, v.tangent), glm::dot(L, v.bitangent), glm::dot(L, v.normal)));
+      const glm::vec3 H = half_vectors ? glm::normalize(L + glm::normalize(eye - v.position)) : L;
+      ps.lights[l][i].T = glm::normalize(glm::vec3(glm::dot(H, v.tangent), glm::dot(H, v.bitangent), glm::dot(H, v.normal)));
       ps.lights[l][i].fade = std::clamp(6.0f * glm::dot(v.normal, L), 0.0f, 1.0f);
     }
   }

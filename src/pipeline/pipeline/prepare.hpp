@@ -18,7 +18,7 @@ namespace gsdot3::pipeline {
 inline constexpr std::int32_t xy_offset_pixels = 2048;
 
 struct light_vertex {
-  glm::vec3 T{};      // unit tolight vector in tangent space (t, b, n)
+  glm::vec3 T{};      // unit tolight (or half) vector in tangent space (t, b, n)
   float fade = 0.0f;  // fade_att = clamp(6·(n·l), 0, 1), section 3.6
 };
 
@@ -37,6 +37,8 @@ struct prepared_scene {
 };
 
 // `yaw_degrees` turns the model about its vertical axis (180 = the back view of figure 7).
-prepared_scene prepare(const scene& s, float yaw_degrees = 0.0f);
+// `half_vectors`: T is the tangent-space half vector normalize(tolight + toeye) instead of the
+// tolight vector (section 3.7, specular); fade_att still uses n·l.
+prepared_scene prepare(const scene& s, float yaw_degrees = 0.0f, bool half_vectors = false);
 
 }  // namespace gsdot3::pipeline

@@ -40,7 +40,7 @@ glm::dvec3 filtered(Texel&& texel, std::int32_t u16, std::int32_t v16, bool bili
 }  // namespace
 
 reference_frame render_reference(const scene& s, const prepared_scene& ps, const std::vector<std::int32_t>& visible,
-                                 bool bilinear) {
+                                 bool bilinear, double power) {
   reference_frame r;
   r.width = ps.width;
   r.height = ps.height;
@@ -93,7 +93,7 @@ reference_frame render_reference(const scene& s, const prepared_scene& ps, const
         r.renormalised[l][i] = static_cast<float>(renorm);
         r.unnormalised[l][i] = static_cast<float>(128.0 * glm::dot(N, faded));
         const auto& lc = s.lights[l].colour;
-        lab += glm::dvec3(lc[0], lc[1], lc[2]) * (std::max(renorm, 0.0) / 128.0);
+        lab += glm::dvec3(lc[0], lc[1], lc[2]) * std::pow(std::max(renorm, 0.0) / 128.0, power);
       }
       const glm::dvec3 out = glm::min(filtered(diffuse_texel, u16, v16, bilinear) * glm::min(lab, 255.0) / 128.0, 255.0);
       r.colour[i] = static_cast<std::uint32_t>(std::lround(out.x)) | static_cast<std::uint32_t>(std::lround(out.y)) << 8 |

@@ -23,6 +23,7 @@ enum class raster_path { reference, cached };
 struct render_options {
   int s = 122;                     // two-pass tolight scale (section 3.5), 1..127
   bool bilinear = false;           // TEX1.MMAG for the normal map and the diffuse texture
+  bool specular = false;           // half vectors instead of tolight vectors (section 3.7)
   double specular_power = 1.0;     // ILP exponent (section 3.7); 1 = diffuse
   gs::model_options model{};
   raster_path path = raster_path::cached;

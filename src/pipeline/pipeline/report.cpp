@@ -178,7 +178,7 @@ report_summary write_report(const scene& s, const report_request& r) {
 
   say("preparing the scene (" + std::to_string(s.model.triangles.size()) + " triangles, " + std::to_string(w) + "x" +
       std::to_string(h) + ")");
-  const prepared_scene front = prepare(s, 0.0f);
+  const prepared_scene front = prepare(s, 0.0f, r.options.specular);
 
   std::vector<frame> frames;
   for (method m : r.methods) {
@@ -190,7 +190,7 @@ report_summary write_report(const scene& s, const report_request& r) {
   say("rendering the float reference");
   const auto t0 = std::chrono::steady_clock::now();
   const std::vector<std::int32_t>& visible = frames.front().visible_triangle;
-  const reference_frame ref = render_reference(s, front, visible, r.options.bilinear);
+  const reference_frame ref = render_reference(s, front, visible, r.options.bilinear, r.options.specular_power);
   sum.reference_seconds = seconds_since(t0);
   sum.normalisation = compare(ref.unnormalised, ref.renormalised);
 
@@ -202,7 +202,7 @@ report_summary write_report(const scene& s, const report_request& r) {
                 {"normal_map", {{"width", s.normals.width}, {"height", s.normals.height}, {"palette", s.normals.palette.size()}}},
                 {"lights", s.lights.size()}};
   j["options"] = {{"s", r.options.s}, {"filter", r.options.bilinear ? "bilinear" : "nearest"},
-                  {"specular_power", r.options.specular_power},
+                  {"specular", r.options.specular}, {"specular_power", r.options.specular_power},
                   {"path", r.options.path == raster_path::cached ? "cached" : "reference"}, {"threads", r.options.threads}};
   for (const auto& opt : gs::option_catalogue())
     j["options"]["model"][std::string(opt.name)] = std::string(gs::option_value(r.options.model, opt.name));
@@ -241,7 +241,7 @@ report_summary write_report(const scene& s, const report_request& r) {
   const bool have4 = std::find(r.methods.begin(), r.methods.end(), method::four_pass) != r.methods.end();
   if (have2 && have4) {
     say("rendering the back views for the side-by-side");
-    const prepared_scene back = prepare(s, 180.0f);
+    const prepared_scene back = prepare(s, 180.0f, r.options.specular);
     auto lit = [&](const prepared_scene& ps, method m) { return rgb_image(w, h, render(s, ps, m, r.options).colour); };
     write_png(r.out_dir / "side-by-side.png", montage(lit(front, method::two_pass), lit(front, method::four_pass),
                                                       lit(back, method::two_pass), lit(back, method::four_pass)));
@@ -264,7 +264,8 @@ report_summary write_report(const scene& s, const report_request& r) {
         std::to_string(s.model.triangles.size()) + " triangles drawn, " + std::to_string(s.lights.size()) +
         " lights, normal map " + std::to_string(s.normals.width) + "×" + std::to_string(s.normals.height) + " (" +
         std::to_string(s.normals.palette.size()) + " palette entries), s = " + std::to_string(r.options.s) + ", filter " +
-        (r.options.bilinear ? "bilinear" : "nearest") + ".</p>\n"
+        (r.options.bilinear ? "bilinear" : "nearest") +
+        (r.options.specular ? ", specular (half vectors, ILP power " + fmt(r.options.specular_power, 1) + ")" : std::string()) + ".</p>\n"
         "<p>Errors e = GS dot product − float dot product, in 1/128 units, over every covered pixel and every light. "
         "A wrap error is |e| &gt; 128 (the modulo-256 sum wrapped). Frame times are one wall-clock run of this "
         "command; the benchmarks give stable figures.</p>\n"
