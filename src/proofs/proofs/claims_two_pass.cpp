@@ -56,8 +56,7 @@ outcome two_pass_error_bound(const gs::model_options& o, const sweep_config& cfg
   out.domain_size = size;
   out.figures = {fig("s", paper_s), fig("lights", static_cast<std::int64_t>(nl)),
                  fig("normals", static_cast<std::int64_t>(normals.size())), fig("err_min", err.min),
-                 fig("err_max", err.max),
-                 fig("pairs_evaluated", static_cast<std::int64_t>(r.evaluated))};
+                 fig("err_max", err.max), fig("full_scan", r.full_scan ? 1 : 0)};
   out.witnesses = {"err_min: " + describe_pair(normals[err.arg_min / nl], g.lights[err.arg_min % nl], o),
                    "err_max: " + describe_pair(normals[err.arg_max / nl], g.lights[err.arg_max % nl], o)};
   out.note = "per-pixel result − floor(n·l/128) over normals × packed lights (s = 122): the floors of the "
