@@ -67,6 +67,7 @@ void run_alu(const alu_args& a) {
   gs::gs_registers regs;
   for (const auto& r : a.regs) {
     const auto [name, value] = split_assignment("--reg", r);
+    if (name == "RGBAQ") throw usage_error("--reg: give the vertex colour with --vertex, not RGBAQ");
     try {
       gs::set_register(regs, name, parse_number("--reg " + name, value, ~std::uint64_t{0}));
     } catch (const gs::register_error& e) {
@@ -115,8 +116,9 @@ void add_alu_command(CLI::App& app, context& ctx) {
       "--dst defaults to 0x00000000, --x and --y to 0.\nModel options (--option NAME=VALUE):" +
           option_help());
   cmd->add_option("--reg", args->regs,
-                  "Register NAME=VALUE, VALUE a 64-bit number (0x hex or decimal). NAME: PRIM, RGBAQ, TEX0_1, ALPHA_1, "
-                  "TEST_1, FRAME_1, COLCLAMP, PABE, FBA_1, DTHE, DIMX. Repeatable.");
+                  "Register NAME=VALUE, VALUE a 64-bit number (0x hex or decimal). NAME: PRIM, TEX0_1, ALPHA_1, TEST_1, "
+                  "FRAME_1, COLCLAMP, PABE, FBA_1, DTHE, DIMX (GS manual bit layouts; reserved values are errors). "
+                  "Repeatable; the last one wins.");
   cmd->add_option("--vertex", args->vertex, "Vertex (flat fragment) colour AABBGGRR, hex")->required();
   cmd->add_option("--texel", args->texel, "Texel colour AABBGGRR after CLUT/filtering; required when PRIM.TME = 1");
   cmd->add_option("--dst", args->dst, "Old frame-buffer word, hex (default 00000000)");
