@@ -371,7 +371,7 @@ TEST(Claims, LodTwoVersusFourAgainstPlainIntegers) {
       lights.push_back({{128 - t.r, 128 - t.g, 128 - t.b},
                         {static_cast<int>(122.0f * t.lx), static_cast<int>(122.0f * t.ly), static_cast<int>(122.0f * t.lz)}});
     }
-  int l2[2] = {1000, 1000}, h2[2] = {-1000, -1000};
+  int l2[2] = {1000, 1000}, h2[2] = {-1000, -1000}, vl2[2] = {1000, 1000}, vh2[2] = {-1000, -1000};
   ref::two_halves(normals.size(), [&](std::size_t begin, std::size_t end) {
     const int h = begin == 0 ? 0 : 1;
     for (std::size_t j = begin; j < end; ++j) {
@@ -384,6 +384,8 @@ TEST(Claims, LodTwoVersusFourAgainstPlainIntegers) {
         const int two = ref::two_pass_value(n, L.l[0], L.l[1], L.l[2]);
         const int four = ref::floor128(L.a[0] * b[0]) + ref::floor128(L.a[1] * b[1]) + ref::floor128(L.a[2] * b[2]);
         l2[h] = std::min(l2[h], two - four), h2[h] = std::max(h2[h], two - four);
+        const int visible = std::max(two, 0) - std::max(four, 0);
+        vl2[h] = std::min(vl2[h], visible), vh2[h] = std::max(vh2[h], visible);
       }
     }
   });
@@ -391,4 +393,6 @@ TEST(Claims, LodTwoVersusFourAgainstPlainIntegers) {
   const auto& o = base("lod.two-vs-four");
   EXPECT_EQ(fig(o, "diff_min"), lo);
   EXPECT_EQ(fig(o, "diff_max"), hi);
+  EXPECT_EQ(fig(o, "visible_diff_min"), std::min(vl2[0], vl2[1]));
+  EXPECT_EQ(fig(o, "visible_diff_max"), std::max(vh2[0], vh2[1]));
 }

@@ -52,7 +52,7 @@ const std::vector<claim>& catalogue() {
        "every Appendix 2 normal × every packed light (char)(122·T)", M::reduction,
        {"tfx_rounding", "blend_shift"}, c::two_pass_error_bound},
       {"two-pass.max-s.vertex", "§3.5", "s = 122 avoids wrapping (found by trial and error); the largest safe s",
-       "every Appendix 2 normal × every packed light, s = 126, 127 (s <= 125 by argument)", M::reduction,
+       "every Appendix 2 normal × every packed light, from s = 126 up to the first s that wraps (s <= 125 by argument)", M::reduction,
        {"tfx_rounding", "blend_shift"}, c::two_pass_max_s_vertex},
       {"two-pass.max-s.interpolated", "§3.5",
        "s = 122 avoids wrapping for the barycentrically interpolated light vectors; the largest safe s",

@@ -192,8 +192,9 @@ outcome two_pass_max_s_interpolated(const gs::model_options& o, const sweep_conf
                  fig("normals", static_cast<std::int64_t>(normals.size()))};
   out.witnesses = std::move(witnesses);
   out.note = "Gouraud-interpolated lights never wrap for s <= " + std::to_string(proven_safe) +
-             " (argument); a pixel wraps at s = " + std::to_string(first_wrap) + " (certificate); s = " +
-             std::to_string(proven_safe + 1) + ".." + std::to_string(first_wrap - 1) +
+             " (argument); a pixel wraps at s = " + std::to_string(first_wrap) + " (certificate); " +
+             (first_wrap - 1 == proven_safe + 1 ? "s = " + std::to_string(proven_safe + 1)
+                                                : "s = " + std::to_string(proven_safe + 1) + ".." + std::to_string(first_wrap - 1)) +
              " is undecided. The truncated Gouraud steps let a pixel's light stick out of the vertex sphere, so the "
              "safe s is below the vertex one; the paper's 122 is still safe";
   return out;

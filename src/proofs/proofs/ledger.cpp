@@ -24,8 +24,9 @@ std::string options_text(const claim_result& r) {
   return s.empty() ? "none" : s;
 }
 std::string variant_text(const option_variant& v) {
+  const auto figures = figures_text(v.result);
   return v.option + "=" + v.value + ": " + verdict_text(v.result) +
-         (v.changed ? " — differs: " + figures_text(v.result) : " — same");
+         (v.changed ? (figures.empty() ? " — differs" : " — differs: " + figures) : " — same");
 }
 }  // namespace
 
