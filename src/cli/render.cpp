@@ -17,7 +17,8 @@ namespace {
 
 struct render_args {
   std::string out = "gsdot3-out", method = "all", mesh, normal_map, size = "512x448", filter = "nearest", path = "cached";
-  std::string camera;
+  std::string camera, height_map;
+  float bump = 0.05f;
   std::vector<std::string> lights, model_options;
   int s = 122, threads = 2;
   double specular = 0.0;
@@ -109,6 +110,14 @@ void run(const render_args& a, bool html, context& ctx) {
       s.model = pipeline::load_obj(a.mesh);
       description = "mesh " + a.mesh + " (" + std::to_string(s.model.triangles.size()) + " triangles)";
     }
+    if (!a.normal_map.empty() && !a.height_map.empty()) throw usage_error("--normal-map and --height-map exclude each other");
+    if (!a.height_map.empty()) {
+      if (!(a.bump > 0.0f && a.bump <= 100.0f)) throw usage_error("--bump: expected a strength in (0, 100]");
+      progress("making a normal map from the height map, quantised to 256 entries");
+      s.normals = pipeline::load_height_map_png(a.height_map, a.bump);
+      s.diffuse = pipeline::procedural_diffuse(s.normals.width, s.normals.height);
+      description += ", height map " + a.height_map;
+    }
     if (!a.normal_map.empty()) {
       progress("quantising the normal map to 256 entries");
       s.normals = pipeline::load_normal_map_png(a.normal_map);
@@ -144,6 +153,9 @@ void add_options(CLI::App* cmd, render_args& a) {
   cmd->add_option("--mesh", a.mesh, "Wavefront OBJ mesh (v, vt, vn, f v/vt/vn); default: the embedded head");
   cmd->add_option("--normal-map", a.normal_map,
                   "8-bit RGB PNG tangent-space normal map (power-of-two sides 8..1024), quantised to 256 entries");
+  cmd->add_option("--height-map", a.height_map,
+                  "8-bit grey PNG height map (power-of-two sides) turned into the normal map (instead of --normal-map)");
+  cmd->add_option("--bump", a.bump, "height-map slope scale (per grey level)")->capture_default_str();
   cmd->add_option("--light", a.lights,
                   "point light X,Y,Z:RRGGBB (world position; colour in hex, 0x80 = 1.0); repeat for more lights; "
                   "default: green 109820 at -2.2,1.4,2.2 and blue 1038B0 at 2.6,-0.2,0.4");

@@ -80,6 +80,16 @@ TEST(BadInput, NormalMapPng) {
     write(d, "cut.png", bytes.substr(0, bytes.size() / 2));
   }
   expect_error([&] { load_normal_map_png(d / "cut.png"); }, "malformed PNG data");
+  // A grey ramp as a height map: x slopes only, so every normal leans the same way in x (−x: uphill
+  // to +x) and not at all in y, except where the ramp wraps back at the border.
+  image ramp{16, 16, 1, std::vector<std::uint8_t>(256)};
+  for (std::size_t i = 0; i < 256; ++i) ramp.data[i] = static_cast<std::uint8_t>((i % 16) * 8);
+  write_png(d / "ramp.png", ramp);
+  const normal_map hm = load_height_map_png(d / "ramp.png", 0.1f);
+  const glm::vec3 inner = hm.palette[hm.index[16 * 5 + 7]];
+  EXPECT_LT(inner.x, -0.3f);
+  EXPECT_NEAR(inner.y, 0.0f, 1e-5f);
+  expect_error([&] { load_height_map_png(d / "odd.png", 1.0f); }, "must be powers of two");
   const normal_map m = load_normal_map_png(d / "ok.png");
   EXPECT_EQ(m.width, 16);
   ASSERT_EQ(m.palette.size(), 1u);

@@ -19,6 +19,10 @@ mesh load_obj(const std::filesystem::path& file);
 // a 256-entry palette. Width and height must be powers of two from 8 to 1024 (GS texture sizes).
 normal_map load_normal_map_png(const std::filesystem::path& file);
 
+// A normal map made from an 8-bit grey (or RGB: red) height map PNG: central differences with
+// slopes scaled by `strength` (height units: grey levels), then quantised to 256 entries.
+normal_map load_height_map_png(const std::filesystem::path& file, float strength);
+
 // An 8-bit image: `channels` = 1 (grey) or 3 (RGB), rows top first.
 struct image {
   int width = 0, height = 0, channels = 3;
