@@ -176,6 +176,31 @@ TEST(Claims, Appendix2PackingAndNaRounding) {
   // 3·((n + 1) div 3) − n is −1, 0, +1 for n ≡ 1, 0, 2 (mod 3); all residues occur.
   EXPECT_EQ(fig(r, "error_min"), -1);
   EXPECT_EQ(fig(r, "error_max"), 1);
+  // Bilinear filtering (4-bit weights w = 0..15, c0 + floor((c1 − c0)·w/16)) of every pair of n_a
+  // values: stored mod 256 vs the wide filter; stored as n'_a, three times the filtered n'_a.
+  std::vector<bool> seen(1024);
+  for (const auto& n : ref::appendix2_normals()) seen[static_cast<std::size_t>(384 - (n.x + n.y + n.z))] = true;
+  auto lerp = [](int c0, int c1, int w) {
+    const int d = (c1 - c0) * w;
+    return c0 + (d >= 0 ? d / 16 : -((-d + 15) / 16));
+  };
+  std::int64_t cases = 0, wrong = 0;
+  int smin = 100, smax = -100;
+  for (int x0 = 0; x0 < 1024; ++x0)
+    for (int x1 = 0; x1 < 1024; ++x1)
+      if (seen[static_cast<std::size_t>(x0)] && seen[static_cast<std::size_t>(x1)])
+        for (int w = 0; w < 16; ++w) {
+          ++cases;
+          wrong += lerp(x0 % 256, x1 % 256, w) != lerp(x0, x1, w) % 256;
+          const int e = 3 * lerp((x0 + 1) / 3, (x1 + 1) / 3, w) - lerp(x0, x1, w);
+          smin = std::min(smin, e), smax = std::max(smax, e);
+        }
+  EXPECT_EQ(fig(r, "filter_cases"), cases);
+  EXPECT_EQ(fig(r, "unscaled_filter_wrong"), wrong);
+  EXPECT_EQ(fig(r, "scaled_filter_err_min"), smin);
+  EXPECT_EQ(fig(r, "scaled_filter_err_max"), smax);
+  const auto& nearest = variant("two-pass.na-rounding", "bilinear", "nearest");
+  EXPECT_EQ(fig(nearest, "unscaled_filter_wrong"), 0);  // weight 0 only: each texel as stored
 }
 
 TEST(Claims, Appendix1SphereMap) {
