@@ -1,7 +1,7 @@
 // gs_arith_exhaustive — each unit over its whole input domain, every mode, against the independent
 // references in reference.hpp. Every test states the size of the domain it enumerates.
 //
-// Sanitizer builds (the `san` preset) run the five largest sweeps on a stated sub-lattice (every
+// Sanitizer builds (the `san` preset) run the six largest sweeps on a stated sub-lattice (every
 // 17th value of one input), because ASan + UBSan make them ~20× slower; every other sweep is full.
 #include <gtest/gtest.h>
 
@@ -201,6 +201,38 @@ TEST(GsArithExhaustive, Pack16AllColours) {
   for (std::uint32_t w = 0; w < 65536; ++w)
     ASSERT_EQ(gs::frame_read(gs::frame_psm::PSMCT16, w).to_u32(), gs_ref::read16(w)) << std::hex << w;
   report("pack16 colours", n, true);
+}
+
+// FBA over every alpha byte × every frame format × FBA (256 × 8 × 2 cases); the FBMSK merge on a
+// smaller instance, all (new, old, mask) bytes (2^24 cases; every 17th old under sanitizers), and at each of the 32 bit positions all
+// 8 (new, old, mask) bit combinations. Reduction: masked_merge is a bitwise function, so its value at
+// one bit depends only on that bit of each operand; the byte instance checks that independence by
+// brute force, the per-position sweep covers every bit of the 32-bit word.
+TEST(GsArithExhaustive, FbaAndMergeAll) {
+  const gs::frame_psm all_psm[] = {gs::frame_psm::PSMCT32, gs::frame_psm::PSMCT24, gs::frame_psm::PSMCT16,
+                                   gs::frame_psm::PSMCT16S, gs::frame_psm::PSMZ32,  gs::frame_psm::PSMZ24,
+                                   gs::frame_psm::PSMZ16,   gs::frame_psm::PSMZ16S};
+  for (auto psm : all_psm)
+    for (bool fba : {false, true})
+      for (int a = 0; a < 256; ++a) {
+        const bool is24 = psm == gs::frame_psm::PSMCT24 || psm == gs::frame_psm::PSMZ24;
+        const int want = fba && !is24 ? (a < 128 ? a + 128 : a) : a;
+        ASSERT_EQ(gs::apply_fba(rgba8::from_u32(gs_ref::word(1, 2, 3, a)), fba, psm).to_u32(), gs_ref::word(1, 2, 3, want))
+            << static_cast<int>(psm) << " " << fba << " " << a;
+      }
+  for (std::uint32_t fresh = 0; fresh < 256; ++fresh)
+    for (std::uint32_t old = 0; old < 256; old += static_cast<std::uint32_t>(big_stride)) {
+      int bad = 0;
+      for (std::uint32_t mask = 0; mask < 256; ++mask) bad += gs::masked_merge(fresh, old, mask) != gs_ref::merge(fresh, old, mask);
+      if (bad != 0) FAIL() << fresh << " " << old;
+    }
+  for (int bit = 0; bit < 32; ++bit)
+    for (int combo = 0; combo < 8; ++combo) {
+      const std::uint32_t b = 1u << bit;
+      const std::uint32_t fresh = (combo & 1) ? b : 0, old = (combo & 2) ? b : 0, mask = (combo & 4) ? b : 0;
+      ASSERT_EQ(gs::masked_merge(fresh, old, mask), gs_ref::merge(fresh, old, mask)) << bit << " " << combo;
+    }
+  report("fba + masked_merge", 256ull * 8 * 2 + (1u << 24) / static_cast<unsigned>(big_stride) + 32 * 8, true);
 }
 
 // lerp16_4 over all (c0, c1, w): 2^20 cases.
