@@ -15,7 +15,7 @@
 #include <cmath>
 #include <thread>
 
-#include "gs_arith/gouraud.hpp"
+#include "pipeline/band_renderer.hpp"
 #include "pipeline/encoders.hpp"
 #include "pipeline/gs_pass.hpp"
 
@@ -32,6 +32,7 @@ std::string_view name(method m) {
 
 namespace {
 
+using namespace detail;
 using gs::blend_alpha;
 using gs::blend_colour;
 
@@ -54,7 +55,6 @@ constexpr gs::alpha_reg multiply_by_ad{blend_colour::Cs, blend_colour::zero, ble
 // The register sets of the passes. Each is a constant the pass loops are instantiated with, so the
 // compiler folds gs::pixel_pipeline for it (the same model function, specialised, not a copy).
 //                                              TME    ABE    TFX                 TCC             ALPHA_1          CLAMP  FBMSK
-constexpr pass_regs step1_ambient{};  // TME = 0, ABE = 0, COLCLAMP = 1
 constexpr pass_regs two_pass_positive{          true,  false, gs::tfx::MODULATE,  gs::tcc::RGB,   {},              false, 0};
 constexpr pass_regs two_pass_negative{          true,  true,  gs::tfx::MODULATE,  gs::tcc::RGBA,  subtract_source, false, 0};
 constexpr pass_regs two_pass_add_alpha{         true,  true,  gs::tfx::DECAL,     gs::tcc::RGB,   add_source,      false, keep_alpha};
@@ -100,154 +100,6 @@ gs_inputs make_inputs(const scene& s, method m, const render_options& o) {
       break;
   }
   return in;
-}
-
-// Per-triangle attributes of one pass: the Gouraud plane (gs::gouraud_triangle) and the UV planes.
-struct tri_attr {
-  gs::gouraud_plane colour{};
-  plane u, v;
-};
-
-struct fragment {
-  std::int32_t tri;
-  std::int16_t x, y;
-};
-
-// One band of the frame and its buffers (rows [band.y0, band.y1) of the frame-sized buffers).
-class band_renderer {
- public:
-  band_renderer(const prepared_scene& ps, const render_options& o, scissor band, std::vector<std::uint32_t>& z,
-                std::vector<std::int32_t>& visible)
-      : ps_(ps), o_(o), band_(band), sprite_area_(drawn_area(ps, band)), z_(z), visible_(visible) {}
-
-  // Step 1: Z buffer and the LAB's ambient colour (ZTST = GEQUAL, Z written).
-  void depth_and_ambient(std::vector<std::uint32_t>& lab, gs::rgba8 ambient) {
-    fill(lab, 0);
-    for (int y = band_.y0; y < band_.y1; ++y)
-      for (int x = band_.x0; x < band_.x1; ++x) z_[index(x, y)] = 0, visible_[index(x, y)] = -1;
-    constexpr gs::gs_registers regs = step1_ambient.registers();
-    const gs::fragment_colour cf = gs::fragment_colour::flat(ambient);
-    for (std::size_t t = 0; t < ps_.triangles.size(); ++t) {
-      const prepared_triangle& tri = ps_.triangles[t];
-      rasterise_triangle(tri.setup, band_, [&](int x, int y) {
-        const std::size_t i = index(x, y);
-        const auto z = static_cast<std::uint32_t>(tri.z.at(x, y));
-        if (z < z_[i]) return;
-        z_[i] = z;
-        visible_[i] = static_cast<std::int32_t>(t);
-        lab[i] = gs_pixel(regs, gs::rgba8{}, cf, lab[i], x, y, o_.model);
-        ++ops_;
-      });
-    }
-    if (o_.path == raster_path::cached) {
-      frags_.clear();
-      for (std::size_t t = 0; t < ps_.triangles.size(); ++t) {
-        const prepared_triangle& tri = ps_.triangles[t];
-        rasterise_triangle(tri.setup, band_, [&](int x, int y) {
-          if (static_cast<std::uint32_t>(tri.z.at(x, y)) >= z_[index(x, y)])
-            frags_.push_back({static_cast<std::int32_t>(t), static_cast<std::int16_t>(x), static_cast<std::int16_t>(y)});
-        });
-      }
-    }
-  }
-
-  // A triangle pass with ZTST = GEQUAL and ZMSK = 1.
-  template <const pass_regs& Pass>
-  [[gnu::flatten]] void draw(const texture_ref* tex, const std::vector<tri_attr>& attr, std::vector<std::uint32_t>& fb) {
-    constexpr gs::gs_registers regs = Pass.registers();
-    auto shade = [&](std::size_t t, int x, int y) {
-      const tri_attr& a = attr[t];
-      const gs::fragment_colour cf = gs::gouraud_at(a.colour, x + xy_offset_pixels, y + xy_offset_pixels);
-      const gs::rgba8 texel = tex != nullptr ? tex->sample(a.u.at(x, y), a.v.at(x, y)) : gs::rgba8{};
-      std::uint32_t& word = fb[index(x, y)];
-      word = gs_pixel(regs, texel, cf, word, x, y, o_.model);
-      ++ops_;
-    };
-    if (o_.path == raster_path::cached) {
-      for (const fragment& f : frags_) shade(static_cast<std::size_t>(f.tri), f.x, f.y);
-      return;
-    }
-    for (std::size_t t = 0; t < ps_.triangles.size(); ++t) {
-      const prepared_triangle& tri = ps_.triangles[t];
-      rasterise_triangle(tri.setup, band_, [&](int x, int y) {
-        if (static_cast<std::uint32_t>(tri.z.at(x, y)) >= z_[index(x, y)]) shade(t, x, y);
-      });
-    }
-  }
-
-  // A 2D sprite pass with a flat colour over the drawn triangles' bounding rectangle within the band
-  // (an engine scissors its post filter to the object; outside it the DPB keeps its clear value and
-  // the frame stays 0 = diffuse 0 × LAB); `texel(i)` gives the texel the sprite's 1:1 mapping
-  // fetches for frame-buffer pixel i.
-  template <const pass_regs& Pass, class Texel>
-  [[gnu::flatten]] void sprite(gs::rgba8 colour, Texel&& texel, std::vector<std::uint32_t>& fb) {
-    constexpr gs::gs_registers regs = Pass.registers();
-    const gs::fragment_colour cf = gs::fragment_colour::flat(colour);
-    const scissor& a = sprite_area_;
-    rasterise_sprite({a.x0 * 16, a.y0 * 16}, {a.x1 * 16, a.y1 * 16}, a, [&](int x, int y) {
-      const std::size_t i = index(x, y);
-      fb[i] = gs_pixel(regs, texel(i), cf, fb[i], x, y, o_.model);
-      ++ops_;
-    });
-  }
-
-  void fill(std::vector<std::uint32_t>& fb, std::uint32_t v) {
-    for (int y = band_.y0; y < band_.y1; ++y)
-      std::fill(fb.begin() + static_cast<std::ptrdiff_t>(index(band_.x0, y)),
-                fb.begin() + static_cast<std::ptrdiff_t>(index(band_.x1, y)), v);
-  }
-
-  std::size_t index(int x, int y) const { return static_cast<std::size_t>(y) * static_cast<std::size_t>(ps_.width) + static_cast<std::size_t>(x); }
-  const scissor& band() const { return band_; }
-  std::size_t pixel_ops() const { return ops_; }
-
- private:
-  // The bounding rectangle of every drawn triangle's pixels, within the band (may be empty).
-  static scissor drawn_area(const prepared_scene& ps, scissor band) {
-    scissor a{band.x1, band.y1, band.x0, band.y0};
-    for (const prepared_triangle& t : ps.triangles)
-      for (const xy124& v : t.setup.v) {
-        a.x0 = std::min(a.x0, ceil_124(v.x) - 1);
-        a.y0 = std::min(a.y0, ceil_124(v.y) - 1);
-        a.x1 = std::max(a.x1, ceil_124(v.x) + 1);
-        a.y1 = std::max(a.y1, ceil_124(v.y) + 1);
-      }
-    return {std::max(a.x0, band.x0), std::max(a.y0, band.y0), std::min(a.x1, band.x1), std::min(a.y1, band.y1)};
-  }
-
-  const prepared_scene& ps_;
-  const render_options& o_;
-  scissor band_, sprite_area_;
-  std::vector<std::uint32_t>& z_;
-  std::vector<std::int32_t>& visible_;
-  std::vector<fragment> frags_;
-  std::size_t ops_ = 0;
-};
-
-// Vertex colours → per-triangle attributes; `uv` picks the 12.4 texture coordinates per corner.
-template <class Colour, class UV>
-std::vector<tri_attr> attributes(const prepared_scene& ps, Colour&& colour, UV&& uv) {
-  std::vector<tri_attr> out(ps.triangles.size());
-  for (std::size_t t = 0; t < ps.triangles.size(); ++t) {
-    const prepared_triangle& tri = ps.triangles[t];
-    std::array<gs::gouraud_vertex, 3> gv{};
-    std::array<std::int32_t, 3> us{}, vs{};
-    int x_ref = 1 << 16, y_ref = 1 << 16;
-    for (int k = 0; k < 3; ++k) {
-      const xy124 p = tri.setup.v[static_cast<std::size_t>(k)];
-      gv[static_cast<std::size_t>(k)] = {p.x + xy_offset_pixels * 16, p.y + xy_offset_pixels * 16, colour(tri.vertex[static_cast<std::size_t>(k)])};
-      const auto [u, v] = uv(tri, k);
-      us[static_cast<std::size_t>(k)] = u;
-      vs[static_cast<std::size_t>(k)] = v;
-      x_ref = std::min(x_ref, ceil_124(p.x));
-      y_ref = std::min(y_ref, ceil_124(p.y));
-    }
-    // The plane's reference pixel is the triangle's top-left pixel (the step error grows with distance).
-    out[t].colour = *gs::gouraud_triangle(gv[0], gv[1], gv[2], x_ref + xy_offset_pixels, y_ref + xy_offset_pixels);
-    out[t].u = make_plane(tri.setup.v, us, -(1 << 20), 1 << 20);
-    out[t].v = make_plane(tri.setup.v, vs, -(1 << 20), 1 << 20);
-  }
-  return out;
 }
 
 std::array<std::int32_t, 2> normal_map_uv(const prepared_triangle& t, int k) { return t.uv16[static_cast<std::size_t>(k)]; }
