@@ -17,6 +17,7 @@
 #include "gs_arith/pixel_pipeline.hpp"
 #include "gs_arith/registers.hpp"
 #include "gs_arith/texture_function.hpp"
+#include "reference.hpp"
 
 namespace {
 
@@ -231,6 +232,26 @@ RC_GTEST_PROP(GsArithProperty, GouraudSpanMonotone, ()) {
   const bool monotone = c1 >= c0 ? here <= next : here >= next;
   RC_ASSERT(monotone);
   RC_ASSERT(std::min(c0, c1) * 128 <= next && next <= std::max(c0, c1) * 128);
+}
+
+// Gouraud triangle setup against the barycentric formulation of the same documented rule, on random
+// triangles with 12.4 vertices anywhere in a 256-pixel window and random pixels around them.
+RC_GTEST_PROP(GsArithProperty, GouraudTriangleMatchesBarycentric, ()) {
+  const auto coord = [] { return *rc::gen::inRange(0, 256 * 16); };
+  gs::gouraud_vertex gv[3];
+  gs_ref::plane_vertex rv[3];
+  for (int i = 0; i < 3; ++i) {
+    const int x = coord(), y = coord();
+    const std::uint32_t c = *word_gen();
+    gv[i] = {x, y, rgba8::from_u32(c)};
+    rv[i] = {x, y, gs_ref::byte(c, 1)};  // the green channel
+  }
+  const auto pixel = [] { return *rc::gen::inRange(-16, 272); };
+  const int xr = pixel(), yr = pixel(), x = pixel(), y = pixel();
+  const auto plane = gs::gouraud_triangle(gv[0], gv[1], gv[2], xr, yr);
+  RC_PRE(gs_ref::plane_det(rv) != 0);
+  RC_ASSERT(plane.has_value());
+  RC_ASSERT(static_cast<long long>(gs::gouraud_at(*plane, x, y).g.value()) == gs_ref::gouraud_plane_at(rv, xr, yr, x, y));
 }
 
 }  // namespace

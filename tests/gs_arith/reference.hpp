@@ -123,4 +123,37 @@ constexpr long long gradient(int c0, int c1, long long n) {
   return num < 0 ? -q : q;
 }
 
+// --- Gouraud triangle plane, by barycentric coordinates instead of gradients. ---
+// Vertices (x, y) in 1/16 pixel with one colour channel c. 128·plane(P) = 128·Σ c_i·A_i / det, where
+// A_i is the signed area opposite vertex i as seen from P and det = A_0 + A_1 + A_2.
+struct plane_vertex {
+  long long x, y;
+  int c;
+};
+constexpr long long cross(long long ax, long long ay, long long bx, long long by) { return ax * by - ay * bx; }
+// Σ c_i·A_i (numerator over det) at point (px, py).
+constexpr long long plane_numerator(const plane_vertex (&v)[3], long long px, long long py) {
+  long long sum = 0;
+  for (int i = 0; i < 3; ++i) {
+    const plane_vertex& j = v[(i + 1) % 3];
+    const plane_vertex& k = v[(i + 2) % 3];
+    sum += v[i].c * cross(j.x - px, j.y - py, k.x - px, k.y - py);
+  }
+  return sum;
+}
+constexpr long long plane_det(const plane_vertex (&v)[3]) {
+  return cross(v[1].x - v[0].x, v[1].y - v[0].y, v[2].x - v[0].x, v[2].y - v[0].y);
+}
+// The documented model: base = 128·c0 + trunc(128·(plane(ref) − c0)), steps trunc(128·Δplane) per
+// pixel in x and y, value = clamp(base + i·dx + j·dy, 0, 0x7FFF) at ref + (i, j).
+constexpr long long gouraud_plane_at(const plane_vertex (&v)[3], long long xr, long long yr, long long x, long long y) {
+  const long long det = plane_det(v);
+  const long long at_ref = plane_numerator(v, 16 * xr, 16 * yr);
+  const long long base = 128 * v[0].c + (128 * (at_ref - v[0].c * det)) / det;
+  const long long dx = (128 * (plane_numerator(v, 16 * xr + 16, 16 * yr) - at_ref)) / det;
+  const long long dy = (128 * (plane_numerator(v, 16 * xr, 16 * yr + 16) - at_ref)) / det;
+  const long long value = base + (x - xr) * dx + (y - yr) * dy;
+  return std::min<long long>(std::max<long long>(value, 0), 0x7FFF);
+}
+
 }  // namespace gs_ref
