@@ -1,13 +1,11 @@
 // Section 3.5: the two-pass method's error and its wrap limit s.
 #include <algorithm>
-#include <atomic>
 #include <cstdio>
-#include <cstdlib>
 #include <string>
 
+#include "gs_arith/gouraud.hpp"
 #include "proofs/claim_util.hpp"
 #include "proofs/claims.hpp"
-#include "gs_arith/gouraud.hpp"
 #include "proofs/domains.hpp"
 #include "proofs/methods.hpp"
 #include "proofs/two_pass.hpp"
@@ -126,11 +124,6 @@ constexpr span_certificate certificates[] = {
 };
 constexpr int span_max_pixels = 128;
 
-bool in_lights(int s, const ivec3& l) {
-  const int near = l[0] * l[0] + l[1] * l[1] + l[2] * l[2];
-  const int ax = std::abs(l[0]) + 1, ay = std::abs(l[1]) + 1, az = std::abs(l[2]) + 1;
-  return near <= s * s && s * s < ax * ax + ay * ay + az * az;
-}
 }  // namespace
 
 outcome two_pass_max_s_interpolated(const gs::model_options& o, const sweep_config& cfg) {
@@ -158,7 +151,7 @@ outcome two_pass_max_s_interpolated(const gs::model_options& o, const sweep_conf
   for (const auto& c : certificates) {
     const auto p = paper::pack_normal_from(c.iX, c.iY);
     const bool normal_ok = c.iX * c.iX + c.iY * c.iY <= 16358;
-    const bool lights_ok = in_lights(c.s, c.l0) && in_lights(c.s, c.l1) && c.pixels >= 1 &&
+    const bool lights_ok = is_packed_light(c.s, c.l0) && is_packed_light(c.s, c.l1) && c.pixels >= 1 &&
                            c.pixels <= span_max_pixels && c.k >= 0 && c.k <= c.pixels;
     auto colour = [](const ivec3& l) {
       return gs::rgba8{methods::byte(128 + l[0]), methods::byte(128 + l[1]), methods::byte(128 + l[2]), methods::byte(0x80)};

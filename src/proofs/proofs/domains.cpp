@@ -35,16 +35,18 @@ const std::vector<paper::packed_normal>& appendix2_normals() {
   return all;
 }
 
+bool is_packed_light(int s, const ivec3& l) noexcept {
+  const int near = l[0] * l[0] + l[1] * l[1] + l[2] * l[2];
+  const int ax = std::abs(l[0]) + 1, ay = std::abs(l[1]) + 1, az = std::abs(l[2]) + 1;
+  return near <= s * s && s * s < ax * ax + ay * ay + az * az;
+}
+
 std::vector<ivec3> packed_lights(int s) {
   std::vector<ivec3> out;
-  const int s2 = s * s;
   for (int x = -s; x <= s; ++x)
     for (int y = -s; y <= s; ++y)
-      for (int z = -s; z <= s; ++z) {
-        const int near = x * x + y * y + z * z;
-        const int ax = std::abs(x) + 1, ay = std::abs(y) + 1, az = std::abs(z) + 1;
-        if (near <= s2 && s2 < ax * ax + ay * ay + az * az) out.push_back({x, y, z});
-      }
+      for (int z = -s; z <= s; ++z)
+        if (is_packed_light(s, {x, y, z})) out.push_back({x, y, z});
   return out;
 }
 

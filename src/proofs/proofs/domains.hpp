@@ -28,6 +28,7 @@ const std::vector<paper::packed_normal>& appendix2_normals();  // computed once
 // half-open box iff its nearest point is inside the sphere and its far corner outside:
 // Σ k_i² <= s² < Σ (|k_i| + 1)².
 std::vector<ivec3> packed_lights(int s);
+bool is_packed_light(int s, const ivec3& l) noexcept;  // the membership test above
 
 // Every 8-bit normal-map vector b = round(127·n) of a unit n with n_z >= 0 (section 3.6; stored
 // centred at 128). The cell [b − ½, b + ½] meets the sphere of radius 127 iff
