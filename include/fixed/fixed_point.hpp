@@ -81,7 +81,12 @@ class fixed_point {
       if (r >= static_cast<double>(std::numeric_limits<Rep>::max())) return from_raw(std::numeric_limits<Rep>::max());
       return from_raw(static_cast<Rep>(r));
     } else {
-      if (r - r != 0) return std::nullopt;  // ±infinity
+      if (r - r != 0) {
+        // ±infinity has no residue. A finite d whose d·2^F overflowed (|d| >= 2^(1024-F)) has an ulp of at
+        // least 2^(972-F) > 2^w, so d·2^F is a multiple of 2^w: its residue is 0.
+        if (d - d != 0) return std::nullopt;
+        return from_raw(Rep{0});
+      }
       // r - trunc(r / 2^w) · 2^w is an integer in (-2^w, 2^w), so the subtraction is exact.
       constexpr double modulus = static_cast<double>(std::int64_t{1} << width_v<Rep>);
       const double low = r - detail::round_to_integer(r / modulus, rounding::toward_zero) * modulus;
