@@ -13,6 +13,7 @@ int main(int argc, char** argv) {
   gsdot3::cli::add_alu_command(app, ctx);
   gsdot3::cli::add_prove_command(app, ctx);
   gsdot3::cli::add_render_command(app, ctx);
+  gsdot3::cli::add_vectors_command(app, ctx);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

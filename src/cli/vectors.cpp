@@ -1,0 +1,147 @@
+// gsdot3 vectors — TestFloat-style test vectors for the GS colour ALU (docs/vectors.md):
+//   gsdot3 vectors gen --unit U [--level 1|2|all] [--seed N] [--count N] [--option NAME=VALUE] [-o FILE]
+//   gsdot3 vectors ver [FILE|-] [--errors N] [--errorstop] [--format gsdot3|ps2autotests] [--option NAME=VALUE]
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "commands.hpp"
+#include "gs_arith/options.hpp"
+#include "vectors/format.hpp"
+#include "vectors/generate.hpp"
+#include "vectors/units.hpp"
+#include "vectors/verify.hpp"
+
+namespace gsdot3::cli {
+namespace {
+
+namespace v = gsdot3::vectors;
+
+std::vector<std::pair<std::string, std::string>> parse_options(const std::vector<std::string>& items) {
+  std::vector<std::pair<std::string, std::string>> out;
+  gs::model_options check;
+  for (const auto& item : items) {
+    const auto eq = item.find('=');
+    if (eq == std::string::npos || eq == 0) throw usage_error("--option: expected NAME=VALUE, got '" + item + "'");
+    out.emplace_back(item.substr(0, eq), item.substr(eq + 1));
+    if (auto err = gs::set_option(check, out.back().first, out.back().second)) throw usage_error("--option: " + *err);
+  }
+  return out;
+}
+
+struct gen_args {
+  std::string unit, level = "1", output;
+  std::uint64_t seed = 1;
+  std::size_t count = 10000;
+  std::vector<std::string> options;
+};
+
+void run_gen(const gen_args& a) {
+  const v::unit* u = v::find_unit(a.unit);
+  if (!u) throw usage_error("--unit: unknown unit '" + a.unit + "' (one of " + std::string(v::unit_names()) + ")");
+  v::generate_settings s;
+  s.lvl = a.level == "1" ? v::level::one : a.level == "2" ? v::level::two : v::level::all;
+  s.seed = a.seed;
+  s.random_cases = a.count;
+  for (const auto& [name, value] : parse_options(a.options)) gs::set_option(s.options, name, value);
+  if (s.lvl == v::level::all && !u->exhaustive)
+    throw usage_error("--level all: unit " + a.unit + ": " + std::string(u->exhaustive_domain));
+  std::size_t n = 0;
+  if (a.output.empty()) {
+    n = v::generate(*u, s, std::cout);
+    std::cout.flush();
+  } else {
+    // Written to a temporary file and renamed, so no partial file is left behind.
+    const std::string tmp = a.output + ".tmp";
+    {
+      std::ofstream out(tmp, std::ios::binary);
+      if (!out) throw usage_error("-o: cannot write '" + a.output + "'");
+      n = v::generate(*u, s, out);
+      out.close();
+      if (!out) {
+        std::filesystem::remove(tmp);
+        throw usage_error("-o: error writing '" + a.output + "'");
+      }
+    }
+    std::filesystem::rename(tmp, a.output);
+  }
+  std::cerr << "gsdot3 vectors gen: " << n << " cases for unit " << a.unit << "\n";
+}
+
+struct ver_args {
+  std::string file = "-", format = "gsdot3";
+  std::size_t errors = 20;
+  bool errorstop = false;
+  std::vector<std::string> options;
+};
+
+int run_ver(const ver_args& a) {
+  v::verify_settings s;
+  s.max_errors = a.errors;
+  s.errorstop = a.errorstop;
+  s.option_overrides = parse_options(a.options);
+  std::unique_ptr<std::ifstream> file;
+  std::istream* in = &std::cin;
+  if (a.file != "-") {
+    file = std::make_unique<std::ifstream>(a.file);
+    if (!*file) throw usage_error("cannot read '" + a.file + "'");
+    in = file.get();
+  }
+  try {
+    const v::verify_result r =
+        a.format == "ps2autotests" ? v::verify_ps2autotests(*in, std::cout, s) : v::verify_vectors(*in, std::cout, s);
+    return r.failed > 0 ? 1 : 0;
+  } catch (const v::format_error& e) {
+    throw usage_error((a.file == "-" ? std::string("<stdin>") : a.file) + ": " + e.what());
+  }
+}
+
+std::string units_help() {
+  std::string s = "\nUnits (inputs => outputs, hex fields):";
+  for (const auto& u : v::units()) {
+    s += "\n  " + std::string(u.name) + ": " + std::string(u.summary) + "\n    ";
+    s += v::fields_comment(u).substr(2);
+  }
+  return s;
+}
+
+}  // namespace
+
+void add_vectors_command(CLI::App& app, context& ctx) {
+  auto* cmd = app.add_subcommand("vectors", "TestFloat-style test vectors: generate (gen) and verify (ver), see docs/vectors.md");
+  cmd->require_subcommand(1);
+
+  auto gen = std::make_shared<gen_args>();
+  auto* g = cmd->add_subcommand("gen", "Write test cases with the model's expected outputs (one per line) to stdout or -o FILE." +
+                                           units_help());
+  g->add_option("--unit", gen->unit, "Unit: " + std::string(v::unit_names()))->required();
+  g->add_option("--level", gen->level, "1: boundary patterns x every mode; 2: level 1 + weighted random cases; all: exhaustive")
+      ->check(CLI::IsMember({"1", "2", "all"}))
+      ->capture_default_str();
+  g->add_option("--seed", gen->seed, "Seed of the level-2 random cases")->capture_default_str();
+  g->add_option("--count", gen->count, "Random cases added by level 2")->capture_default_str();
+  g->add_option("--option", gen->options, "Model option NAME=VALUE (recorded in the header). Repeatable.");
+  g->add_option("-o,--output", gen->output, "Write to FILE (atomically) instead of stdout");
+  g->callback([gen] { run_gen(*gen); });
+
+  auto ver = std::make_shared<ver_args>();
+  auto* r = cmd->add_subcommand("ver",
+                                "Check each line's observed outputs against the model. Prints each mismatch as\n"
+                                "'inputs => observed expected: value', malformed lines as 'line N: malformed: why', and\n"
+                                "the closing line 'N passed, M failed'. Exit 1 when anything failed, 2 on a bad header.");
+  r->add_option("file", ver->file, "Vector file, or - for stdin")->capture_default_str();
+  r->add_option("--errors", ver->errors, "Failures printed in full (0 = all); all are counted")->capture_default_str();
+  r->add_flag("--errorstop", ver->errorstop, "Stop at the first failure (mismatch or malformed line)");
+  r->add_option("--format", ver->format, "gsdot3 (vector files) | ps2autotests (gs/blend.expected recordings)")
+      ->check(CLI::IsMember({"gsdot3", "ps2autotests"}))
+      ->capture_default_str();
+  r->add_option("--option", ver->options, "Model option NAME=VALUE, over the file's header. Repeatable.");
+  r->callback([ver, &ctx] { ctx.exit_code = run_ver(*ver); });
+}
+
+}  // namespace gsdot3::cli

@@ -1,0 +1,164 @@
+// vectors/verify.cpp — verification of vector files and of the ps2autotests blend recordings.
+#include "vectors/verify.hpp"
+
+#include <cstdint>
+#include <optional>
+#include <regex>
+#include <string_view>
+
+#include "gs_arith/pixel_pipeline.hpp"
+#include "vectors/format.hpp"
+
+namespace gsdot3::vectors {
+namespace {
+
+// Counts and prints results, honouring the error cap and --errorstop.
+class reporter {
+ public:
+  reporter(std::ostream& out, const verify_settings& s) : out_(out), s_(s) {}
+
+  void pass() { ++r_.passed; }
+  void mismatch(const std::string& inputs, const std::string& observed, const std::string& expected) {
+    fail(inputs + " => " + observed + " expected: " + expected);
+  }
+  void malformed(std::size_t line, const std::string& why) { fail("line " + std::to_string(line) + ": malformed: " + why); }
+  bool stopped() const { return s_.errorstop && r_.failed > 0; }
+  verify_result finish() {
+    out_ << r_.passed << " passed, " << r_.failed << " failed\n";
+    return r_;
+  }
+
+ private:
+  void fail(const std::string& text) {
+    ++r_.failed;
+    if (s_.max_errors == 0 || r_.failed <= s_.max_errors) {
+      out_ << text << '\n';
+    } else if (r_.failed == s_.max_errors + 1) {
+      out_ << "... further failures not shown (--errors " << s_.max_errors << ")\n";
+    }
+  }
+  std::ostream& out_;
+  const verify_settings& s_;
+  verify_result r_;
+};
+
+void apply_overrides(gs::model_options& o, const verify_settings& s) {
+  for (const auto& [name, value] : s.option_overrides) {
+    if (auto err = gs::set_option(o, name, value)) throw format_error(*err);
+  }
+}
+
+}  // namespace
+
+verify_result verify_vectors(std::istream& in, std::ostream& report, const verify_settings& s) {
+  reporter rep(report, s);
+  std::optional<header> h;
+  std::string line;
+  std::size_t number = 0;
+  while (!rep.stopped() && std::getline(in, line)) {
+    ++number;
+    if (!h) {
+      if (is_ignorable(line)) continue;
+      try {
+        h = parse_header(line);
+      } catch (const format_error& e) {
+        throw format_error("line " + std::to_string(number) + ": " + e.what());
+      }
+      apply_overrides(h->options, s);
+      continue;
+    }
+    if (is_ignorable(line)) continue;
+    const unit& u = *h->u;
+    try {
+      const parsed_case c = parse_case(u, line);
+      const values expected = u.evaluate(c.inputs, h->options);
+      if (expected == c.outputs) {
+        rep.pass();
+      } else {
+        rep.mismatch(format_fields(u.inputs, c.inputs), format_fields(u.outputs, c.outputs), format_fields(u.outputs, expected));
+      }
+    } catch (const format_error& e) {
+      rep.malformed(number, e.what());
+    } catch (const domain_error& e) {
+      rep.malformed(number, std::string("input outside the unit's domain: ") + e.what());
+    }
+  }
+  if (!h) throw format_error("line " + std::to_string(number + 1) + ": no header line '" + std::string(format_magic) + " " +
+                             std::to_string(format_version) + " unit=NAME ...' (empty input)");
+  return rep.finish();
+}
+
+namespace {
+
+// The pixel the recording read back: `dst` drawn without blending over a cleared PSMCT32 frame,
+// then `src` with blending on (see ../shared/hw/README.md for the test program's setup).
+std::uint32_t ps2autotests_pixel(const gs::alpha_reg& alpha, std::uint32_t src, std::uint32_t dst, const gs::model_options& o) {
+  gs::gs_registers regs;  // PSMCT32, FBMSK 0, COLCLAMP = 1, no PABE / FBA / dither / texture / alpha test
+  regs.PRIM.PRIM = gs::prim_type::SPRITE;
+  auto draw = [&](std::uint32_t colour, std::uint32_t old) {
+    const gs::pixel_input p{gs::fragment_colour::flat(gs::rgba8::from_u32(colour)), gs::rgba8{}, old, 0, 0};
+    return gs::pixel_pipeline(regs, p, o).out;
+  };
+  const std::uint32_t first = draw(dst, 0);
+  regs.PRIM.ABE = true;
+  regs.ALPHA_1 = alpha;
+  return draw(src, first);
+}
+
+std::string hex(std::uint64_t v, int digits) {
+  static constexpr char d[] = "0123456789abcdef";
+  std::string s;
+  for (int i = digits - 1; i >= 0; --i) s += d[(v >> (4 * i)) & 0xF];
+  return s;
+}
+
+}  // namespace
+
+verify_result verify_ps2autotests(std::istream& in, std::ostream& report, const verify_settings& s) {
+  gs::model_options o;
+  apply_overrides(o, s);
+  reporter rep(report, s);
+  static const std::regex mode_line(R"(^([0-2])([0-2])([0-2])([0-2]): .*$)");
+  static const std::regex sample_line(
+      R"(^\s*src: ([0-9a-fA-F]{8}), dst: ([0-9a-fA-F]{8}), fix: ([0-9a-fA-F]{2}) => ([0-9a-fA-F]{8})\s*$)");
+  std::optional<gs::alpha_reg> alpha;
+  std::string mode;
+  std::string line;
+  std::size_t number = 0;
+  std::smatch m;
+  while (!rep.stopped() && std::getline(in, line)) {
+    ++number;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (is_ignorable(line) || line.rfind("--", 0) == 0) continue;  // blank, "-- TEST BEGIN/END"
+    if (std::regex_match(line, m, mode_line)) {
+      auto digit = [&](int i) { return static_cast<std::uint8_t>(m[static_cast<std::size_t>(i)].str()[0] - '0'); };
+      alpha = gs::alpha_reg{static_cast<gs::blend_colour>(digit(1)), static_cast<gs::blend_colour>(digit(2)),
+                            static_cast<gs::blend_alpha>(digit(3)), static_cast<gs::blend_colour>(digit(4)), gs::u8{}};
+      mode = line.substr(0, 4);
+      continue;
+    }
+    if (!std::regex_match(line, m, sample_line)) {
+      rep.malformed(number, "neither an 'ABCD: ...' mode line nor a '  src: S, dst: D, fix: F => R' sample");
+      continue;
+    }
+    if (!alpha) {
+      rep.malformed(number, "a sample before any 'ABCD: ...' mode line");
+      continue;
+    }
+    const auto src = static_cast<std::uint32_t>(std::stoul(m[1].str(), nullptr, 16));
+    const auto dst = static_cast<std::uint32_t>(std::stoul(m[2].str(), nullptr, 16));
+    const auto fix = static_cast<std::uint32_t>(std::stoul(m[3].str(), nullptr, 16));
+    const auto recorded = static_cast<std::uint32_t>(std::stoul(m[4].str(), nullptr, 16));
+    gs::alpha_reg reg = *alpha;
+    reg.FIX = gs::u8::from_wrapped(fix);
+    const std::uint32_t model = ps2autotests_pixel(reg, src, dst, o);
+    if (model == recorded) {
+      rep.pass();
+    } else {
+      rep.mismatch(mode + " " + hex(src, 8) + " " + hex(dst, 8) + " " + hex(fix, 2), hex(recorded, 8), hex(model, 8));
+    }
+  }
+  return rep.finish();
+}
+
+}  // namespace gsdot3::vectors
