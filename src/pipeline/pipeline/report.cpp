@@ -274,6 +274,15 @@ report_summary write_report(const scene& s, const report_request& r) {
         "</table>\n<h2>Normalisation error of the float reference itself (not renormalised − renormalised)</h2>\n<table>\n" +
         head + stats_row("float", sum.normalisation) + "</table>\n<p>Float reference: " + fmt(sum.reference_seconds * 1000.0, 1) +
         " ms.</p>\n" + figure7 +
+        "<h2>What is modelled how</h2>\n<p>Register level (every pixel through gs::pixel_pipeline with the pass's "
+        "TEX0/ALPHA/COLCLAMP/FBMSK): step 1 (Z, ambient), the signed-multiplication passes of each method, the two-pass "
+        "alpha pass (PSMT8H of the DPB's own alpha), the ILP look-up × light colour added into the LAB, the diffuse pass "
+        "and the per-channel multiply blend. Value level: the PSMT8 channel fetch of the R+G+B post filter (the byte is "
+        "taken from the pixel's own word; the swizzled sprites are not modelled), the ILP's read of the summed byte, and "
+        "the LAB channel moved into the destination alpha for step 4. Rasteriser: 12.4 XY, top-left rule, Gouraud planes "
+        "from gs::gouraud_triangle, UV planes with 16 extra fraction bits, ZTST = GEQUAL. Post-filter sprites cover the "
+        "drawn triangles' bounding rectangle. fade_att = clamp(6·n·l, 0, 1) is applied per vertex by every method "
+        "(two-pass and baseline scale the tolight vector, four-pass uses HIGHLIGHT).</p>\n"
         "<h2>Frames</h2>\n<p>For each method: the lit frame; per light the 8-bit DPB after the post filter (0x80 = dot 0) "
         "and the error against the renormalised reference.</p>\n<p>Error legend: <span class=\"legend\"></span> −" +
         fmt(heat_limit, 0) + " … 0 … +" + fmt(heat_limit, 0) +
