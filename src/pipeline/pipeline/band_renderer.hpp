@@ -108,14 +108,17 @@ class band_renderer {
     });
   }
 
-  void fill(std::vector<std::uint32_t>& fb, std::uint32_t v) {
-    for (int y = band_.y0; y < band_.y1; ++y)
-      std::fill(fb.begin() + static_cast<std::ptrdiff_t>(index(band_.x0, y)),
-                fb.begin() + static_cast<std::ptrdiff_t>(index(band_.x1, y)), v);
+  // Fills the band (`whole`) or only the sprite area (where any pass can write) with v.
+  void fill(std::vector<std::uint32_t>& fb, std::uint32_t v, bool whole = true) {
+    const scissor& a = whole ? band_ : sprite_area_;
+    for (int y = a.y0; y < a.y1; ++y)
+      if (a.x0 < a.x1)
+        std::fill(fb.begin() + static_cast<std::ptrdiff_t>(index(a.x0, y)), fb.begin() + static_cast<std::ptrdiff_t>(index(a.x1, y)), v);
   }
 
   std::size_t index(int x, int y) const { return static_cast<std::size_t>(y) * static_cast<std::size_t>(ps_.width) + static_cast<std::size_t>(x); }
   const scissor& band() const { return band_; }
+  const scissor& sprite_area() const { return sprite_area_; }
   std::size_t pixel_ops() const { return ops_; }
 
  private:

@@ -127,7 +127,9 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
 
   for (std::size_t l = 0; l < s.lights.size(); ++l) {
     const std::vector<light_vertex>& lv = ps.lights[l];
-    r.fill(fb.dpb, clear_dpb);  // 2.1; 2.2 COLCLAMP = 0 in every pass of 2.3 and 2.4
+    // 2.1 (the DPB starts cleared; nothing is drawn outside the sprite area); 2.2 COLCLAMP = 0 in
+    // every pass of 2.3 and 2.4.
+    r.fill(fb.dpb, clear_dpb, false);
     switch (m) {
       case method::two_pass: {
         const auto attr = attributes(ps, [&](std::uint32_t v) { return pack_tolight(lv[v].T * lv[v].fade, o.s); }, normal_map_uv);
@@ -192,17 +194,19 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
   }
 
   // Step 3: the unlit diffuse layer.
-  r.fill(fb.diff, 0);
+  r.fill(fb.diff, 0, false);
   const texture_ref diffuse{in.diffuse->width, in.diffuse->height, nullptr, nullptr, in.diffuse->texels.data(), false, filter};
   r.draw<diffuse_layer>(&diffuse, attributes(ps, flat_white, normal_map_uv), fb.diff);
 
   // Step 4: diffuse × LAB per channel: (Cs − 0)·Ad >> 7 with the LAB channel in the destination
-  // alpha (value level), writing that channel only.
-  for (int y = band.y0; y < band.y1; ++y)
-    for (int x = band.x0; x < band.x1; ++x) fb.out[r.index(x, y)] = fb.lab[r.index(x, y)];
+  // alpha (value level), writing that channel only. Outside the sprite area the LAB and the output
+  // are 0.
+  const scissor& area = r.sprite_area();
+  for (int y = area.y0; y < area.y1; ++y)
+    for (int x = area.x0; x < area.x1; ++x) fb.out[r.index(x, y)] = fb.lab[r.index(x, y)];
   auto multiply = [&](int c, auto pass) {
-    for (int y = band.y0; y < band.y1; ++y)
-      for (int x = band.x0; x < band.x1; ++x) {
+    for (int y = area.y0; y < area.y1; ++y)
+      for (int x = area.x0; x < area.x1; ++x) {
         const std::size_t i = r.index(x, y);
         fb.out[i] = (fb.out[i] & 0x00FFFFFFu) | (((fb.lab[i] >> (8 * c)) & 0xFFu) << 24);
       }
@@ -230,7 +234,7 @@ frame render(const scene& s, const prepared_scene& ps, method m, const render_op
   result.colour.assign(n, 0);
   result.visible_triangle.assign(n, -1);
   result.dot.assign(s.lights.size(), std::vector<std::uint8_t>(n, 0));
-  frame_buffers fb{std::vector<std::uint32_t>(n), std::vector<std::uint32_t>(n), std::vector<std::uint32_t>(n),
+  frame_buffers fb{std::vector<std::uint32_t>(n), std::vector<std::uint32_t>(n), std::vector<std::uint32_t>(n, clear_dpb),
                    std::vector<std::uint32_t>(n), std::vector<std::uint32_t>(n)};
   const int bands = std::clamp(o.threads, 1, std::max(1, ps.height));
   std::vector<std::thread> workers;
