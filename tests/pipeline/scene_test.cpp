@@ -178,6 +178,37 @@ TEST_P(EveryMethod, CachedPathAndBandsEqualTheReferencePath) {
   }
 }
 
+// Random scenes: lights, camera, s, filter, thread count; the cached path and bands against the
+// reference path, bit for bit.
+TEST_P(EveryMethod, CachedPathEqualsReferencePathOnRandomScenes) {
+  std::mt19937 rng(23 + static_cast<unsigned>(GetParam()));
+  std::uniform_real_distribution<float> pos(-3.0f, 3.0f), yaw(0.0f, 360.0f);
+  std::uniform_int_distribution<int> byte(0, 255), scale(60, 127), threads(2, 5), size(40, 120);
+  for (int trial = 0; trial < 6; ++trial) {
+    scene s = shared_scene();
+    s.width = size(rng);
+    s.height = size(rng);
+    s.lights = {{{pos(rng), pos(rng), pos(rng)}, {static_cast<std::uint8_t>(byte(rng)), static_cast<std::uint8_t>(byte(rng)), static_cast<std::uint8_t>(byte(rng))}},
+                {{pos(rng), pos(rng), pos(rng)}, {static_cast<std::uint8_t>(byte(rng)), static_cast<std::uint8_t>(byte(rng)), static_cast<std::uint8_t>(byte(rng))}}};
+    s.view.eye = glm::vec3(pos(rng), pos(rng), 3.0f + std::fabs(pos(rng)));
+    const prepared_scene ps = prepare(s, yaw(rng), trial % 3 == 2);
+    render_options ref;
+    ref.path = raster_path::reference;
+    ref.threads = 1;
+    ref.s = scale(rng);
+    ref.bilinear = trial % 2 == 1;
+    render_options fast = ref;
+    fast.path = raster_path::cached;
+    fast.threads = threads(rng);
+    const frame a = render(s, ps, GetParam(), ref), b = render(s, ps, GetParam(), fast);
+    ASSERT_EQ(a.colour, b.colour) << "trial " << trial;
+    ASSERT_EQ(a.dot, b.dot) << "trial " << trial;
+    ASSERT_EQ(a.pixel_ops, b.pixel_ops) << "trial " << trial;
+    ASSERT_GT(std::count_if(a.visible_triangle.begin(), a.visible_triangle.end(), [](std::int32_t t) { return t >= 0; }), 200)
+        << "trial " << trial << ": the head should be in view";
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(Methods, EveryMethod, ::testing::Values(method::two_pass, method::four_pass, method::baseline),
                          [](const auto& info) { return std::string(info.param == method::two_pass ? "TwoPass" : info.param == method::four_pass ? "FourPass" : "Baseline"); });
 
