@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <vector>
 
 #include "proofs/domains.hpp"
@@ -145,4 +146,45 @@ TEST(Reduction, ErrorExtremesEqualBruteForceOnSubsampledNormals) {
     EXPECT_EQ(r.err.min, lo) << "every " << every;
     EXPECT_EQ(r.err.max, hi) << "every " << every;
   }
+}
+
+TEST(Reduction, InterpolatedLightsDoNotWrapAtTheArguedS) {
+  // The argument of two-pass.max-s.interpolated says no span of <= 128 pixels wraps for s <= 123.
+  // Brute force on the part of the domain nearest to wrapping: s = 123, the normals with iX = −127
+  // (where the vertex wraps of s = 126 are), every ordered pair of vertex lights with n·l/128 >= 121.5
+  // at Chebyshev distance 1, every span length and pixel; plain
+  // ints: 8.7 channel = 128·c0 + k·trunc(128·Δ/n), pass 1 − pass 2 = ±floor(|n|·L87/2^14).
+  const int s = 123;
+  const tp::light_grid g(s);
+  std::int64_t pixels = 0;
+  int worst_hi = -1000, worst_lo = 1000;
+  for (const auto& nm : normals_up_to_x(-127)) {
+    const auto n = ref::appendix2(nm.iX, nm.iY);
+    std::vector<p::ivec3> cap;
+    for (const auto& l : g.lights) {
+      const int nl = n.x * l[0] + n.y * l[1] + n.z * l[2];
+      if (nl >= 128 * 121 + 64) cap.push_back(l);
+    }
+    const int nc[3] = {n.x, n.y, n.z};
+    for (const auto& a : cap)
+      for (const auto& b : cap) {
+        if (a == b || std::max({std::abs(a[0] - b[0]), std::abs(a[1] - b[1]), std::abs(a[2] - b[2])}) > 1) continue;
+        for (int len = 1; len <= 128; ++len)
+          for (int k = 0; k <= len; ++k) {
+            int value = 3 * n.alpha - 384;
+            for (int c = 0; c < 3; ++c) {
+              const int c0 = 128 + a[static_cast<std::size_t>(c)], c1 = 128 + b[static_cast<std::size_t>(c)];
+              const int L = 128 * c0 + k * ((128 * (c1 - c0)) / len);
+              value += nc[c] >= 0 ? (nc[c] * L) / 16384 : -((-nc[c] * L) / 16384);
+            }
+            ++pixels;
+            worst_hi = std::max(worst_hi, value), worst_lo = std::min(worst_lo, value);
+          }
+      }
+  }
+  EXPECT_GT(pixels, 1000000) << pixels;
+  std::printf("s = 123: %lld pixels, value in [%d, %d]\n", static_cast<long long>(pixels), worst_lo, worst_hi);
+  EXPECT_LE(worst_hi, 127) << "a wrap at s = 123 would contradict the argument";
+  EXPECT_LE(worst_hi, s + 4);
+  EXPECT_GE(worst_lo, -s - 5);
 }
