@@ -150,6 +150,7 @@ std::vector<tri_attr> attributes(const prepared_scene& ps, Colour&& colour, UV&&
   std::vector<tri_attr> out(ps.triangles.size());
   for (std::size_t t = 0; t < ps.triangles.size(); ++t) {
     const prepared_triangle& tri = ps.triangles[t];
+    if (tri.setup.area2 == 0) continue;  // covers no pixel (prepare() never keeps one)
     std::array<gs::gouraud_vertex, 3> gv{};
     std::array<std::int32_t, 3> us{}, vs{};
     int x_ref = 1 << 16, y_ref = 1 << 16;
@@ -163,7 +164,8 @@ std::vector<tri_attr> attributes(const prepared_scene& ps, Colour&& colour, UV&&
       y_ref = std::min(y_ref, ceil_124(p.y));
     }
     // The plane's reference pixel is the triangle's top-left pixel (the step error grows with distance).
-    out[t].colour = *gs::gouraud_triangle(gv[0], gv[1], gv[2], x_ref + xy_offset_pixels, y_ref + xy_offset_pixels);
+    // gouraud_triangle clamps XY to 0..65535 (12.4 around XYOFFSET); empty only for zero area there.
+    if (const auto g = gs::gouraud_triangle(gv[0], gv[1], gv[2], x_ref + xy_offset_pixels, y_ref + xy_offset_pixels)) out[t].colour = *g;
     out[t].u = make_plane(tri.setup.v, us, -(1 << 20), 1 << 20);
     out[t].v = make_plane(tri.setup.v, vs, -(1 << 20), 1 << 20);
   }
