@@ -43,8 +43,10 @@ struct pass_regs {
   }
 };
 
-// One pixel: the new frame-buffer word.
-inline std::uint32_t gs_pixel(const gs::gs_registers& r, gs::rgba8 texel, const gs::fragment_colour& cf, std::uint32_t old,
+// One pixel: the new frame-buffer word. Always inlined and flattened, so that with the pass's
+// registers as a compile-time constant the compiler folds gs::pixel_pipeline down to that pass
+// (g++ also does it through the callers' flatten; clang needs it here).
+[[gnu::always_inline, gnu::flatten]] inline std::uint32_t gs_pixel(const gs::gs_registers& r, gs::rgba8 texel, const gs::fragment_colour& cf, std::uint32_t old,
                               int x, int y, const gs::model_options& o) noexcept {
   return gs::pixel_pipeline(r, {cf, texel, old, static_cast<unsigned>(x), static_cast<unsigned>(y)}, o).out;
 }
