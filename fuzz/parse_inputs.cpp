@@ -1,0 +1,125 @@
+// fuzz/parse_inputs.cpp — libFuzzer harness: every reader of user input must survive anything.
+//   OBJ meshes (pipeline::load_obj), PNG normal and height maps (load_normal_map_png,
+//   load_height_map_png), vector files and ps2autotests recordings (vectors::verify_*), register
+//   values by name (gs::set_register) and model options (gs::set_option).
+// Bad input must come back as the documented error (std::runtime_error from the file readers,
+// vectors::format_error, gs::register_error, an error string from set_option); any other exception,
+// a crash, a leak (LeakSanitizer) or a hang (libFuzzer -timeout) is a finding. A result that is
+// accepted must also satisfy its documented postconditions (checked below).
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <unistd.h>
+
+#include <fuzzer/FuzzedDataProvider.h>
+
+#include "fuzz_check.hpp"
+#include "gs_arith/options.hpp"
+#include "gs_arith/registers.hpp"
+#include "pipeline/files.hpp"
+#include "vectors/format.hpp"
+#include "vectors/verify.hpp"
+
+namespace {
+
+using gsdot3::fuzz::require;
+namespace pl = gsdot3::pipeline;
+
+// The file readers take paths: each input is written to one scratch file per process.
+std::filesystem::path scratch(const char* extension, const std::string& bytes) {
+  const auto path = std::filesystem::temp_directory_path() / ("gsdot3-parse-inputs-" + std::to_string(::getpid()) + extension);
+  std::ofstream(path, std::ios::binary).write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  return path;
+}
+
+void check_mesh(const pl::mesh& m) {
+  for (const auto& t : m.triangles) {
+    for (auto i : t) require(i < m.vertices.size(), [] { return std::string("load_obj accepted a triangle index out of range"); });
+  }
+}
+
+void check_normal_map(const pl::normal_map& n) {
+  auto power_of_two = [](int v) { return v >= 8 && v <= 1024 && (v & (v - 1)) == 0; };
+  require(power_of_two(n.width) && power_of_two(n.height), [&] {
+    return "normal map loader accepted " + std::to_string(n.width) + "x" + std::to_string(n.height);
+  });
+  require(n.index.size() == static_cast<std::size_t>(n.width) * static_cast<std::size_t>(n.height) && n.palette.size() <= 256 &&
+              !n.palette.empty(),
+          [] { return std::string("normal map sizes inconsistent"); });
+  for (auto i : n.index) require(i < n.palette.size(), [] { return std::string("normal map index beyond its palette"); });
+}
+
+void parse_obj(const std::string& bytes) {
+  try {
+    check_mesh(pl::load_obj(scratch(".obj", bytes)));
+  } catch (const std::runtime_error&) {
+  }
+}
+
+void parse_png(const std::string& bytes, bool height_map, float strength) {
+  const auto path = scratch(".png", bytes);
+  try {
+    check_normal_map(height_map ? pl::load_height_map_png(path, strength) : pl::load_normal_map_png(path));
+  } catch (const std::runtime_error&) {
+  }
+}
+
+void parse_vectors(const std::string& bytes, bool ps2autotests) {
+  std::istringstream in(bytes);
+  std::ostringstream report;
+  gsdot3::vectors::verify_settings s;
+  s.max_errors = 0;
+  try {
+    const auto r = ps2autotests ? gsdot3::vectors::verify_ps2autotests(in, report, s) : gsdot3::vectors::verify_vectors(in, report, s);
+    const std::string closing = std::to_string(r.passed) + " passed, " + std::to_string(r.failed) + " failed\n";
+    const std::string text = report.str();
+    require(text.size() >= closing.size() && text.compare(text.size() - closing.size(), closing.size(), closing) == 0,
+            [&] { return "vector report does not end with '" + closing + "'"; });
+  } catch (const gsdot3::vectors::format_error&) {
+  }
+}
+
+void parse_registers(FuzzedDataProvider& in) {
+  gs::gs_registers regs;
+  gs::model_options opts;
+  while (in.remaining_bytes() > 0) {
+    const std::string name = in.ConsumeRandomLengthString(16);
+    if (in.ConsumeBool()) {
+      const std::string value = in.ConsumeRandomLengthString(24);
+      (void)gs::set_option(opts, name, value);  // returns an error message, never throws
+      continue;
+    }
+    const auto value = in.ConsumeIntegral<std::uint64_t>();
+    try {
+      gs::set_register(regs, name, value);
+      // Accepted: the register holds exactly that value.
+      require(gs::register_value(regs, name) == value, [&] { return "set_register(" + name + ") does not read back"; });
+    } catch (const gs::register_error&) {
+    }
+  }
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  FuzzedDataProvider in(data, size);
+  const int reader = in.ConsumeIntegralInRange<int>(0, 5);
+  const float strength = in.ConsumeFloatingPointInRange<float>(-100.0f, 100.0f);
+  if (reader == 5) {
+    parse_registers(in);
+    return 0;
+  }
+  const std::string bytes = in.ConsumeRemainingBytesAsString();
+  switch (reader) {
+    case 0: parse_obj(bytes); break;
+    case 1: parse_png(bytes, false, strength); break;
+    case 2: parse_png(bytes, true, strength); break;
+    case 3: parse_vectors(bytes, false); break;
+    default: parse_vectors(bytes, true); break;
+  }
+  return 0;
+}
