@@ -6,13 +6,14 @@
 // vectors::format_error, gs::register_error, an error string from set_option); any other exception,
 // a crash, a leak (LeakSanitizer) or a hang (libFuzzer -timeout) is a finding. A result that is
 // accepted must also satisfy its documented postconditions (checked below).
-#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <system_error>
+
 #include <unistd.h>
 
 #include <fuzzer/FuzzedDataProvider.h>
@@ -29,9 +30,24 @@ namespace {
 using gsdot3::fuzz::require;
 namespace pl = gsdot3::pipeline;
 
-// The file readers take paths: each input is written to one scratch file per process.
-std::filesystem::path scratch(const char* extension, const std::string& bytes) {
-  const auto path = std::filesystem::temp_directory_path() / ("gsdot3-parse-inputs-" + std::to_string(::getpid()) + extension);
+// The file readers take paths: each input is written to one scratch file per extension and process,
+// removed when the process exits.
+struct scratch_files {
+  std::filesystem::path obj, png;
+  scratch_files() {
+    const auto base = std::filesystem::temp_directory_path() / ("gsdot3-parse-inputs-" + std::to_string(::getpid()));
+    obj = base.string() + ".obj";
+    png = base.string() + ".png";
+  }
+  ~scratch_files() {
+    std::error_code ignored;
+    std::filesystem::remove(obj, ignored);
+    std::filesystem::remove(png, ignored);
+  }
+};
+const std::filesystem::path& scratch(bool obj, const std::string& bytes) {
+  static const scratch_files files;
+  const auto& path = obj ? files.obj : files.png;
   std::ofstream(path, std::ios::binary).write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
   return path;
 }
@@ -55,13 +71,13 @@ void check_normal_map(const pl::normal_map& n) {
 
 void parse_obj(const std::string& bytes) {
   try {
-    check_mesh(pl::load_obj(scratch(".obj", bytes)));
+    check_mesh(pl::load_obj(scratch(true, bytes)));
   } catch (const std::runtime_error&) {
   }
 }
 
 void parse_png(const std::string& bytes, bool height_map, float strength) {
-  const auto path = scratch(".png", bytes);
+  const auto& path = scratch(false, bytes);
   try {
     check_normal_map(height_map ? pl::load_height_map_png(path, strength) : pl::load_normal_map_png(path));
   } catch (const std::runtime_error&) {
