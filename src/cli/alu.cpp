@@ -107,14 +107,13 @@ std::string option_help() {
 
 void add_alu_command(CLI::App& app, context& ctx) {
   auto args = std::make_shared<alu_args>();
-  CLI::App* cmd = app.add_subcommand(
-      "alu",
-      "The GS pixel pipeline on one pixel: prints the new frame-buffer word as 0xAABBGGRR (A8B8G8R8, alpha in the "
-      "top byte; 16-bit frames: 0x0000XXXX).\n"
+  CLI::App* cmd = app.add_subcommand("alu", "One pixel through the modeled GS: prints the new frame-buffer word 0xAABBGGRR");
+  cmd->footer(
+      "Prints the new frame-buffer word as 0xAABBGGRR (A8B8G8R8, alpha in the top byte; 16-bit frames: 0x0000XXXX).\n"
       "Unset registers are neutral: PRIM = 0 (no texture, no blending), TEX0_1 = 0, ALPHA_1 = 0, TEST_1 = 0 (no "
       "alpha test), FRAME_1 = 0 (PSMCT32, FBMSK = 0), COLCLAMP = 1 (clamp), PABE = 0, FBA_1 = 0, DTHE = 0, DIMX = 0. "
       "--dst defaults to 0x00000000, --x and --y to 0.\nModel options (--option NAME=VALUE):" +
-          option_help());
+      option_help());
   cmd->add_option("--reg", args->regs,
                   "Register NAME=VALUE, VALUE a 64-bit number (0x hex or decimal). NAME: PRIM, TEX0_1, ALPHA_1, TEST_1, "
                   "FRAME_1, COLCLAMP, PABE, FBA_1, DTHE, DIMX (GS manual bit layouts; reserved values are errors). "
@@ -125,7 +124,7 @@ void add_alu_command(CLI::App& app, context& ctx) {
   cmd->add_option("--x", args->x, "Pixel x (dither matrix column x & 3; default 0)");
   cmd->add_option("--y", args->y, "Pixel y (dither matrix row y & 3; default 0)");
   cmd->add_flag("--trace", args->trace, "Print every stage's value before the result");
-  cmd->add_option("--option", args->options, "Model option NAME=VALUE (see above). Repeatable.");
+  cmd->add_option("--option", args->options, "Model option NAME=VALUE (listed below). Repeatable.");
   cmd->callback([args, &ctx] {
     run_alu(*args);
     ctx.exit_code = 0;
