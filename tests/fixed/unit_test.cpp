@@ -238,6 +238,11 @@ TEST(FixedPoint, FromDouble) {
   static_assert(raw_of<rounding::floor, overflow::wrap>(256.0 + 1.0 / 256) == 1);
   // 1e300 · 2^8 is a multiple of 2^16 (its last mantissa bit is worth 2^944): wraps to 0.
   static_assert(raw_of<rounding::floor, overflow::wrap>(1e300) == 0);
+  // Fuzz finding (fuzz/corpus/fixed_ops/regression-from_double-wrap-overflow): d = -0x1.fffffffffffffp+1008
+  // (bits 0xfeffffffffffffff) times 2^31 overflows a double to -inf, yet d is finite and a multiple of
+  // 2^956, so d·2^31 mod 2^32 = 0: wrap gives 0, not nullopt.
+  using q0_31 = fixed::fixed_point<std::int32_t, 31>;
+  static_assert(raw_of<rounding::floor, overflow::wrap, q0_31>(-0x1.fffffffffffffp+1008) == 0);
   // 2^51 + 1/2 (exact in a double) at F = 0: ties to even 2^51 -> wraps to 0; ties up -> 1.
   using i32 = fixed::fixed_point<std::int32_t, 0>;
   static_assert(raw_of<rounding::nearest_ties_even, overflow::wrap, i32>(0x1p51 + 0.5) == 0);
