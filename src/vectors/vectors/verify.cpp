@@ -3,7 +3,6 @@
 
 #include <cstdint>
 #include <optional>
-#include <regex>
 #include <string_view>
 
 #include "gs_arith/pixel_pipeline.hpp"
@@ -112,32 +111,74 @@ std::string hex(std::uint64_t v, int digits) {
   return s;
 }
 
+// "ABCD: ..." with A, B, C, D each 0..2 (the ALPHA_1 selectors of the following samples).
+bool is_mode_line(std::string_view line) {
+  if (line.size() < 5 || line[4] != ':') return false;
+  for (std::size_t i = 0; i < 4; ++i)
+    if (line[i] < '0' || line[i] > '2') return false;
+  return true;
+}
+
+// Consumes exactly `digits` hex digits from the front of `rest`.
+std::optional<std::uint32_t> take_hex(std::string_view& rest, std::size_t digits) {
+  if (rest.size() < digits) return std::nullopt;
+  std::uint32_t v = 0;
+  for (std::size_t i = 0; i < digits; ++i) {
+    const char c = rest[i];
+    const int d = c >= '0' && c <= '9' ? c - '0' : c >= 'a' && c <= 'f' ? c - 'a' + 10 : c >= 'A' && c <= 'F' ? c - 'A' + 10 : -1;
+    if (d < 0) return std::nullopt;
+    v = v << 4 | static_cast<std::uint32_t>(d);
+  }
+  rest.remove_prefix(digits);
+  return v;
+}
+
+bool take_literal(std::string_view& rest, std::string_view word) {
+  if (rest.substr(0, word.size()) != word) return false;
+  rest.remove_prefix(word.size());
+  return true;
+}
+
+struct blend_sample {
+  std::uint32_t src, dst, fix, recorded;
+};
+
+// "  src: SSSSSSSS, dst: DDDDDDDD, fix: FF => RRRRRRRR" (blanks allowed around the line only).
+std::optional<blend_sample> parse_sample(std::string_view line) {
+  auto blank = [](char c) { return c == ' ' || c == '\t'; };
+  while (!line.empty() && blank(line.front())) line.remove_prefix(1);
+  while (!line.empty() && blank(line.back())) line.remove_suffix(1);
+  std::optional<std::uint32_t> src, dst, fix, recorded;
+  if (!take_literal(line, "src: ") || !(src = take_hex(line, 8)) || !take_literal(line, ", dst: ") ||
+      !(dst = take_hex(line, 8)) || !take_literal(line, ", fix: ") || !(fix = take_hex(line, 2)) ||
+      !take_literal(line, " => ") || !(recorded = take_hex(line, 8)) || !line.empty())
+    return std::nullopt;
+  return blend_sample{*src, *dst, *fix, *recorded};
+}
+
 }  // namespace
 
 verify_result verify_ps2autotests(std::istream& in, std::ostream& report, const verify_settings& s) {
   gs::model_options o;
   apply_overrides(o, s);
   reporter rep(report, s);
-  static const std::regex mode_line(R"(^([0-2])([0-2])([0-2])([0-2]): .*$)");
-  static const std::regex sample_line(
-      R"(^\s*src: ([0-9a-fA-F]{8}), dst: ([0-9a-fA-F]{8}), fix: ([0-9a-fA-F]{2}) => ([0-9a-fA-F]{8})\s*$)");
   std::optional<gs::alpha_reg> alpha;
   std::string mode;
   std::string line;
   std::size_t number = 0;
-  std::smatch m;
   while (!rep.stopped() && std::getline(in, line)) {
     ++number;
     if (!line.empty() && line.back() == '\r') line.pop_back();
     if (is_ignorable(line) || line.rfind("--", 0) == 0) continue;  // blank, "-- TEST BEGIN/END"
-    if (std::regex_match(line, m, mode_line)) {
-      auto digit = [&](int i) { return static_cast<std::uint8_t>(m[static_cast<std::size_t>(i)].str()[0] - '0'); };
+    if (is_mode_line(line)) {
+      auto digit = [&](int i) { return static_cast<std::uint8_t>(line[static_cast<std::size_t>(i - 1)] - '0'); };
       alpha = gs::alpha_reg{static_cast<gs::blend_colour>(digit(1)), static_cast<gs::blend_colour>(digit(2)),
                             static_cast<gs::blend_alpha>(digit(3)), static_cast<gs::blend_colour>(digit(4)), gs::u8{}};
       mode = line.substr(0, 4);
       continue;
     }
-    if (!std::regex_match(line, m, sample_line)) {
+    const auto sample = parse_sample(line);
+    if (!sample) {
       rep.malformed(number, "neither an 'ABCD: ...' mode line nor a '  src: S, dst: D, fix: F => R' sample");
       continue;
     }
@@ -145,10 +186,7 @@ verify_result verify_ps2autotests(std::istream& in, std::ostream& report, const 
       rep.malformed(number, "a sample before any 'ABCD: ...' mode line");
       continue;
     }
-    const auto src = static_cast<std::uint32_t>(std::stoul(m[1].str(), nullptr, 16));
-    const auto dst = static_cast<std::uint32_t>(std::stoul(m[2].str(), nullptr, 16));
-    const auto fix = static_cast<std::uint32_t>(std::stoul(m[3].str(), nullptr, 16));
-    const auto recorded = static_cast<std::uint32_t>(std::stoul(m[4].str(), nullptr, 16));
+    const auto [src, dst, fix, recorded] = *sample;
     gs::alpha_reg reg = *alpha;
     reg.FIX = gs::u8::from_wrapped(fix);
     const std::uint32_t model = ps2autotests_pixel(reg, src, dst, o);
