@@ -18,6 +18,7 @@
 #include "gs_arith/gouraud.hpp"
 #include "gs_arith/registers.hpp"
 #include "gs_arith/texture_function.hpp"
+#include "model_calls.hpp"
 #include "reference.hpp"
 
 #if defined(__SANITIZE_ADDRESS__)
@@ -39,7 +40,7 @@ constexpr int big_stride = 17;
 constexpr int big_stride = 1;
 #endif
 
-u8 u8v(int v) { return u8::from_wrapped(v); }
+using gs_test::u8v;
 
 // Prints the number of cases a sweep checked; `strided` sweeps say when they ran on the sub-lattice.
 void report(const char* what, unsigned long long cases, bool strided = false) {
@@ -169,12 +170,7 @@ TEST(GsArithExhaustive, AlphaTestAll) {
         for (auto psm : {gs::frame_psm::PSMCT32, gs::frame_psm::PSMCT24, gs::frame_psm::PSMCT16})
           for (int aref = 0; aref < 256; ++aref)
             for (int a = 0; a < 256; ++a) {
-              gs::test_reg t;
-              t.ATE = ate;
-              t.ATST = static_cast<gs::atst>(method);
-              t.AREF = u8v(aref);
-              t.AFAIL = static_cast<gs::afail>(afail);
-              const auto got = gs::alpha_test(t, u8v(a), psm);
+              const auto got = gs_test::alpha_test_of(ate, method, aref, afail, a, psm);
               const auto want = gs_ref::alpha_test(ate, method, aref, afail, a, psm == gs::frame_psm::PSMCT32);
               if (got.rgb != want[0] || got.a != want[1] || got.z != want[2])
                 FAIL() << method << " " << afail << " " << ate << " " << aref << " " << a;
@@ -292,12 +288,7 @@ class register_sweep {
   void check(const char* name, std::uint64_t v, bool valid) {
     ++cases_;
     gs::gs_registers regs;
-    bool ok = true;
-    try {
-      gs::set_register(regs, name, v);
-    } catch (const gs::register_error&) {
-      ok = false;
-    }
+    const bool ok = gs_test::decodes(regs, name, v);
     ASSERT_EQ(ok, valid) << name << " " << std::hex << v;
     if (ok) {
       ASSERT_EQ(gs::register_value(regs, name), v) << name << " " << std::hex << v;

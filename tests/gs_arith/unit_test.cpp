@@ -16,6 +16,7 @@
 #include "gs_arith/pixel_pipeline.hpp"
 #include "gs_arith/registers.hpp"
 #include "gs_arith/texture_function.hpp"
+#include "model_calls.hpp"
 #include "reference.hpp"
 
 namespace {
@@ -29,7 +30,7 @@ std::string hex(std::uint64_t v) {
   return buf;
 }
 
-u8 u8v(int v) { return u8::from_wrapped(v); }
+using gs_test::u8v;
 gs::gouraud_channel cf(int v87) { return gs::gouraud_channel::from_wrapped(v87); }
 
 constexpr int sample_values[] = {0x00, 0x01, 0x3F, 0x40, 0x7F, 0x80, 0x81, 0xC0, 0xFE, 0xFF};
@@ -113,12 +114,7 @@ TEST(AlphaTest, MethodsAndFailModes) {
         for (int aref : sample_values)
           for (int a : sample_values)
             for (auto psm : targets) {
-              gs::test_reg t;
-              t.ATE = ate;
-              t.ATST = static_cast<gs::atst>(method);
-              t.AREF = u8v(aref);
-              t.AFAIL = static_cast<gs::afail>(afail);
-              const auto got = gs::alpha_test(t, u8v(a), psm);
+              const auto got = gs_test::alpha_test_of(ate, method, aref, afail, a, psm);
               const bool is32 = psm == gs::frame_psm::PSMCT32 || psm == gs::frame_psm::PSMZ32;
               const auto want = gs_ref::alpha_test(ate, method, aref, afail, a, is32);
               ASSERT_EQ(got.rgb, want[0]) << method << " " << afail << " " << aref << " " << a;
