@@ -1,5 +1,6 @@
 // gsdot3 render / gsdot3 report — whole frames through the modeled GS, compared with the float
 // dot product. `report` adds the HTML page; both write PNGs and report.json into --out.
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <sstream>
@@ -11,6 +12,7 @@
 #include "pipeline/default_scene.hpp"
 #include "pipeline/files.hpp"
 #include "pipeline/report.hpp"
+#include "pipeline/scheme_method.hpp"
 
 namespace gsdot3::cli {
 namespace {
@@ -64,18 +66,49 @@ std::pair<int, int> parse_size(const std::string& text) {
   return {w, h};
 }
 
-std::vector<pipeline::method> parse_methods(const std::string& m) {
-  if (m == "all") return {pipeline::method::two_pass, pipeline::method::four_pass, pipeline::method::baseline};
-  if (m == "two-pass") return {pipeline::method::two_pass};
-  if (m == "four-pass") return {pipeline::method::four_pass};
-  if (m == "baseline") return {pipeline::method::baseline};
-  throw usage_error("--method: expected two-pass, four-pass, baseline or all, got '" + m + "'");
+// A comma-separated list of method names: the GS methods, the other seeds' scheme methods
+// (pipeline::scheme_methods()), "gs" (the three GS methods) or "all" (every method).
+struct method_choice {
+  std::vector<pipeline::method> gs;
+  std::vector<const pipeline::scheme_method*> schemes;
+};
+method_choice parse_methods(const std::string& list) {
+  const std::vector<pipeline::method> gs_methods{pipeline::method::two_pass, pipeline::method::four_pass, pipeline::method::baseline};
+  method_choice c;
+  auto add_gs = [&](pipeline::method m) { if (std::find(c.gs.begin(), c.gs.end(), m) == c.gs.end()) c.gs.push_back(m); };
+  auto add_scheme = [&](const pipeline::scheme_method* m) {
+    if (std::find(c.schemes.begin(), c.schemes.end(), m) == c.schemes.end()) c.schemes.push_back(m);
+  };
+  std::stringstream in(list);
+  for (std::string name; std::getline(in, name, ',');) {
+    if (name == "all" || name == "gs") {
+      for (auto m : gs_methods) add_gs(m);
+      if (name == "all")
+        for (const auto& sm : pipeline::scheme_methods()) add_scheme(&sm);
+      continue;
+    }
+    const auto gm = std::find_if(gs_methods.begin(), gs_methods.end(), [&](pipeline::method m) { return pipeline::name(m) == name; });
+    if (gm != gs_methods.end()) {
+      add_gs(*gm);
+    } else if (const auto* sm = pipeline::find_scheme_method(name)) {
+      add_scheme(sm);
+    } else {
+      std::string known = "two-pass, four-pass, baseline";
+      for (const auto& m : pipeline::scheme_methods()) known += ", " + std::string(m.name);
+      throw usage_error("--method: unknown method '" + name + "' (expected a comma-separated list of " + known + ", gs or all)");
+    }
+  }
+  // The float reference and the schemes take the visible triangle per pixel from a GS render.
+  if (c.gs.empty()) throw usage_error("--method: name at least one GS method (two-pass, four-pass, baseline): the others are drawn on its geometry");
+  return c;
 }
 
 void run(const render_args& a, bool html, context& ctx) {
   pipeline::report_request req;
   req.out_dir = a.out;
-  req.methods = parse_methods(a.method);
+  const method_choice chosen = parse_methods(a.method);
+  req.methods = chosen.gs;
+  req.schemes = chosen.schemes;
   req.write_html = html;
   if (a.s < 1 || a.s > 127) throw usage_error("--s: the tolight scale must be 1..127 (it is packed as a signed char), got " + std::to_string(a.s));
   req.options.s = a.s;
@@ -143,13 +176,18 @@ void run(const render_args& a, bool html, context& ctx) {
     std::cerr << "gsdot3: " << pipeline::name(m.m) << ": max |e| " << m.vs_renormalised.max_abs << ", RMSE "
               << m.vs_renormalised.rmse << ", within ±1 " << 100.0 * m.vs_renormalised.within_1 << "%, wraps "
               << m.vs_renormalised.wraps << ", frame " << m.seconds * 1000.0 << " ms\n";
+  for (const auto& m : sum.schemes)
+    std::cerr << "gsdot3: " << m.m->name << ": max |e| " << m.vs_renormalised.max_abs << ", RMSE " << m.vs_renormalised.rmse
+              << ", within ±1 " << 100.0 * m.vs_renormalised.within_1 << "%, frame " << m.seconds * 1000.0 << " ms\n";
   std::cout << (html ? sum.html : sum.json).string() << "\n";
   ctx.exit_code = 0;
 }
 
 void add_options(CLI::App* cmd, render_args& a) {
   cmd->add_option("--out", a.out, "output directory (created if missing)")->capture_default_str();
-  cmd->add_option("--method", a.method, "two-pass | four-pass | baseline | all")->capture_default_str();
+  std::string methods = "comma-separated: two-pass, four-pass, baseline";
+  for (const auto& m : pipeline::scheme_methods()) methods += ", " + std::string(m.name);
+  cmd->add_option("--method", a.method, methods + "; gs = the three GS methods, all = every method")->capture_default_str();
   cmd->add_option("--mesh", a.mesh, "Wavefront OBJ mesh (v, vt, vn, f v/vt/vn); default: the embedded head");
   cmd->add_option("--normal-map", a.normal_map,
                   "8-bit RGB PNG tangent-space normal map (power-of-two sides 8..1024), quantised to 256 entries");

@@ -53,7 +53,8 @@ image rgb_image(int w, int h, const std::vector<std::uint32_t>& words) {
 
 image grey_image(int w, int h, const std::vector<std::uint8_t>& bytes) { return {w, h, 1, bytes}; }
 
-// Reference dot products as the byte a DPB would hold: nearest(dot) + 128, clamped to 0..255.
+// Float dot products (the reference's, a scheme's) as the byte a DPB would hold: nearest(dot) + 128,
+// clamped to 0..255.
 std::vector<std::uint8_t> reference_bytes(const std::vector<float>& ref) {
   std::vector<std::uint8_t> b(ref.size(), 128);
   for (std::size_t i = 0; i < ref.size(); ++i)
@@ -73,11 +74,13 @@ constexpr int legend_rows = 20;
 
 // The error map of one light, plus a legend strip under it: −limit .. +limit left to right, with a
 // dark tick at every whole unit and a long one at 0.
-image error_map(int w, int h, const std::vector<std::uint8_t>& dot, const std::vector<float>& ref) {
+// `value(i)` is the method's dot product at pixel i, in 1/128 units.
+template <class Value>
+image error_map(int w, int h, Value&& value, const std::vector<float>& ref) {
   image img{w, h + legend_rows, 3, std::vector<std::uint8_t>(static_cast<std::size_t>(w) * static_cast<std::size_t>(h + legend_rows) * 3, 0x30)};
   for (std::size_t i = 0; i < ref.size(); ++i) {
     if (std::isnan(ref[i])) continue;
-    const auto c = heat(dot_value(dot[i]) - ref[i], heat_limit);
+    const auto c = heat(value(i) - ref[i], heat_limit);
     for (int k = 0; k < 3; ++k) img.data[3 * i + static_cast<std::size_t>(k)] = c[static_cast<std::size_t>(k)];
   }
   for (int y = h + 4; y < h + legend_rows; ++y)
@@ -148,11 +151,14 @@ error_stats compare(const std::vector<std::vector<std::uint8_t>>& dot, const std
   return a.done();
 }
 
-error_stats compare(const std::vector<std::vector<float>>& x, const std::vector<std::vector<float>>& ref) {
+error_stats compare(const std::vector<std::vector<float>>& x, const std::vector<std::vector<float>>& ref, bool clamp_reference_at_zero) {
   accumulator a;
   for (std::size_t l = 0; l < ref.size(); ++l)
     for (std::size_t i = 0; i < ref[l].size(); ++i)
-      if (!std::isnan(ref[l][i])) a.add(static_cast<double>(x[l][i]) - static_cast<double>(ref[l][i]));
+      if (!std::isnan(ref[l][i])) {
+        const double r = clamp_reference_at_zero ? std::max(0.0, static_cast<double>(ref[l][i])) : static_cast<double>(ref[l][i]);
+        a.add(static_cast<double>(x[l][i]) - r);
+      }
   return a.done();
 }
 
@@ -226,13 +232,48 @@ report_summary write_report(const scene& s, const report_request& r) {
     for (std::size_t l = 0; l < s.lights.size(); ++l) {
       const std::string dot = nm + "-dot-light" + std::to_string(l) + ".png", err = nm + "-error-light" + std::to_string(l) + ".png";
       write_png(r.out_dir / dot, grey_image(w, h, frames[k].dot[l]));
-      write_png(r.out_dir / err, error_map(w, h, frames[k].dot[l], ref.renormalised[l]));
+      write_png(r.out_dir / err, error_map(w, h, [&](std::size_t i) { return dot_value(frames[k].dot[l][i]); }, ref.renormalised[l]));
       images += "<img src=\"" + dot + "\" alt=\"" + nm + " DPB light " + std::to_string(l) + "\"> <img src=\"" + err +
                 "\" alt=\"" + nm + " error light " + std::to_string(l) + "\">\n";
     }
     images += "</p>\n";
     rows_norm += stats_row(nm + " (" + fmt(mr.seconds * 1000.0, 1) + " ms)", mr.vs_renormalised);
     rows_unnorm += stats_row(nm, mr.vs_unnormalised);
+  }
+
+  // The other seeds' methods on the same geometry (scheme_method.hpp).
+  for (const scheme_method* sm : r.schemes) {
+    say(std::string("rendering ") + std::string(sm->name) + " (seed " + std::string(sm->seed) + ")");
+    const auto ts = std::chrono::steady_clock::now();
+    const scheme_frame sf = sm->render(s, front, visible, r.options);
+    scheme_result sr{sm, seconds_since(ts), {}, {}};
+    sr.vs_renormalised = compare(sf.dot, ref.renormalised, sm->non_negative);
+    sr.vs_unnormalised = compare(sf.dot, ref.unnormalised, sm->non_negative);
+    const std::string nm(sm->name);
+    j["methods"][nm] = {{"frame_seconds", sr.seconds},
+                        {"seed", std::string(sm->seed)},
+                        {"summary", std::string(sm->summary)},
+                        {"compared_with", sm->non_negative ? "max(reference, 0)" : "reference"},
+                        {"vs_renormalised", to_json(sr.vs_renormalised)},
+                        {"vs_unnormalised", to_json(sr.vs_unnormalised)}};
+    write_png(r.out_dir / (nm + "-lit.png"), rgb_image(w, h, sf.colour));
+    images += "<h3>" + nm + " (seed " + std::string(sm->seed) + ")</h3>\n<p>" + std::string(sm->summary) +
+              (sm->non_negative ? " Compared with max(reference, 0)." : "") + "</p>\n<p><img src=\"" + nm + "-lit.png\" alt=\"" +
+              nm + " lit frame\">\n";
+    for (std::size_t l = 0; l < s.lights.size(); ++l) {
+      const std::string dot = nm + "-dot-light" + std::to_string(l) + ".png", err = nm + "-error-light" + std::to_string(l) + ".png";
+      std::vector<float> against = ref.renormalised[l];
+      if (sm->non_negative)
+        for (float& v : against) v = std::isnan(v) ? v : std::max(v, 0.0f);
+      write_png(r.out_dir / dot, grey_image(w, h, reference_bytes(sf.dot[l])));
+      write_png(r.out_dir / err, error_map(w, h, [&](std::size_t i) { return static_cast<double>(sf.dot[l][i]); }, against));
+      images += "<img src=\"" + dot + "\" alt=\"" + nm + " dot light " + std::to_string(l) + "\"> <img src=\"" + err +
+                "\" alt=\"" + nm + " error light " + std::to_string(l) + "\">\n";
+    }
+    images += "</p>\n";
+    rows_norm += stats_row(nm + " (" + fmt(sr.seconds * 1000.0, 1) + " ms)", sr.vs_renormalised);
+    rows_unnorm += stats_row(nm, sr.vs_unnormalised);
+    sum.schemes.push_back(sr);
   }
 
   // Figure 7: two-pass and four-pass, front and back.
@@ -266,7 +307,7 @@ report_summary write_report(const scene& s, const report_request& r) {
         std::to_string(s.normals.palette.size()) + " palette entries), s = " + std::to_string(r.options.s) + ", filter " +
         (r.options.bilinear ? "bilinear" : "nearest") +
         (r.options.specular ? ", specular (half vectors, ILP power " + fmt(r.options.specular_power, 1) + ")" : std::string()) + ".</p>\n"
-        "<p>Errors e = GS dot product − float dot product, in 1/128 units, over every covered pixel and every light. "
+        "<p>Errors e = method's dot product − float dot product, in 1/128 units, over every covered pixel and every light. "
         "A wrap error is |e| &gt; 128 (the modulo-256 sum wrapped). Frame times are one wall-clock run of this "
         "command; the benchmarks give stable figures.</p>\n"
         "<h2>Against the renormalised float reference (128·fade·N·normalize(L))</h2>\n<table>\n" + head + rows_norm +

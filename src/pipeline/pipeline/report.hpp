@@ -9,6 +9,7 @@
 
 #include "pipeline/reference.hpp"
 #include "pipeline/render.hpp"
+#include "pipeline/scheme_method.hpp"
 
 namespace gsdot3::pipeline {
 
@@ -21,12 +22,15 @@ struct error_stats {
   std::size_t wraps = 0;
 };
 error_stats compare(const std::vector<std::vector<std::uint8_t>>& dot, const std::vector<std::vector<float>>& reference);
-// The same statistics for reference minus reference (the normalisation error).
-error_stats compare(const std::vector<std::vector<float>>& a, const std::vector<std::vector<float>>& b);
+// The same statistics for float values x (a scheme's dot products, or the reference itself) minus the
+// reference; `clamp_reference_at_zero` compares with max(reference, 0) instead.
+error_stats compare(const std::vector<std::vector<float>>& x, const std::vector<std::vector<float>>& reference,
+                    bool clamp_reference_at_zero = false);
 
 struct report_request {
   std::filesystem::path out_dir = "gsdot3-out";
   std::vector<method> methods{method::two_pass, method::four_pass, method::baseline};
+  std::vector<const scheme_method*> schemes;              // the other seeds' methods (scheme_method.hpp)
   render_options options{};
   std::string scene_description = "embedded procedural scene";
   bool write_html = true;                                 // false: `render` (images + JSON only)
@@ -39,8 +43,15 @@ struct method_result {
   error_stats vs_renormalised, vs_unnormalised;
 };
 
+struct scheme_result {
+  const scheme_method* m = nullptr;
+  double seconds = 0;
+  error_stats vs_renormalised, vs_unnormalised;  // against max(reference, 0) when m->non_negative
+};
+
 struct report_summary {
   std::vector<method_result> methods;
+  std::vector<scheme_result> schemes;
   double reference_seconds = 0;
   error_stats normalisation;  // unnormalised − renormalised reference
   std::filesystem::path html, json;

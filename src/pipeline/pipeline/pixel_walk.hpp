@@ -1,0 +1,55 @@
+// pipeline/pixel_walk.hpp — the per-pixel inputs of a float evaluation on the GS render's geometry:
+// the same visible triangle per pixel (from the GS render's step 1), the exact barycentric weights
+// of the pixel centre in the 12.4 triangle, the same normal-map texel footprint (UV planes as the
+// rasteriser sets them up) and the tangent-space light interpolated with those weights. The float
+// reference (reference.cpp) and the other seeds' schemes (scheme_method.hpp) both walk the frame
+// through this one function, so they see the same pixels. Compiled with -ffp-contract=off.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "pipeline/prepare.hpp"
+#include "pipeline/scene.hpp"
+
+namespace gsdot3::pipeline {
+
+struct pixel_sample {
+  int x = 0, y = 0;
+  std::size_t index = 0;          // y·width + x
+  std::size_t triangle = 0;       // index into prepared_scene::triangles
+  glm::dvec3 lambda{};            // barycentric weights of the pixel centre
+  std::int32_t u16 = 0, v16 = 0;  // normal-map coordinates of the pixel, 12.4 texels (as the GS samples)
+};
+
+// Calls f for every pixel whose visible_triangle is ≥ 0, in raster order.
+void for_each_covered_pixel(const prepared_scene& ps, const std::vector<std::int32_t>& visible_triangle,
+                            const std::function<void(const pixel_sample&)>& f);
+
+// Light `l` at the pixel: T = Σ λ_k T_k (not renormalised), fade = Σ λ_k fade_k.
+struct pixel_light {
+  glm::dvec3 T{};
+  double fade = 0.0;
+};
+pixel_light interpolate_light(const prepared_scene& ps, std::size_t l, const pixel_sample& p);
+
+// A texel value filtered at (u16, v16): nearest, or the GS's 4-bit-weight bilinear blend of the four
+// texels (gs::footprint) applied to the float values texel(u, v) returns (u, v unwrapped integers).
+glm::dvec3 filtered(const std::function<glm::dvec3(std::int32_t, std::int32_t)>& texel, std::int32_t u16, std::int32_t v16,
+                    bool bilinear);
+
+// Texel (u, v) of a map with power-of-two sides, wrapped (REPEAT), as a row-major index.
+constexpr std::size_t wrapped_texel(int width, int height, std::int32_t u, std::int32_t v) noexcept {
+  return static_cast<std::size_t>(v & (height - 1)) * static_cast<std::size_t>(width) + static_cast<std::size_t>(u & (width - 1));
+}
+
+// The lit frame from per-light dot products d_l (1/128 units, NaN = not covered), composed as the
+// GS methods' steps 2.6–4 do in float: diffuse · min(ambient + Σ colour_l · (max(d_l, 0)/128)^power, 255) / 128.
+std::vector<std::uint32_t> compose_lit(const scene& s, const prepared_scene& ps, const std::vector<std::int32_t>& visible_triangle,
+                                       const std::vector<std::vector<float>>& dot, bool bilinear, double power);
+
+}  // namespace gsdot3::pipeline
