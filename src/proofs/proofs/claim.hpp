@@ -22,6 +22,10 @@ struct claim {
   method how;                  // exhaustive, or a reduction whose argument is beside the code
   std::vector<std::string_view> depends_on;  // model options (gs::option_catalogue names)
   outcome (*evaluate)(const gs::model_options&, const sweep_config&);
+  // Which seed the claim comes from: the ledger groups claims under it. The paper's own claims keep
+  // the default; the other seeds' rows (src/schemes) name theirs, e.g. "Seed 001: Green 2007, ...".
+  std::string_view section = mikkelsen_section;
+  static constexpr std::string_view mikkelsen_section = "Seed 000: Mikkelsen 2004, DOT3 Normal Mapping on the PS2";
 };
 
 // The catalogue, in the paper's order. Ids are unique.

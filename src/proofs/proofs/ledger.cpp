@@ -36,7 +36,12 @@ std::string ledger_text(const std::vector<claim_result>& results) {
   std::snprintf(line, sizeof line, "%-36s %-14s %16s %9s\n", "claim", "verdict", "domain", "seconds");
   os << line;
   double total = 0;
+  std::string_view section = claim::mikkelsen_section;  // the paper's claims come first, without a heading
   for (const auto& r : results) {
+    if (r.row->section != section) {
+      section = r.row->section;
+      os << "== " << section << "\n";
+    }
     std::snprintf(line, sizeof line, "%-36s %-14s %16llu %9.3f\n", std::string(r.row->id).c_str(),
                   verdict_text(r.result).c_str(), static_cast<unsigned long long>(r.result.domain_size), r.seconds);
     os << line;
@@ -63,6 +68,7 @@ std::string ledger_json(const std::vector<claim_result>& results) {
   for (const auto& r : results) {
     nlohmann::ordered_json c;
     c["id"] = r.row->id;
+    c["section"] = r.row->section;
     c["paper"] = r.row->paper;
     c["statement"] = r.row->statement;
     c["verdict"] = name(r.result.result);
@@ -99,7 +105,12 @@ std::string ledger_markdown(const std::vector<claim_result>& results) {
         "it depends on. `proven`: holds on the whole domain; `refuted (N)`: N counterexamples, the first\n"
         "few listed; `bound`: tight extremes, with the inputs that reach them.\n\n"
         "| claim | paper | verdict | domain size | option changes |\n|---|---|---|---:|---|\n";
+  std::string_view section = claim::mikkelsen_section;
   for (const auto& r : results) {
+    if (r.row->section != section) {
+      section = r.row->section;
+      os << "| **" << section << "** | | | | |\n";
+    }
     std::string changes;
     for (const auto& v : r.variants)
       if (v.changed) changes += (changes.empty() ? "" : "; ") + v.option + "=" + v.value + " → " + verdict_text(v.result);
@@ -111,7 +122,12 @@ std::string ledger_markdown(const std::vector<claim_result>& results) {
     }() << ") | " << r.row->paper << " | " << verdict_text(r.result) << " | " << r.result.domain_size << " | "
        << (changes.empty() ? "—" : changes) << " |\n";
   }
+  section = claim::mikkelsen_section;
   for (const auto& r : results) {
+    if (r.row->section != section) {
+      section = r.row->section;
+      os << "\n# " << section << "\n";
+    }
     os << "\n## " << r.row->id << "\n\n";
     os << "- Paper: " << r.row->paper << ". " << r.row->statement << ".\n";
     os << "- Domain: " << r.row->domain << " (" << r.result.domain_size << "); method: " << name(r.row->how) << ".\n";
