@@ -61,7 +61,8 @@ constexpr bool alpha_test_passes(atst method, u8 a, u8 aref) noexcept {
   return false;
 }
 
-constexpr write_enables alpha_test(const test_reg& t, u8 a, frame_psm psm, const model_options& o) noexcept {
+// `o` defaults to the model defaults, so callers without options keep their meaning.
+constexpr write_enables alpha_test(const test_reg& t, u8 a, frame_psm psm, const model_options& o = {}) noexcept {
   if (!t.ATE || alpha_test_passes(t.ATST, a, t.AREF)) return {true, true, true};
   switch (t.AFAIL) {
     case afail::KEEP: return {false, false, false};
