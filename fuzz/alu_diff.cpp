@@ -45,9 +45,10 @@ gs::model_options random_options(FuzzedDataProvider& in) {
   o.tfx = in.ConsumeBool() ? gs::tfx_rounding::truncate : gs::tfx_rounding::floor;
   o.gouraud = in.ConsumeBool() ? gs::gouraud_fraction::truncate_to_8 : gs::gouraud_fraction::keep_fraction;
   o.shift = in.ConsumeBool() ? gs::blend_shift::truncate : gs::blend_shift::floor;
-  o.dither = in.ConsumeBool() ? gs::dither_decode::sign_magnitude : gs::dither_decode::twos_complement;
+  o.dither = static_cast<gs::dither_decode>(in.ConsumeIntegralInRange<int>(0, 2));  // the three decodes
   o.dither_on = in.ConsumeBool() ? gs::dither_targets::all_formats : gs::dither_targets::sixteen_bit_only;
   o.bilinear = in.ConsumeBool() ? gs::bilinear_mode::nearest : gs::bilinear_mode::lerp16_4;
+  o.rgb_only = in.ConsumeBool() ? gs::rgb_only_targets::all_formats : gs::rgb_only_targets::thirty_two_bit_only;
   return o;
 }
 
@@ -191,7 +192,7 @@ reference_pixel pixel_reference(const gs::gs_registers& r, const gs::pixel_input
       case 0: ref.write_rgb = ref.write_a = false; break;  // KEEP
       case 1: break;                                       // FB_ONLY
       case 2: ref.write_rgb = ref.write_a = false; break;  // ZB_ONLY
-      default: ref.write_a = bits != 32; break;            // RGB_ONLY (FB_ONLY unless 32-bit)
+      default: ref.write_a = bits != 32 && o.rgb_only == gs::rgb_only_targets::thirty_two_bit_only; break;  // RGB_ONLY
     }
   }
   // The destination as read.
@@ -218,7 +219,10 @@ reference_pixel pixel_reference(const gs::gs_registers& r, const gs::pixel_input
   // Dither.
   const bool dither = r.DTHE.DTHE && (o.dither_on == gs::dither_targets::all_formats || bits == 16);
   const int dm = r.DIMX.DM[in.y % 4][in.x % 4].value();
-  const int offset = o.dither == gs::dither_decode::twos_complement ? (dm >= 4 ? dm - 8 : dm) : ((dm & 4) ? -(dm & 3) : dm & 3);
+  const int offset = dm < 4 ? dm
+                     : o.dither == gs::dither_decode::twos_complement ? dm - 8
+                     : o.dither == gs::dither_decode::sign_magnitude  ? 4 - dm
+                                                                      : 3 - dm;  // inverted_magnitude
   for (int c = 0; c < 3; ++c) ref.dithered[c] = ref.blend[c] + (dither ? offset : 0);
   // COLCLAMP, FBA.
   for (int c = 0; c < 3; ++c) ref.clamped[c] = r.COLCLAMP.CLAMP ? std::clamp(ref.dithered[c], 0, 255) : ref.dithered[c] & 0xFF;

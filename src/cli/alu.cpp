@@ -8,6 +8,7 @@
 #include "commands.hpp"
 #include "gs_arith/options.hpp"
 #include "gs_arith/pixel_pipeline.hpp"
+#include "gs_arith/profiles.hpp"
 #include "gs_arith/registers.hpp"
 
 namespace gsdot3::cli {
@@ -58,7 +59,7 @@ std::pair<std::string, std::string> split_assignment(const std::string& what, co
 
 struct alu_args {
   std::vector<std::string> regs, options;
-  std::string vertex, texel, dst = "00000000";
+  std::string vertex, texel, dst = "00000000", profile;
   unsigned x = 0, y = 0;
   bool trace = false;
 };
@@ -75,6 +76,8 @@ void run_alu(const alu_args& a) {
     }
   }
   gs::model_options opts;
+  if (!a.profile.empty())
+    if (auto err = gs::apply_profile(opts, a.profile)) throw usage_error("--profile: " + *err);
   for (const auto& o : a.options) {
     const auto [name, value] = split_assignment("--option", o);
     if (auto err = gs::set_option(opts, name, value)) throw usage_error("--option: " + *err);
@@ -125,6 +128,8 @@ void add_alu_command(CLI::App& app, context& ctx) {
   cmd->add_option("--y", args->y, "Pixel y (dither matrix row y & 3; default 0)");
   cmd->add_flag("--trace", args->trace, "Print every stage's value before the result");
   cmd->add_option("--option", args->options, "Model option NAME=VALUE (listed below). Repeatable.");
+  cmd->add_option("--profile", args->profile,
+                  "Emulator option set (" + gs::profile_names() + ", docs/evidence.md); --option overrides it");
   cmd->callback([args, &ctx] {
     run_alu(*args);
     ctx.exit_code = 0;

@@ -11,6 +11,7 @@
 
 #include "commands.hpp"
 #include "gs_arith/options.hpp"
+#include "gs_arith/profiles.hpp"
 #include "proofs/claim.hpp"
 #include "proofs/ledger.hpp"
 #include "proofs/runner.hpp"
@@ -20,6 +21,7 @@ namespace gsdot3::cli {
 namespace {
 struct prove_args {
   std::vector<std::string> claims, options;
+  std::string profile;
   bool json = false, markdown = false, no_variants = false, list = false;
   unsigned threads = 0;
 };
@@ -46,6 +48,8 @@ struct progress_printer {
 void run_prove(const prove_args& a, context& ctx) {
   if (a.json && a.markdown) throw usage_error("--json and --markdown are exclusive");
   gs::model_options opts;
+  if (!a.profile.empty())
+    if (auto err = gs::apply_profile(opts, a.profile)) throw usage_error("--profile: " + *err);
   for (const auto& o : a.options) {
     const auto eq = o.find('=');
     if (eq == std::string::npos || eq == 0) throw usage_error("--option: expected NAME=VALUE, got '" + o + "'");
@@ -84,6 +88,8 @@ void add_prove_command(CLI::App& app, context& ctx) {
   auto* cmd = app.add_subcommand("prove", "Settle the paper's claims on the modeled GS: proven, refuted (with witnesses) or bound");
   cmd->add_option("--claim", args->claims, "Claim id to run (repeatable; default: the whole catalogue)");
   cmd->add_option("--option", args->options, "Model option NAME=VALUE for the base run (repeatable)");
+  cmd->add_option("--profile", args->profile,
+                  "Emulator option set for the base run (" + gs::profile_names() + "); --option overrides it");
   cmd->add_flag("--json", args->json, "Print the ledger as one JSON document");
   cmd->add_flag("--markdown", args->markdown, "Print the ledger as Markdown (docs/claims.md; no timings)");
   cmd->add_flag("--no-variants", args->no_variants, "Skip the re-runs under the other option values");

@@ -9,6 +9,7 @@
 
 #include "commands.hpp"
 #include "gs_arith/options.hpp"
+#include "gs_arith/profiles.hpp"
 #include "pipeline/default_scene.hpp"
 #include "pipeline/files.hpp"
 #include "pipeline/report.hpp"
@@ -20,6 +21,7 @@ namespace {
 struct render_args {
   std::string out = "gsdot3-out", method = "all", mesh, normal_map, size = "512x448", filter = "nearest", path = "cached";
   std::string camera, height_map;
+  std::string profile;
   float bump = 0.05f;
   std::vector<std::string> lights, model_options;
   int s = 122, threads = 2;
@@ -123,6 +125,8 @@ void run(const render_args& a, bool html, context& ctx) {
     req.options.specular = true;
     req.options.specular_power = a.specular;
   }
+  if (!a.profile.empty())
+    if (auto err = gs::apply_profile(req.options.model, a.profile)) throw usage_error("--profile: " + *err);
   for (const std::string& kv : a.model_options) {
     const auto eq = kv.find('=');
     if (eq == std::string::npos) throw usage_error("--model-option: expected NAME=VALUE, got '" + kv + "'");
@@ -206,6 +210,7 @@ void add_options(CLI::App* cmd, render_args& a) {
   cmd->add_option("--path", a.path, "rasteriser path: cached (fast) | reference (re-rasterise every pass)")->capture_default_str();
   cmd->add_option("--threads", a.threads, "frame bands rendered in parallel")->capture_default_str();
   cmd->add_option("--model-option", a.model_options, "GS model option NAME=VALUE (see `gsdot3 alu --help`)");
+  cmd->add_option("--profile", a.profile, "GS model options of an emulator (" + gs::profile_names() + "); --model-option overrides it");
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 
 #include "commands.hpp"
 #include "gs_arith/options.hpp"
+#include "gs_arith/profiles.hpp"
 #include "vectors/format.hpp"
 #include "vectors/generate.hpp"
 #include "vectors/units.hpp"
@@ -34,8 +35,18 @@ std::vector<std::pair<std::string, std::string>> parse_options(const std::vector
   return out;
 }
 
+// A profile as option assignments (every option), to put before the --option ones.
+std::vector<std::pair<std::string, std::string>> profile_options(const std::string& name) {
+  std::vector<std::pair<std::string, std::string>> out;
+  if (name.empty()) return out;
+  gs::model_options check;
+  if (auto err = gs::apply_profile(check, name)) throw usage_error("--profile: " + *err);
+  for (const auto& row : gs::option_catalogue()) out.emplace_back(row.name, gs::option_value(check, row.name));
+  return out;
+}
+
 struct gen_args {
-  std::string unit, level = "1", output;
+  std::string unit, level = "1", output, profile;
   std::uint64_t seed = 1;
   std::size_t count = 10000;
   std::vector<std::string> options;
@@ -48,6 +59,7 @@ void run_gen(const gen_args& a) {
   s.lvl = a.level == "1" ? v::level::one : a.level == "2" ? v::level::two : v::level::all;
   s.seed = a.seed;
   s.random_cases = a.count;
+  for (const auto& [name, value] : profile_options(a.profile)) gs::set_option(s.options, name, value);
   for (const auto& [name, value] : parse_options(a.options)) gs::set_option(s.options, name, value);
   if (s.lvl == v::level::all && !u->exhaustive)
     throw usage_error("--level all: unit " + a.unit + ": " + std::string(u->exhaustive_domain));
@@ -74,7 +86,7 @@ void run_gen(const gen_args& a) {
 }
 
 struct ver_args {
-  std::string file = "-", format = "gsdot3";
+  std::string file = "-", format = "gsdot3", profile;
   std::size_t errors = 20;
   bool errorstop = false;
   std::vector<std::string> options;
@@ -84,7 +96,8 @@ int run_ver(const ver_args& a) {
   v::verify_settings s;
   s.max_errors = a.errors;
   s.errorstop = a.errorstop;
-  s.option_overrides = parse_options(a.options);
+  s.option_overrides = profile_options(a.profile);
+  for (auto& kv : parse_options(a.options)) s.option_overrides.push_back(std::move(kv));
   std::unique_ptr<std::ifstream> file;
   std::istream* in = &std::cin;
   if (a.file != "-") {
@@ -127,6 +140,7 @@ void add_vectors_command(CLI::App& app, context& ctx) {
   g->add_option("--count", gen->count, "Random cases added by level 2")->capture_default_str();
   g->add_option("--option", gen->options, "Model option NAME=VALUE (recorded in the header). Repeatable.");
   g->add_option("-o,--output", gen->output, "Write to FILE (atomically) instead of stdout");
+  g->add_option("--profile", gen->profile, "Emulator option set (" + gs::profile_names() + "); --option overrides it");
   g->callback([gen] { run_gen(*gen); });
 
   auto ver = std::make_shared<ver_args>();
@@ -141,6 +155,8 @@ void add_vectors_command(CLI::App& app, context& ctx) {
       ->check(CLI::IsMember({"gsdot3", "ps2autotests"}))
       ->capture_default_str();
   r->add_option("--option", ver->options, "Model option NAME=VALUE, over the file's header. Repeatable.");
+  r->add_option("--profile", ver->profile,
+                "Emulator option set (" + gs::profile_names() + ") over the file's header; --option overrides it");
   r->callback([ver, &ctx] { ctx.exit_code = run_ver(*ver); });
 }
 

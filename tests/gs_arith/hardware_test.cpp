@@ -1,9 +1,10 @@
-// gs_arith_hardware — the PS2 recordings in ${GSDOT3_SHARED_DIR}/hw reproduced through the pixel
-// pipeline, set up exactly as the recordings were made (shared/hw/README.md):
-// blend.expected: frame PSMCT32 cleared to 0, a sprite with vertex colour dst drawn without blending,
-// then a sprite with vertex colour src and ALPHA_1 = (A, B, C, D, FIX) blending, COLCLAMP = 1; the
-// pixel at (0, 0) is read back. simpletexture.expected: texel 0xFF808080, TFX = MODULATE, TCC = RGB,
-// vertex 0x80808080. Skips (the only GTEST_SKIP of the suite) when the recordings are absent.
+// gs_arith_hardware — the PS2 recordings reproduced through the pixel pipeline, set up exactly as they
+// were made (tests/data/hw/README.md). The recordings travel with the project as pixel vectors in
+// tests/data/hw/ (GSDOT3_HW_DATA_DIR): blend: frame PSMCT32 cleared to 0, a sprite with vertex colour
+// dst drawn without blending, then a sprite with vertex colour src and ALPHA_1 = (A, B, C, D, FIX)
+// blending, COLCLAMP = 1, the pixel at (0, 0) read back; simpletexture: texel 0xFF808080, TFX =
+// MODULATE, TCC = RGB, vertex 0x80808080. When ../shared/hw (GSDOT3_HW_DIR) is beside the clone, the
+// re-encoding is compared with the original .expected files; that comparison alone skips without it.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -18,12 +19,14 @@
 
 namespace {
 
-const std::filesystem::path hw_dir = GSDOT3_HW_DIR;
+const std::filesystem::path shared_hw_dir = GSDOT3_HW_DIR;   // ../shared/hw, the original recordings
+const std::filesystem::path data_dir = GSDOT3_HW_DATA_DIR;    // tests/data/hw, their re-encoding
 
 struct blend_record {
   std::string mode;  // "ABCD" digits
   std::uint32_t src, dst, result;
   unsigned fix;
+  friend bool operator==(const blend_record&, const blend_record&) = default;
 };
 
 // Header lines "ABCD: ..." (digits 0..2) and rows "  src: SSSSSSSS, dst: DDDDDDDD, fix: FF => RRRRRRRR".
@@ -40,6 +43,50 @@ std::vector<blend_record> read_blend_records(const std::filesystem::path& file) 
       out.push_back({mode, src, dst, result, fix});
     }
   }
+  return out;
+}
+
+// One case line of a pixel vector file: PRIM TEX0_1 ALPHA_1 TEST_1 FRAME_1 COLCLAMP PABE FBA_1 DTHE DIMX
+// CfR CfG CfB CfA texel dst X Y => out (docs/vectors.md), all hex.
+struct pixel_case {
+  unsigned long long prim, tex0, alpha, test, frame, dimx;
+  unsigned colclamp, pabe, fba, dthe, cf[4], texel, dst, x, y, out;
+};
+std::vector<pixel_case> read_pixel_cases(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  std::vector<pixel_case> out;
+  std::string line;
+  bool header = false;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    if (!header) {
+      header = line.rfind("gsdot3-vectors 1 unit=pixel", 0) == 0;
+      continue;
+    }
+    pixel_case c{};
+    const int n = std::sscanf(line.c_str(), "%llx %llx %llx %llx %llx %x %x %x %x %llx %x %x %x %x %x %x %x %x => %x", &c.prim,
+                              &c.tex0, &c.alpha, &c.test, &c.frame, &c.colclamp, &c.pabe, &c.fba, &c.dthe, &c.dimx, &c.cf[0],
+                              &c.cf[1], &c.cf[2], &c.cf[3], &c.texel, &c.dst, &c.x, &c.y, &c.out);
+    if (n == 19) out.push_back(c);
+  }
+  return out;
+}
+
+// A blend case back as (mode, src, dst, fix, result): ALPHA_1 digits and FIX, src from the flat 8.7 colour.
+blend_record blend_of(const pixel_case& c) {
+  blend_record r;
+  for (int i = 0; i < 4; ++i) r.mode += static_cast<char>('0' + ((c.alpha >> (2 * i)) & 3));
+  r.fix = static_cast<unsigned>((c.alpha >> 32) & 0xFF);
+  r.src = 0;
+  for (int i = 0; i < 4; ++i) r.src |= (c.cf[i] >> 7) << (8 * i);
+  r.dst = c.dst;
+  r.result = c.out;
+  return r;
+}
+
+std::vector<blend_record> recorded_blends() {
+  std::vector<blend_record> out;
+  for (const auto& c : read_pixel_cases(data_dir / "ps2autotests-gs-blend.vectors")) out.push_back(blend_of(c));
   return out;
 }
 
@@ -104,10 +151,8 @@ int reference_mismatches(const std::vector<blend_record>& records, variant v) {
 }
 
 TEST(GsArithHardware, Blend486) {
-  const auto file = hw_dir / "ps2autotests-gs-blend.expected";
-  if (!std::filesystem::exists(file)) GTEST_SKIP() << "hardware recordings not found: " << file << " (../shared/hw missing)";
-  const auto records = read_blend_records(file);
-  ASSERT_EQ(records.size(), 486u) << "unexpected recording format";
+  const auto records = recorded_blends();
+  ASSERT_EQ(records.size(), 486u) << "unexpected re-encoding in " << data_dir;
 
   gs::model_options floor_opts;
   const int floor_bad = mismatches(records, floor_opts, true);
@@ -125,22 +170,36 @@ TEST(GsArithHardware, Blend486) {
   EXPECT_GT(trunc_bad, 0) << "the recordings must distinguish the two shifts";
 }
 
-TEST(GsArithHardware, SimpleTexture) {
-  const auto file = hw_dir / "ps2autotests-gs-simpletexture.expected";
-  if (!std::filesystem::exists(file)) GTEST_SKIP() << "hardware recordings not found: " << file << " (../shared/hw missing)";
-  std::ifstream in(file);
-  std::string line;
-  std::uint32_t recorded = 0;
-  bool found = false;
-  while (std::getline(in, line)) {
-    unsigned colour = 0;
-    if (std::sscanf(line.c_str(), "color: %8x", &colour) == 1) {
-      recorded = colour;
-      found = true;
+// Each re-encoded case, replayed exactly as its fields say (registers decoded strictly), gives the
+// recorded word: the file is a valid vector file of the recordings, whatever the replay above assumed.
+TEST(GsArithHardware, ReencodedCasesReplayAsPixelVectors) {
+  for (const char* name : {"ps2autotests-gs-blend.vectors", "ps2autotests-gs-simpletexture.vectors"}) {
+    const auto cases = read_pixel_cases(data_dir / name);
+    ASSERT_FALSE(cases.empty()) << name;
+    for (const auto& c : cases) {
+      gs::gs_registers regs;
+      gs::set_register(regs, "PRIM", c.prim);
+      gs::set_register(regs, "TEX0_1", c.tex0);
+      gs::set_register(regs, "ALPHA_1", c.alpha);
+      gs::set_register(regs, "TEST_1", c.test);
+      gs::set_register(regs, "FRAME_1", c.frame);
+      gs::set_register(regs, "COLCLAMP", c.colclamp);
+      gs::set_register(regs, "PABE", c.pabe);
+      gs::set_register(regs, "FBA_1", c.fba);
+      gs::set_register(regs, "DTHE", c.dthe);
+      gs::set_register(regs, "DIMX", c.dimx);
+      auto ch = [](unsigned v) { return gs::gouraud_channel::from_wrapped(v); };
+      const gs::pixel_input px{{ch(c.cf[0]), ch(c.cf[1]), ch(c.cf[2]), ch(c.cf[3])}, gs::rgba8::from_u32(c.texel), c.dst,
+                               c.x, c.y};
+      EXPECT_EQ(gs::pixel_pipeline(regs, px, gs::model_options{}).out, c.out) << name;
     }
   }
-  ASSERT_TRUE(found) << "no 'color:' line in " << file;
+}
 
+TEST(GsArithHardware, SimpleTexture) {
+  const auto cases = read_pixel_cases(data_dir / "ps2autotests-gs-simpletexture.vectors");
+  ASSERT_EQ(cases.size(), 1u);
+  const std::uint32_t recorded = cases.front().out;
   for (auto tfx_round : {gs::tfx_rounding::floor, gs::tfx_rounding::truncate}) {
     for (auto frac : {gs::gouraud_fraction::keep_fraction, gs::gouraud_fraction::truncate_to_8}) {
       gs::model_options o;
@@ -155,6 +214,25 @@ TEST(GsArithHardware, SimpleTexture) {
                                                                << gs::option_value(o, "gouraud_fraction");
     }
   }
+}
+
+// The re-encoding is faithful: the same samples in the same order as the console's .expected output.
+TEST(GsArithHardware, ReencodingMatchesSharedRecordings) {
+  const auto blend = shared_hw_dir / "ps2autotests-gs-blend.expected";
+  const auto texture = shared_hw_dir / "ps2autotests-gs-simpletexture.expected";
+  if (!std::filesystem::exists(blend) || !std::filesystem::exists(texture))
+    GTEST_SKIP() << "original recordings not found in " << shared_hw_dir
+                 << ": only this cross-check of tests/data/hw against ../shared/hw is skipped";
+  const auto original = read_blend_records(blend);
+  ASSERT_EQ(original.size(), 486u);
+  EXPECT_TRUE(original == recorded_blends());
+  std::ifstream in(texture);
+  std::string line;
+  unsigned colour = 0;
+  bool found = false;
+  while (std::getline(in, line)) found = found || std::sscanf(line.c_str(), "color: %8x", &colour) == 1;
+  ASSERT_TRUE(found) << "no 'color:' line in " << texture;
+  EXPECT_EQ(read_pixel_cases(data_dir / "ps2autotests-gs-simpletexture.vectors").at(0).out, colour);
 }
 
 }  // namespace

@@ -86,6 +86,15 @@ constexpr std::array<bool, 3> alpha_test(bool ate, int method, int aref, int afa
 // --- dither: 3-bit DIMX entry as an offset. ---
 constexpr int dither_twos(int dm) { return dm < 4 ? dm : dm - 8; }
 constexpr int dither_sign_magnitude(int dm) { return dm < 4 ? dm : 4 - dm; }
+// DobieStation 68dd073e (issue 17): 4 -> −1, 5 -> −2, 6 -> −3, 7 -> −4.
+constexpr int dither_inverted_magnitude(int dm) { return dm < 4 ? dm : 3 - dm; }
+
+// --- bilinear as one 2-D weighted sum with weights a/16, b/16, the way DobieStation computes it: in
+// doubles (exact here), truncated. ---
+inline int weighted_sum_4(int t00, int t10, int t01, int t11, int a, int b) {
+  const double x = a / 16.0, y = b / 16.0;
+  return static_cast<int>((1 - x) * (1 - y) * t00 + x * (1 - y) * t10 + (1 - x) * y * t01 + x * y * t11);
+}
 
 // --- frame formats. ---
 constexpr std::uint32_t pack16(std::uint32_t c) {

@@ -123,7 +123,43 @@ TEST(AlphaTest, MethodsAndFailModes) {
             }
 }
 
+TEST(AlphaTest, RgbOnlyAllFormatsKeepsAlphaEverywhere) {
+  gs::model_options all;
+  all.rgb_only = gs::rgb_only_targets::all_formats;
+  for (auto psm : {gs::frame_psm::PSMCT32, gs::frame_psm::PSMCT24, gs::frame_psm::PSMCT16, gs::frame_psm::PSMZ16S})
+    for (int afail = 0; afail < 4; ++afail)
+      for (int a : sample_values) {
+        const auto got = gs_test::alpha_test_of(true, 2, 0x80, afail, a, psm, all);  // LESS
+        const auto want = gs_ref::alpha_test(true, 2, 0x80, afail, a, true);         // as on a 32-bit frame
+        ASSERT_EQ(got.rgb, want[0]) << afail << " " << a;
+        ASSERT_EQ(got.a, want[1]) << afail << " " << a;
+        ASSERT_EQ(got.z, want[2]) << afail << " " << a;
+      }
+}
+
 // ---------------------------------------------------------------- dither
+TEST(Dither, DecodeInvertedMagnitude) {
+  for (int dm = 0; dm < 8; ++dm)
+    EXPECT_EQ(gs::dither_value(gs::u3::from_wrapped(dm), gs::dither_decode::inverted_magnitude).value(),
+              gs_ref::dither_inverted_magnitude(dm));
+}
+
+// The DIMX programs commonly set (ps2dev forum: rows 4,2,5,3 / 0,6,1,7 / 5,3,4,2 / 1,7,0,6) under each
+// decode, against the transposed 4x4 Bayer offsets floor(B / 2) − 4 written out by hand.
+TEST(Dither, CommonMatrixIsBayerOnlyAsTwosComplement) {
+  const int dimx[4][4] = {{4, 2, 5, 3}, {0, 6, 1, 7}, {5, 3, 4, 2}, {1, 7, 0, 6}};
+  const int bayer_t[4][4] = {{-4, 2, -3, 3}, {0, -2, 1, -1}, {-3, 3, -4, 2}, {1, -1, 0, -2}};
+  auto matches = [&](gs::dither_decode d) {
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j)
+        if (gs::dither_value(gs::u3::from_wrapped(dimx[i][j]), d).value() != bayer_t[i][j]) return false;
+    return true;
+  };
+  EXPECT_TRUE(matches(gs::dither_decode::twos_complement));
+  EXPECT_FALSE(matches(gs::dither_decode::sign_magnitude));
+  EXPECT_FALSE(matches(gs::dither_decode::inverted_magnitude));
+}
+
 TEST(Dither, DecodeBothOptions) {
   for (int dm = 0; dm < 8; ++dm) {
     EXPECT_EQ(gs::dither_value(gs::u3::from_wrapped(dm), gs::dither_decode::twos_complement).value(),
@@ -260,6 +296,26 @@ TEST(Bilinear, FilterHorizontalThenVertical) {
         ASSERT_EQ(gs_ref::byte(got.to_u32(), ch), gs_ref::lerp16_4(top, bottom, wv)) << wu << " " << wv << " " << ch;
       }
     }
+}
+
+TEST(Bilinear, WeightedSum4IsTheDoubleSumTruncated) {
+  for (int wu = 0; wu < 16; ++wu)
+    for (int wv = 0; wv < 16; ++wv)
+      for (int t00 : sample_values)
+        for (int t11 : sample_values) {
+          const int t10 = 255 - t00, t01 = (t00 + t11) / 2;
+          const auto got = gs::weighted_sum_4(u8v(t00), u8v(t10), u8v(t01), u8v(t11), gs::u4::from_wrapped(wu),
+                                              gs::u4::from_wrapped(wv));
+          ASSERT_EQ(got.value(), gs_ref::weighted_sum_4(t00, t10, t01, t11, wu, wv)) << wu << " " << wv;
+        }
+}
+
+TEST(Bilinear, SampleWeightedSum4UsesTheLerpFootprint) {
+  auto fetch = [](std::int32_t u, std::int32_t v) { return rgba8::from_u32(static_cast<std::uint32_t>(u * 40 + v * 3)); };
+  // u = 3 + 15/16 + 1/2 texels: footprint u0 = 3, wu = 15 (as lerp16_4); v = 5.5: v0 = 5, wv = 0.
+  const auto got = gs::sample(fetch, 16 * 3 + 15 + 8, 16 * 5 + 8, gs::bilinear_mode::weighted_sum_4);
+  const int want = gs_ref::weighted_sum_4(3 * 40 + 15, 4 * 40 + 15, 3 * 40 + 18, 4 * 40 + 18, 15, 0);
+  EXPECT_EQ(gs_ref::byte(got.to_u32(), 0), want);
 }
 
 TEST(Bilinear, SampleNearestIgnoresNeighbours) {

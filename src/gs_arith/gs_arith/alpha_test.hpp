@@ -1,10 +1,16 @@
 // gs_arith/alpha_test.hpp — TEST.ATE / ATST / AREF / AFAIL: which of RGB, A and Z a pixel writes.
 //
-// Evidence (facts digest, "Alpha test"; PCSX2 SW and HLSL; GS manual): the post-TFX alpha is compared
-// with the 8-bit AREF by ATST; on failure AFAIL picks what is still written:
+// Evidence (facts digest, "Alpha test"; matrix row rgb_only_targets of docs/evidence.md): the post-TFX
+// alpha is compared with the 8-bit AREF by ATST (PCSX2 GSDrawScanline.cpp TestAlpha, DobieStation
+// gsthread.cpp draw_pixel, Play! GSH_VulkanDrawUtils.cpp CDrawUtils::AlphaTest agree); on failure AFAIL
+// picks what is still written:
 //   KEEP     nothing          FB_ONLY  RGB and A, not Z     ZB_ONLY  only Z
-//   RGB_ONLY RGB only (not A, not Z) — on 32-bit targets only; other formats act as FB_ONLY
-//            (PCSX2 PR 9652, tested against a PS2; confidence medium: no recording here).
+//   RGB_ONLY RGB only (not A, not Z). Model option rgb_only_targets: thirty_two_bit_only (default) —
+//            other frame formats act as FB_ONLY (PCSX2 GSRegs.h GIFRegTEST::GetAFAIL(FRAME.PSM); PR 9652,
+//            tested against a PS2 per the facts digest) | all_formats — the alpha (16-bit: the A bit) is
+//            kept on every format (Play! CDrawUtils::AlphaTest, DobieStation at 3a23544b). Deciding it by
+//            TEX0.PSM (DobieStation at 68dd073e, issue 17) is not modelled: the texture's format has no
+//            part in the frame write (GetAFAIL takes FRAME.PSM). Confidence medium: no recording here.
 // ATE = 0 or a pass writes everything (Z subject to the depth test, which is not modelled here).
 #pragma once
 
@@ -13,6 +19,7 @@
 #include "fixed/integer.hpp"
 #include "gs_arith/colour.hpp"
 #include "gs_arith/frame_write.hpp"
+#include "gs_arith/options.hpp"
 
 namespace gs {
 
@@ -54,14 +61,15 @@ constexpr bool alpha_test_passes(atst method, u8 a, u8 aref) noexcept {
   return false;
 }
 
-constexpr write_enables alpha_test(const test_reg& t, u8 a, frame_psm psm) noexcept {
+// `o` defaults to the model defaults, so callers without options keep their meaning.
+constexpr write_enables alpha_test(const test_reg& t, u8 a, frame_psm psm, const model_options& o = {}) noexcept {
   if (!t.ATE || alpha_test_passes(t.ATST, a, t.AREF)) return {true, true, true};
   switch (t.AFAIL) {
     case afail::KEEP: return {false, false, false};
     case afail::FB_ONLY: return {true, true, false};
     case afail::ZB_ONLY: return {false, false, true};
     case afail::RGB_ONLY:
-      if (bits_of(psm) == pixel_bits::b32) return {true, false, false};
+      if (bits_of(psm) == pixel_bits::b32 || o.rgb_only == rgb_only_targets::all_formats) return {true, false, false};
       return {true, true, false};
   }
   return {true, true, true};

@@ -1,11 +1,18 @@
 // gs_arith/dither.hpp — DTHE / DIMX: a 4×4 matrix of 3-bit offsets added to the blended colour.
 //
-// Evidence (facts digest, "After the blend", step 1): the offset DIMX[y & 3][x & 3] is added to each
-// RGB channel of the wide (s11) blend output, before COLCLAMP clamp/wrap (PCSX2 SW; early GSdx
-// GSRasterizer: `DMxy = ((u16*)&DIMX)[y & 3] >> ((x & 3) << 2)`, sign-extended from 3 bits, then
-// clamp). No hardware recording covers dithering, so both choices below are model options:
-// - dither_decode: twos_complement −4..+3 (default, SW `s32 DM:3`) | sign_magnitude −3..+3 (DB).
-// - dither_targets: sixteen_bit_only (default, SW) | all_formats (DB).
+// Evidence (facts digest, "After the blend", step 1; matrix rows dither_decode, dither_targets of
+// docs/evidence.md): the offset DIMX[y & 3][x & 3] is added to each RGB channel of the wide (s11)
+// blend output, before COLCLAMP clamp/wrap (PCSX2 GSDrawScanline.cpp CDrawScanline "WriteFrame";
+// DobieStation gsthread.cpp draw_pixel). No hardware recording covers dithering, so these are options:
+// - dither_decode: twos_complement −4..+3 (default; PCSX2 GSRegs.h `s32 DM00:3`, expanded by
+//   GSState::ExpandDIMX) | sign_magnitude −3..+3 (DobieStation draw_pixel at 3a23544b: `dither & 0x4`
+//   subtracts `dither & 0x3`) | inverted_magnitude −1..−4 for 4..7 (DobieStation at 68dd073e, issue 17).
+//   Plausibility: the DIMX commonly set by PS2 programs (forums.ps2dev.org, "HOWTO: Make 16bit mode look
+//   like 32bit", rows 4,2,5,3 / 0,6,1,7 / 5,3,4,2 / 1,7,0,6) reads exactly as the (transposed) 4×4 Bayer
+//   matrix of offsets −4..+3 under twos_complement; inverted_magnitude gives the same offsets with the
+//   four negative levels in reverse order; sign_magnitude never gives −4 and gives 0 four times.
+// - dither_targets: sixteen_bit_only (default; PCSX2 SW `fpsm == 2`, HW `dfmt == 2`) | all_formats
+//   (DobieStation draw_pixel, no format test).
 // DIMX layout (GS manual): DMij occupies bits 16·i + 4·j .. +2 (row i = y & 3, column j = x & 3).
 #pragma once
 
@@ -35,6 +42,10 @@ constexpr s3 dither_value(u3 dm, dither_decode decode) noexcept {
     case dither_decode::sign_magnitude: {
       const int magnitude = bits & 3;
       return s3::from_wrapped((bits & 4) != 0 ? -magnitude : magnitude);  // 4 is −0
+    }
+    case dither_decode::inverted_magnitude: {
+      const int magnitude = bits & 3;
+      return s3::from_wrapped((bits & 4) != 0 ? -(magnitude + 1) : magnitude);  // 4..7 -> −1..−4
     }
   }
   return s3{};

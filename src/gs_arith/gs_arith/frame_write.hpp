@@ -8,6 +8,8 @@
 // - FBMSK: a 1 bit keeps the old frame-buffer bit (GS manual, SW, SH, DB). For 16-bit targets PCSX2
 //   SW merges in the 32-bit expanded space before packing, so only FBMSK bits 3..7 of each colour
 //   byte and bit 31 matter (GSRendererSW `fm & 0x80f8f8f8`); frame_mask() packs FBMSK the same way.
+//   ps2tek (FRAME_1/2) agrees: the mask "is applied before format conversions", bit 63 of FRAME
+//   reaching the A bit; DobieStation draw_pixel merges before convert_color_down (matrix row A2).
 // - 24-bit target: the blender reads Ad as 0x80 and the alpha byte is never written (SW, comment
 //   "tested on a PS2"). 16-bit target: the blender reads the word expanded by << 3 with Ad = 0x80
 //   when bit 15 is set, else 0 (SW). Confidence: medium.

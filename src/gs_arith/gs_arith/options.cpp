@@ -7,17 +7,22 @@ namespace gs {
 const std::vector<option_info>& option_catalogue() {
   static const std::vector<option_info> rows = {
       {"tfx_rounding", {"floor", "truncate"},
-       "floor: PCSX2 SW + DobieStation; truncate: PCSX2 HLSL. No HW test beyond 0x80*0x80."},
+       "floor: PCSX2 SW + DobieStation; truncate: PCSX2 HW shaders (tfx_ps_tfx.inc). No HW test beyond 0x80*0x80."},
       {"gouraud_fraction", {"keep_fraction", "truncate_to_8"},
-       "keep_fraction: PCSX2 SW (Ct*Cf_8.7)>>14. Unconfirmed on HW."},
+       "keep_fraction: PCSX2 SW (Ct*Cf_8.7)>>14; truncate_to_8: DobieStation. Unconfirmed on HW."},
       {"blend_shift", {"floor", "truncate"},
        "floor: HW-confirmed (486/486 ps2autotests); truncate: what-if, 24 HW mismatches."},
-      {"dither_decode", {"twos_complement", "sign_magnitude"},
-       "twos_complement: PCSX2 SW (s32 DM:3); sign_magnitude: DobieStation. Unconfirmed on HW."},
+      {"dither_decode", {"twos_complement", "sign_magnitude", "inverted_magnitude"},
+       "twos_complement: PCSX2 (GSRegs.h s32 DM00:3); sign_magnitude: DobieStation 3a23544b; inverted_magnitude: "
+       "DobieStation 68dd073e (issue 17). Unconfirmed on HW."},
       {"dither_targets", {"sixteen_bit_only", "all_formats"},
        "sixteen_bit_only: PCSX2 SW; all_formats: DobieStation. Unconfirmed on HW."},
-      {"bilinear", {"lerp16_4", "nearest"},
-       "lerp16_4: PCSX2 SW 4-bit weights; nearest: filtering off. Unconfirmed on HW."},
+      {"bilinear", {"lerp16_4", "nearest", "weighted_sum_4"},
+       "lerp16_4: PCSX2 SW 4-bit weights; nearest: filtering off; weighted_sum_4: DobieStation (Play! in float). "
+       "Unconfirmed on HW."},
+      {"rgb_only_targets", {"thirty_two_bit_only", "all_formats"},
+       "thirty_two_bit_only: PCSX2 GetAFAIL(FRAME.PSM), PR 9652; all_formats: Play! Vulkan, DobieStation 3a23544b. "
+       "No recording here."},
   };
   return rows;
 }
@@ -29,6 +34,11 @@ bool pick(E& field, std::string_view value, std::string_view a, E ea, std::strin
   if (value == b) { field = eb; return true; }
   return false;
 }
+template <typename E>
+bool pick(E& field, std::string_view value, std::string_view a, E ea, std::string_view b, E eb, std::string_view c, E ec) {
+  if (value == c) { field = ec; return true; }
+  return pick(field, value, a, ea, b, eb);
+}
 }  // namespace
 
 std::optional<std::string> set_option(model_options& o, std::string_view name, std::string_view value) {
@@ -36,9 +46,10 @@ std::optional<std::string> set_option(model_options& o, std::string_view name, s
   if (name == "tfx_rounding") ok = pick(o.tfx, value, "floor", tfx_rounding::floor, "truncate", tfx_rounding::truncate);
   else if (name == "gouraud_fraction") ok = pick(o.gouraud, value, "keep_fraction", gouraud_fraction::keep_fraction, "truncate_to_8", gouraud_fraction::truncate_to_8);
   else if (name == "blend_shift") ok = pick(o.shift, value, "floor", blend_shift::floor, "truncate", blend_shift::truncate);
-  else if (name == "dither_decode") ok = pick(o.dither, value, "twos_complement", dither_decode::twos_complement, "sign_magnitude", dither_decode::sign_magnitude);
+  else if (name == "dither_decode") ok = pick(o.dither, value, "twos_complement", dither_decode::twos_complement, "sign_magnitude", dither_decode::sign_magnitude, "inverted_magnitude", dither_decode::inverted_magnitude);
   else if (name == "dither_targets") ok = pick(o.dither_on, value, "sixteen_bit_only", dither_targets::sixteen_bit_only, "all_formats", dither_targets::all_formats);
-  else if (name == "bilinear") ok = pick(o.bilinear, value, "lerp16_4", bilinear_mode::lerp16_4, "nearest", bilinear_mode::nearest);
+  else if (name == "bilinear") ok = pick(o.bilinear, value, "lerp16_4", bilinear_mode::lerp16_4, "nearest", bilinear_mode::nearest, "weighted_sum_4", bilinear_mode::weighted_sum_4);
+  else if (name == "rgb_only_targets") ok = pick(o.rgb_only, value, "thirty_two_bit_only", rgb_only_targets::thirty_two_bit_only, "all_formats", rgb_only_targets::all_formats);
   else {
     std::string known;
     for (const auto& row : option_catalogue()) known += (known.empty() ? "" : ", ") + std::string(row.name);
@@ -56,9 +67,14 @@ std::string_view option_value(const model_options& o, std::string_view name) {
   if (name == "tfx_rounding") return o.tfx == tfx_rounding::floor ? "floor" : "truncate";
   if (name == "gouraud_fraction") return o.gouraud == gouraud_fraction::keep_fraction ? "keep_fraction" : "truncate_to_8";
   if (name == "blend_shift") return o.shift == blend_shift::floor ? "floor" : "truncate";
-  if (name == "dither_decode") return o.dither == dither_decode::twos_complement ? "twos_complement" : "sign_magnitude";
+  if (name == "dither_decode")
+    return o.dither == dither_decode::twos_complement ? "twos_complement"
+           : o.dither == dither_decode::sign_magnitude ? "sign_magnitude"
+                                                       : "inverted_magnitude";
   if (name == "dither_targets") return o.dither_on == dither_targets::sixteen_bit_only ? "sixteen_bit_only" : "all_formats";
-  if (name == "bilinear") return o.bilinear == bilinear_mode::lerp16_4 ? "lerp16_4" : "nearest";
+  if (name == "bilinear")
+    return o.bilinear == bilinear_mode::lerp16_4 ? "lerp16_4" : o.bilinear == bilinear_mode::nearest ? "nearest" : "weighted_sum_4";
+  if (name == "rgb_only_targets") return o.rgb_only == rgb_only_targets::thirty_two_bit_only ? "thirty_two_bit_only" : "all_formats";
   return {};
 }
 

@@ -13,29 +13,44 @@
 
 namespace gs {
 
-// Rounding of the texture function's (Ct·Cf) >> 7.
-// floor: PCSX2 SW (GSDrawScanline) and DobieStation (gsthread.cpp); confidence medium, no HW test
-//        beyond 0x80·0x80. truncate: PCSX2 HLSL `trunc(C*T/128)`. Identical for non-negative inputs.
+// Rounding of the texture function's (Ct·Cf) >> 7 (evidence matrix: docs/evidence.md).
+// floor: PCSX2 SW (GSDrawScanline.cpp CDrawScanline, modulate16 = arithmetic high multiply) and
+//        DobieStation (gsthread.cpp multiply_tex_color, `>> 7`); confidence medium, no HW test beyond
+//        0x80·0x80. truncate: PCSX2 HW shaders (common/tfx_ps_tfx.inc tfx(), `trunc((C * T) / 128)`).
+//        Identical for non-negative inputs.
 enum class tfx_rounding { floor, truncate };
 
 // Gouraud colour into the texture function.
-// keep_fraction: SW keeps the 8.7 colour, (Ct·Cf_8.7) >> 14 (default; SW only, unconfirmed).
-// truncate_to_8: the colour is truncated to 8 bits before the multiply (what-if).
+// keep_fraction: PCSX2 SW keeps the 8.7 colour, (Ct·Cf_8.7) >> 14 (default; unconfirmed on HW).
+// truncate_to_8: the colour is truncated to 8 bits before the multiply (DobieStation tex_lookup:
+//                the vertex colour has no fraction).
 enum class gouraud_fraction { keep_fraction, truncate_to_8 };
 
 // The blend's ((A − B)·C) >> 7. floor: HW-confirmed by all 486 ps2autotests blend results.
 // truncate (toward zero): refuted by 24 of them; kept as a what-if for the proofs.
 enum class blend_shift { floor, truncate };
 
-// DIMX 3-bit entries. twos_complement −4..+3: PCSX2 SW `s32 DM:3` (default). sign_magnitude: DobieStation.
-enum class dither_decode { twos_complement, sign_magnitude };
+// DIMX 3-bit entries. twos_complement −4..+3: PCSX2 GSRegs.h `s32 DM00:3` (default; SW and HW).
+// sign_magnitude −3..+3, 4 is −0: DobieStation gsthread.cpp draw_pixel at commit 3a23544b.
+// inverted_magnitude 4..7 -> −1..−4, −((dm & 3) + 1): DobieStation at commit 68dd073e as measured by
+// issue 17's harness (that version was not readable here).
+enum class dither_decode { twos_complement, sign_magnitude, inverted_magnitude };
 
-// Which frame formats dithering applies to. sixteen_bit_only: PCSX2 SW (default). all_formats: DobieStation.
+// Which frame formats dithering applies to. sixteen_bit_only: PCSX2 SW (CDrawScanline `fpsm == 2 &&
+// dthe`) and HW (GSRendererHW `dfmt == 2`) (default). all_formats: DobieStation draw_pixel (no format test).
 enum class dither_targets { sixteen_bit_only, all_formats };
 
 // Bilinear filtering arithmetic. lerp16_4: PCSX2 SW `lerp16_4`, 4-bit weights, c0 + (((c1 − c0)·w) >> 4),
-// horizontal then vertical (default; DobieStation also uses 4-bit weights). nearest: filtering off (what-if).
-enum class bilinear_mode { lerp16_4, nearest };
+// horizontal then vertical (default). nearest: filtering off (what-if). weighted_sum_4: the same 4-bit
+// weights in one 2-D weighted sum, floor(Σ w·c / 256) (DobieStation tex_lookup, exact in its doubles;
+// Play! Vulkan CDrawDesktop does the same sum in float).
+enum class bilinear_mode { lerp16_4, nearest, weighted_sum_4 };
+
+// Which frame formats AFAIL = RGB_ONLY keeps the alpha of. thirty_two_bit_only: RGB_ONLY acts as
+// FB_ONLY unless FRAME.PSM & 0xF == 0 (PCSX2 GSRegs.h GIFRegTEST::GetAFAIL, called with FRAME.PSM by
+// GSRendererSW; PR 9652, tested against a PS2 per the facts digest; default). all_formats: alpha (the A bit of 16-bit formats) is kept for every format
+// (Play! GSH_VulkanDrawUtils.cpp CDrawUtils::AlphaTest, DobieStation draw_pixel at 3a23544b).
+enum class rgb_only_targets { thirty_two_bit_only, all_formats };
 
 struct model_options {
   tfx_rounding tfx = tfx_rounding::floor;
@@ -44,6 +59,7 @@ struct model_options {
   dither_decode dither = dither_decode::twos_complement;
   dither_targets dither_on = dither_targets::sixteen_bit_only;
   bilinear_mode bilinear = bilinear_mode::lerp16_4;
+  rgb_only_targets rgb_only = rgb_only_targets::thirty_two_bit_only;
 
   friend constexpr bool operator==(const model_options&, const model_options&) = default;
 };

@@ -53,7 +53,7 @@ constexpr pixel_trace pixel_pipeline(const gs_registers& regs, const pixel_input
   const frame_psm psm = regs.FRAME_1.PSM;
   t.tfx_out = regs.PRIM.TME ? texture_function(regs.TEX0_1.TFX, regs.TEX0_1.TCC, in.texel, in.vertex, o)
                             : texture_off(in.vertex);
-  t.test = alpha_test(regs.TEST_1, t.tfx_out.a, psm);
+  t.test = alpha_test(regs.TEST_1, t.tfx_out.a, psm, o);
   t.cd = frame_read(psm, in.dst);
   t.blended = regs.PRIM.ABE && !(regs.PABE.PABE && t.tfx_out.a.value() < 0x80);
   t.blend = t.blended ? alpha_blend(regs.ALPHA_1, t.tfx_out, t.cd, o) : blend_off(t.tfx_out);

@@ -1,13 +1,22 @@
 // gs_arith/texture_function.hpp — TEX0.TFX / TEX0.TCC: texel Ct combined with the fragment colour Cf.
 //
-// Evidence (facts digest, "Texture function"): PCSX2 SW, PCSX2 HLSL and DobieStation agree on the
-// table below; hardware (ps2autotests simpletexture) confirms only MODULATE 0x80·0x80, TCC = RGB.
+// Evidence (facts digest, "Texture function"; matrix rows tfx_rounding, gouraud_fraction and
+// highlight_clamp of docs/evidence.md): PCSX2 SW (GSDrawScanline.cpp CDrawScanline "AlphaTFX" /
+// "ColorTFX": modulate16 then clamp8, addus8 for HIGHLIGHT alpha), the PCSX2 HW shaders
+// (common/tfx_ps_tfx.inc tfx(): min(C_out, 255)) and Play! (GSH_VulkanDrawDesktop.cpp: Clamp to 1.0
+// after the function) agree on the table below; hardware (ps2autotests simpletexture) confirms only
+// MODULATE 0x80·0x80, TCC = RGB.
 //   MODULATE   RGB min(255, (Ct·Cf) >> 7)          A (TCC=1) min(255, (At·Af) >> 7)
 //   DECAL      RGB Ct                              A (TCC=1) At
 //   HIGHLIGHT  RGB min(255, ((Ct·Cf) >> 7) + Af)   A (TCC=1) min(255, At + Af)
 //   HIGHLIGHT2 RGB min(255, ((Ct·Cf) >> 7) + Af)   A (TCC=1) At
 //   TCC = 0 (RGB): A = Af for every function.
-// The clamp to 255 happens right after the function, before the alpha test and the blend.
+// The clamp to 255 happens right after the function, before the alpha test and the blend: the paper
+// (section 3.2) states "clamping to 8 bit is performed once after the texture function operation".
+// DobieStation (gsthread.cpp tex_lookup, 3a23544b) clamps (Ct·Cf) >> 7 but adds Af after the clamp
+// without clamping again (HIGHLIGHT RGB and alpha up to 0x1FE; issue 17: Ct 0xff, Cf 0x7f, Af 0x7f
+// gives 0x17c): an emulator defect by that sentence of the paper and the three other implementations,
+// so it is not a model option.
 #pragma once
 
 #include <cstdint>

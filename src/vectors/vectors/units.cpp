@@ -198,10 +198,10 @@ void tfx_all(const case_sink& emit) {
 }
 
 // ---- atest -----------------------------------------------------------------------------------------
-values atest_eval(const values& in, const gs::model_options&) {
+values atest_eval(const values& in, const gs::model_options& o) {
   const auto reg = decode(gs::decode_test, in[0]);
   check_max(in[2], 0xFF, "A");
-  const auto we = gs::alpha_test(reg, u8::from_wrapped(in[2]), psm_field(in[1]));
+  const auto we = gs::alpha_test(reg, u8::from_wrapped(in[2]), psm_field(in[1]), o);
   return {we.rgb ? 1u : 0u, we.a ? 1u : 0u, we.z ? 1u : 0u};
 }
 void atest_level1(const case_sink& emit) {

@@ -1,0 +1,149 @@
+// gs_arith_evidence — docs/evidence.md against the model: every option of gs::option_catalogue() has
+// one row of the summary table naming all its values, each profile column equals gs::profiles(), every
+// row names each profile's behaviour and a probe of the hardware probe list; and the profiles set
+// every option to a valid value.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "gs_arith/options.hpp"
+#include "gs_arith/profiles.hpp"
+
+namespace {
+
+std::string trim(const std::string& s) {
+  const auto b = s.find_first_not_of(' '), e = s.find_last_not_of(' ');
+  return b == std::string::npos ? std::string() : s.substr(b, e - b + 1);
+}
+
+// "| a | b |" -> {"a", "b"}.
+std::vector<std::string> cells(const std::string& line) {
+  std::vector<std::string> out;
+  std::stringstream in(line.substr(1));
+  for (std::string c; std::getline(in, c, '|');) out.push_back(trim(c));
+  return out;
+}
+
+// The table rows (header first, separator dropped) of the section starting with `heading`.
+std::vector<std::vector<std::string>> table(const std::vector<std::string>& lines, const std::string& heading) {
+  std::vector<std::vector<std::string>> rows;
+  bool in_section = false;
+  for (const auto& l : lines) {
+    if (l.rfind("## ", 0) == 0) in_section = l == heading;
+    if (in_section && l.rfind("| ", 0) == 0) rows.push_back(cells(l));
+  }
+  return rows;
+}
+
+// The first `...` token of a cell, or "".
+std::string first_code(const std::string& cell) {
+  const auto b = cell.find('`');
+  if (b == std::string::npos) return {};
+  const auto e = cell.find('`', b + 1);
+  return e == std::string::npos ? std::string() : cell.substr(b + 1, e - b - 1);
+}
+
+struct evidence : ::testing::Test {
+  std::vector<std::string> lines;
+  void SetUp() override {
+    std::ifstream in(GSDOT3_EVIDENCE_MD);
+    ASSERT_TRUE(in) << "cannot read " << GSDOT3_EVIDENCE_MD;
+    for (std::string l; std::getline(in, l);) lines.push_back(l);
+  }
+  std::vector<std::vector<std::string>> summary() const { return table(lines, "## Summary"); }
+};
+
+TEST_F(evidence, HeaderNamesTheProfilesInOrder) {
+  const auto rows = summary();
+  ASSERT_FALSE(rows.empty());
+  const auto& h = rows.front();
+  ASSERT_EQ(h.size(), 8u);
+  EXPECT_EQ(h[0], "row");
+  EXPECT_EQ(h[1], "option");
+  EXPECT_EQ(h[2], "values");
+  ASSERT_EQ(gs::profiles().size(), 3u);
+  for (std::size_t i = 0; i < 3; ++i) EXPECT_EQ(h[3 + i], gs::profiles()[i].name);
+  EXPECT_EQ(h[7], "probe");
+}
+
+TEST_F(evidence, EveryOptionHasOneRowWithEveryValue) {
+  const auto rows = summary();
+  for (const auto& opt : gs::option_catalogue()) {
+    std::string name = "`";
+    name.append(opt.name).append("`");
+    const auto n = std::count_if(rows.begin(), rows.end(), [&](const auto& r) { return r.size() > 1 && r[1] == name; });
+    ASSERT_EQ(n, 1) << opt.name;
+    const auto& r = *std::find_if(rows.begin(), rows.end(), [&](const auto& r) { return r.size() > 1 && r[1] == name; });
+    std::string values;
+    for (auto v : opt.values) values.append(values.empty() ? "`" : ", `").append(v).append("`");
+    EXPECT_EQ(r[2], values) << opt.name;
+    // The row's detail section exists.
+    std::string heading = "### ";
+    heading.append(r[0]).append(" ").append(name);
+    EXPECT_TRUE(std::any_of(lines.begin(), lines.end(), [&](const std::string& l) { return l.rfind(heading, 0) == 0; }))
+        << heading;
+  }
+}
+
+TEST_F(evidence, ProfileColumnsEqualTheProfileTable) {
+  for (const auto& r : summary()) {
+    if (r.size() != 8 || r[0] == "row" || r[0] == "---") continue;
+    const std::string option = first_code(r[1]);
+    for (std::size_t i = 0; i < gs::profiles().size(); ++i) {
+      const auto& p = gs::profiles()[i];
+      const std::string& cell = r[3 + i];
+      EXPECT_FALSE(cell.empty()) << r[0] << " " << p.name << ": every row names each profile's behaviour";
+      if (option.empty()) continue;  // a defect or agreement row: text only
+      const auto it = std::find_if(p.values.begin(), p.values.end(), [&](const auto& kv) { return kv.first == option; });
+      ASSERT_NE(it, p.values.end()) << p.name << " does not set " << option;
+      EXPECT_EQ(first_code(cell), it->second) << r[0] << " " << p.name;
+    }
+  }
+}
+
+TEST_F(evidence, EveryRowNamesAProbeOfTheProbeList) {
+  std::set<std::string> probes;
+  for (const auto& r : table(lines, "## Hardware probe list"))
+    if (!r.empty() && r[0].size() > 1 && r[0][0] == 'P') probes.insert(r[0]);
+  int rows = 0;
+  for (const auto& r : summary()) {
+    if (r.size() != 8 || r[0] == "row" || r[0] == "---") continue;
+    ++rows;
+    EXPECT_TRUE(probes.count(r[7]) == 1) << r[0] << " names probe '" << r[7] << "'";
+  }
+  EXPECT_GE(rows, static_cast<int>(gs::option_catalogue().size()));
+}
+
+TEST(Profiles, EachSetsEveryOptionOnceToAValidValue) {
+  for (const auto& p : gs::profiles()) {
+    std::set<std::string_view> named;
+    gs::model_options one_by_one;
+    for (const auto& [option, value] : p.values) {
+      EXPECT_TRUE(named.insert(option).second) << p.name << " sets " << option << " twice";
+      EXPECT_FALSE(gs::set_option(one_by_one, option, value).has_value()) << p.name << " " << option << "=" << value;
+    }
+    EXPECT_EQ(named.size(), gs::option_catalogue().size()) << p.name;
+    for (const auto& opt : gs::option_catalogue()) EXPECT_EQ(named.count(opt.name), 1u) << p.name << " " << opt.name;
+    gs::model_options applied;
+    applied.tfx = gs::tfx_rounding::truncate;  // overwritten by every profile
+    EXPECT_FALSE(gs::apply_profile(applied, p.name).has_value());
+    EXPECT_EQ(applied, one_by_one) << p.name;
+  }
+}
+
+TEST(Profiles, Pcsx2SwIsTheDefaultModelAndUnknownNamesAreErrors) {
+  gs::model_options o;
+  ASSERT_FALSE(gs::apply_profile(o, "pcsx2-sw").has_value());
+  EXPECT_EQ(o, gs::model_options{});
+  const auto err = gs::apply_profile(o, "mame");
+  ASSERT_TRUE(err.has_value());
+  EXPECT_NE(err->find("pcsx2-sw, dobiestation, play"), std::string::npos) << *err;
+}
+
+}  // namespace
