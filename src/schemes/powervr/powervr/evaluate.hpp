@@ -31,6 +31,9 @@ double intensity_exact(bump_texel t, offset_colour k, azimuth_scale a) noexcept;
 
 // flycast's float value of the clamped intensity (0..1) before the 8-bit output.
 float intensity_flycast(bump_texel t, offset_colour k, azimuth_scale a) noexcept;
+// The same for an offset colour given as x/255 floats (k1..k3 in 0..1, q = Q/255): what flycast's
+// shader sees when it interpolates the per-vertex offset colour across a Gouraud-shaded polygon.
+float intensity_flycast(bump_texel t, float k1, float k2, float k3, float q, azimuth_scale a) noexcept;
 
 // The 8-bit output of the bump unit under a precision option (0..255).
 std::uint8_t intensity(bump_texel t, offset_colour k, azimuth_scale a, precision p) noexcept;
@@ -53,5 +56,18 @@ constexpr std::uint8_t intensity_fixed(const fixed_tables& tb, bump_texel t, off
   const std::int64_t out = (acc + half) >> tb.bits;
   return static_cast<std::uint8_t>(out < 0 ? 0 : out > 255 ? 255 : out);
 }
+
+// flycast's float path with its per-S sines and cosines and per-(R, Q) cos(r − q) computed once, by the
+// same float operations as intensity_flycast (the sweeps use it; a test checks the two agree bit for bit).
+struct flycast_tables {
+  std::array<float, 256> sin_s{}, cos_s{};
+  std::array<float, 65536> cos_rq{};  // [R·256 + Q]
+  explicit flycast_tables(azimuth_scale a);
+  float value(bump_texel t, offset_colour k) const noexcept {
+    const float k1 = static_cast<float>(k.K1) / 255.0f, k2 = static_cast<float>(k.K2) / 255.0f, k3 = static_cast<float>(k.K3) / 255.0f;
+    const float v = k1 + k2 * sin_s[t.S] + k3 * cos_s[t.S] * cos_rq[static_cast<std::size_t>(t.R) << 8 | k.Q];
+    return v < 0.0f ? 0.0f : v > 1.0f ? 1.0f : v;
+  }
+};
 
 }  // namespace gsdot3::schemes::powervr
