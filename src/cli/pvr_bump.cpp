@@ -74,8 +74,9 @@ void run_pvr_bump(const pvr_bump_args& a) {
   pipeline::image preview{in.width, in.height, 3, {}};
   for (const auto& n : in.normals) {
     const pvr::bump_texel t = pvr::encode_normal(n, rounding, scale);
-    raw.push_back(t.R);  // little-endian: low byte (R) first
-    raw.push_back(t.S);
+    const std::uint16_t word = t.packed();  // S << 8 | R, written little-endian
+    raw.push_back(static_cast<std::uint8_t>(word & 0xFF));
+    raw.push_back(static_cast<std::uint8_t>(word >> 8));
     const glm::dvec3 d = pvr::decode_normal(t, rounding == pvr::texel_rounding::kallistios ? pvr::azimuth_scale::flycast_255 : scale);
     for (int c = 0; c < 3; ++c) preview.data.push_back(static_cast<std::uint8_t>(std::lround(d[c] * 127.5 + 127.5)));
   }

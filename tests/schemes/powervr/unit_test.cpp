@@ -90,6 +90,19 @@ TEST(PowervrUnit, SdkArctanOctantsAndEndpoints) {
   EXPECT_EQ(fxyz_light_dir_to_skk(1, -0.5f, 0).cosT, 255);
 }
 
+TEST(PowervrUnit, SdkStandardMethodOffsetColour) {
+  // KMBumpShade, standard method: K1 = 0, K2 = 255, K3 = skk[2], Q = skk[0]. A light in the surface
+  // along x: cos T = 1 → 256 → 255, azimuth 0; on the texel lying along x (S = 0, R = 0) the output is
+  // K3·cos 0·cos 0 = 255, and on the flat texel (S = 255) it is K2 = 255.
+  const offset_colour k = sdk_standard(fxyz_light_dir_to_skk(1, 0, 0));
+  EXPECT_EQ(k.packed(), 0x00FFFF00u);
+  for (auto p : all_precisions) {
+    EXPECT_EQ(intensity({0, 0}, k, azimuth_scale::kos_256, p), 255) << name(p);
+    EXPECT_EQ(intensity({255, 0}, k, azimuth_scale::kos_256, p), 255) << name(p);
+    EXPECT_EQ(intensity({0, 128}, k, azimuth_scale::kos_256, p), 0) << name(p);  // R = 180°: −255, clamped
+  }
+}
+
 TEST(PowervrUnit, SeedPrintedQLosesTheQuadrant) {
   const glm::dvec3 P = glm::normalize(glm::dvec3(-1, 1, 1));  // azimuth 135°
   EXPECT_NEAR(seed_atan2(P, 1).Q, 0.75 * pi, 1e-12);

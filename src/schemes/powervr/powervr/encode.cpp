@@ -41,8 +41,8 @@ skk fxyz_light_dir_to_skk(float x, float y, float z) noexcept {
   constexpr std::array<float, 8> octants{0.0f, 64.0f, 128.0f, -64.0f, 256.0f, -192.0f, -128.0f, 192.0f};
   float lo = 0.0f, hi = 1.0f;
   int octant = 0;
-  if (std::fabs(x) < 1e-30f && std::fabs(z) < 1e-30f) {
-    // The SDK's EPSILON test: both tiny, any azimuth will do.
+  if (std::fabs(x) < 0x1p-95f && std::fabs(z) < 0x1p-95f) {
+    // The SDK's EPSILON test (exponent field below 0x20, i.e. |x|, |z| < 2^−95): any azimuth will do.
   } else if (std::fabs(x) >= std::fabs(z)) {
     lo = z, hi = x;
   } else {
