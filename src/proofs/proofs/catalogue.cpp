@@ -12,7 +12,6 @@ const char* name(method m) noexcept { return m == method::exhaustive ? "exhausti
 
 const std::vector<claim>& catalogue() {
   using M = method;
-  constexpr std::string_view powervr_section = "Seed 004: Imagination Technologies 1999, Bump Mapping Tricks for Series 2";
   namespace c = claims;
   static const std::vector<claim> rows = {
       {"eq1-eq2.ranges", "§3.2 eq. (1), (2)",
@@ -84,29 +83,29 @@ const std::vector<claim>& catalogue() {
       {"powervr.identity", "Tangent Space and Bump Shading Shortcuts",
        "K1 + K2·sin S + K3·cos S·cos(R − Q) with K1 = 1 − S_l, K2 = S_l sin T, K3 = S_l cos T equals (1 − S_l) + S_l·(N·L)",
        "every (S, R) texel × T = 0..90° (10°) × 8 azimuths × S_l ∈ {0.5, 1}, in double, tolerance 1e-12", M::exhaustive, {},
-       c::powervr_identity, powervr_section},
+       c::powervr_identity, c::powervr_section},
       {"powervr.identity-8bit", "Tangent Space and Bump Shading Shortcuts",
        "the 8-bit bump unit computes N·L: its error per precision option (float, fixed8, fixed10, fixed12)",
-       "every (S, R) texel × Q = 0, 8, .., 248 × T = 0..90° (15°), S_l = 1, azimuths /255, × 4 precision options (all Q: exhaustive test)",
-       M::exhaustive, {}, c::powervr_identity_8bit, powervr_section},
+       "every (S, R) texel × Q = 0, 32, .., 224 × T = 0..90° (15°), S_l = 1, azimuths /255, × 4 precision options (all Q: exhaustive test)",
+       M::exhaustive, {}, c::powervr_identity_8bit, c::powervr_section},
       {"powervr.q-quadrant", "Tangent Space and Bump Shading Shortcuts", "Q = arctan(Pz/Px) gives the light's azimuth",
        "light azimuths every 0.1° at 30° elevation (and every texel for lights every 10°)", M::exhaustive, {}, c::powervr_q_quadrant,
-       powervr_section},
+       c::powervr_section},
       {"powervr.azimuth-255-256", "encoders and decoders (other-schemes.md)",
        "the azimuth byte means the same to encoder and decoder (/255 against /256)",
        "every R byte (KallistiOS pvrtex); every (S, R, Q) with Q in 1/256 turns read as /255", M::exhaustive, {},
-       c::powervr_azimuth_scale, powervr_section},
+       c::powervr_azimuth_scale, c::powervr_section},
       {"powervr.sdk-arctan", "Fast calculation of K1, K2, K3 and Q",
        "the SDK's quadratic arctangent (FXYZLightDirToSKK) is accurate enough for Q",
        "s = tan ∈ [0, 1] every 2^−20 (supremum argued: |e''| < 60); the whole routine at azimuths every 0.01°", M::reduction, {},
-       c::powervr_sdk_arctan, powervr_section},
+       c::powervr_sdk_arctan, c::powervr_section},
       {"powervr.pack-bump", "encoders (other-schemes.md)", "KallistiOS pvr_pack_bump writes the seed's K1, K2, K3, Q",
        "h = 0.1..1 (0.1) × t = 0..90° (1°) × q = 0..359° (1°), against rounding to nearest", M::exhaustive, {},
-       c::powervr_pack_bump, powervr_section},
+       c::powervr_pack_bump, c::powervr_section},
       {"powervr.flipped-uv", "Flipped UV",
        "flipped UVs flip the light; mirroring one axis of the local co-ordinate system fixes it",
        "every (S, R) texel × light azimuths every 10° × T ∈ {30°, 60°}, exact evaluation of the 8-bit K/Q", M::exhaustive, {},
-       c::powervr_flipped_uv, powervr_section},
+       c::powervr_flipped_uv, c::powervr_section},
   };
   return rows;
 }
