@@ -53,7 +53,10 @@ TEST(Claims, EveryCatalogueRowRunsAndIsTested) {
       "ilp.dpb-clear-zero", "appendix2.packing", "two-pass.na-rounding", "appendix1.sphere-map",
       "two-pass.error-bound", "two-pass.max-s.vertex", "two-pass.max-s.interpolated", "four-pass.channel-exact",
       "four-pass.sum-wrap", "clamp-wrap.intermediates", "highlight.attenuation", "lod.two-vs-four",
-      "specular.attenuation-compensation"};
+      "specular.attenuation-compensation",
+      // seed 004: asserted in tests/schemes/powervr/claims_test.cpp
+      "powervr.identity", "powervr.identity-8bit", "powervr.q-quadrant", "powervr.azimuth-255-256", "powervr.sdk-arctan",
+      "powervr.pack-bump", "powervr.flipped-uv"};
   EXPECT_EQ(p::catalogue().size(), ids.size());
   for (auto id : ids) EXPECT_NE(p::find_claim(id), nullptr) << id;
 }

@@ -30,4 +30,8 @@ struct image {
 };
 void write_png(const std::filesystem::path& file, const image& img);
 
+// The texels of an 8-bit PNG texture (power-of-two sides 8..1024, as the loaders above check): RGB
+// (alpha stripped), or grey when `grey` is set and the file is grey. Used by `gsdot3 pvr-bump`.
+image read_texture_image_png(const std::filesystem::path& file, bool grey);
+
 }  // namespace gsdot3::pipeline

@@ -134,4 +134,8 @@ void write_png(const std::filesystem::path& file, const image& img) {
   std::filesystem::rename(tmp, file);
 }
 
+image read_texture_image_png(const std::filesystem::path& file, bool grey) {
+  return read_texture_png(file, grey ? "height map" : "normal map", grey);
+}
+
 }  // namespace gsdot3::pipeline

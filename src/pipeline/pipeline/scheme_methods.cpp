@@ -3,11 +3,22 @@
 #include <algorithm>
 
 #include "pipeline/scheme_method.hpp"
+#include "pipeline/scheme_powervr.hpp"
 
 namespace gsdot3::pipeline {
 
 const std::vector<scheme_method>& scheme_methods() {
   static const std::vector<scheme_method> rows = {
+      {"pvr-float", "004 (PowerVR 1999)", "16-bit S/R polar texel; K/Q per polygon; K1 + K2 sin S + K3 cos S cos(R − Q) in float (flycast), clamped",
+       true, powervr_methods::flat_float},
+      {"pvr-fixed8", "004 (PowerVR 1999)", "as pvr-float with 8-bit sin/cos tables (precision of the hardware not public)", true,
+       powervr_methods::flat_fixed8},
+      {"pvr-gouraud", "004 (PowerVR 1999)", "as pvr-float with K/Q per vertex, interpolated as flycast does under Gouraud shading", true,
+       powervr_methods::gouraud_float},
+      {"pvr-pixel", "004 (PowerVR 1999)", "as pvr-float with K/Q per pixel (not hardware: isolates the flat-shading error)", true,
+       powervr_methods::pixel_float},
+      {"pvr-cheap", "004 (PowerVR 1999)", "the seed's cheap bump: K1 = 0, K2 = K3 = 255, one Q per object from the screen-space light angle", true,
+       powervr_methods::cheap_float},
   };
   return rows;
 }

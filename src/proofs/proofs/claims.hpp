@@ -32,6 +32,15 @@ GSDOT3_CLAIM(clamp_wrap_intermediates);
 GSDOT3_CLAIM(highlight_attenuation);
 GSDOT3_CLAIM(lod_two_vs_four);
 GSDOT3_CLAIM(specular_attenuation_compensation);
+// seed 004: PowerVR Series 2 polar bump mapping (claims_powervr.cpp)
+inline constexpr std::string_view powervr_section = "Seed 004: Imagination Technologies 1999, Bump Mapping Tricks for Series 2";
+GSDOT3_CLAIM(powervr_identity);
+GSDOT3_CLAIM(powervr_identity_8bit);
+GSDOT3_CLAIM(powervr_q_quadrant);
+GSDOT3_CLAIM(powervr_azimuth_scale);
+GSDOT3_CLAIM(powervr_sdk_arctan);
+GSDOT3_CLAIM(powervr_pack_bump);
+GSDOT3_CLAIM(powervr_flipped_uv);
 #undef GSDOT3_CLAIM
 
 }  // namespace gsdot3::proofs::claims
