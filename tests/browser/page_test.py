@@ -4,8 +4,9 @@
 Writes the report of the embedded scene, then opens report.html from disk (file://) in headless
 Chromium (--dump-dom after the page's scripts ran, --screenshot) and checks: no console message and
 no script error, every image loaded, the method picker switches the views (and its difference map
-has as many non-zero pixels as this script counts), and the inspector shows, for a few fixed pixels,
-the values this script decodes itself from report-pixels.js. The exported data is checked
+has as many non-zero pixels as this script counts), and the inspector shows, for a few fixed pixels
+(set by the URL, and one by a dispatched mouse click), the values this script decodes itself from
+report-pixels.js. The exported data is checked
 independently first: its error statistics against report.json, and per pixel the post filter's
 modulo-256 sums, the ILP entry (section 3.4: level d + 1 for d = 0..127, else 0) and the LAB update
 (MODULATE by the light colour given on the command line, added with a clamp at 255).
@@ -405,6 +406,22 @@ def main():
     x, y = cols["pixel"][r] % width, cols["pixel"][r] // width
     tab.open(f"{url}#a=two-pass&b=four-pass&zoom=1&x={x}&y={y}")
     tab.screenshot(shot, 1500, 2600)
+
+    # A real click on view A (zoom 1) pins that pixel in the inspector.
+    r = n // 3
+    x, y = cols["pixel"][r] % width, cols["pixel"][r] // width
+    rect = tab.evaluate("(() => { const b = document.getElementById('img-a').getBoundingClientRect(); return [b.left, b.top]; })()")
+    for kind in ("mouseMoved", "mousePressed", "mouseReleased"):
+        tab.call("Input.dispatchMouseEvent", type=kind, x=rect[0] + x + 0.5, y=rect[1] + y + 0.5, button="left", clickCount=1)
+    dom = Dom()
+    dom.feed(tab.evaluate("document.documentElement.outerHTML"))
+    want, _ = expected_cells(report, page["passes"], cols, page["palette"], r)
+    clicked = [k for k in ("triangle", "uv", "two-pass/2/word", "two-pass/sum0") if dom.cells.get(k) != [want[k]]]
+    if clicked:
+        fail(f"click at pixel ({x}, {y}): the inspector shows {[(k, dom.cells.get(k)) for k in clicked]}, expected "
+             f"{[want[k] for k in clicked]}")
+    else:
+        print(f"click on view A at pixel ({x}, {y}): the inspector shows its values")
     tab.close()
     with open(shot, "rb") as f:
         png = f.read(24)
