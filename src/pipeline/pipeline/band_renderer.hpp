@@ -78,6 +78,7 @@ class band_renderer {
       const gs::rgba8 texel = tex != nullptr ? tex->sample(a.u.at(x, y), a.v.at(x, y)) : gs::rgba8{};
       std::uint32_t& word = fb[index(x, y)];
       word = gs_pixel(regs, texel, cf, word, x, y, o_.model);
+      if (pending != nullptr) note_shaded(index(x, y), texel, cf);
       ++ops_;
     };
     if (o_.path == raster_path::cached) {
@@ -103,7 +104,9 @@ class band_renderer {
     const scissor& a = sprite_area_;
     rasterise_sprite({a.x0 * 16, a.y0 * 16}, {a.x1 * 16, a.y1 * 16}, a, [&](int x, int y) {
       const std::size_t i = index(x, y);
-      fb[i] = gs_pixel(regs, texel(i), cf, fb[i], x, y, o_.model);
+      const gs::rgba8 t = texel(i);
+      fb[i] = gs_pixel(regs, t, cf, fb[i], x, y, o_.model);
+      if (pending != nullptr) note_shaded(i, t, cf);
       ++ops_;
     });
   }
@@ -120,6 +123,15 @@ class band_renderer {
   const scissor& band() const { return band_; }
   const scissor& sprite_area() const { return sprite_area_; }
   std::size_t pixel_ops() const { return ops_; }
+
+  // Tracing (render_options::trace): the pass being drawn records its inputs here (frame-sized).
+  pass_record* pending = nullptr;
+  void note_shaded(std::size_t i, gs::rgba8 texel, const gs::fragment_colour& cf) {
+    pending->texel[i] = texel.to_u32();
+    const gs::gouraud_channel c[4] = {cf.r, cf.g, cf.b, cf.a};
+    for (std::size_t k = 0; k < 4; ++k) pending->colour[4 * i + k] = static_cast<std::uint16_t>(c[k].value());
+    pending->shaded[i] = 1;
+  }
 
  private:
   // The bounding rectangle of every drawn triangle's pixels, within the band (may be empty).

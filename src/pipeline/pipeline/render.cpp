@@ -113,7 +113,22 @@ struct frame_buffers {
 std::size_t render_band(const scene& s, const prepared_scene& ps, method m, const render_options& o, const gs_inputs& in,
                         scissor band, frame_buffers& fb, frame& result) {
   band_renderer r(ps, o, band, fb.z, result.visible_triangle);
+  // Tracing (render_options::trace, one band): after each pass, its target buffer and inputs.
+  pass_record pending;
+  const std::size_t frame_pixels = fb.dpb.size();
+  auto open_pass = [&] {
+    pending = {{}, -1, {}, {}, std::vector<std::uint32_t>(frame_pixels), std::vector<std::uint16_t>(4 * frame_pixels),
+               std::vector<std::uint8_t>(frame_pixels)};
+  };
+  auto note = [&](const char* label, int light, const char* target, const std::vector<std::uint32_t>& buffer) {
+    if (o.trace == nullptr) return;
+    pending.label = label, pending.light = light, pending.target = target, pending.word = buffer;
+    o.trace->push_back(std::move(pending));
+    open_pass();
+  };
+  if (o.trace != nullptr) open_pass(), r.pending = &pending;
   r.depth_and_ambient(fb.lab, rgb(s.ambient[0], s.ambient[1], s.ambient[2], 0x80));
+  note("1 Z and ambient", -1, "LAB", fb.lab);
 
   const gs::bilinear_mode filter = o.bilinear ? o.model.bilinear : gs::bilinear_mode::nearest;
   auto nm_texture = [&](const gs::clut_buffer& clut) {
@@ -130,15 +145,20 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
     // 2.1 (the DPB starts cleared; nothing is drawn outside the sprite area); 2.2 COLCLAMP = 0 in
     // every pass of 2.3 and 2.4.
     r.fill(fb.dpb, clear_dpb, false);
+    const int li = static_cast<int>(l);
+    note("2.1 clear 0x00808080", li, "DPB", fb.dpb);
     switch (m) {
       case method::two_pass: {
         const auto attr = attributes(ps, [&](std::uint32_t v) { return pack_tolight(lv[v].T * lv[v].fade, o.s); }, normal_map_uv);
         const texture_ref pos = nm_texture(in.pos), neg = nm_texture(in.neg);
         r.draw<two_pass_positive>(&pos, attr, fb.dpb);
+        note("2.3 Max(n,0)·l (MODULATE)", li, "DPB", fb.dpb);
         r.draw<two_pass_negative>(&neg, attr, fb.dpb);
+        note("2.3 − Max(−n,0)·l (MODULATE, Cd − Cs)", li, "DPB", fb.dpb);
         // 2.4a: n'_a into R, G and B: the DPB read as PSMT8H (its own alpha byte) through a grey CLUT.
         r.sprite<two_pass_add_alpha>(white,
                  [&](std::size_t i) { return gs::clut_t8(in.grey, gs::t8h_index(fb.dpb[i])); }, fb.dpb);
+        note("2.4a + n'a (PSMT8H of the DPB alpha)", li, "DPB", fb.dpb);
         break;
       }
       case method::four_pass: {
@@ -155,11 +175,15 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
             });
         const texture_ref sphere{64, 64, nullptr, nullptr, in.sphere.data(), true, gs::bilinear_mode::nearest};
         r.draw<four_pass_sphere>(&sphere, pass1, fb.dpb);
+        note("2.3 sphere map · fade (HIGHLIGHT)", li, "DPB", fb.dpb);
         const auto attr = attributes(ps, flat_white, normal_map_uv);
         const texture_ref x = nm_texture(in.axis[0]), y = nm_texture(in.axis[1]), z = nm_texture(in.axis[2]);
         r.draw<four_pass_x>(&x, attr, fb.dpb);
+        note("2.3 R: x multiply (Cs − Cd)·As + Cd", li, "DPB", fb.dpb);
         r.draw<four_pass_y>(&y, attr, fb.dpb);
+        note("2.3 G: y multiply (Cs − Cd)·As + Cd", li, "DPB", fb.dpb);
         r.draw<four_pass_z>(&z, attr, fb.dpb);
+        note("2.3 B: z multiply (Cs − Cd)·As + Cd", li, "DPB", fb.dpb);
         break;
       }
       case method::baseline: {
@@ -176,27 +200,35 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
         const auto tl_pos = side(false), tl_neg = side(true);
         const texture_ref pos = nm_texture(in.pos), neg = nm_texture(in.neg);
         r.draw<baseline_add>(&pos, tl_pos, fb.dpb);       // NM_pos·TL_pos
+        note("2.3 + NM_pos·TL_pos", li, "DPB", fb.dpb);
         r.draw<baseline_add>(&neg, tl_neg, fb.dpb);       // NM_neg·TL_neg
+        note("2.3 + NM_neg·TL_neg", li, "DPB", fb.dpb);
         r.draw<baseline_subtract>(&neg, tl_pos, fb.dpb);  // −NM_neg·TL_pos
+        note("2.3 − NM_neg·TL_pos", li, "DPB", fb.dpb);
         r.draw<baseline_subtract>(&pos, tl_neg, fb.dpb);  // −NM_pos·TL_neg
+        note("2.3 − NM_pos·TL_neg", li, "DPB", fb.dpb);
         break;
       }
     }
     // 2.4: R += G, R += B (mod 256): additive sprites writing red only.
     r.sprite<post_add_into_red>(white, dpb_byte(1), fb.dpb);
+    note("2.4 R += G", li, "DPB", fb.dpb);
     r.sprite<post_add_into_red>(white, dpb_byte(2), fb.dpb);
+    note("2.4 R += B (the post-filter sum)", li, "DPB", fb.dpb);
     for (int y = band.y0; y < band.y1; ++y)
       for (int x = band.x0; x < band.x1; ++x) result.dot[l][r.index(x, y)] = static_cast<std::uint8_t>(fb.dpb[r.index(x, y)] & 0xFF);
     // 2.5, 2.6: COLCLAMP = 1; ILP[sum] × light colour (MODULATE) added into the LAB.
     const auto& lc = s.lights[l].colour;
     r.sprite<ilp_into_lab>(rgb(lc[0], lc[1], lc[2], 0x80),
              [&](std::size_t i) { return gs::clut_t8(in.ilp, byte(static_cast<int>(fb.dpb[i] & 0xFF))); }, fb.lab);
+    note("2.6 LAB += ILP[sum] × light colour", li, "LAB", fb.lab);
   }
 
   // Step 3: the unlit diffuse layer.
   r.fill(fb.diff, 0, false);
   const texture_ref diffuse{in.diffuse->width, in.diffuse->height, nullptr, nullptr, in.diffuse->texels.data(), false, filter};
   r.draw<diffuse_layer>(&diffuse, attributes(ps, flat_white, normal_map_uv), fb.diff);
+  note("3 diffuse layer", -1, "diffuse", fb.diff);
 
   // Step 4: diffuse × LAB per channel: (Cs − 0)·Ad >> 7 with the LAB channel in the destination
   // alpha (value level), writing that channel only. Outside the sprite area the LAB and the output
@@ -215,6 +247,7 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
   multiply(0, [&](auto&&... a) { r.sprite<multiply_red>(a...); });
   multiply(1, [&](auto&&... a) { r.sprite<multiply_green>(a...); });
   multiply(2, [&](auto&&... a) { r.sprite<multiply_blue>(a...); });
+  note("4 diffuse × LAB (R, G, B)", -1, "frame", fb.out);
   for (int y = band.y0; y < band.y1; ++y)
     for (int x = band.x0; x < band.x1; ++x) {
       const std::size_t i = r.index(x, y);
@@ -236,7 +269,7 @@ frame render(const scene& s, const prepared_scene& ps, method m, const render_op
   result.dot.assign(s.lights.size(), std::vector<std::uint8_t>(n, 0));
   frame_buffers fb{std::vector<std::uint32_t>(n), std::vector<std::uint32_t>(n), std::vector<std::uint32_t>(n, clear_dpb),
                    std::vector<std::uint32_t>(n), std::vector<std::uint32_t>(n)};
-  const int bands = std::clamp(o.threads, 1, std::max(1, ps.height));
+  const int bands = o.trace != nullptr ? 1 : std::clamp(o.threads, 1, std::max(1, ps.height));
   std::vector<std::thread> workers;
   std::vector<std::size_t> ops(static_cast<std::size_t>(bands), 0);
   for (int b = 0; b < bands; ++b) {

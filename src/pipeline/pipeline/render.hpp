@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -20,6 +21,18 @@ std::string_view name(method m);
 // later pass replays them; identical by construction since no later pass writes Z (tests check it).
 enum class raster_path { reference, cached };
 
+// One pass of a traced render (render_options::trace), frame-sized: `word` is the target buffer after
+// the pass; for the pixels the pass shaded, the texel and the fragment colour (r, g, b, a in 8.7)
+// that went into gs::pixel_pipeline (`shaded` = 1). The inspector of the report page shows them.
+struct pass_record {
+  std::string label;   // the paper's step and what it does, e.g. "2.3 Max(n,0)·l (MODULATE)"
+  int light = -1;      // the light of a step-2 pass, −1 for steps 1, 3, 4
+  std::string target;  // "DPB", "LAB", "diffuse", "frame"
+  std::vector<std::uint32_t> word, texel;
+  std::vector<std::uint16_t> colour;  // 4 per pixel
+  std::vector<std::uint8_t> shaded;
+};
+
 struct render_options {
   int s = 122;                     // two-pass tolight scale (section 3.5), 1..127
   bool bilinear = false;           // TEX1.MMAG for the normal map and the diffuse texture
@@ -28,6 +41,7 @@ struct render_options {
   gs::model_options model{};
   raster_path path = raster_path::cached;
   int threads = 2;                 // horizontal bands rendered in parallel
+  std::vector<pass_record>* trace = nullptr;  // non-null: every pass appended here (one band, slower)
 };
 
 struct frame {

@@ -4,12 +4,12 @@
 #include <chrono>
 #include <cmath>
 #include <fstream>
-#include <sstream>
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
 
 #include "pipeline/files.hpp"
+#include "pipeline/report_page.hpp"
 
 namespace gsdot3::pipeline {
 
@@ -116,20 +116,6 @@ nlohmann::json to_json(const error_stats& s) {
           {"within_1", s.within_1}, {"wrap_errors", s.wraps}};
 }
 
-std::string fmt(double v, int digits = 3) {
-  std::ostringstream o;
-  o.setf(std::ios::fixed);
-  o.precision(digits);
-  o << v;
-  return o.str();
-}
-
-std::string stats_row(const std::string& label, const error_stats& s) {
-  return "<tr><td>" + label + "</td><td>" + fmt(s.max_abs, 2) + "</td><td>" + fmt(s.mean) + "</td><td>" + fmt(s.mean_abs) +
-         "</td><td>" + fmt(s.rmse) + "</td><td>" + (std::isfinite(s.psnr) ? fmt(s.psnr, 2) : "inf") + "</td><td>" +
-         fmt(100.0 * s.within_1, 2) + "%</td><td>" + std::to_string(s.wraps) + "</td></tr>\n";
-}
-
 void write_text(const std::filesystem::path& file, const std::string& text) {
   const std::filesystem::path tmp = file.string() + ".tmp";
   {
@@ -218,7 +204,6 @@ report_summary write_report(const scene& s, const report_request& r) {
   for (std::size_t l = 0; l < s.lights.size(); ++l)
     write_png(r.out_dir / ("reference-dot-light" + std::to_string(l) + ".png"), grey_image(w, h, reference_bytes(ref.renormalised[l])));
 
-  std::string rows_norm, rows_unnorm, images;
   for (std::size_t k = 0; k < frames.size(); ++k) {
     method_result& mr = sum.methods[k];
     const std::string nm(name(mr.m));
@@ -228,20 +213,15 @@ report_summary write_report(const scene& s, const report_request& r) {
                         {"vs_renormalised", to_json(mr.vs_renormalised)},
                         {"vs_unnormalised", to_json(mr.vs_unnormalised)}};
     write_png(r.out_dir / (nm + "-lit.png"), rgb_image(w, h, frames[k].colour));
-    images += "<h3>" + nm + "</h3>\n<p><img src=\"" + nm + "-lit.png\" alt=\"" + nm + " lit frame\">\n";
     for (std::size_t l = 0; l < s.lights.size(); ++l) {
       const std::string dot = nm + "-dot-light" + std::to_string(l) + ".png", err = nm + "-error-light" + std::to_string(l) + ".png";
       write_png(r.out_dir / dot, grey_image(w, h, frames[k].dot[l]));
       write_png(r.out_dir / err, error_map(w, h, [&](std::size_t i) { return dot_value(frames[k].dot[l][i]); }, ref.renormalised[l]));
-      images += "<img src=\"" + dot + "\" alt=\"" + nm + " DPB light " + std::to_string(l) + "\"> <img src=\"" + err +
-                "\" alt=\"" + nm + " error light " + std::to_string(l) + "\">\n";
     }
-    images += "</p>\n";
-    rows_norm += stats_row(nm + " (" + fmt(mr.seconds * 1000.0, 1) + " ms)", mr.vs_renormalised);
-    rows_unnorm += stats_row(nm, mr.vs_unnormalised);
   }
 
   // The other seeds' methods on the same geometry (scheme_method.hpp).
+  page_inputs page{&s, &front, r.options, r.methods, &frames, &ref, {}, {}, {}, heat_limit, true};
   for (const scheme_method* sm : r.schemes) {
     say(std::string("rendering ") + std::string(sm->name) + " (seed " + std::string(sm->seed) + ")");
     const auto ts = std::chrono::steady_clock::now();
@@ -257,9 +237,6 @@ report_summary write_report(const scene& s, const report_request& r) {
                         {"vs_renormalised", to_json(sr.vs_renormalised)},
                         {"vs_unnormalised", to_json(sr.vs_unnormalised)}};
     write_png(r.out_dir / (nm + "-lit.png"), rgb_image(w, h, sf.colour));
-    images += "<h3>" + nm + " (seed " + std::string(sm->seed) + ")</h3>\n<p>" + std::string(sm->summary) +
-              (sm->non_negative ? " Compared with max(reference, 0)." : "") + "</p>\n<p><img src=\"" + nm + "-lit.png\" alt=\"" +
-              nm + " lit frame\">\n";
     for (std::size_t l = 0; l < s.lights.size(); ++l) {
       const std::string dot = nm + "-dot-light" + std::to_string(l) + ".png", err = nm + "-error-light" + std::to_string(l) + ".png";
       std::vector<float> against = ref.renormalised[l];
@@ -267,17 +244,13 @@ report_summary write_report(const scene& s, const report_request& r) {
         for (float& v : against) v = std::isnan(v) ? v : std::max(v, 0.0f);
       write_png(r.out_dir / dot, grey_image(w, h, reference_bytes(sf.dot[l])));
       write_png(r.out_dir / err, error_map(w, h, [&](std::size_t i) { return static_cast<double>(sf.dot[l][i]); }, against));
-      images += "<img src=\"" + dot + "\" alt=\"" + nm + " dot light " + std::to_string(l) + "\"> <img src=\"" + err +
-                "\" alt=\"" + nm + " error light " + std::to_string(l) + "\">\n";
     }
-    images += "</p>\n";
-    rows_norm += stats_row(nm + " (" + fmt(sr.seconds * 1000.0, 1) + " ms)", sr.vs_renormalised);
-    rows_unnorm += stats_row(nm, sr.vs_unnormalised);
     sum.schemes.push_back(sr);
+    page.scheme_dots.emplace_back(nm, sf.dot);
+    page.scheme_seeds.emplace_back(sm->seed);
   }
 
   // Figure 7: two-pass and four-pass, front and back.
-  std::string figure7;
   const bool have2 = std::find(r.methods.begin(), r.methods.end(), method::two_pass) != r.methods.end();
   const bool have4 = std::find(r.methods.begin(), r.methods.end(), method::four_pass) != r.methods.end();
   if (have2 && have4) {
@@ -286,53 +259,13 @@ report_summary write_report(const scene& s, const report_request& r) {
     auto lit = [&](const prepared_scene& ps, method m) { return rgb_image(w, h, render(s, ps, m, r.options).colour); };
     write_png(r.out_dir / "side-by-side.png", montage(lit(front, method::two_pass), lit(front, method::four_pass),
                                                       lit(back, method::two_pass), lit(back, method::four_pass)));
-    figure7 = "<h2>Side by side (after the paper's figure 7)</h2>\n<p>Top: front, bottom: back; left: two-pass, right: "
-              "four-pass.</p>\n<p><img src=\"side-by-side.png\" alt=\"two-pass and four-pass, front and back\"></p>\n";
   }
 
   write_text(sum.json, j.dump(2) + "\n");
   if (r.write_html) {
-    const std::string head =
-        "<tr><th>method</th><th>max |e|</th><th>mean e</th><th>mean |e|</th><th>RMSE</th><th>PSNR (dB, peak 255)</th>"
-        "<th>within ±1</th><th>wrap errors</th></tr>\n";
-    std::string html =
-        "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>gsdot3 render report</title>\n"
-        "<style>body{font-family:sans-serif;max-width:1200px;margin:auto}table{border-collapse:collapse}"
-        "td,th{border:1px solid #999;padding:3px 8px;text-align:right}img{margin:2px;vertical-align:top}"
-        ".legend{display:inline-block;width:512px;height:14px;background:linear-gradient(to right,#00f,#fff,#f00)}</style>"
-        "</head><body>\n<h1>DOT3 through the modeled GS vs the float dot product</h1>\n<p>Scene: " + r.scene_description + ", " +
-        std::to_string(w) + "×" + std::to_string(h) + ", " + std::to_string(front.triangles.size()) + " of " +
-        std::to_string(s.model.triangles.size()) + " triangles drawn, " + std::to_string(s.lights.size()) +
-        " lights, normal map " + std::to_string(s.normals.width) + "×" + std::to_string(s.normals.height) + " (" +
-        std::to_string(s.normals.palette.size()) + " palette entries), s = " + std::to_string(r.options.s) + ", filter " +
-        (r.options.bilinear ? "bilinear" : "nearest") +
-        (r.options.specular ? ", specular (half vectors, ILP power " + fmt(r.options.specular_power, 1) + ")" : std::string()) + ".</p>\n"
-        "<p>Errors e = method's dot product − float dot product, in 1/128 units, over every covered pixel and every light. "
-        "A wrap error is |e| &gt; 128 (the modulo-256 sum wrapped). Frame times are one wall-clock run of this "
-        "command; the benchmarks give stable figures.</p>\n"
-        "<h2>Against the renormalised float reference (128·fade·N·normalize(L))</h2>\n<table>\n" + head + rows_norm +
-        "</table>\n<h2>Against the float reference without renormalisation (128·N·L)</h2>\n<table>\n" + head + rows_unnorm +
-        "</table>\n<h2>Normalisation error of the float reference itself (not renormalised − renormalised)</h2>\n<table>\n" +
-        head + stats_row("float", sum.normalisation) + "</table>\n<p>Float reference: " + fmt(sum.reference_seconds * 1000.0, 1) +
-        " ms.</p>\n" + figure7 +
-        "<h2>What is modelled how</h2>\n<p>Register level (every pixel through gs::pixel_pipeline with the pass's "
-        "TEX0/ALPHA/COLCLAMP/FBMSK): step 1 (Z, ambient), the signed-multiplication passes of each method, the two-pass "
-        "alpha pass (PSMT8H of the DPB's own alpha), the ILP look-up × light colour added into the LAB, the diffuse pass "
-        "and the per-channel multiply blend. Value level: the PSMT8 channel fetch of the R+G+B post filter (the byte is "
-        "taken from the pixel's own word; the swizzled sprites are not modelled), the ILP's read of the summed byte, and "
-        "the LAB channel moved into the destination alpha for step 4. Rasteriser: 12.4 XY, top-left rule, Gouraud planes "
-        "from gs::gouraud_triangle, UV planes with 16 extra fraction bits, ZTST = GEQUAL. Post-filter sprites cover the "
-        "drawn triangles' bounding rectangle. fade_att = clamp(6·n·l, 0, 1) is applied per vertex by every method "
-        "(two-pass and baseline scale the tolight vector, four-pass uses HIGHLIGHT).</p>\n"
-        "<h2>Frames</h2>\n<p>For each method: the lit frame; per light the 8-bit DPB after the post filter (0x80 = dot 0) "
-        "and the error against the renormalised reference.</p>\n<p>Error legend: <span class=\"legend\"></span> −" +
-        fmt(heat_limit, 0) + " … 0 … +" + fmt(heat_limit, 0) +
-        " (1/128 units, saturating; ticks under each map at every unit; dark grey = not covered)</p>\n" + images +
-        "<h3>float reference</h3>\n<p><img src=\"reference-lit.png\" alt=\"reference lit\">";
-    for (std::size_t l = 0; l < s.lights.size(); ++l)
-      html += " <img src=\"reference-dot-light" + std::to_string(l) + ".png\" alt=\"reference dot light " + std::to_string(l) + "\">";
-    html += "</p>\n</body></html>\n";
-    write_text(sum.html, html);  // last: its presence means the report is complete
+    say("writing the page and the inspector's per-pixel data");
+    page.report_json = j.dump(2);
+    write_report_page(r.out_dir, page);  // last: the page's presence means the report is complete
   }
   return sum;
 }
