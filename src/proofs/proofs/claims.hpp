@@ -32,6 +32,15 @@ GSDOT3_CLAIM(clamp_wrap_intermediates);
 GSDOT3_CLAIM(highlight_attenuation);
 GSDOT3_CLAIM(lod_two_vs_four);
 GSDOT3_CLAIM(specular_attenuation_compensation);
+// Seed 002: compact normal storage (claims_normal_encoding.cpp)
+GSDOT3_CLAIM(normal_encoding_codes);
+GSDOT3_CLAIM(normal_encoding_worst_case);
+GSDOT3_CLAIM(normal_encoding_mean_rms);
+GSDOT3_CLAIM(normal_encoding_equivalence);
+GSDOT3_CLAIM(normal_encoding_singularities);
+GSDOT3_CLAIM(normal_encoding_xy_wrong_sign);
+GSDOT3_CLAIM(normal_encoding_2009_vs_2010);
+GSDOT3_CLAIM(normal_encoding_ranking);
 #undef GSDOT3_CLAIM
 
 }  // namespace gsdot3::proofs::claims
