@@ -53,7 +53,9 @@ TEST(Claims, EveryCatalogueRowRunsAndIsTested) {
       "ilp.dpb-clear-zero", "appendix2.packing", "two-pass.na-rounding", "appendix1.sphere-map",
       "two-pass.error-bound", "two-pass.max-s.vertex", "two-pass.max-s.interpolated", "four-pass.channel-exact",
       "four-pass.sum-wrap", "clamp-wrap.intermediates", "highlight.attenuation", "lod.two-vs-four",
-      "specular.attenuation-compensation"};
+      "specular.attenuation-compensation",
+      "normal-encoding.codes", "normal-encoding.worst-case", "normal-encoding.mean-rms", "normal-encoding.equivalence",
+      "normal-encoding.singularities", "normal-encoding.xy-wrong-sign", "normal-encoding.2009-vs-2010", "normal-encoding.ranking"};
   EXPECT_EQ(p::catalogue().size(), ids.size());
   for (auto id : ids) EXPECT_NE(p::find_claim(id), nullptr) << id;
 }
