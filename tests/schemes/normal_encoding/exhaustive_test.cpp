@@ -1,6 +1,6 @@
 // The per-code sweep (every 2×8 code of every two-channel method, 65 536 each) against integer
 // counts, and the worst-case table at 2×10 and 2×12 (printed: the README's table) checked against
-// 2^22 area-uniform directions. Size: 13 methods × 2^16 codes; cells at 10 and 12 bits.
+// 2^21 area-uniform directions. Size: 13 methods × 2^16 codes; cells at 10 and 12 bits.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -67,21 +67,23 @@ TEST(NormalEncodingExhaustive, EveryCodeAt2x8) {
 }
 
 TEST(NormalEncodingExhaustive, WorstCaseTableAt10And12Bits) {
-  constexpr std::uint64_t samples = std::uint64_t{1} << 22;
+  constexpr std::uint64_t samples = std::uint64_t{1} << 21;
   std::printf("%-20s %5s %14s %14s %14s %10s  witness n (hex)\n", "method", "bits", "sup_deg", "upper_deg", "sampled_deg", "nan_cells");
-  for (int bits : {8, 10, 12}) {
+  for (int bits : {10, 12}) {  // 8 bits: the catalogue's normal-encoding.worst-case
     for (const auto& m : ne::methods()) {
       if (m.only_8_bits && bits != 8) continue;
       const auto& cm = m.id == ne::method_id::octahedral_precise ? ne::method_of(ne::method_id::octahedral) : m;
       const auto w = ne::cell_worst_case(cm, bits, 2);
       double sampled = 0;
-      for (std::uint64_t k = 0; k < samples; k += (bits == 8 ? 1 : 1)) {
+      for (std::uint64_t k = 0; k < samples; ++k) {
         const ne::vec3 p = ne::fibonacci_point(k, samples);
         if (m.front_hemisphere && p.z < 0) continue;
         const ne::vec3 d = m.decode(m.encode(p, bits), bits);
         if (ne::finite(d)) sampled = std::max(sampled, ne::angle(d, p) * deg);
       }
       EXPECT_LE(sampled, w.upper_deg + 1e-9) << m.name << " " << bits;
+      // liamtyler.github.io "octahedral analysis": 12+12 bits, 10^6 random directions, max 0.0586°.
+      if (m.id == ne::method_id::octahedral && bits == 12) EXPECT_GE(w.sup_deg, 0.0586);
       std::printf("%-20s %5d %14.9f %14.9f %14.9f %10llu  (%a, %a, %a)\n", std::string(m.name).c_str(), bits, w.sup_deg, w.upper_deg,
                   sampled, static_cast<unsigned long long>(w.nonfinite_cells), w.witness.x, w.witness.y, w.witness.z);
     }
