@@ -83,7 +83,9 @@ TEST(NormalEncodingExhaustive, WorstCaseTableAt10And12Bits) {
       }
       EXPECT_LE(sampled, w.upper_deg + 1e-9) << m.name << " " << bits;
       // liamtyler.github.io "octahedral analysis": 12+12 bits, 10^6 random directions, max 0.0586°.
-      if (m.id == ne::method_id::octahedral && bits == 12) EXPECT_GE(w.sup_deg, 0.0586);
+      if (m.id == ne::method_id::octahedral && bits == 12) {
+        EXPECT_GE(w.sup_deg, 0.0586);
+      }
       std::printf("%-20s %5d %14.9f %14.9f %14.9f %10llu  (%a, %a, %a)\n", std::string(m.name).c_str(), bits, w.sup_deg, w.upper_deg,
                   sampled, static_cast<unsigned long long>(w.nonfinite_cells), w.witness.x, w.witness.y, w.witness.z);
     }
