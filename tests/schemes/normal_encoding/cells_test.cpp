@@ -92,3 +92,16 @@ TEST_P(SmallBits, DihedralReductionMatchesFullEnumeration) {
 }
 
 INSTANTIATE_TEST_SUITE_P(NormalEncoding, SmallBits, ::testing::Values(5, 6));
+
+TEST(NormalEncodingCells, AWindowIsTheSupOverItsCellsOnly) {
+  // The whole range as a window is the full enumeration; a window around the worst cell keeps its
+  // supremum; a window away from it gives less (a lower bound, as the 2×16 row is reported).
+  const auto& m = ne::method_named("octahedral");
+  const auto full = ne::cell_worst_case(m, 6, 2, ne::default_tolerance_rad, false);
+  const auto all = ne::cell_worst_case(m, 6, 2, ne::default_tolerance_rad, false, ne::code_window{0, 63, 0, 63});
+  EXPECT_DOUBLE_EQ(all.sup_deg, full.sup_deg);
+  const ne::code_window around{full.q.c[0] - 2, full.q.c[0] + 2, full.q.c[1] - 2, full.q.c[1] + 2};
+  EXPECT_DOUBLE_EQ(ne::cell_worst_case(m, 6, 2, ne::default_tolerance_rad, false, around).sup_deg, full.sup_deg);
+  const ne::code_window centre{30, 33, 30, 33};  // around +z, far from the worst cell near (1, 1, −1)/√3
+  EXPECT_LT(ne::cell_worst_case(m, 6, 2, ne::default_tolerance_rad, false, centre).sup_deg, full.sup_deg);
+}

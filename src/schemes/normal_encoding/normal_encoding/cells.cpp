@@ -131,10 +131,12 @@ bool symmetric(method_id id) {
   }
 }
 thread_local bool reduce = false;
+thread_local code_window window{};  // all codes by default
 std::uint32_t first_positive(method_id id, int bits) {
   return id == method_id::octahedral_snorm ? (std::uint32_t{1} << (bits - 1)) : (unorm_max(bits) + 1) / 2;
 }
 bool skipped(const method& m, int bits, std::uint32_t i, std::uint32_t j) {
+  if (i < window.i0 || i > window.i1 || j < window.j0 || j > window.j1) return true;
   if (!reduce) return false;
   const std::uint32_t c = first_positive(m.id, bits);
   return i < c || j < c || j > i;
@@ -227,6 +229,7 @@ void planar_pieces(const method& m, int bits, std::uint32_t i, acc& a) {
       p0 = std::max(-pi, p0 * spherical::kPI);
       p1 = std::min(pi, p1 * spherical::kPI);
       for (std::uint32_t j = 0; j <= mx; ++j) {
+        if (skipped(m, bits, i, j)) continue;
         double z0, z1;
         unorm_interval(j, bits, z0, z1);
         std::vector<halfspace> h{{{-std::sin(p0), std::cos(p0), 0}, 0}, {{std::sin(p1), -std::cos(p1), 0}, 0}};
@@ -479,7 +482,7 @@ vec3 inside_witness(const method& m, int bits, code q, vec3 p, vec3 d) {
 
 }  // namespace
 
-worst_case cell_worst_case(const method& m, int bits, unsigned threads, double tolerance_rad, bool use_symmetry) {
+worst_case cell_worst_case(const method& m, int bits, unsigned threads, double tolerance_rad, bool use_symmetry, code_window win) {
   check_bits(m, bits);
   const std::uint32_t first = m.id == method_id::spherical_lut ? spherical_lut::size
                               : m.id == method_id::octahedral_snorm ? (std::uint32_t{1} << bits)
@@ -491,7 +494,9 @@ worst_case cell_worst_case(const method& m, int bits, unsigned threads, double t
     for (unsigned w = 0; w < t; ++w)
       pool.emplace_back([&, w] {
         reduce = use_symmetry && symmetric(m.id);
-        for (std::uint32_t i = w; i < first; i += t) {
+        window = win;
+        for (std::uint32_t i = win.i0 / t * t + w; i < first && i <= win.i1; i += t) {
+          if (i < win.i0) continue;
           if (lambert_family(m.id)) lambert_pieces(m, bits, i, tol, global_lb, parts[w]);
           else planar_pieces(m, bits, i, parts[w]);
         }

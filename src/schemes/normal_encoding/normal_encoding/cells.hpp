@@ -58,9 +58,14 @@ struct worst_case {
 // not a rounding-cell method: use octahedral's (its upper bound, since the nearest code is among the
 // four tried). Threads split the first code coordinate.
 inline constexpr double default_tolerance_rad = 1e-10;
+// A rectangle of codes (channels 0 and 1, inclusive) to enumerate instead of all: the result is then
+// the supremum over those cells only, a lower bound for the whole sphere (used at 2×16).
+struct code_window {
+  std::uint32_t i0 = 0, i1 = 0xFFFFFFFFu, j0 = 0, j1 = 0xFFFFFFFFu;
+};
 // use_symmetry: enumerate only the codes i >= j >= the first positive code, for the methods that
 // commute with the reflections x -> −x, y -> −y and the swap x <-> y (cells.cpp).
 worst_case cell_worst_case(const method& m, int bits, unsigned threads = 2, double tolerance_rad = default_tolerance_rad,
-                           bool use_symmetry = true);
+                           bool use_symmetry = true, code_window window = {});
 
 }  // namespace gsdot3::normal_encoding
