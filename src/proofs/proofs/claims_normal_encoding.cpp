@@ -55,7 +55,8 @@ bool cell_method(const ne::method& m) { return m.id != ne::method_id::octahedral
 outcome normal_encoding_codes(const gs::model_options&, const sweep_config&) {
   // Every 2×8 code of every two-channel method (#2: × its sign bit; #3a: its 256 × 256 codes):
   // decoded, classified as unit (| |d| − 1 | <= 1e-9), finite but not unit, or NaN/Inf; the
-  // number of distinct decoded directions (exact double triples after normalisation).
+  // number of distinct decoded directions (components of the normalised vector rounded to 1e-9:
+  // codes the mapping identifies, e.g. octahedral's folded border, differ in the last ulps).
   outcome o;
   o.result = verdict::bound;
   std::uint64_t total = 0;
@@ -63,7 +64,7 @@ outcome normal_encoding_codes(const gs::model_options&, const sweep_config&) {
     if (m.channels != 2) continue;
     const std::uint32_t signs = m.id == ne::method_id::xy_sign ? 2 : 1;
     std::int64_t unit = 0, nonunit = 0, nonfinite = 0, behind = 0;
-    std::vector<std::tuple<double, double, double>> distinct;
+    std::vector<std::tuple<long long, long long, long long>> distinct;
     std::string first_nan;
     for (std::uint32_t s = 0; s < signs; ++s)
       for (std::uint32_t y = 0; y < 256; ++y)
@@ -80,7 +81,7 @@ outcome normal_encoding_codes(const gs::model_options&, const sweep_config&) {
           else ++nonunit;
           if (m.front_hemisphere && d.z < 0) ++behind;
           const ne::vec3 u = ne::normalize(d);
-          if (ne::finite(u)) distinct.emplace_back(u.x, u.y, u.z);
+          if (ne::finite(u)) distinct.emplace_back(std::llround(u.x * 1e9), std::llround(u.y * 1e9), std::llround(u.z * 1e9));
         }
     std::sort(distinct.begin(), distinct.end());
     distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());

@@ -36,6 +36,12 @@ TEST(NormalEncodingClaims, CodesAgainstTheDiscCount) {
   }
   EXPECT_EQ(o.integer("xy-sign.nan_inf"), 2 * (65536 - inside));
   for (auto m : {"octahedral", "octahedral-snorm", "stereographic", "spherical"}) EXPECT_EQ(o.integer(std::string(m) + ".nan_inf"), 0) << m;
+  // Distinct directions, counted by hand in exhaustive_test.cpp: octahedral 254² + 4·128 − 3,
+  // spherical 254·255 + 2 (poles and the φ = ±π seam identified), stereographic all 65 536.
+  EXPECT_EQ(o.integer("octahedral.distinct_directions"), 254 * 254 + 4 * 128 - 3);
+  EXPECT_EQ(o.integer("spherical.distinct_directions"), 254 * 255 + 2);
+  EXPECT_EQ(o.integer("stereographic.distinct_directions"), 65536);
+  EXPECT_EQ(o.integer("lambert.distinct_directions"), inside);
 }
 
 TEST(NormalEncodingClaims, WorstCaseNotBelowPublishedSampledMaxima) {
