@@ -54,6 +54,8 @@ TEST(Claims, EveryCatalogueRowRunsAndIsTested) {
       "two-pass.error-bound", "two-pass.max-s.vertex", "two-pass.max-s.interpolated", "four-pass.channel-exact",
       "four-pass.sum-wrap", "clamp-wrap.intermediates", "highlight.attenuation", "lod.two-vs-four",
       "specular.attenuation-compensation",
+      "normal-encoding.codes", "normal-encoding.worst-case", "normal-encoding.mean-rms", "normal-encoding.equivalence",
+      "normal-encoding.singularities", "normal-encoding.xy-wrong-sign", "normal-encoding.2009-vs-2010", "normal-encoding.ranking",
       // seed 004: asserted in tests/schemes/powervr/claims_test.cpp
       "powervr.identity", "powervr.identity-8bit", "powervr.q-quadrant", "powervr.azimuth-255-256", "powervr.sdk-arctan",
       "powervr.pack-bump", "powervr.flipped-uv"};

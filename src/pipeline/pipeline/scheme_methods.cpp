@@ -3,12 +3,18 @@
 #include <algorithm>
 
 #include "pipeline/scheme_method.hpp"
+#include "pipeline/scheme_normal_encoding.hpp"
 #include "pipeline/scheme_powervr.hpp"
 
 namespace gsdot3::pipeline {
 
 const std::vector<scheme_method>& scheme_methods() {
   static const std::vector<scheme_method> rows = {
+      {"enc-xyz", "002 (Pranckevičius 2009)", "normal map stored as XYZ 3×8 unorm, decoded in float (baseline)", false, render_enc_xyz},
+      {"enc-xy", "002 (Pranckevičius 2009)", "normal map stored as X&Y 2×8, z = sqrt(1 − x² − y²) (#1)", false, render_enc_xy},
+      {"enc-spheremap", "002 (Pranckevičius 2009)", "normal map stored as sphere map 2×8 (#4; = Lambert, CryEngine 3)", false, render_enc_spheremap},
+      {"enc-stereographic", "002 (Pranckevičius 2009)", "normal map stored as stereographic 2×8, scale 1.7777 (#7)", false, render_enc_stereographic},
+      {"enc-octahedral", "002 (Pranckevičius 2009)", "normal map stored as octahedral 2×8 unorm, nearest (not in the seed)", false, render_enc_octahedral},
       {"pvr-float", "004 (PowerVR 1999)", "16-bit S/R polar texel; K/Q per polygon; K1 + K2 sin S + K3 cos S cos(R − Q) in float (flycast), clamped",
        true, powervr_methods::flat_float},
       {"pvr-fixed8", "004 (PowerVR 1999)", "as pvr-float with 8-bit sin/cos tables (precision of the hardware not public)", true,

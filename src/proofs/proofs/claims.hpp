@@ -32,6 +32,16 @@ GSDOT3_CLAIM(clamp_wrap_intermediates);
 GSDOT3_CLAIM(highlight_attenuation);
 GSDOT3_CLAIM(lod_two_vs_four);
 GSDOT3_CLAIM(specular_attenuation_compensation);
+// seed 002: compact normal storage (claims_normal_encoding.cpp)
+inline constexpr std::string_view normal_encoding_section = "Seed 002: Pranckevičius 2009, Compact Normal Storage for small G-Buffers";
+GSDOT3_CLAIM(normal_encoding_codes);
+GSDOT3_CLAIM(normal_encoding_worst_case);
+GSDOT3_CLAIM(normal_encoding_mean_rms);
+GSDOT3_CLAIM(normal_encoding_equivalence);
+GSDOT3_CLAIM(normal_encoding_singularities);
+GSDOT3_CLAIM(normal_encoding_xy_wrong_sign);
+GSDOT3_CLAIM(normal_encoding_2009_vs_2010);
+GSDOT3_CLAIM(normal_encoding_ranking);
 // seed 004: PowerVR Series 2 polar bump mapping (claims_powervr.cpp)
 inline constexpr std::string_view powervr_section = "Seed 004: Imagination Technologies 1999, Bump Mapping Tricks for Series 2";
 GSDOT3_CLAIM(powervr_identity);
