@@ -54,7 +54,9 @@ TEST(Claims, EveryCatalogueRowRunsAndIsTested) {
       "two-pass.error-bound", "two-pass.max-s.vertex", "two-pass.max-s.interpolated", "four-pass.channel-exact",
       "four-pass.sum-wrap", "clamp-wrap.intermediates", "highlight.attenuation", "lod.two-vs-four",
       "specular.attenuation-compensation"};
-  EXPECT_EQ(p::catalogue().size(), ids.size());
+  EXPECT_EQ(std::count_if(p::catalogue().begin(), p::catalogue().end(),
+                          [](const p::claim& c) { return c.section == p::claim::mikkelsen_section; }),
+            static_cast<std::ptrdiff_t>(ids.size()));  // the other seeds' rows are tested with their schemes
   for (auto id : ids) EXPECT_NE(p::find_claim(id), nullptr) << id;
 }
 

@@ -55,6 +55,14 @@ constexpr basis3 widen(const std::array<vec3<float>, 3>& b) noexcept {
 }
 inline constexpr basis3 source_basis = widen(source_basis_float);
 
+// The exact basis rounded to float (via the nearest double; no double-rounding case arises for these
+// four constants — pinned in tests/schemes/valve).
+inline constexpr std::array<vec3<float>, 3> exact_basis_float = {{
+    {static_cast<float>(sqrt_2_3), 0.0f, static_cast<float>(inv_sqrt3)},
+    {static_cast<float>(-inv_sqrt6), static_cast<float>(inv_sqrt2), static_cast<float>(inv_sqrt3)},
+    {static_cast<float>(-inv_sqrt6), static_cast<float>(-inv_sqrt2), static_cast<float>(inv_sqrt3)},
+}};
+
 // bumpvects.h's g_localBumpBasis in float: built from mathlib.h's OO_SQRT_2_OVER_3, OO_SQRT_6,
 // OO_SQRT_2, OO_SQRT_3 defines, so B1 and B2 share 0.40824821591377258f (read in stored ports of
 // those defines, not in Valve's own bumpvects.h). height2ssbump's library uses this one.

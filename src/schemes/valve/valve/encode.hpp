@@ -7,6 +7,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 
@@ -35,14 +36,14 @@ inline bool exact_weights(const vec3<double>& N, vec3<double>& D, const basis3& 
 
 // normal2ssbump's float weights for an 8-bit normal-map texel (FloatBitMap reads c/255 as float).
 // NaN components when Σd = 0 (the tool divides by zero too).
-inline vec3<float> normal2ssbump(const texel& t) noexcept {
+// `B` defaults to the shipped literals; exact_basis_float is the alternative the claims compare.
+inline vec3<float> normal2ssbump(const texel& t, const std::array<vec3<float>, 3>& B = source_basis_float) noexcept {
   auto range_adjust = [](std::uint8_t c) { return 2.0f * (static_cast<float>(c) / 255.0f - 0.5f); };
   auto saturate_and_square = [](float x) {
     x = std::max(0.0f, std::min(1.0f, x));
     return x * x;
   };
   const vec3<float> n{range_adjust(t.r), range_adjust(t.g), range_adjust(t.b)};
-  const auto& B = source_basis_float;
   const vec3<float> dp{saturate_and_square(dot(n, B[0])), saturate_and_square(dot(n, B[1])), saturate_and_square(dot(n, B[2]))};
   const float sum = dot(dp, vec3<float>{1.0f, 1.0f, 1.0f});
   const float scale = static_cast<float>(1.0 / static_cast<double>(sum));  // Vector::operator*=(float) of 1.0/sum
