@@ -24,6 +24,7 @@ struct usage_error : std::runtime_error {
 void add_alu_command(CLI::App& app, context& ctx);
 void add_prove_command(CLI::App& app, context& ctx);
 void add_render_command(CLI::App& app, context& ctx);  // render and report
+void add_ssbump_command(CLI::App& app, context& ctx);
 void add_vectors_command(CLI::App& app, context& ctx);
 
 }  // namespace gsdot3::cli
