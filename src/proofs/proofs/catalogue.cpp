@@ -86,7 +86,7 @@ const std::vector<claim>& catalogue() {
       {"valve.basis-orthonormal", "eq. (1) (Source's bumpvects.h)", "Source's basis is orthonormal, so Σ(N·B_i)² = 1 for unit N",
        "the 6 Gram entries exactly; 721×1441 unit normals sampled", M::exhaustive, {}, c::valve_source_basis_orthonormal, valve},
       {"valve.float-literals", "eq. (1) (common_fxc.h)", "Source's float literals for the basis: deviation from the exact values and its effect",
-       "the 7 literals; normal2ssbump on every texel with r, g, b ∈ {0, 4, …, 252, 255} (65³)", M::exhaustive, {},
+       "the 6 non-zero literals; normal2ssbump on every texel with r, g, b ∈ {0, 4, …, 252, 255} (65³)", M::exhaustive, {},
        c::valve_float_literals, valve},
       {"valve.zero-sum", "eq. (3), Listing 1", "eq. (3)'s divisor Σ saturate(N·B_i)² is non-zero for every 8-bit normal texel",
        "every RGB8 texel (2^24), signs decided exactly", M::exhaustive, {}, c::valve_zero_sum, valve},
