@@ -26,6 +26,7 @@ void add_normal_encoding_command(CLI::App& app, context& ctx);
 void add_prove_command(CLI::App& app, context& ctx);
 void add_pvr_bump_command(CLI::App& app, context& ctx);  // seed 004 bump textures
 void add_render_command(CLI::App& app, context& ctx);  // render and report
+void add_ssbump_command(CLI::App& app, context& ctx);
 void add_vectors_command(CLI::App& app, context& ctx);
 
 }  // namespace gsdot3::cli

@@ -15,6 +15,7 @@ int main(int argc, char** argv) {
   gsdot3::cli::add_prove_command(app, ctx);
   gsdot3::cli::add_pvr_bump_command(app, ctx);
   gsdot3::cli::add_render_command(app, ctx);
+  gsdot3::cli::add_ssbump_command(app, ctx);
   gsdot3::cli::add_vectors_command(app, ctx);
   // A repeatable option takes one value per occurrence, so `--option a=b FILE` leaves FILE positional.
   auto one_value_each = [](CLI::App* a, auto& self) -> void {

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "pipeline/scheme_method.hpp"
+#include "pipeline/scheme_valve.hpp"
 #include "pipeline/scheme_normal_encoding.hpp"
 #include "pipeline/scheme_powervr.hpp"
 
@@ -10,6 +11,10 @@ namespace gsdot3::pipeline {
 
 const std::vector<scheme_method>& scheme_methods() {
   static const std::vector<scheme_method> rows = {
+      {"rnm", "001 (Green 2007)", "RGB8 normal N = 2t − 1, D = saturate(N·B)²/Σ, Σ D_i·saturate(B_i·T) (Listing 1, fp32)", true,
+       render_valve_rnm},
+      {"ssbump", "001 (Green 2007)", "RGB8 D from normal2ssbump of the same map, Σ t_i·saturate(B_i·T) (Listing 2, fp32)", true,
+       render_valve_ssbump},
       {"enc-xyz", "002 (Pranckevičius 2009)", "normal map stored as XYZ 3×8 unorm, decoded in float (baseline)", false, render_enc_xyz},
       {"enc-xy", "002 (Pranckevičius 2009)", "normal map stored as X&Y 2×8, z = sqrt(1 − x² − y²) (#1)", false, render_enc_xy},
       {"enc-spheremap", "002 (Pranckevičius 2009)", "normal map stored as sphere map 2×8 (#4; = Lambert, CryEngine 3)", false, render_enc_spheremap},

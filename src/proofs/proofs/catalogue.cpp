@@ -13,6 +13,7 @@ const char* name(method m) noexcept { return m == method::exhaustive ? "exhausti
 const std::vector<claim>& catalogue() {
   using M = method;
   namespace c = claims;
+  constexpr std::string_view valve = "Seed 001: Green 2007, Efficient Self-Shadowed Radiosity Normal Mapping";
   static const std::vector<claim> rows = {
       {"eq1-eq2.ranges", "§3.2 eq. (1), (2)",
        "a2 = 128 − a and b2 = b + 128 are 8-bit unsigned, and a·b (>> 7) is a signed byte, for a ∈ [−127, 128], b ∈ [−128, 127]",
@@ -80,6 +81,33 @@ const std::vector<claim>& catalogue() {
        "two-pass and four-pass can be switched using the same 8-bit palette indices; how far apart their dot products are",
        "every 8-bit normal-map vector × every 64×64 sphere-map texel in the disc", M::exhaustive,
        {"blend_shift"}, c::lod_two_vs_four},
+      {"valve.eq1-not-orthonormal", "eq. (1)", "the basis B0..B2 of eq. (1), as printed, is orthonormal",
+       "the 6 Gram entries B_i·B_j, i ≤ j, exactly in Q(√2, √3)", M::exhaustive, {}, c::valve_eq1_not_orthonormal, valve},
+      {"valve.basis-orthonormal", "eq. (1) (Source's bumpvects.h)", "Source's basis is orthonormal, so Σ(N·B_i)² = 1 for unit N",
+       "the 6 Gram entries exactly; 721×1441 unit normals sampled", M::exhaustive, {}, c::valve_source_basis_orthonormal, valve},
+      {"valve.float-literals", "eq. (1) (common_fxc.h)", "Source's float literals for the basis: deviation from the exact values and its effect",
+       "the 6 non-zero literals; normal2ssbump on every texel with r, g, b ∈ {0, 4, …, 252, 255} (65³)", M::exhaustive, {},
+       c::valve_float_literals, valve},
+      {"valve.zero-sum", "eq. (3), Listing 1", "eq. (3)'s divisor Σ saturate(N·B_i)² is non-zero for every 8-bit normal texel",
+       "every RGB8 texel (2^24), signs decided exactly", M::exhaustive, {}, c::valve_zero_sum, valve},
+      {"valve.flat-normal", "§1.4, normal2ssbump, height2ssbump",
+       "a flat normal gives (1/3, 1/3, 1/3) through normal2ssbump; a flat unoccluded height field gives 1/√3 through height2ssbump",
+       "the exact flat normal; the 4 RGB8 texels nearest it; an 8×8 flat height field", M::exhaustive, {}, c::valve_flat_normal, valve},
+      {"valve.precision", "§1.4 (\"numeric precision is increased\")",
+       "storing D (SSBump) instead of N (RNM) in 8 bits increases the lighting's precision",
+       "every texel with r, g, b ∈ {0, 4, …, 252, 255} (65³; all 2^24 in the valve_exhaustive ctest); unit normals on a "
+       "0.25° (θ, φ) grid of the upper hemisphere", M::exhaustive, {}, c::valve_precision, valve},
+      {"valve.ssbump-filter-linear", "§1.4 (\"no special processing ... when filtering or mip-mapping\")",
+       "filtering SSBump texels filters the lighting exactly (Listing 2 is linear)",
+       "every channel pair (a, b) × weight w/16, w = 0..16 (× 6 lightmap values, exact integers)", M::exhaustive, {},
+       c::valve_ssbump_filter_linear, valve},
+      {"valve.rnm-filter", "eq. (3), §1.4", "filtering RNM normal texels does not filter the lighting: how far apart",
+       "every pair of the RGB8 unit normals on a 17×17 (x, y) grid in the disc × bilinear weight w/16, w = 1..15 "
+       "(a 65×65 grid in the valve_exhaustive ctest)", M::exhaustive, {}, c::valve_rnm_filter, valve},
+      {"valve.reconstruct-normal", "§1.4 (\"reconstruct a suitable tangent-space normal\")",
+       "the tangent-space normal rebuilt from SSBump weights with the basis directions: its angular error",
+       "every texel with r, g, b ∈ {0, 4, …, 252, 255} (65³; all 2^24 in the valve_exhaustive ctest), Σd ≠ 0", M::exhaustive,
+       {}, c::valve_reconstruct_normal, valve},
       {"normal-encoding.codes", "seed 002, all methods", "every stored 2×8 code decodes to a unit normal",
        "every 2×8 code of every two-channel method (#2 with its sign bit)", M::exhaustive, {}, c::normal_encoding_codes, c::normal_encoding_section},
       {"normal-encoding.worst-case", "seed 002, all methods; 2010 revision; octahedral",

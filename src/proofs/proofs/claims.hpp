@@ -32,6 +32,16 @@ GSDOT3_CLAIM(clamp_wrap_intermediates);
 GSDOT3_CLAIM(highlight_attenuation);
 GSDOT3_CLAIM(lod_two_vs_four);
 GSDOT3_CLAIM(specular_attenuation_compensation);
+// seed 001, Green 2007 (claims_valve.cpp)
+GSDOT3_CLAIM(valve_eq1_not_orthonormal);
+GSDOT3_CLAIM(valve_source_basis_orthonormal);
+GSDOT3_CLAIM(valve_float_literals);
+GSDOT3_CLAIM(valve_zero_sum);
+GSDOT3_CLAIM(valve_flat_normal);
+GSDOT3_CLAIM(valve_precision);
+GSDOT3_CLAIM(valve_ssbump_filter_linear);
+GSDOT3_CLAIM(valve_rnm_filter);
+GSDOT3_CLAIM(valve_reconstruct_normal);
 // seed 002: compact normal storage (claims_normal_encoding.cpp)
 inline constexpr std::string_view normal_encoding_section = "Seed 002: Pranckevičius 2009, Compact Normal Storage for small G-Buffers";
 GSDOT3_CLAIM(normal_encoding_codes);
