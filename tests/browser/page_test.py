@@ -410,7 +410,9 @@ def main():
     # A real click on view A (zoom 1) pins that pixel in the inspector.
     r = n // 3
     x, y = cols["pixel"][r] % width, cols["pixel"][r] // width
-    rect = tab.evaluate("(() => { const b = document.getElementById('img-a').getBoundingClientRect(); return [b.left, b.top]; })()")
+    # Scrolled into the viewport first: with many methods the tables push the views below the window.
+    rect = tab.evaluate("(() => { const e = document.getElementById('img-a'); e.scrollIntoView({block: 'start'});"
+                        " const b = e.getBoundingClientRect(); return [b.left, b.top]; })()")
     for kind in ("mouseMoved", "mousePressed", "mouseReleased"):
         tab.call("Input.dispatchMouseEvent", type=kind, x=rect[0] + x + 0.5, y=rect[1] + y + 0.5, button="left", clickCount=1)
     dom = Dom()
