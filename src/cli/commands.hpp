@@ -22,6 +22,7 @@ struct usage_error : std::runtime_error {
 
 // One line per subcommand (alphabetical).
 void add_alu_command(CLI::App& app, context& ctx);
+void add_mem_command(CLI::App& app, context& ctx);
 void add_prove_command(CLI::App& app, context& ctx);
 void add_render_command(CLI::App& app, context& ctx);  // render and report
 void add_vectors_command(CLI::App& app, context& ctx);

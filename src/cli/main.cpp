@@ -11,6 +11,7 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "gsdot3 0.1.0");
   gsdot3::cli::context ctx;
   gsdot3::cli::add_alu_command(app, ctx);
+  gsdot3::cli::add_mem_command(app, ctx);
   gsdot3::cli::add_prove_command(app, ctx);
   gsdot3::cli::add_render_command(app, ctx);
   gsdot3::cli::add_vectors_command(app, ctx);

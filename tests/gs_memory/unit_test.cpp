@@ -9,6 +9,7 @@
 #include "formats.hpp"
 #include "gs_memory/address.hpp"
 #include "gs_memory/local_memory.hpp"
+#include "gs_memory/overlay.hpp"
 #include "gs_memory/swizzle_bits.hpp"
 #include "gs_memory/swizzle_tables.hpp"
 
@@ -93,6 +94,35 @@ TEST(GsMemoryLayout, Psmt8ViewOfAPsmct32BufferIsTheChannelFetchMapping) {
         ASSERT_EQ(t8.byte, ct.byte + channel) << "FBW " << fbw << " texel (" << u << ", " << v << ")";
       }
   }
+}
+
+// The page overlay (gsdot3 mem view) of PSMT8 over PSMCT32 is the channel-fetch mapping, and every
+// overlay cell names a pixel whose location holds the view texel's bits.
+TEST(GsMemoryLayout, PageOverlayIsTheChannelFetchMapping) {
+  const auto cells = page_overlay(psm::PSMCT32, psm::PSMT8);
+  ASSERT_EQ(cells.size(), 128u * 64u);
+  for (std::uint32_t v = 0; v < 64; ++v)
+    for (std::uint32_t u = 0; u < 128; ++u) {
+      std::uint32_t x = ((u & ~15u) >> 1) | (u & 7u);
+      if (((v >> 2) & 1u) != ((v >> 1) & 1u)) x ^= 4u;
+      const std::uint32_t y = ((v & ~3u) >> 1) | (v & 1u);
+      const unsigned channel = (v & 2u) ? ((u & 8u) ? 3u : 1u) : ((u & 8u) ? 2u : 0u);
+      const overlay_cell& c = cells[v * 128 + u];
+      ASSERT_EQ(c.x, x) << u << "," << v;
+      ASSERT_EQ(c.y, y) << u << "," << v;
+      ASSERT_EQ(c.bit, 8 * channel) << u << "," << v;
+    }
+  for (const psm base : all_psms)
+    for (const psm view : all_psms) {
+      const auto ov = page_overlay(base, view);
+      const extent pv = page_size(layout_of(view)), pb = page_size(layout_of(base));
+      for (std::uint32_t i = 0; i < ov.size(); i += 97) {
+        const location tv = locate(buf(view, 0, pv.w / 64), i % pv.w, i / pv.w);
+        const location tb = locate(buf(base, 0, pb.w / 64), ov[i].x, ov[i].y);
+        const std::uint32_t word_bit = tb.byte * 8 + tb.bit - upper_shift(base);
+        ASSERT_EQ(tv.byte * 8 + tv.bit, word_bit + ov[i].bit) << static_cast<int>(base) << " / " << static_cast<int>(view);
+      }
+    }
 }
 
 // write -> read returns the value, and a write changes exactly the format's bits.
