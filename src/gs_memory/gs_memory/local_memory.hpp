@@ -16,10 +16,18 @@ namespace gs::mem {
 
 class local_memory {
  public:
-  local_memory() : bytes_(memory_bytes, 0) {}
+  local_memory() : words_(memory_bytes / 4, 0) {}
 
-  constexpr std::uint8_t byte(std::uint32_t a) const noexcept { return bytes_[a % memory_bytes]; }
-  constexpr void set_byte(std::uint32_t a, std::uint8_t v) noexcept { bytes_[a % memory_bytes] = v; }
+  // Held as 32-bit words, byte a = bits 8·(a % 4) .. of word a / 4 (little-endian).
+  constexpr std::uint8_t byte(std::uint32_t a) const noexcept {
+    a %= memory_bytes;
+    return static_cast<std::uint8_t>(words_[a / 4] >> (8 * (a % 4)));
+  }
+  constexpr void set_byte(std::uint32_t a, std::uint8_t v) noexcept {
+    a %= memory_bytes;
+    const unsigned s = 8 * (a % 4);
+    words_[a / 4] = (words_[a / 4] & ~(0xFFu << s)) | (std::uint32_t{v} << s);
+  }
 
   // The value at a location (up to 32 bits, little-endian from at.byte, starting at bit at.bit).
   constexpr std::uint32_t read(const location& at) const noexcept {
@@ -45,10 +53,13 @@ class local_memory {
     write(locate(b, x, y), v);
   }
 
-  const std::vector<std::uint8_t>& bytes() const noexcept { return bytes_; }
+  // The memory as 32-bit words (PSMCT32 pixel at unit address a = words()[a]): the renderer's frame
+  // buffers write through this.
+  std::uint32_t* words() noexcept { return words_.data(); }
+  const std::uint32_t* words() const noexcept { return words_.data(); }
 
  private:
-  std::vector<std::uint8_t> bytes_;
+  std::vector<std::uint32_t> words_;
 };
 
 }  // namespace gs::mem
