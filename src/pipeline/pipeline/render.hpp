@@ -28,6 +28,7 @@ struct render_options {
   gs::model_options model{};
   raster_path path = raster_path::cached;
   int threads = 2;                 // horizontal bands rendered in parallel
+  bool memory_path = false;        // frame buffers in the modelled GS local memory (render.cpp)
 };
 
 struct frame {
