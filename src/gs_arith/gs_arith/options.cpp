@@ -18,6 +18,8 @@ const std::vector<option_info>& option_catalogue() {
        "sixteen_bit_only: PCSX2 SW; all_formats: DobieStation. Unconfirmed on HW."},
       {"bilinear", {"lerp16_4", "nearest"},
        "lerp16_4: PCSX2 SW 4-bit weights; nearest: filtering off. Unconfirmed on HW."},
+      {"texture_buffer", {"quarter_page", "per_fragment", "page", "draw_snapshot"},
+       "quarter_page: Mikkelsen 2004 section 3.4; draw_snapshot: PCSX2 SW; per_fragment, page: what-ifs. Unconfirmed on HW."},
   };
   return rows;
 }
@@ -39,6 +41,9 @@ std::optional<std::string> set_option(model_options& o, std::string_view name, s
   else if (name == "dither_decode") ok = pick(o.dither, value, "twos_complement", dither_decode::twos_complement, "sign_magnitude", dither_decode::sign_magnitude);
   else if (name == "dither_targets") ok = pick(o.dither_on, value, "sixteen_bit_only", dither_targets::sixteen_bit_only, "all_formats", dither_targets::all_formats);
   else if (name == "bilinear") ok = pick(o.bilinear, value, "lerp16_4", bilinear_mode::lerp16_4, "nearest", bilinear_mode::nearest);
+  else if (name == "texture_buffer")
+    ok = pick(o.tex_buffer, value, "quarter_page", texture_buffer::quarter_page, "per_fragment", texture_buffer::per_fragment) ||
+         pick(o.tex_buffer, value, "page", texture_buffer::page, "draw_snapshot", texture_buffer::draw_snapshot);
   else {
     std::string known;
     for (const auto& row : option_catalogue()) known += (known.empty() ? "" : ", ") + std::string(row.name);
@@ -59,6 +64,10 @@ std::string_view option_value(const model_options& o, std::string_view name) {
   if (name == "dither_decode") return o.dither == dither_decode::twos_complement ? "twos_complement" : "sign_magnitude";
   if (name == "dither_targets") return o.dither_on == dither_targets::sixteen_bit_only ? "sixteen_bit_only" : "all_formats";
   if (name == "bilinear") return o.bilinear == bilinear_mode::lerp16_4 ? "lerp16_4" : "nearest";
+  if (name == "texture_buffer") {
+    constexpr std::string_view names[] = {"quarter_page", "per_fragment", "page", "draw_snapshot"};
+    return names[static_cast<int>(o.tex_buffer)];
+  }
   return {};
 }
 

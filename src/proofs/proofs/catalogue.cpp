@@ -80,6 +80,22 @@ const std::vector<claim>& catalogue() {
        "two-pass and four-pass can be switched using the same 8-bit palette indices; how far apart their dot products are",
        "every 8-bit normal-map vector × every 64×64 sphere-map texel in the disc", M::exhaustive,
        {"blend_shift"}, c::lod_two_vs_four},
+      // §3.4: the Z-buffer clear of the DPB during the ILP pass, over one DPB page through gs_memory.
+      {"dpb-clear.value", "§3.4",
+       "with ZBUF at the DPB, Z = 0x00808080 and ZTST all-pass, the DPB ends as 0x00808080 everywhere the trick covers",
+       "z-trick, z-trick-psmz32 × ZBUF PSMZ24, PSMZ32 × DPB alpha 0..255 × every pixel of a page", M::exhaustive, {},
+       c::dpb_clear_value},
+      {"dpb-clear.read-before-write", "§3.4",
+       "no texel of the DPB is overwritten by the Z clear before the ILP pass (or the post filter) reads it",
+       "z-trick, z-trick-psmz32 × ZBUF PSMZ24, PSMZ32 × every pixel of a page", M::exhaustive, {"texture_buffer"},
+       c::dpb_clear_read_before_write},
+      {"dpb-clear.variants-agree", "§3.4",
+       "the two variants (sprites' XYZ in the Z layout; LAB rendered in PSMZ32) give the same LAB",
+       "ZBUF PSMZ24, PSMZ32 × every LAB pixel of a page", M::exhaustive, {"texture_buffer"}, c::dpb_clear_variants_agree},
+      {"dpb-clear.lab-layout", "§3.4",
+       "the LAB comes out in PSMZ32 layout; rendering the signed multiplications in PSMZ32 brings it back to PSMCT32",
+       "z-trick, z-trick-psmz32 × DPB in PSMCT32, PSMZ32 × every pixel of a page", M::exhaustive, {"texture_buffer"},
+       c::dpb_clear_lab_layout},
   };
   return rows;
 }
