@@ -81,3 +81,34 @@ INSTANTIATE_TEST_SUITE_P(Methods, MemoryPath, ::testing::Values(method::two_pass
 
 }  // namespace
 }  // namespace gsdot3::pipeline
+
+namespace gsdot3::pipeline {
+namespace {
+
+// Section 3.4 claim (e): the multi-light frame with the Z-buffer clear equals the frame with explicit
+// clears. z-trick: under every texture_buffer model (each fragment's Z write lands on the word it has
+// just read). z-trick-psmz32: only where the texture buffer holds the page (page, draw_snapshot);
+// under quarter_page and per_fragment the Z writes clear texels before they are read and the frame
+// differs (the per-page count is proofs' dpb-clear.read-before-write).
+TEST_P(MemoryPath, ZBufferClearOfTheDpbEqualsExplicitClears) {
+  static const scene s = default_scene();
+  ASSERT_GE(s.lights.size(), 2u);
+  const prepared_scene ps = prepare(s);
+  const frame expl = render(s, ps, GetParam(), render_options{});
+  for (const auto tb : {gs::texture_buffer::quarter_page, gs::texture_buffer::per_fragment, gs::texture_buffer::page,
+                        gs::texture_buffer::draw_snapshot})
+    for (const auto mode : {dpb_clear_mode::z_trick, dpb_clear_mode::z_trick_psmz32}) {
+      render_options o;
+      o.memory_path = true;
+      o.dpb_clear = mode;
+      o.model.tex_buffer = tb;
+      const frame f = render(s, ps, GetParam(), o);
+      const bool expect_equal = mode == dpb_clear_mode::z_trick || tb == gs::texture_buffer::page ||
+                                tb == gs::texture_buffer::draw_snapshot;
+      EXPECT_EQ(f.colour == expl.colour && f.dot == expl.dot, expect_equal)
+          << name(mode) << ", texture_buffer " << gs::option_value(o.model, "texture_buffer");
+    }
+}
+
+}  // namespace
+}  // namespace gsdot3::pipeline

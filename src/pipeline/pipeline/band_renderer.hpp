@@ -41,9 +41,10 @@ struct row_view {
 struct memory_view {
   std::uint32_t* words = nullptr;
   std::uint32_t bp = 0, bw = 0;  // blocks, 64-pixel units
+  bool z = false;                // the buffer is drawn in PSMZ32 (section 3.4's z-trick modes)
   std::uint32_t& operator()(int x, int y) const noexcept {
-    return words[gs::mem::tables::unit_address(gs::mem::layout::ct32, bp, bw, static_cast<std::uint32_t>(x),
-                                               static_cast<std::uint32_t>(y))];
+    return words[gs::mem::tables::unit_address(z ? gs::mem::layout::z32 : gs::mem::layout::ct32, bp, bw,
+                                               static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y))];
   }
 };
 
@@ -123,12 +124,13 @@ class band_renderer {
   [[gnu::flatten]] void sprite(gs::rgba8 colour, Texel&& texel, const FB& fb) {
     sprite_rect<Pass>(colour, sprite_area_, texel, fb);
   }
-  // The same over rectangle r (clipped to the sprite area): one of the memory path's tile sprites.
+  // The same over rectangle r clipped to the sprite area (or to `clip`): one of the memory path's
+  // tile sprites.
   template <const pass_regs& Pass, class Texel, class FB>
-  [[gnu::flatten]] void sprite_rect(gs::rgba8 colour, scissor r, Texel&& texel, const FB& fb) {
+  [[gnu::flatten]] void sprite_rect(gs::rgba8 colour, scissor r, Texel&& texel, const FB& fb, const scissor* clip = nullptr) {
     constexpr gs::gs_registers regs = Pass.registers();
     const gs::fragment_colour cf = gs::fragment_colour::flat(colour);
-    const scissor& a = sprite_area_;
+    const scissor& a = clip != nullptr ? *clip : sprite_area_;
     r = {std::max(r.x0, a.x0), std::max(r.y0, a.y0), std::min(r.x1, a.x1), std::min(r.y1, a.y1)};
     if (r.x0 >= r.x1 || r.y0 >= r.y1) return;
     rasterise_sprite({r.x0 * 16, r.y0 * 16}, {r.x1 * 16, r.y1 * 16}, r, [&](int x, int y) {

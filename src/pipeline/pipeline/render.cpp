@@ -29,6 +29,7 @@
 #include "gs_memory/address.hpp"
 #include "gs_memory/channel_fetch.hpp"
 #include "gs_memory/local_memory.hpp"
+#include "gs_memory/texture_buffer.hpp"
 #include "gs_memory/texture_wrap.hpp"
 #include "pipeline/band_renderer.hpp"
 #include "pipeline/encoders.hpp"
@@ -41,6 +42,15 @@ std::string_view name(method m) {
     case method::two_pass: return "two-pass";
     case method::four_pass: return "four-pass";
     case method::baseline: return "baseline";
+  }
+  return "?";
+}
+
+std::string_view name(dpb_clear_mode m) {
+  switch (m) {
+    case dpb_clear_mode::explicit_clear: return "explicit";
+    case dpb_clear_mode::z_trick: return "z-trick";
+    case dpb_clear_mode::z_trick_psmz32: return "z-trick-psmz32";
   }
   return "?";
 }
@@ -127,7 +137,23 @@ struct frame_buffers {
   std::vector<std::uint32_t> z;
   FB lab, dpb, diff, out;
   gs::mem::local_memory* memory = nullptr;  // the memory path's local memory, else null
+  dpb_clear_mode clear = dpb_clear_mode::explicit_clear;
 };
+
+// zsigma(x, y): the pixel of the same page whose PSMZ32 address is PSMCT32 pixel (x, y)'s, from
+// gs_memory's two layouts (the four 32×16 quarters of the page swapped along the diagonals).
+std::array<int, 2> zsigma(int x, int y) {
+  static const std::array<std::uint16_t, 2048> table = [] {
+    std::array<std::uint16_t, 2048> ct_at_word{}, sigma{};
+    const gs::mem::buffer ct{{}, fixed::uint<6>::from_wrapped(1), gs::mem::psm::PSMCT32};
+    const gs::mem::buffer z{{}, fixed::uint<6>::from_wrapped(1), gs::mem::psm::PSMZ32};
+    for (std::uint32_t p = 0; p < 2048; ++p) ct_at_word[gs::mem::locate(ct, p % 64, p / 64).byte / 4] = static_cast<std::uint16_t>(p);
+    for (std::uint32_t q = 0; q < 2048; ++q) sigma[ct_at_word[gs::mem::locate(z, q % 64, q / 64).byte / 4]] = static_cast<std::uint16_t>(q);
+    return sigma;
+  }();
+  const int s = table[static_cast<std::size_t>((y & 31) * 64 + (x & 63))];
+  return {(x & ~63) + s % 64, (y & ~31) + s / 64};
+}
 constexpr bool in_memory(const row_view&) { return false; }
 constexpr bool in_memory(const memory_view&) { return true; }
 
@@ -146,30 +172,48 @@ void channel_pass(band_renderer& r, const frame_buffers<row_view>&, gs::rgba8 co
                   unsigned channel, const row_view& src, const row_view& dst) {
   r.sprite<Pass>(colour, [&](int x, int y) { return gs::clut_t8(clut, byte(static_cast<int>(src(x, y) >> (8 * channel)))); }, dst);
 }
+// The memory path. A source drawn in PSMZ32 (src.z) has logical pixel L in the word of PSMCT32
+// pixel zsigma(L): the tile that fetches PSMCT32 pixel M is drawn at zsigma(M) (the sprites' XYZ
+// in the Z layout). z_clear: the ILP pass of the z-trick modes, also writing Z = 0x00808080 into the
+// DPB as PSMZ24 at every fragment (after its texel fetch). In the z-trick modes the texel fetches
+// go through gs_memory's texture_page_buffer model (model option texture_buffer).
 template <const pass_regs& Pass>
 void channel_pass(band_renderer& r, const frame_buffers<memory_view>& fb, gs::rgba8 colour, const gs::clut_buffer& clut,
-                  unsigned channel, const memory_view& src, const memory_view& dst) {
+                  unsigned channel, const memory_view& src, const memory_view& dst, bool z_clear = false,
+                  gs::texture_buffer tb = gs::texture_buffer::per_fragment) {
   static constexpr gs::mem::channel_fetch layout[4] = {gs::mem::channel_fetch_sprites(0), gs::mem::channel_fetch_sprites(1),
                                                        gs::mem::channel_fetch_sprites(2), gs::mem::channel_fetch_sprites(3)};
   const gs::mem::channel_fetch& f = layout[channel];
-  const gs::mem::local_memory& mem = *fb.memory;
+  gs::mem::local_memory& mem = *fb.memory;
+  const gs::mem::buffer zbuf{fixed::uint<14>::from_wrapped(fb.dpb.bp), fixed::uint<6>::from_wrapped(fb.dpb.bw), gs::mem::psm::PSMZ24};
+  const bool buffered = fb.clear != dpb_clear_mode::explicit_clear;
   const scissor& a = r.sprite_area();
+  // With the Z clear the ILP sprites cover every page the area touches (the paper's per-page
+  // primitives, section 3.3), so that the Z writes clear whole pages.
+  const scissor pages{a.x0 & ~63, a.y0 & ~31, (a.x1 + 63) & ~63, (a.y1 + 31) & ~31};
   for (int py = a.y0 / 32; py * 32 < a.y1; ++py)
     for (int px = a.x0 / 64; px * 64 < a.x1; ++px) {
       const std::uint32_t page = static_cast<std::uint32_t>(px) + static_cast<std::uint32_t>(py) * src.bw;
       const gs::mem::buffer tex{fixed::uint<14>::from_wrapped(src.bp + 32 * page), fixed::uint<6>::from_wrapped(2 * src.bw),
                                 gs::mem::psm::PSMT8};
+      gs::mem::texture_page_buffer texels(buffered ? tb : gs::texture_buffer::per_fragment, mem, (src.bp + 32 * page) * 256,
+                                          gs::mem::page_bytes);
       for (const gs::mem::fetch_sprite& sp : f.sprites) {
-        const int x0 = px * 64 + static_cast<int>(sp.x0), y0 = py * 32 + static_cast<int>(sp.y0);
-        r.sprite_rect<Pass>(colour, {x0, y0, px * 64 + static_cast<int>(sp.x1), py * 32 + static_cast<int>(sp.y1)},
+        const int mx = px * 64 + static_cast<int>(sp.x0), my = py * 32 + static_cast<int>(sp.y0);  // PSMCT32 pixel fetched
+        const auto [x0, y0] = src.z ? zsigma(mx, my) : std::array<int, 2>{mx, my};                  // where it is drawn
+        const int w = static_cast<int>(sp.x1 - sp.x0), h = static_cast<int>(sp.y1 - sp.y0);
+        r.sprite_rect<Pass>(colour, {x0, y0, x0 + w, y0 + h},
                             [&](int x, int y) {
                               const auto u = gs::mem::wrap_texel(f.CLAMP.WMS, sp.u0 + (x - x0), fixed::u4::literal(7),
                                                                  f.CLAMP.MINU, f.CLAMP.MAXU);
                               const auto v = gs::mem::wrap_texel(f.CLAMP.WMT, sp.v0 + (y - y0), fixed::u4::literal(6),
                                                                  f.CLAMP.MINV, f.CLAMP.MAXV);
-                              return gs::clut_t8(clut, gs::u8::from_wrapped(mem.read(gs::mem::locate(tex, u, v))));
+                              const std::uint8_t index = texels.fetch(gs::mem::locate(tex, u, v).byte);
+                              if (z_clear)
+                                mem.write_pixel(zbuf, static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y), 0x00808080u);
+                              return gs::clut_t8(clut, gs::u8::from_wrapped(index));
                             },
-                            dst);
+                            dst, z_clear ? &pages : nullptr);
       }
     }
 }
@@ -191,7 +235,11 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
     const std::vector<light_vertex>& lv = ps.lights[l];
     // 2.1 (the DPB starts cleared; nothing is drawn outside the sprite area); 2.2 COLCLAMP = 0 in
     // every pass of 2.3 and 2.4.
-    r.fill(fb.dpb, clear_dpb, false);
+    if constexpr (in_memory(FB{})) {
+      if (l == 0 || fb.clear == dpb_clear_mode::explicit_clear) r.fill(fb.dpb, clear_dpb, false);  // else: 2.6's Z clear
+    } else {
+      r.fill(fb.dpb, clear_dpb, false);
+    }
     switch (m) {
       case method::two_pass: {
         const auto attr = attributes(ps, [&](std::uint32_t v) { return pack_tolight(lv[v].T * lv[v].fade, o.s); }, normal_map_uv);
@@ -203,7 +251,12 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
           const gs::mem::buffer t8h{fixed::uint<14>::from_wrapped(fb.dpb.bp), fixed::uint<6>::from_wrapped(fb.dpb.bw),
                                     gs::mem::psm::PSMT8H};
           r.sprite<two_pass_add_alpha>(
-              white, [&](int x, int y) { return gs::clut_t8(in.grey, gs::u8::from_wrapped(fb.memory->read_pixel(t8h, static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y)))); },
+              white,
+              [&](int x, int y) {
+                const auto [tx, ty] = fb.dpb.z ? zsigma(x, y) : std::array<int, 2>{x, y};  // the word of logical (x, y)
+                return gs::clut_t8(in.grey, gs::u8::from_wrapped(fb.memory->read_pixel(t8h, static_cast<std::uint32_t>(tx),
+                                                                                         static_cast<std::uint32_t>(ty))));
+              },
               fb.dpb);
         } else {
           r.sprite<two_pass_add_alpha>(white, [&](int x, int y) { return gs::clut_t8(in.grey, gs::t8h_index(fb.dpb(x, y))); },
@@ -259,7 +312,12 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
       for (int x = band.x0; x < band.x1; ++x) result.dot[l][r.index(x, y)] = static_cast<std::uint8_t>(fb.dpb(x, y) & 0xFF);
     // 2.5, 2.6: COLCLAMP = 1; ILP[sum] × light colour (MODULATE) added into the LAB.
     const auto& lc = s.lights[l].colour;
-    channel_pass<ilp_into_lab>(r, fb, rgb(lc[0], lc[1], lc[2], 0x80), in.ilp, 0, fb.dpb, fb.lab);
+    if constexpr (in_memory(FB{})) {
+      channel_pass<ilp_into_lab>(r, fb, rgb(lc[0], lc[1], lc[2], 0x80), in.ilp, 0, fb.dpb, fb.lab,
+                                 fb.clear != dpb_clear_mode::explicit_clear, o.model.tex_buffer);
+    } else {
+      channel_pass<ilp_into_lab>(r, fb, rgb(lc[0], lc[1], lc[2], 0x80), in.ilp, 0, fb.dpb, fb.lab);
+    }
   }
 
   // Step 3: the unlit diffuse layer.
@@ -331,7 +389,7 @@ frame render(const scene& s, const prepared_scene& ps, method m, const render_op
   result.colour.assign(n, 0);
   result.visible_triangle.assign(n, -1);
   result.dot.assign(s.lights.size(), std::vector<std::uint8_t>(n, 0));
-  if (o.memory_path) {
+  if (o.memory_path || o.dpb_clear != dpb_clear_mode::explicit_clear) {
     // PSMCT32 buffers of FBW = ceil(width / 64) at FBP 0, P, 2P, 3P.
     const auto fbw = static_cast<std::uint32_t>((ps.width + 63) / 64);
     const std::uint32_t pages = fbw * static_cast<std::uint32_t>((ps.height + 31) / 32);
@@ -341,9 +399,14 @@ frame render(const scene& s, const prepared_scene& ps, method m, const render_op
     gs::mem::local_memory memory;
     frame_buffers<memory_view> fb;
     fb.memory = &memory;
+    fb.clear = o.dpb_clear;
     memory_view* views[4] = {&fb.dpb, &fb.lab, &fb.diff, &fb.out};
-    for (std::uint32_t k = 0; k < 4; ++k) *views[k] = memory_view{memory.words(), 32 * k * pages, fbw};
-    render_bands(s, ps, m, o, in, fb, result);
+    for (std::uint32_t k = 0; k < 4; ++k) *views[k] = memory_view{memory.words(), 32 * k * pages, fbw, false};
+    fb.dpb.z = o.dpb_clear == dpb_clear_mode::z_trick;
+    fb.lab.z = o.dpb_clear == dpb_clear_mode::z_trick_psmz32;
+    render_options one = o;
+    if (o.dpb_clear != dpb_clear_mode::explicit_clear) one.threads = 1;  // draw order is the model's
+    render_bands(s, ps, m, one, in, fb, result);
   } else {
     std::vector<std::uint32_t> rows(4 * n, 0);  // value level: DPB, LAB, diffuse, output, frame-sized each
     frame_buffers<row_view> fb;
