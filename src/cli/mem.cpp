@@ -11,9 +11,9 @@
 
 #include "commands.hpp"
 #include "gs_memory/address.hpp"
-#include "gs_memory/overlay.hpp"
 #include "gs_memory/psm_names.hpp"
 #include "pipeline/files.hpp"
+#include "pipeline/memory_picture.hpp"
 
 namespace gsdot3::cli {
 namespace {
@@ -67,42 +67,11 @@ struct view_args {
   int scale = 4;
 };
 
-// Quarter q of the base unit: R, G, B, A of a 32-bit pixel (low to high byte) as red, green, blue, grey.
-constexpr std::uint8_t quarter_rgb[4][3] = {{230, 50, 50}, {50, 200, 60}, {60, 90, 240}, {200, 200, 200}};
-
 void run_view(const view_args& a) {
   const mem::psm base = psm_arg("--base", a.base), view = psm_arg("--as", a.as);
   if (a.scale < 1 || a.scale > 16) throw usage_error("--scale: out of range 1..16");
   if (a.colour != "channel" && a.colour != "pixel") throw usage_error("--colour: channel or pixel, got '" + a.colour + "'");
-  const auto cells = mem::page_overlay(base, view);
-  const mem::extent pv = mem::page_size(mem::layout_of(view)), pb = mem::page_size(mem::layout_of(base));
-  const mem::extent blk = mem::block_size(mem::layout_of(view));
-  const unsigned ub = mem::unit_bits(mem::layout_of(base));
-  pipeline::image img;
-  img.width = static_cast<int>(pv.w) * a.scale;
-  img.height = static_cast<int>(pv.h) * a.scale;
-  img.data.assign(static_cast<std::size_t>(img.width) * img.height * 3, 0);
-  for (int py = 0; py < img.height; ++py)
-    for (int px = 0; px < img.width; ++px) {
-      const std::uint32_t u = static_cast<std::uint32_t>(px / a.scale), v = static_cast<std::uint32_t>(py / a.scale);
-      const mem::overlay_cell& c = cells[v * pv.w + u];
-      std::uint8_t rgb[3];
-      if (a.colour == "channel") {
-        // Channel hue; brightness steps with the base pixel's x inside its 8-pixel group so that
-        // neighbouring pixels stay apart.
-        const unsigned q = c.bit * 4 / (ub < 8 ? 8 : ub) % 4;
-        const unsigned shade = 120 + 135 * (c.x % 8) / 7;
-        for (int k = 0; k < 3; ++k) rgb[k] = static_cast<std::uint8_t>(quarter_rgb[q][k] * shade / 255);
-      } else {  // the base pixel's position: red = x, green = y across the base page
-        rgb[0] = static_cast<std::uint8_t>(255 * c.x / (pb.w - 1));
-        rgb[1] = static_cast<std::uint8_t>(255 * c.y / (pb.h - 1));
-        rgb[2] = static_cast<std::uint8_t>(c.bit * 255 / 28);
-      }
-      const bool edge = a.scale >= 3 && ((px % (a.scale * static_cast<int>(blk.w)) == 0) ||
-                                         (py % (a.scale * static_cast<int>(blk.h)) == 0));
-      for (int k = 0; k < 3; ++k)
-        img.data[(static_cast<std::size_t>(py) * img.width + px) * 3 + k] = edge ? 0 : rgb[k];
-    }
+  const pipeline::image img = pipeline::page_overlay_image(base, view, a.colour, a.scale);
   try {
     pipeline::write_png(a.out, img);
   } catch (const std::runtime_error& e) {

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "pipeline/files.hpp"
+#include "pipeline/memory_picture.hpp"
 
 namespace gsdot3::pipeline {
 
@@ -249,6 +250,27 @@ report_summary write_report(const scene& s, const report_request& r) {
               "four-pass.</p>\n<p><img src=\"side-by-side.png\" alt=\"two-pass and four-pass, front and back\"></p>\n";
   }
 
+  // GS local memory (gs_memory): the PSMCT32 DPB page read as the PSMT8 texture of the post filter,
+  // and whether the memory path gives the frames above bit for bit.
+  write_png(r.out_dir / "memory-psmct32-as-psmt8.png", page_overlay_image(gs::mem::psm::PSMCT32, gs::mem::psm::PSMT8, "channel", 4));
+  write_png(r.out_dir / "memory-psmct32-as-psmz32.png", page_overlay_image(gs::mem::psm::PSMCT32, gs::mem::psm::PSMZ32, "pixel", 4));
+  j["options"]["memory_path"] = r.options.memory_path;
+  j["options"]["dpb_clear"] = std::string(name(r.options.dpb_clear));
+  j["memory"]["pictures"] = {"memory-psmct32-as-psmt8.png", "memory-psmct32-as-psmz32.png"};
+  if (4 * ((w + 63) / 64) * ((h + 31) / 32) <= 512) {
+    render_options other = r.options;
+    other.memory_path = !r.options.memory_path;
+    other.dpb_clear = dpb_clear_mode::explicit_clear;
+    for (std::size_t k = 0; k < frames.size(); ++k) {
+      const frame f = render(s, front, sum.methods[k].m, other);
+      j["memory"]["memory_path_equals_value_level"][std::string(name(sum.methods[k].m))] =
+          f.colour == frames[k].colour && f.dot == frames[k].dot;
+    }
+  }
+  images += "<h2>GS local memory</h2>\n<p>A PSMCT32 page (the DPB) read as PSMT8, the post filter's texture (red, green, "
+            "blue, grey: the R, G, B, A byte of a pixel), and as PSMZ32 (colour: the PSMCT32 pixel's position).</p>\n"
+            "<p><img src=\"memory-psmct32-as-psmt8.png\" alt=\"PSMCT32 page as PSMT8\"> "
+            "<img src=\"memory-psmct32-as-psmz32.png\" alt=\"PSMCT32 page as PSMZ32\"></p>\n";
   write_text(sum.json, j.dump(2) + "\n");
   if (r.write_html) {
     const std::string head =
