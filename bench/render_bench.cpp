@@ -17,11 +17,12 @@ const scene& default_frame_scene() {
   return s;
 }
 
-void frame_bench(benchmark::State& state, method m) {
+void frame_bench(benchmark::State& state, method m, bool memory_path = false) {
   const scene& s = default_frame_scene();
   const prepared_scene ps = prepare(s);
   render_options o;
   o.threads = static_cast<int>(state.range(0));
+  o.memory_path = memory_path;
   double ops = 0;
   for (auto _ : state) {
     const frame f = render(s, ps, m, o);
@@ -37,6 +38,11 @@ void frame_bench(benchmark::State& state, method m) {
 void BM_TwoPass(benchmark::State& st) { frame_bench(st, method::two_pass); }
 void BM_FourPass(benchmark::State& st) { frame_bench(st, method::four_pass); }
 void BM_Baseline(benchmark::State& st) { frame_bench(st, method::baseline); }
+
+// render_options::memory_path: the frame buffers in the modelled GS local memory.
+void BM_TwoPassMemory(benchmark::State& st) { frame_bench(st, method::two_pass, true); }
+void BM_FourPassMemory(benchmark::State& st) { frame_bench(st, method::four_pass, true); }
+void BM_BaselineMemory(benchmark::State& st) { frame_bench(st, method::baseline, true); }
 
 void BM_FloatReference(benchmark::State& state) {
   const scene& s = default_frame_scene();
@@ -54,6 +60,9 @@ void BM_FloatReference(benchmark::State& state) {
 BENCHMARK(BM_TwoPass)->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FourPass)->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Baseline)->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_TwoPassMemory)->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FourPassMemory)->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_BaselineMemory)->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FloatReference)->UseRealTime()->Unit(benchmark::kMillisecond);
 
 BENCHMARK_MAIN();

@@ -100,5 +100,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                    std::to_string(s.width) + "x" + std::to_string(s.height) + ", first colour difference at pixel " +
                    std::to_string(i) + ")";
           });
+  // The memory path (frame buffers in the modelled GS local memory) against the value level.
+  o.memory_path = true;
+  const pl::frame memory = pl::render(s, ps, m, o);
+  require(memory.colour == cached.colour && memory.dot == cached.dot, [&] {
+    return "render: memory path and value level differ (method " + std::string(pl::name(m)) + ", " + std::to_string(s.width) +
+           "x" + std::to_string(s.height) + ")";
+  });
   return 0;
 }

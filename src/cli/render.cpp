@@ -26,6 +26,8 @@ struct render_args {
   std::vector<std::string> lights, model_options;
   int s = 122, threads = 2;
   double specular = 0.0;
+  bool memory_path = false;
+  std::string dpb_clear = "explicit";
 };
 
 std::vector<float> parse_floats(const std::string& what, const std::string& text, std::size_t n) {
@@ -133,6 +135,12 @@ void run(const render_args& a, bool html, context& ctx) {
     if (auto err = gs::set_option(req.options.model, kv.substr(0, eq), kv.substr(eq + 1))) throw usage_error("--model-option: " + *err);
   }
   const auto [w, h] = parse_size(a.size);
+  req.options.memory_path = a.memory_path;
+  if (a.dpb_clear == "z-trick") req.options.dpb_clear = pipeline::dpb_clear_mode::z_trick;
+  else if (a.dpb_clear == "z-trick-psmz32") req.options.dpb_clear = pipeline::dpb_clear_mode::z_trick_psmz32;
+  else if (a.dpb_clear != "explicit") throw usage_error("--dpb-clear: expected explicit, z-trick or z-trick-psmz32, got '" + a.dpb_clear + "'");
+  if ((a.memory_path || a.dpb_clear != "explicit") && 4 * ((w + 63) / 64) * ((h + 31) / 32) > 512)
+    throw usage_error("--memory-path: four " + a.size + " PSMCT32 buffers do not fit in the GS's 4 MiB (512 pages)");
   std::vector<pipeline::point_light> lights;
   for (const std::string& l : a.lights) lights.push_back(parse_light(l));
   std::vector<float> eye;
@@ -209,6 +217,12 @@ void add_options(CLI::App* cmd, render_args& a) {
                   "specular instead of diffuse (section 3.7): half vectors, and the ILP raised to this power (1..256)");
   cmd->add_option("--path", a.path, "rasteriser path: cached (fast) | reference (re-rasterise every pass)")->capture_default_str();
   cmd->add_option("--threads", a.threads, "frame bands rendered in parallel")->capture_default_str();
+  cmd->add_flag("--memory-path", a.memory_path,
+                "frame buffers in the modelled GS local memory; post filter as PSMT8 channel-fetch sprites (same frames)");
+  cmd->add_option("--dpb-clear", a.dpb_clear,
+                  "step 2.1's DPB clear (section 3.4): explicit | z-trick | z-trick-psmz32 (Z-buffer clear during the "
+                  "ILP pass; implies --memory-path, one thread; see --model-option texture_buffer=...)")
+      ->capture_default_str();
   cmd->add_option("--model-option", a.model_options, "GS model option NAME=VALUE (see `gsdot3 alu --help`)");
   cmd->add_option("--profile", a.profile, "GS model options of an emulator (" + gs::profile_names() + "); --model-option overrides it");
 }

@@ -53,7 +53,8 @@ TEST(Claims, EveryCatalogueRowRunsAndIsTested) {
       "ilp.dpb-clear-zero", "appendix2.packing", "two-pass.na-rounding", "appendix1.sphere-map",
       "two-pass.error-bound", "two-pass.max-s.vertex", "two-pass.max-s.interpolated", "four-pass.channel-exact",
       "four-pass.sum-wrap", "clamp-wrap.intermediates", "highlight.attenuation", "lod.two-vs-four",
-      "specular.attenuation-compensation"};
+      "specular.attenuation-compensation",
+      "dpb-clear.value", "dpb-clear.read-before-write", "dpb-clear.variants-agree", "dpb-clear.lab-layout"};
   EXPECT_EQ(std::count_if(p::catalogue().begin(), p::catalogue().end(),
                           [](const p::claim& c) { return c.section == p::claim::mikkelsen_section; }),
             static_cast<std::ptrdiff_t>(ids.size()));  // the other seeds' rows are tested with their schemes
@@ -422,4 +423,27 @@ TEST(Claims, LodTwoVersusFourAgainstPlainIntegers) {
   EXPECT_EQ(fig(o, "diff_max"), hi);
   EXPECT_EQ(fig(o, "visible_diff_min"), std::min(vl2[0], vl2[1]));
   EXPECT_EQ(fig(o, "visible_diff_max"), std::max(vh2[0], vh2[1]));
+}
+
+// Section 3.4, counted by hand: PSMZ24 keeps alpha, so (a) fails on every pixel of both variants for
+// the 255 non-zero alphas; z-trick-psmz32's Z writes from the top two 32x16 quarters (rows 0-15) land on
+// the bottom two, which are read later: 1024 texels per ZBUF format, unless the buffer holds the page.
+TEST(Claims, DpbClearTrick) {
+  const gs::model_options o;
+  const auto value = p::find_claim("dpb-clear.value")->evaluate(o, {});
+  EXPECT_EQ(value.counterexamples, 2u * 255u * 2048u);
+  EXPECT_EQ(fig(value, "counterexamples_psmz32"), 0);
+  for (const auto tb : {gs::texture_buffer::quarter_page, gs::texture_buffer::per_fragment, gs::texture_buffer::page,
+                        gs::texture_buffer::draw_snapshot}) {
+    gs::model_options t;
+    t.tex_buffer = tb;
+    const bool holds_page = tb == gs::texture_buffer::page || tb == gs::texture_buffer::draw_snapshot;
+    const auto rbw = p::find_claim("dpb-clear.read-before-write")->evaluate(t, {});
+    EXPECT_EQ(fig(rbw, "counterexamples_z_trick"), 0);
+    EXPECT_EQ(fig(rbw, "counterexamples_z_trick_psmz32"), holds_page ? 0 : 2 * 1024);
+    EXPECT_EQ(p::find_claim("dpb-clear.variants-agree")->evaluate(t, {}).counterexamples, holds_page ? 0u : 2u * 1024u);
+    const auto layout = p::find_claim("dpb-clear.lab-layout")->evaluate(t, {});
+    EXPECT_EQ(fig(layout, "counterexamples_z_trick"), 0);
+    EXPECT_EQ(layout.result == p::verdict::proven, holds_page);
+  }
 }

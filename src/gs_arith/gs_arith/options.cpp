@@ -23,6 +23,8 @@ const std::vector<option_info>& option_catalogue() {
       {"rgb_only_targets", {"thirty_two_bit_only", "all_formats"},
        "thirty_two_bit_only: PCSX2 GetAFAIL(FRAME.PSM), PR 9652; all_formats: Play! Vulkan, DobieStation 3a23544b. "
        "No recording here."},
+      {"texture_buffer", {"quarter_page", "per_fragment", "page", "draw_snapshot"},
+       "quarter_page: Mikkelsen 2004 section 3.4; draw_snapshot: PCSX2 SW; per_fragment, page: what-ifs. Unconfirmed on HW."},
   };
   return rows;
 }
@@ -50,6 +52,9 @@ std::optional<std::string> set_option(model_options& o, std::string_view name, s
   else if (name == "dither_targets") ok = pick(o.dither_on, value, "sixteen_bit_only", dither_targets::sixteen_bit_only, "all_formats", dither_targets::all_formats);
   else if (name == "bilinear") ok = pick(o.bilinear, value, "lerp16_4", bilinear_mode::lerp16_4, "nearest", bilinear_mode::nearest, "weighted_sum_4", bilinear_mode::weighted_sum_4);
   else if (name == "rgb_only_targets") ok = pick(o.rgb_only, value, "thirty_two_bit_only", rgb_only_targets::thirty_two_bit_only, "all_formats", rgb_only_targets::all_formats);
+  else if (name == "texture_buffer")
+    ok = pick(o.tex_buffer, value, "quarter_page", texture_buffer::quarter_page, "per_fragment", texture_buffer::per_fragment) ||
+         pick(o.tex_buffer, value, "page", texture_buffer::page, "draw_snapshot", texture_buffer::draw_snapshot);
   else {
     std::string known;
     for (const auto& row : option_catalogue()) known += (known.empty() ? "" : ", ") + std::string(row.name);
@@ -75,6 +80,10 @@ std::string_view option_value(const model_options& o, std::string_view name) {
   if (name == "bilinear")
     return o.bilinear == bilinear_mode::lerp16_4 ? "lerp16_4" : o.bilinear == bilinear_mode::nearest ? "nearest" : "weighted_sum_4";
   if (name == "rgb_only_targets") return o.rgb_only == rgb_only_targets::thirty_two_bit_only ? "thirty_two_bit_only" : "all_formats";
+  if (name == "texture_buffer") {
+    constexpr std::string_view names[] = {"quarter_page", "per_fragment", "page", "draw_snapshot"};
+    return names[static_cast<int>(o.tex_buffer)];
+  }
   return {};
 }
 

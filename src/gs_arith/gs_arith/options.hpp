@@ -52,6 +52,17 @@ enum class bilinear_mode { lerp16_4, nearest, weighted_sum_4 };
 // (Play! GSH_VulkanDrawUtils.cpp CDrawUtils::AlphaTest, DobieStation draw_pixel at 3a23544b).
 enum class rgb_only_targets { thirty_two_bit_only, all_formats };
 
+// What a texture read sees of memory written earlier in the same draw (the GS's texture page buffer;
+// section 3.4's Z-buffer clear writes the DPB while it is read as a texture). No hardware test.
+// quarter_page: the buffer holds the 32×16-pixel quarter of the PSMCT32 page being read (2 KiB),
+//   reloaded when a fetch leaves it; writes do not reach it (the paper's §3.4 explanation, "the
+//   32x16 region that is currently being read as a texture (and is already cached)"; default).
+// per_fragment: every fetch reads memory as written so far (no buffering; the strictest what-if).
+// page: the buffer holds the whole 8 KiB page, reloaded when a fetch leaves it (what-if).
+// draw_snapshot: the texture is read once before the draw (PCSX2's software renderer:
+//   `GSRendererSW::SharedData::UpdateSource` converts the source texture before drawing).
+enum class texture_buffer { quarter_page, per_fragment, page, draw_snapshot };
+
 struct model_options {
   tfx_rounding tfx = tfx_rounding::floor;
   gouraud_fraction gouraud = gouraud_fraction::keep_fraction;
@@ -60,6 +71,7 @@ struct model_options {
   dither_targets dither_on = dither_targets::sixteen_bit_only;
   bilinear_mode bilinear = bilinear_mode::lerp16_4;
   rgb_only_targets rgb_only = rgb_only_targets::thirty_two_bit_only;
+  texture_buffer tex_buffer = texture_buffer::quarter_page;
 
   friend constexpr bool operator==(const model_options&, const model_options&) = default;
 };

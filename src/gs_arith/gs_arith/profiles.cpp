@@ -13,7 +13,8 @@ const std::vector<profile>& profiles() {
         {"dither_decode", "twos_complement"},
         {"dither_targets", "sixteen_bit_only"},
         {"bilinear", "lerp16_4"},
-        {"rgb_only_targets", "thirty_two_bit_only"}}},
+        {"rgb_only_targets", "thirty_two_bit_only"},
+        {"texture_buffer", "draw_snapshot"}}},
       {"dobiestation", "DobieStation src/core/gsthread.cpp (interpreter: tex_lookup, draw_pixel)",
        {{"tfx_rounding", "floor"},
         {"gouraud_fraction", "truncate_to_8"},
@@ -21,7 +22,8 @@ const std::vector<profile>& profiles() {
         {"dither_decode", "inverted_magnitude"},
         {"dither_targets", "all_formats"},
         {"bilinear", "weighted_sum_4"},
-        {"rgb_only_targets", "all_formats"}}},
+        {"rgb_only_targets", "all_formats"},
+        {"texture_buffer", "per_fragment"}}},
       {"play", "Play! Source/gs/GSH_Vulkan (GSH_VulkanDrawDesktop.cpp fragment shader, GSH_VulkanDrawUtils.cpp)",
        {{"tfx_rounding", "truncate"},
         {"gouraud_fraction", "keep_fraction"},
@@ -29,7 +31,8 @@ const std::vector<profile>& profiles() {
         {"dither_decode", "twos_complement"},
         {"dither_targets", "sixteen_bit_only"},
         {"bilinear", "weighted_sum_4"},
-        {"rgb_only_targets", "all_formats"}}},
+        {"rgb_only_targets", "all_formats"},
+        {"texture_buffer", "quarter_page"}}},
   };
   return rows;
 }

@@ -7,9 +7,11 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <type_traits>
 #include <vector>
 
 #include "gs_arith/gouraud.hpp"
+#include "gs_memory/swizzle_tables.hpp"
 #include "pipeline/gs_pass.hpp"
 #include "pipeline/prepare.hpp"
 #include "pipeline/render.hpp"
@@ -25,6 +27,27 @@ struct tri_attr {
   plane u, v;
 };
 
+// Where a frame buffer's pixel (x, y) is: a row-major frame-sized vector (value level, row_view), or
+// a PSMCT32 buffer in the modelled GS local memory (render_options::memory_path, memory_view: `words`
+// is the 4 MiB memory, FBP·32 = bp, FBW = bw; the address is gs_memory's PSMCT32 layout). The passes
+// are templates over the view, so the value-level path is compiled as before.
+struct row_view {
+  std::uint32_t* words = nullptr;
+  int width = 0;
+  std::uint32_t& operator()(int x, int y) const noexcept {
+    return words[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)];
+  }
+};
+struct memory_view {
+  std::uint32_t* words = nullptr;
+  std::uint32_t bp = 0, bw = 0;  // blocks, 64-pixel units
+  bool z = false;                // the buffer is drawn in PSMZ32 (section 3.4's z-trick modes)
+  std::uint32_t& operator()(int x, int y) const noexcept {
+    return words[gs::mem::tables::unit_address(z ? gs::mem::layout::z32 : gs::mem::layout::ct32, bp, bw,
+                                               static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y))];
+  }
+};
+
 struct fragment {
   std::int32_t tri;
   std::int16_t x, y;
@@ -38,7 +61,8 @@ class band_renderer {
       : ps_(ps), o_(o), band_(band), sprite_area_(drawn_area(ps, band)), z_(z), visible_(visible) {}
 
   // Step 1: Z buffer and the LAB's ambient colour (ZTST = GEQUAL, Z written).
-  void depth_and_ambient(std::vector<std::uint32_t>& lab, gs::rgba8 ambient) {
+  template <class FB>
+  void depth_and_ambient(const FB& lab, gs::rgba8 ambient) {
     fill(lab, 0);
     for (int y = band_.y0; y < band_.y1; ++y)
       for (int x = band_.x0; x < band_.x1; ++x) z_[index(x, y)] = 0, visible_[index(x, y)] = -1;
@@ -52,7 +76,7 @@ class band_renderer {
         if (z < z_[i]) return;
         z_[i] = z;
         visible_[i] = static_cast<std::int32_t>(t);
-        lab[i] = gs_pixel(regs, gs::rgba8{}, cf, lab[i], x, y, o_.model);
+        lab(x, y) = gs_pixel(regs, gs::rgba8{}, cf, lab(x, y), x, y, o_.model);
         ++ops_;
       });
     }
@@ -69,14 +93,14 @@ class band_renderer {
   }
 
   // A triangle pass with ZTST = GEQUAL and ZMSK = 1.
-  template <const pass_regs& Pass>
-  [[gnu::flatten]] void draw(const texture_ref* tex, const std::vector<tri_attr>& attr, std::vector<std::uint32_t>& fb) {
+  template <const pass_regs& Pass, class FB>
+  [[gnu::flatten]] void draw(const texture_ref* tex, const std::vector<tri_attr>& attr, const FB& fb) {
     constexpr gs::gs_registers regs = Pass.registers();
     auto shade = [&](std::size_t t, int x, int y) {
       const tri_attr& a = attr[t];
       const gs::fragment_colour cf = gs::gouraud_at(a.colour, x + xy_offset_pixels, y + xy_offset_pixels);
       const gs::rgba8 texel = tex != nullptr ? tex->sample(a.u.at(x, y), a.v.at(x, y)) : gs::rgba8{};
-      std::uint32_t& word = fb[index(x, y)];
+      std::uint32_t& word = fb(x, y);
       word = gs_pixel(regs, texel, cf, word, x, y, o_.model);
       if (pending != nullptr) note_shaded(index(x, y), texel, cf);
       ++ops_;
@@ -95,28 +119,39 @@ class band_renderer {
 
   // A 2D sprite pass with a flat colour over the drawn triangles' bounding rectangle within the band
   // (an engine scissors its post filter to the object; outside it the DPB keeps its clear value and
-  // the frame stays 0 = diffuse 0 × LAB); `texel(i)` gives the texel the sprite's 1:1 mapping
-  // fetches for frame-buffer pixel i.
-  template <const pass_regs& Pass, class Texel>
-  [[gnu::flatten]] void sprite(gs::rgba8 colour, Texel&& texel, std::vector<std::uint32_t>& fb) {
+  // the frame stays 0 = diffuse 0 × LAB); `texel(x, y)` gives the texel the sprite's 1:1 mapping
+  // fetches for frame-buffer pixel (x, y).
+  template <const pass_regs& Pass, class Texel, class FB>
+  [[gnu::flatten]] void sprite(gs::rgba8 colour, Texel&& texel, const FB& fb) {
+    sprite_rect<Pass>(colour, sprite_area_, texel, fb);
+  }
+  // The same over rectangle r clipped to the sprite area (or to `clip`): one of the memory path's
+  // tile sprites.
+  template <const pass_regs& Pass, class Texel, class FB>
+  [[gnu::flatten]] void sprite_rect(gs::rgba8 colour, scissor r, Texel&& texel, const FB& fb, const scissor* clip = nullptr) {
     constexpr gs::gs_registers regs = Pass.registers();
     const gs::fragment_colour cf = gs::fragment_colour::flat(colour);
-    const scissor& a = sprite_area_;
-    rasterise_sprite({a.x0 * 16, a.y0 * 16}, {a.x1 * 16, a.y1 * 16}, a, [&](int x, int y) {
-      const std::size_t i = index(x, y);
-      const gs::rgba8 t = texel(i);
-      fb[i] = gs_pixel(regs, t, cf, fb[i], x, y, o_.model);
-      if (pending != nullptr) note_shaded(i, t, cf);
+    const scissor& a = clip != nullptr ? *clip : sprite_area_;
+    r = {std::max(r.x0, a.x0), std::max(r.y0, a.y0), std::min(r.x1, a.x1), std::min(r.y1, a.y1)};
+    if (r.x0 >= r.x1 || r.y0 >= r.y1) return;
+    rasterise_sprite({r.x0 * 16, r.y0 * 16}, {r.x1 * 16, r.y1 * 16}, r, [&](int x, int y) {
+      const gs::rgba8 t = texel(x, y);
+      std::uint32_t& word = fb(x, y);
+      word = gs_pixel(regs, t, cf, word, x, y, o_.model);
+      if (pending != nullptr) note_shaded(index(x, y), t, cf);
       ++ops_;
     });
   }
 
   // Fills the band (`whole`) or only the sprite area (where any pass can write) with v.
-  void fill(std::vector<std::uint32_t>& fb, std::uint32_t v, bool whole = true) {
+  template <class FB>
+  void fill(const FB& fb, std::uint32_t v, bool whole = true) {
     const scissor& a = whole ? band_ : sprite_area_;
     for (int y = a.y0; y < a.y1; ++y)
-      if (a.x0 < a.x1)
-        std::fill(fb.begin() + static_cast<std::ptrdiff_t>(index(a.x0, y)), fb.begin() + static_cast<std::ptrdiff_t>(index(a.x1, y)), v);
+      if (a.x0 < a.x1) {
+        if constexpr (std::is_same_v<FB, row_view>) std::fill(&fb(a.x0, y), &fb(a.x0, y) + (a.x1 - a.x0), v);
+        else for (int x = a.x0; x < a.x1; ++x) fb(x, y) = v;
+      }
   }
 
   std::size_t index(int x, int y) const { return static_cast<std::size_t>(y) * static_cast<std::size_t>(ps_.width) + static_cast<std::size_t>(x); }

@@ -4,17 +4,33 @@
 // clear values, the two-pass alpha post pass (PSMT8H reads the DPB's own alpha byte at the same
 // pixel: gs::t8h_index), the ILP look-up × light colour added into the LAB, the diffuse pass and
 // the per-channel blend of the multiply.
-// Value level (composed here, not through GS memory): the channel fetch of the R+G+B post filter
-// (the GS reads the DPB as PSMT8 with swizzled sprites, section 3.3, so that a texel is one byte of
-// the 32-bit pixel; here the byte is taken from the same pixel's word directly), the ILP's read of
-// the summed byte, and in step 4 the LAB channel moved into the destination alpha that the
-// multiply blends with (C = Ad). The PSMT8 swizzle tables themselves are not modelled.
+// Two storage paths (render_options::memory_path):
+// - value level (default, the fast path and the oracle): frame buffers are row-major vectors; the
+//   channel fetch of the R+G+B post filter (the GS reads the DPB as PSMT8 with swizzled sprites,
+//   section 3.3) takes the byte from the same pixel's word directly, as do the ILP's read of the
+//   summed byte and step 4's move of a LAB channel into the destination alpha (C = Ad).
+// - memory path: the DPB, LAB, diffuse layer and output are PSMCT32 buffers in the modelled 4 MiB
+//   local memory (gs_memory) at FBP 0, P, 2P, 3P (P = pages per buffer); the post filter, the ILP
+//   read and step 4's channel move are gs_memory's channel-fetch sprites (the DPB / LAB read as a
+//   PSMT8 texture, TBW = 2·FBW, TBP0 per page, CLAMP_1 REGION_REPEAT), each texel through the PSMT8
+//   address function; the two-pass alpha pass reads the DPB as PSMT8H. Still value level on this
+//   path: the copy of the LAB into the output before step 4 (a local -> local PSMCT32 copy of the
+//   same layout), the Z buffer (row-major), and the normal maps, sphere map and CLUTs, which are
+//   sampled from the scene's arrays rather than uploaded by transfers.
 #include "pipeline/render.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
+#include <stdexcept>
+#include <string>
 #include <thread>
 
+#include "gs_memory/address.hpp"
+#include "gs_memory/channel_fetch.hpp"
+#include "gs_memory/local_memory.hpp"
+#include "gs_memory/texture_buffer.hpp"
+#include "gs_memory/texture_wrap.hpp"
 #include "pipeline/band_renderer.hpp"
 #include "pipeline/encoders.hpp"
 #include "pipeline/gs_pass.hpp"
@@ -26,6 +42,15 @@ std::string_view name(method m) {
     case method::two_pass: return "two-pass";
     case method::four_pass: return "four-pass";
     case method::baseline: return "baseline";
+  }
+  return "?";
+}
+
+std::string_view name(dpb_clear_mode m) {
+  switch (m) {
+    case dpb_clear_mode::explicit_clear: return "explicit";
+    case dpb_clear_mode::z_trick: return "z-trick";
+    case dpb_clear_mode::z_trick_psmz32: return "z-trick-psmz32";
   }
   return "?";
 }
@@ -70,6 +95,7 @@ constexpr pass_regs diffuse_layer{              true,  false, gs::tfx::DECAL,   
 constexpr pass_regs multiply_red{               true,  true,  gs::tfx::DECAL,     gs::tcc::RGB,   multiply_by_ad,  true,  only_channel[0]};
 constexpr pass_regs multiply_green{             true,  true,  gs::tfx::DECAL,     gs::tcc::RGB,   multiply_by_ad,  true,  only_channel[1]};
 constexpr pass_regs multiply_blue{              true,  true,  gs::tfx::DECAL,     gs::tcc::RGB,   multiply_by_ad,  true,  only_channel[2]};
+constexpr pass_regs move_into_alpha{            true,  false, gs::tfx::DECAL,     gs::tcc::RGBA,  {},              true,  0x00FFFFFFu};  // memory path, step 4
 
 // The textures and palettes, built once per frame (VU1/tool side).
 struct gs_inputs {
@@ -106,23 +132,109 @@ std::array<std::int32_t, 2> normal_map_uv(const prepared_triangle& t, int k) { r
 
 gs::rgba8 rgb(int r, int g, int b, int a) { return {byte(r), byte(g), byte(b), byte(a)}; }
 
+template <class FB>
 struct frame_buffers {
-  std::vector<std::uint32_t> z, lab, dpb, diff, out;
+  std::vector<std::uint32_t> z;
+  FB lab, dpb, diff, out;
+  gs::mem::local_memory* memory = nullptr;  // the memory path's local memory, else null
+  dpb_clear_mode clear = dpb_clear_mode::explicit_clear;
 };
 
+// zsigma(x, y): the pixel of the same page whose PSMZ32 address is PSMCT32 pixel (x, y)'s, from
+// gs_memory's two layouts (the four 32×16 quarters of the page swapped along the diagonals).
+std::array<int, 2> zsigma(int x, int y) {
+  static const std::array<std::uint16_t, 2048> table = [] {
+    std::array<std::uint16_t, 2048> ct_at_word{}, sigma{};
+    const gs::mem::buffer ct{{}, fixed::uint<6>::from_wrapped(1), gs::mem::psm::PSMCT32};
+    const gs::mem::buffer z{{}, fixed::uint<6>::from_wrapped(1), gs::mem::psm::PSMZ32};
+    for (std::uint32_t p = 0; p < 2048; ++p) ct_at_word[gs::mem::locate(ct, p % 64, p / 64).byte / 4] = static_cast<std::uint16_t>(p);
+    for (std::uint32_t q = 0; q < 2048; ++q) sigma[ct_at_word[gs::mem::locate(z, q % 64, q / 64).byte / 4]] = static_cast<std::uint16_t>(q);
+    return sigma;
+  }();
+  const int s = table[static_cast<std::size_t>((y & 31) * 64 + (x & 63))];
+  return {(x & ~63) + s % 64, (y & ~31) + s / 64};
+}
+constexpr bool in_memory(const row_view&) { return false; }
+constexpr bool in_memory(const memory_view&) { return true; }
+
+// A palette with the index in every channel: the memory path's step 4 moves a LAB byte into alpha.
+gs::clut_buffer index_in_alpha() {
+  gs::clut_buffer p{};
+  for (int i = 0; i < 256; ++i) p[static_cast<std::size_t>(i)] = {byte(i), byte(i), byte(i), byte(i)};
+  return p;
+}
+
+// A sprite pass whose texel is byte `channel` of each pixel of `src` through `clut`, into `dst`.
+// Value level: the byte of the same pixel's word. Memory path: gs_memory's channel-fetch sprites
+// (8×2 tiles per page, the page read as PSMT8 with TBP0 = its base, TBW = 2·FBW, TW = 7, TH = 6).
+template <const pass_regs& Pass>
+void channel_pass(band_renderer& r, const frame_buffers<row_view>&, gs::rgba8 colour, const gs::clut_buffer& clut,
+                  unsigned channel, const row_view& src, const row_view& dst) {
+  r.sprite<Pass>(colour, [&](int x, int y) { return gs::clut_t8(clut, byte(static_cast<int>(src(x, y) >> (8 * channel)))); }, dst);
+}
+// The memory path. A source drawn in PSMZ32 (src.z) has logical pixel L in the word of PSMCT32
+// pixel zsigma(L): the tile that fetches PSMCT32 pixel M is drawn at zsigma(M) (the sprites' XYZ
+// in the Z layout). z_clear: the ILP pass of the z-trick modes, also writing Z = 0x00808080 into the
+// DPB as PSMZ24 at every fragment (after its texel fetch). In the z-trick modes the texel fetches
+// go through gs_memory's texture_page_buffer model (model option texture_buffer).
+template <const pass_regs& Pass>
+void channel_pass(band_renderer& r, const frame_buffers<memory_view>& fb, gs::rgba8 colour, const gs::clut_buffer& clut,
+                  unsigned channel, const memory_view& src, const memory_view& dst, bool z_clear = false,
+                  gs::texture_buffer tb = gs::texture_buffer::per_fragment) {
+  static constexpr gs::mem::channel_fetch layout[4] = {gs::mem::channel_fetch_sprites(0), gs::mem::channel_fetch_sprites(1),
+                                                       gs::mem::channel_fetch_sprites(2), gs::mem::channel_fetch_sprites(3)};
+  const gs::mem::channel_fetch& f = layout[channel];
+  gs::mem::local_memory& mem = *fb.memory;
+  const gs::mem::buffer zbuf{fixed::uint<14>::from_wrapped(fb.dpb.bp), fixed::uint<6>::from_wrapped(fb.dpb.bw), gs::mem::psm::PSMZ24};
+  const bool buffered = fb.clear != dpb_clear_mode::explicit_clear;
+  const scissor& a = r.sprite_area();
+  // With the Z clear the ILP sprites cover every page the area touches (the paper's per-page
+  // primitives, section 3.3), so that the Z writes clear whole pages.
+  const scissor pages{a.x0 & ~63, a.y0 & ~31, (a.x1 + 63) & ~63, (a.y1 + 31) & ~31};
+  for (int py = a.y0 / 32; py * 32 < a.y1; ++py)
+    for (int px = a.x0 / 64; px * 64 < a.x1; ++px) {
+      const std::uint32_t page = static_cast<std::uint32_t>(px) + static_cast<std::uint32_t>(py) * src.bw;
+      const gs::mem::buffer tex{fixed::uint<14>::from_wrapped(src.bp + 32 * page), fixed::uint<6>::from_wrapped(2 * src.bw),
+                                gs::mem::psm::PSMT8};
+      gs::mem::texture_page_buffer texels(buffered ? tb : gs::texture_buffer::per_fragment, mem, (src.bp + 32 * page) * 256,
+                                          gs::mem::page_bytes);
+      for (const gs::mem::fetch_sprite& sp : f.sprites) {
+        const int mx = px * 64 + static_cast<int>(sp.x0), my = py * 32 + static_cast<int>(sp.y0);  // PSMCT32 pixel fetched
+        const auto [x0, y0] = src.z ? zsigma(mx, my) : std::array<int, 2>{mx, my};                  // where it is drawn
+        const int w = static_cast<int>(sp.x1 - sp.x0), h = static_cast<int>(sp.y1 - sp.y0);
+        r.sprite_rect<Pass>(colour, {x0, y0, x0 + w, y0 + h},
+                            [&](int x, int y) {
+                              const auto u = gs::mem::wrap_texel(f.CLAMP.WMS, sp.u0 + (x - x0), fixed::u4::literal(7),
+                                                                 f.CLAMP.MINU, f.CLAMP.MAXU);
+                              const auto v = gs::mem::wrap_texel(f.CLAMP.WMT, sp.v0 + (y - y0), fixed::u4::literal(6),
+                                                                 f.CLAMP.MINV, f.CLAMP.MAXV);
+                              const std::uint8_t index = texels.fetch(gs::mem::locate(tex, u, v).byte);
+                              if (z_clear)
+                                mem.write_pixel(zbuf, static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y), 0x00808080u);
+                              return gs::clut_t8(clut, gs::u8::from_wrapped(index));
+                            },
+                            dst, z_clear ? &pages : nullptr);
+      }
+    }
+}
+
+template <class FB>
 std::size_t render_band(const scene& s, const prepared_scene& ps, method m, const render_options& o, const gs_inputs& in,
-                        scissor band, frame_buffers& fb, frame& result) {
+                        scissor band, frame_buffers<FB>& fb, frame& result) {
   band_renderer r(ps, o, band, fb.z, result.visible_triangle);
   // Tracing (render_options::trace, one band): after each pass, its target buffer and inputs.
   pass_record pending;
-  const std::size_t frame_pixels = fb.dpb.size();
+  const std::size_t frame_pixels = static_cast<std::size_t>(ps.width) * static_cast<std::size_t>(ps.height);
   auto open_pass = [&] {
     pending = {{}, -1, {}, {}, std::vector<std::uint32_t>(frame_pixels), std::vector<std::uint16_t>(4 * frame_pixels),
                std::vector<std::uint8_t>(frame_pixels)};
   };
-  auto note = [&](const char* label, int light, const char* target, const std::vector<std::uint32_t>& buffer) {
+  auto note = [&](const char* label, int light, const char* target, const FB& buffer) {
     if (o.trace == nullptr) return;
-    pending.label = label, pending.light = light, pending.target = target, pending.word = buffer;
+    pending.label = label, pending.light = light, pending.target = target;
+    pending.word.resize(frame_pixels);
+    for (int y = 0; y < ps.height; ++y)
+      for (int x = 0; x < ps.width; ++x) pending.word[r.index(x, y)] = buffer(x, y);
     o.trace->push_back(std::move(pending));
     open_pass();
   };
@@ -136,15 +248,16 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
   };
   const gs::rgba8 white = rgb(0x80, 0x80, 0x80, 0x80);
   auto flat_white = [&](std::uint32_t) { return white; };
-  auto dpb_byte = [&](int channel) {  // value-level channel fetch (see the file comment)
-    return [&fb, &in, channel](std::size_t i) { return gs::clut_t8(in.grey, byte(static_cast<int>(fb.dpb[i] >> (8 * channel)))); };
-  };
 
   for (std::size_t l = 0; l < s.lights.size(); ++l) {
     const std::vector<light_vertex>& lv = ps.lights[l];
     // 2.1 (the DPB starts cleared; nothing is drawn outside the sprite area); 2.2 COLCLAMP = 0 in
     // every pass of 2.3 and 2.4.
-    r.fill(fb.dpb, clear_dpb, false);
+    if constexpr (in_memory(FB{})) {
+      if (l == 0 || fb.clear == dpb_clear_mode::explicit_clear) r.fill(fb.dpb, clear_dpb, false);  // else: 2.6's Z clear
+    } else {
+      r.fill(fb.dpb, clear_dpb, false);
+    }
     const int li = static_cast<int>(l);
     note("2.1 clear 0x00808080", li, "DPB", fb.dpb);
     switch (m) {
@@ -156,8 +269,21 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
         r.draw<two_pass_negative>(&neg, attr, fb.dpb);
         note("2.3 − Max(−n,0)·l (MODULATE, Cd − Cs)", li, "DPB", fb.dpb);
         // 2.4a: n'_a into R, G and B: the DPB read as PSMT8H (its own alpha byte) through a grey CLUT.
-        r.sprite<two_pass_add_alpha>(white,
-                 [&](std::size_t i) { return gs::clut_t8(in.grey, gs::t8h_index(fb.dpb[i])); }, fb.dpb);
+        if constexpr (in_memory(FB{})) {
+          const gs::mem::buffer t8h{fixed::uint<14>::from_wrapped(fb.dpb.bp), fixed::uint<6>::from_wrapped(fb.dpb.bw),
+                                    gs::mem::psm::PSMT8H};
+          r.sprite<two_pass_add_alpha>(
+              white,
+              [&](int x, int y) {
+                const auto [tx, ty] = fb.dpb.z ? zsigma(x, y) : std::array<int, 2>{x, y};  // the word of logical (x, y)
+                return gs::clut_t8(in.grey, gs::u8::from_wrapped(fb.memory->read_pixel(t8h, static_cast<std::uint32_t>(tx),
+                                                                                         static_cast<std::uint32_t>(ty))));
+              },
+              fb.dpb);
+        } else {
+          r.sprite<two_pass_add_alpha>(white, [&](int x, int y) { return gs::clut_t8(in.grey, gs::t8h_index(fb.dpb(x, y))); },
+                                       fb.dpb);
+        }
         note("2.4a + n'a (PSMT8H of the DPB alpha)", li, "DPB", fb.dpb);
         break;
       }
@@ -211,16 +337,20 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
       }
     }
     // 2.4: R += G, R += B (mod 256): additive sprites writing red only.
-    r.sprite<post_add_into_red>(white, dpb_byte(1), fb.dpb);
+    channel_pass<post_add_into_red>(r, fb, white, in.grey, 1, fb.dpb, fb.dpb);
     note("2.4 R += G", li, "DPB", fb.dpb);
-    r.sprite<post_add_into_red>(white, dpb_byte(2), fb.dpb);
+    channel_pass<post_add_into_red>(r, fb, white, in.grey, 2, fb.dpb, fb.dpb);
     note("2.4 R += B (the post-filter sum)", li, "DPB", fb.dpb);
     for (int y = band.y0; y < band.y1; ++y)
-      for (int x = band.x0; x < band.x1; ++x) result.dot[l][r.index(x, y)] = static_cast<std::uint8_t>(fb.dpb[r.index(x, y)] & 0xFF);
+      for (int x = band.x0; x < band.x1; ++x) result.dot[l][r.index(x, y)] = static_cast<std::uint8_t>(fb.dpb(x, y) & 0xFF);
     // 2.5, 2.6: COLCLAMP = 1; ILP[sum] × light colour (MODULATE) added into the LAB.
     const auto& lc = s.lights[l].colour;
-    r.sprite<ilp_into_lab>(rgb(lc[0], lc[1], lc[2], 0x80),
-             [&](std::size_t i) { return gs::clut_t8(in.ilp, byte(static_cast<int>(fb.dpb[i] & 0xFF))); }, fb.lab);
+    if constexpr (in_memory(FB{})) {
+      channel_pass<ilp_into_lab>(r, fb, rgb(lc[0], lc[1], lc[2], 0x80), in.ilp, 0, fb.dpb, fb.lab,
+                                 fb.clear != dpb_clear_mode::explicit_clear, o.model.tex_buffer);
+    } else {
+      channel_pass<ilp_into_lab>(r, fb, rgb(lc[0], lc[1], lc[2], 0x80), in.ilp, 0, fb.dpb, fb.lab);
+    }
     note("2.6 LAB += ILP[sum] × light colour", li, "LAB", fb.lab);
   }
 
@@ -231,18 +361,24 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
   note("3 diffuse layer", -1, "diffuse", fb.diff);
 
   // Step 4: diffuse × LAB per channel: (Cs − 0)·Ad >> 7 with the LAB channel in the destination
-  // alpha (value level), writing that channel only. Outside the sprite area the LAB and the output
-  // are 0.
+  // alpha, writing that channel only (the channel move: value level, or on the memory path a
+  // channel-fetch pass of the LAB through a palette with the index in alpha, FBMSK = 0x00FFFFFF).
+  // Outside the sprite area the LAB and the output are 0.
   const scissor& area = r.sprite_area();
   for (int y = area.y0; y < area.y1; ++y)
-    for (int x = area.x0; x < area.x1; ++x) fb.out[r.index(x, y)] = fb.lab[r.index(x, y)];
+    for (int x = area.x0; x < area.x1; ++x) fb.out(x, y) = fb.lab(x, y);
+  static const gs::clut_buffer alpha_index = index_in_alpha();
   auto multiply = [&](int c, auto pass) {
-    for (int y = area.y0; y < area.y1; ++y)
-      for (int x = area.x0; x < area.x1; ++x) {
-        const std::size_t i = r.index(x, y);
-        fb.out[i] = (fb.out[i] & 0x00FFFFFFu) | (((fb.lab[i] >> (8 * c)) & 0xFFu) << 24);
-      }
-    pass(white, [&](std::size_t i) { return gs::rgba8::from_u32(fb.diff[i]); }, fb.out);
+    if constexpr (in_memory(FB{})) {
+      channel_pass<move_into_alpha>(r, fb, white, alpha_index, static_cast<unsigned>(c), fb.lab, fb.out);
+    } else {
+      for (int y = area.y0; y < area.y1; ++y)
+        for (int x = area.x0; x < area.x1; ++x) {
+          std::uint32_t& o = fb.out(x, y);
+          o = (o & 0x00FFFFFFu) | (((fb.lab(x, y) >> (8 * c)) & 0xFFu) << 24);
+        }
+    }
+    pass(white, [&](int x, int y) { return gs::rgba8::from_u32(fb.diff(x, y)); }, fb.out);
   };
   multiply(0, [&](auto&&... a) { r.sprite<multiply_red>(a...); });
   multiply(1, [&](auto&&... a) { r.sprite<multiply_green>(a...); });
@@ -250,25 +386,17 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
   note("4 diffuse × LAB (R, G, B)", -1, "frame", fb.out);
   for (int y = band.y0; y < band.y1; ++y)
     for (int x = band.x0; x < band.x1; ++x) {
-      const std::size_t i = r.index(x, y);
-      result.colour[i] = fb.out[i] | 0xFF000000u;
+      result.colour[r.index(x, y)] = fb.out(x, y) | 0xFF000000u;
     }
   return r.pixel_ops();
 }
 
-}  // namespace
-
-frame render(const scene& s, const prepared_scene& ps, method m, const render_options& o) {
-  const gs_inputs in = make_inputs(s, m, o);
-  frame result;
-  result.width = ps.width;
-  result.height = ps.height;
-  const std::size_t n = static_cast<std::size_t>(ps.width) * static_cast<std::size_t>(ps.height);
-  result.colour.assign(n, 0);
-  result.visible_triangle.assign(n, -1);
-  result.dot.assign(s.lights.size(), std::vector<std::uint8_t>(n, 0));
-  frame_buffers fb{std::vector<std::uint32_t>(n), std::vector<std::uint32_t>(n), std::vector<std::uint32_t>(n, clear_dpb),
-                   std::vector<std::uint32_t>(n), std::vector<std::uint32_t>(n)};
+template <class FB>
+void render_bands(const scene& s, const prepared_scene& ps, method m, const render_options& o, const gs_inputs& in,
+                  frame_buffers<FB>& fb, frame& result) {
+  fb.z.assign(static_cast<std::size_t>(ps.width) * static_cast<std::size_t>(ps.height), 0);
+  for (int y = 0; y < ps.height; ++y)
+    for (int x = 0; x < ps.width; ++x) fb.dpb(x, y) = clear_dpb;
   const int bands = o.trace != nullptr ? 1 : std::clamp(o.threads, 1, std::max(1, ps.height));
   std::vector<std::thread> workers;
   std::vector<std::size_t> ops(static_cast<std::size_t>(bands), 0);
@@ -283,6 +411,45 @@ frame render(const scene& s, const prepared_scene& ps, method m, const render_op
   }
   for (std::thread& t : workers) t.join();
   for (std::size_t c : ops) result.pixel_ops += c;
+}
+
+
+}  // namespace
+
+frame render(const scene& s, const prepared_scene& ps, method m, const render_options& o) {
+  const gs_inputs in = make_inputs(s, m, o);
+  frame result;
+  result.width = ps.width;
+  result.height = ps.height;
+  const std::size_t n = static_cast<std::size_t>(ps.width) * static_cast<std::size_t>(ps.height);
+  result.colour.assign(n, 0);
+  result.visible_triangle.assign(n, -1);
+  result.dot.assign(s.lights.size(), std::vector<std::uint8_t>(n, 0));
+  if (o.memory_path || o.dpb_clear != dpb_clear_mode::explicit_clear) {
+    // PSMCT32 buffers of FBW = ceil(width / 64) at FBP 0, P, 2P, 3P.
+    const auto fbw = static_cast<std::uint32_t>((ps.width + 63) / 64);
+    const std::uint32_t pages = fbw * static_cast<std::uint32_t>((ps.height + 31) / 32);
+    if (4 * pages * gs::mem::page_bytes > gs::mem::memory_bytes)
+      throw std::invalid_argument("memory path: four " + std::to_string(ps.width) + "x" + std::to_string(ps.height) +
+                                  " PSMCT32 buffers do not fit in the GS's 4 MiB");
+    gs::mem::local_memory memory;
+    frame_buffers<memory_view> fb;
+    fb.memory = &memory;
+    fb.clear = o.dpb_clear;
+    memory_view* views[4] = {&fb.dpb, &fb.lab, &fb.diff, &fb.out};
+    for (std::uint32_t k = 0; k < 4; ++k) *views[k] = memory_view{memory.words(), 32 * k * pages, fbw, false};
+    fb.dpb.z = o.dpb_clear == dpb_clear_mode::z_trick;
+    fb.lab.z = o.dpb_clear == dpb_clear_mode::z_trick_psmz32;
+    render_options one = o;
+    if (o.dpb_clear != dpb_clear_mode::explicit_clear) one.threads = 1;  // draw order is the model's
+    render_bands(s, ps, m, one, in, fb, result);
+  } else {
+    std::vector<std::uint32_t> rows(4 * n, 0);  // value level: DPB, LAB, diffuse, output, frame-sized each
+    frame_buffers<row_view> fb;
+    row_view* views[4] = {&fb.dpb, &fb.lab, &fb.diff, &fb.out};
+    for (std::size_t k = 0; k < 4; ++k) *views[k] = row_view{rows.data() + k * n, ps.width};
+    render_bands(s, ps, m, o, in, fb, result);
+  }
   return result;
 }
 

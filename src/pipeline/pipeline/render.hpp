@@ -32,6 +32,14 @@ struct pass_record {
   std::vector<std::uint16_t> colour;  // 4 per pixel
   std::vector<std::uint8_t> shaded;
 };
+// Step 2.1's DPB clear (section 3.4; memory path only, which the z-trick modes imply): an explicit
+// fill per light, or the Z-buffer clear during each light's ILP pass (ZBUF = the DPB in PSMZ24,
+// Z = 0x00808080, ZTST always) — z_trick: the DPB rendered in PSMZ32 and the post-filter / ILP sprites
+// drawn in the Z layout, so the LAB stays PSMCT32; z_trick_psmz32: the sprites at their own XYZ and
+// the LAB in PSMZ32 throughout (read back as PSMZ32 at step 4). The z-trick modes render on one
+// thread (the texture page buffer model, gs::texture_buffer, follows the draw order).
+enum class dpb_clear_mode { explicit_clear, z_trick, z_trick_psmz32 };
+std::string_view name(dpb_clear_mode m);
 
 struct render_options {
   int s = 122;                     // two-pass tolight scale (section 3.5), 1..127
@@ -42,6 +50,8 @@ struct render_options {
   raster_path path = raster_path::cached;
   int threads = 2;                 // horizontal bands rendered in parallel
   std::vector<pass_record>* trace = nullptr;  // non-null: every pass appended here (one band, slower)
+  bool memory_path = false;        // frame buffers in the modelled GS local memory (render.cpp)
+  dpb_clear_mode dpb_clear = dpb_clear_mode::explicit_clear;
 };
 
 struct frame {

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "pipeline/files.hpp"
+#include "pipeline/memory_picture.hpp"
 #include "pipeline/report_page.hpp"
 
 namespace gsdot3::pipeline {
@@ -261,6 +262,23 @@ report_summary write_report(const scene& s, const report_request& r) {
                                                       lit(back, method::two_pass), lit(back, method::four_pass)));
   }
 
+  // GS local memory (gs_memory): the PSMCT32 DPB page read as the PSMT8 texture of the post filter,
+  // and whether the memory path gives the frames above bit for bit.
+  write_png(r.out_dir / "memory-psmct32-as-psmt8.png", page_overlay_image(gs::mem::psm::PSMCT32, gs::mem::psm::PSMT8, "channel", 4));
+  write_png(r.out_dir / "memory-psmct32-as-psmz32.png", page_overlay_image(gs::mem::psm::PSMCT32, gs::mem::psm::PSMZ32, "pixel", 4));
+  j["options"]["memory_path"] = r.options.memory_path;
+  j["options"]["dpb_clear"] = std::string(name(r.options.dpb_clear));
+  j["memory"]["pictures"] = {"memory-psmct32-as-psmt8.png", "memory-psmct32-as-psmz32.png"};
+  if (4 * ((w + 63) / 64) * ((h + 31) / 32) <= 512) {
+    render_options other = r.options;
+    other.memory_path = !r.options.memory_path;
+    other.dpb_clear = dpb_clear_mode::explicit_clear;
+    for (std::size_t k = 0; k < frames.size(); ++k) {
+      const frame f = render(s, front, sum.methods[k].m, other);
+      j["memory"]["memory_path_equals_value_level"][std::string(name(sum.methods[k].m))] =
+          f.colour == frames[k].colour && f.dot == frames[k].dot;
+    }
+  }
   write_text(sum.json, j.dump(2) + "\n");
   if (r.write_html) {
     say("writing the page and the inspector's per-pixel data");

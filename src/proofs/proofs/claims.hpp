@@ -32,6 +32,11 @@ GSDOT3_CLAIM(clamp_wrap_intermediates);
 GSDOT3_CLAIM(highlight_attenuation);
 GSDOT3_CLAIM(lod_two_vs_four);
 GSDOT3_CLAIM(specular_attenuation_compensation);
+// section 3.4: the Z-buffer clear of the DPB (claims_memory.cpp)
+GSDOT3_CLAIM(dpb_clear_value);
+GSDOT3_CLAIM(dpb_clear_read_before_write);
+GSDOT3_CLAIM(dpb_clear_variants_agree);
+GSDOT3_CLAIM(dpb_clear_lab_layout);
 // seed 001, Green 2007 (claims_valve.cpp)
 GSDOT3_CLAIM(valve_eq1_not_orthonormal);
 GSDOT3_CLAIM(valve_source_basis_orthonormal);
