@@ -1,5 +1,5 @@
 // fuzz/parse_inputs.cpp — libFuzzer harness: every reader of user input must survive anything.
-//   OBJ meshes (pipeline::load_obj), PNG normal and height maps (load_normal_map_png,
+//   meshes through assimp (pipeline::import_mesh_from_memory), PNG normal and height maps (load_normal_map_png,
 //   load_height_map_png), vector files and ps2autotests recordings (vectors::verify_*), register
 //   values by name (gs::set_register) and model options (gs::set_option).
 // Bad input must come back as the documented error (std::runtime_error from the file readers,
@@ -22,6 +22,7 @@
 #include "gs_arith/options.hpp"
 #include "gs_arith/registers.hpp"
 #include "pipeline/files.hpp"
+#include "pipeline/mesh_import.hpp"
 #include "vectors/format.hpp"
 #include "vectors/verify.hpp"
 
@@ -30,31 +31,25 @@ namespace {
 using gsdot3::fuzz::require;
 namespace pl = gsdot3::pipeline;
 
-// The file readers take paths: each input is written to one scratch file per extension and process,
-// removed when the process exits.
-struct scratch_files {
-  std::filesystem::path obj, png;
-  scratch_files() {
-    const auto base = std::filesystem::temp_directory_path() / ("gsdot3-parse-inputs-" + std::to_string(::getpid()));
-    obj = base.string() + ".obj";
-    png = base.string() + ".png";
-  }
-  ~scratch_files() {
+// The PNG readers take paths: each input is written to one scratch file per process, removed when
+// the process exits.
+struct scratch_file {
+  std::filesystem::path png =
+      std::filesystem::temp_directory_path() / ("gsdot3-parse-inputs-" + std::to_string(::getpid()) + ".png");
+  ~scratch_file() {
     std::error_code ignored;
-    std::filesystem::remove(obj, ignored);
     std::filesystem::remove(png, ignored);
   }
 };
-const std::filesystem::path& scratch(bool obj, const std::string& bytes) {
-  static const scratch_files files;
-  const auto& path = obj ? files.obj : files.png;
-  std::ofstream(path, std::ios::binary).write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-  return path;
+const std::filesystem::path& scratch(const std::string& bytes) {
+  static const scratch_file file;
+  std::ofstream(file.png, std::ios::binary).write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  return file.png;
 }
 
 void check_mesh(const pl::mesh& m) {
   for (const auto& t : m.triangles) {
-    for (auto i : t) require(i < m.vertices.size(), [] { return std::string("load_obj accepted a triangle index out of range"); });
+    for (auto i : t) require(i < m.vertices.size(), [] { return std::string("import_mesh accepted a triangle index out of range"); });
   }
 }
 
@@ -69,15 +64,15 @@ void check_normal_map(const pl::normal_map& n) {
   for (auto i : n.index) require(i < n.palette.size(), [] { return std::string("normal map index beyond its palette"); });
 }
 
-void parse_obj(const std::string& bytes) {
+void parse_mesh(const std::string& bytes, const char* extension) {
   try {
-    check_mesh(pl::load_obj(scratch(true, bytes)));
+    check_mesh(pl::import_mesh_from_memory(bytes, extension).model);
   } catch (const std::runtime_error&) {
   }
 }
 
 void parse_png(const std::string& bytes, bool height_map, float strength) {
-  const auto& path = scratch(false, bytes);
+  const auto& path = scratch(bytes);
   try {
     check_normal_map(height_map ? pl::load_height_map_png(path, strength) : pl::load_normal_map_png(path));
   } catch (const std::runtime_error&) {
@@ -131,7 +126,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   const std::string bytes = in.ConsumeRemainingBytesAsString();
   switch (reader) {
-    case 0: parse_obj(bytes); break;
+    case 0: parse_mesh(bytes, "obj"); break;
     case 1: parse_png(bytes, false, strength); break;
     case 2: parse_png(bytes, true, strength); break;
     case 3: parse_vectors(bytes, false); break;

@@ -10,6 +10,7 @@
 #include "gs_arith/options.hpp"
 #include "pipeline/default_scene.hpp"
 #include "pipeline/files.hpp"
+#include "pipeline/mesh_import.hpp"
 #include "pipeline/report.hpp"
 
 namespace gsdot3::cli {
@@ -18,6 +19,7 @@ namespace {
 struct render_args {
   std::string out = "gsdot3-out", method = "all", mesh, normal_map, size = "512x448", filter = "nearest", path = "cached";
   std::string camera, height_map;
+  std::string normals = "smooth", uv_projection, tangents = "auto";
   float bump = 0.05f;
   std::vector<std::string> lights, model_options;
   int s = 122, threads = 2;
@@ -101,13 +103,28 @@ void run(const render_args& a, bool html, context& ctx) {
   std::vector<float> eye;
   if (!a.camera.empty()) eye = parse_floats("--camera", a.camera, 3);
 
+  pipeline::import_options import;
+  if (a.normals != "smooth" && a.normals != "flat") throw usage_error("--normals: expected flat or smooth, got '" + a.normals + "'");
+  import.normals = a.normals == "flat" ? pipeline::normals_mode::flat : pipeline::normals_mode::smooth;
+  if (!a.uv_projection.empty()) {
+    if (a.uv_projection == "box") import.uvs = pipeline::uv_projection::box;
+    else if (a.uv_projection == "sphere") import.uvs = pipeline::uv_projection::sphere;
+    else if (a.uv_projection == "planar") import.uvs = pipeline::uv_projection::planar;
+    else throw usage_error("--uv-projection: expected box, sphere or planar, got '" + a.uv_projection + "'");
+  }
+  if (a.tangents != "auto" && a.tangents != "mikktspace") throw usage_error("--tangents: expected auto or mikktspace, got '" + a.tangents + "'");
+  import.tangents = a.tangents == "auto" ? pipeline::tangent_mode::automatic : pipeline::tangent_mode::mikktspace;
+
   auto progress = [](const std::string& m) { std::cerr << "gsdot3: " << m << "\n"; };
   progress("building the scene");
   pipeline::scene s = pipeline::default_scene();
   std::string description = "embedded procedural head (" + std::to_string(s.model.triangles.size()) + " triangles)";
   try {
     if (!a.mesh.empty()) {
-      s.model = pipeline::load_obj(a.mesh);
+      progress("reading the mesh " + a.mesh);
+      pipeline::imported_mesh im = pipeline::import_mesh(a.mesh, import);
+      for (const std::string& n : im.report.notices) progress(n);
+      s.model = std::move(im.model);
       description = "mesh " + a.mesh + " (" + std::to_string(s.model.triangles.size()) + " triangles)";
     }
     if (!a.normal_map.empty() && !a.height_map.empty()) throw usage_error("--normal-map and --height-map exclude each other");
@@ -150,7 +167,13 @@ void run(const render_args& a, bool html, context& ctx) {
 void add_options(CLI::App* cmd, render_args& a) {
   cmd->add_option("--out", a.out, "output directory (created if missing)")->capture_default_str();
   cmd->add_option("--method", a.method, "two-pass | four-pass | baseline | all")->capture_default_str();
-  cmd->add_option("--mesh", a.mesh, "Wavefront OBJ mesh (v, vt, vn, f v/vt/vn); default: the embedded head");
+  cmd->add_option("--mesh", a.mesh,
+                  "mesh file read by assimp: OBJ, glTF 2.0 (.gltf, .glb), PLY, FBX, Collada, ...; all its meshes merged with "
+                  "their node transforms; default: the embedded head");
+  cmd->add_option("--normals", a.normals, "normals generated for a mesh without them: smooth (angle-weighted) | flat")->capture_default_str();
+  cmd->add_option("--uv-projection", a.uv_projection, "generate UVs for a mesh without them: box | sphere | planar");
+  cmd->add_option("--tangents", a.tangents, "auto (the file's tangents, e.g. glTF TANGENT, else MikkTSpace) | mikktspace (always computed)")
+      ->capture_default_str();
   cmd->add_option("--normal-map", a.normal_map,
                   "8-bit RGB PNG tangent-space normal map (power-of-two sides 8..1024), quantised to 256 entries");
   cmd->add_option("--height-map", a.height_map,

@@ -1,0 +1,194 @@
+// pipeline/mesh_import.cpp — assimp's scene to source meshes and instances (mesh_repair.hpp), and
+// the material's normal map.
+#include "pipeline/mesh_import.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <utility>
+
+#include <assimp/Importer.hpp>
+#include <assimp/importerdesc.h>
+#include <assimp/material.h>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+#include "pipeline/mesh_repair.hpp"
+
+namespace gsdot3::pipeline {
+
+namespace {
+
+// Triangulate n-gons; nothing else: normals, UVs and tangents are gsdot3's business (and counted).
+constexpr unsigned import_flags = aiProcess_Triangulate;
+
+glm::mat4 to_glm(const aiMatrix4x4& m) {  // assimp is row-major (a4, b4, c4: translation)
+  return glm::mat4(m.a1, m.b1, m.c1, m.d1, m.a2, m.b2, m.c2, m.d2, m.a3, m.b3, m.c3, m.d3, m.a4, m.b4, m.c4, m.d4);
+}
+
+glm::vec3 v3(const aiVector3D& v) { return {v.x, v.y, v.z}; }
+
+source_mesh convert(const aiMesh& am, std::size_t index, import_report& report) {
+  source_mesh m;
+  const std::string which = "mesh " + std::to_string(index);
+  if (am.mVertices == nullptr && am.mNumVertices > 0) throw std::runtime_error(which + " has no positions");
+  m.positions.reserve(am.mNumVertices);
+  for (unsigned i = 0; i < am.mNumVertices; ++i) {
+    const glm::vec3 p = v3(am.mVertices[i]);
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+      throw std::runtime_error(which + ": vertex " + std::to_string(i) + " has a non-finite position (NaN or infinity)");
+    m.positions.push_back(p);
+  }
+  if (am.mNormals != nullptr)
+    for (unsigned i = 0; i < am.mNumVertices; ++i) m.normals.push_back(v3(am.mNormals[i]));
+  if (am.mTextureCoords[0] != nullptr)  // assimp: v runs up the image; the renderer's v runs down
+    for (unsigned i = 0; i < am.mNumVertices; ++i) m.uvs.push_back({am.mTextureCoords[0][i].x, 1.0f - am.mTextureCoords[0][i].y});
+  if (am.mTangents != nullptr && am.mBitangents != nullptr)
+    for (unsigned i = 0; i < am.mNumVertices; ++i) {
+      m.tangents.push_back(v3(am.mTangents[i]));
+      m.bitangents.push_back(v3(am.mBitangents[i]));
+    }
+  for (unsigned f = 0; f < am.mNumFaces; ++f) {
+    const aiFace& face = am.mFaces[f];
+    if (face.mNumIndices == 1) ++report.dropped_points;
+    if (face.mNumIndices == 2) ++report.dropped_lines;
+    if (face.mNumIndices < 3) continue;
+    for (unsigned k = 0; k < face.mNumIndices; ++k)
+      if (face.mIndices[k] >= am.mNumVertices)
+        throw std::runtime_error(which + ": face " + std::to_string(f) + " refers to vertex " + std::to_string(face.mIndices[k]) +
+                                 " of " + std::to_string(am.mNumVertices));
+    for (unsigned k = 1; k + 1 < face.mNumIndices; ++k)  // a polygon the triangulation left: a fan
+      m.triangles.push_back({face.mIndices[0], face.mIndices[k], face.mIndices[k + 1]});
+  }
+  return m;
+}
+
+// Every node's meshes with the node's accumulated transform (iteratively: hostile files nest deeply).
+std::vector<source_instance> instances_of(const aiScene& s) {
+  std::vector<source_instance> out;
+  std::vector<std::pair<const aiNode*, glm::mat4>> todo;
+  if (s.mRootNode != nullptr) todo.push_back({s.mRootNode, glm::mat4(1.0f)});
+  while (!todo.empty()) {
+    const auto [node, parent] = todo.back();
+    todo.pop_back();
+    const glm::mat4 t = parent * to_glm(node->mTransformation);
+    for (unsigned i = 0; i < node->mNumMeshes; ++i)
+      if (node->mMeshes[i] < s.mNumMeshes) out.push_back({node->mMeshes[i], t});
+    for (unsigned c = 0; c < node->mNumChildren; ++c)
+      if (node->mChildren[c] != nullptr) todo.push_back({node->mChildren[c], t});
+  }
+  return out;
+}
+
+// The first normal map of the instanced meshes' materials: glTF normalTexture / MTL norm
+// (aiTextureType_NORMALS), else an MTL bump / map_Bump (aiTextureType_HEIGHT).
+std::optional<texture_ref> find_normal_map(const aiScene& s, const std::vector<source_instance>& inst,
+                                           const std::filesystem::path& dir, import_report& report) {
+  std::optional<texture_ref> found;
+  std::size_t others = 0;
+  for (aiTextureType type : {aiTextureType_NORMALS, aiTextureType_HEIGHT}) {
+    for (const source_instance& in : inst) {
+      const aiMesh& am = *s.mMeshes[in.mesh];
+      if (am.mMaterialIndex >= s.mNumMaterials || s.mMaterials[am.mMaterialIndex] == nullptr) continue;
+      aiString path;
+      if (s.mMaterials[am.mMaterialIndex]->GetTexture(type, 0, &path) != aiReturn_SUCCESS || path.length == 0) continue;
+      std::string name(path.C_Str());
+      if (found) {
+        others += name != found->name;
+        continue;
+      }
+      texture_ref t;
+      t.name = name;
+      t.slot = type == aiTextureType_NORMALS ? "normal" : "bump";
+      if (const aiTexture* tex = s.GetEmbeddedTexture(path.C_Str())) {
+        if (tex->mHeight == 0) {  // compressed: mWidth bytes of an image file
+          const auto* bytes = reinterpret_cast<const std::uint8_t*>(tex->pcData);
+          t.embedded.assign(bytes, bytes + tex->mWidth);
+        } else {  // raw BGRA texels
+          t.raw = {static_cast<int>(tex->mWidth), static_cast<int>(tex->mHeight), 3, {}};
+          for (std::size_t i = 0; i < static_cast<std::size_t>(tex->mWidth) * tex->mHeight; ++i)
+            t.raw.data.insert(t.raw.data.end(), {tex->pcData[i].r, tex->pcData[i].g, tex->pcData[i].b});
+        }
+      } else {
+        std::replace(name.begin(), name.end(), '\\', '/');  // Windows exporters
+        t.file = dir / std::filesystem::path(name);
+      }
+      found = std::move(t);
+    }
+    if (found) break;
+  }
+  if (others > 0)
+    report.notices.push_back("normal map: " + std::to_string(others) + " other material(s) name other normal maps; only '" +
+                             found->name + "' is used (the renderer has one normal map)");
+  return found;
+}
+
+imported_mesh from_scene(const aiScene* s, const Assimp::Importer& imp, const std::string& name,
+                         const std::filesystem::path& dir, const std::string& format, const import_options& options) {
+  auto fail = [&](const std::string& why) { return std::runtime_error(name + ": " + why); };
+  if (s == nullptr) {
+    std::string why = imp.GetErrorString();
+    std::replace(why.begin(), why.end(), '\n', ' ');
+    throw fail("cannot read the mesh (" + (why.empty() ? std::string("unknown format") : why) + ")");
+  }
+  imported_mesh out;
+  import_report& r = out.report;
+  r.file = name;
+  r.format = format;
+  try {
+    const std::vector<source_instance> inst = instances_of(*s);
+    r.instances = inst.size();
+    std::vector<source_mesh> meshes(s->mNumMeshes);
+    std::vector<char> used(s->mNumMeshes, 0);
+    for (const source_instance& in : inst) {
+      if (used[in.mesh] || s->mMeshes[in.mesh] == nullptr) continue;
+      used[in.mesh] = 1;
+      meshes[in.mesh] = convert(*s->mMeshes[in.mesh], in.mesh, r);
+      ++r.meshes;
+    }
+    if (r.dropped_points + r.dropped_lines > 0)
+      r.notices.push_back(std::to_string(r.dropped_points) + " point(s) and " + std::to_string(r.dropped_lines) +
+                          " line(s) ignored (only triangles are rendered)");
+    out.model = build_mesh(meshes, inst, options, r);
+    out.normal_texture = find_normal_map(*s, inst, dir, r);
+  } catch (const std::runtime_error& e) {
+    throw fail(e.what());
+  }
+  if (r.dropped_degenerate > 0) r.notices.push_back(std::to_string(r.dropped_degenerate) + " zero-area triangle(s) dropped");
+  if (r.normals_generated > 0) r.notices.push_back("normals: " + std::to_string(r.normals_generated) + " vertex position(s) had none; " + r.normals);
+  if (r.normals_renormalised > 0) r.notices.push_back("normals: " + std::to_string(r.normals_renormalised) + " non-unit normal(s) renormalised");
+  if (r.normals_replaced > 0)
+    r.notices.push_back("normals: " + std::to_string(r.normals_replaced) + " zero or NaN normal(s) replaced by the smooth normal");
+  if (r.uvs != "file") r.notices.push_back("UVs: none in the file; generated by " + r.uvs);
+  if (r.zero_uv_area_triangles > 0)
+    r.notices.push_back("tangents: " + std::to_string(r.zero_uv_area_triangles) +
+                        " triangle(s) with zero UV area: their corners take a neighbouring triangle's frame, " +
+                        std::to_string(r.fallback_tangent_corners) + " corner(s) without one a fixed frame from the normal");
+  return out;
+}
+
+std::string format_of(const Assimp::Importer& imp, const std::string& extension) {
+  const std::size_t i = imp.GetImporterIndex(extension.c_str());
+  const aiImporterDesc* d = i == static_cast<std::size_t>(-1) ? nullptr : imp.GetImporterInfo(i);
+  return d != nullptr && d->mName != nullptr ? d->mName : extension;
+}
+
+}  // namespace
+
+imported_mesh import_mesh(const std::filesystem::path& file, const import_options& options) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(file, ec)) throw std::runtime_error(file.string() + ": cannot open the mesh");
+  Assimp::Importer imp;
+  const aiScene* s = imp.ReadFile(file.string(), import_flags);
+  std::string ext = file.extension().string();
+  if (!ext.empty()) ext.erase(0, 1);
+  return from_scene(s, imp, file.string(), file.parent_path(), format_of(imp, ext), options);
+}
+
+imported_mesh import_mesh_from_memory(const std::string& bytes, const std::string& extension, const import_options& options) {
+  Assimp::Importer imp;
+  const aiScene* s = imp.ReadFileFromMemory(bytes.data(), bytes.size(), import_flags, extension.c_str());
+  return from_scene(s, imp, "<memory>." + extension, {}, format_of(imp, extension), options);
+}
+
+}  // namespace gsdot3::pipeline
