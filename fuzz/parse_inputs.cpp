@@ -1,5 +1,5 @@
 // fuzz/parse_inputs.cpp — libFuzzer harness: every reader of user input must survive anything.
-//   meshes through assimp (pipeline::import_mesh_from_memory), PNG normal and height maps (load_normal_map_png,
+//   meshes through assimp (pipeline::import_mesh_from_memory), normal maps (load_normal_map) and PNG height maps (
 //   load_height_map_png), vector files and ps2autotests recordings (vectors::verify_*), register
 //   values by name (gs::set_register) and model options (gs::set_option).
 // Bad input must come back as the documented error (std::runtime_error from the file readers,
@@ -23,6 +23,7 @@
 #include "gs_arith/registers.hpp"
 #include "pipeline/files.hpp"
 #include "pipeline/mesh_import.hpp"
+#include "pipeline/normal_map_image.hpp"
 #include "vectors/format.hpp"
 #include "vectors/verify.hpp"
 
@@ -74,7 +75,7 @@ void parse_mesh(const std::string& bytes, const char* extension) {
 void parse_png(const std::string& bytes, bool height_map, float strength) {
   const auto& path = scratch(bytes);
   try {
-    check_normal_map(height_map ? pl::load_height_map_png(path, strength) : pl::load_normal_map_png(path));
+    check_normal_map(height_map ? pl::load_height_map_png(path, strength) : pl::load_normal_map(path, {}).map);
   } catch (const std::runtime_error&) {
   }
 }

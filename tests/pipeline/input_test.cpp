@@ -10,6 +10,7 @@
 #include "pipeline/default_scene.hpp"
 #include "pipeline/files.hpp"
 #include "pipeline/mesh_import.hpp"
+#include "pipeline/normal_map_image.hpp"
 #include "pipeline/report.hpp"
 
 namespace gsdot3::pipeline {
@@ -65,15 +66,20 @@ TEST(BadInput, Obj) {
 
 TEST(BadInput, NormalMapPng) {
   const fs::path d = temp_dir();
-  expect_error([&] { load_normal_map_png(d / "missing.png"); }, "cannot open the normal map");
-  expect_error([&] { load_normal_map_png(write(d, "text.png", "not a png at all")); }, "not a PNG file");
-  // A valid PNG of the wrong size, and a truncated one.
+  const normal_map_settings nms;
+  expect_error([&] { load_normal_map(d / "missing.png", nms); }, "cannot open the normal map");
+  expect_error([&] { load_normal_map(write(d, "text.png", "not a png at all"), nms); }, "not a PNG, JPEG or TGA image");
+  // A valid PNG of a size the GS has no texture for is resampled (to the powers of two nearest in
+  // log scale: 100 → 128, 60 → 64); a truncated one is an error.
   image img{100, 60, 3, std::vector<std::uint8_t>(100 * 60 * 3, 128)};
   write_png(d / "odd.png", img);
-  expect_error([&] { load_normal_map_png(d / "odd.png"); }, "must be powers of two");
+  const loaded_normal_map odd = load_normal_map(d / "odd.png", nms);
+  EXPECT_TRUE(odd.resampled);
+  EXPECT_EQ(odd.map.width, 128);
+  EXPECT_EQ(odd.map.height, 64);
   image grey{16, 16, 1, std::vector<std::uint8_t>(256, 128)};
   write_png(d / "grey.png", grey);
-  expect_error([&] { load_normal_map_png(d / "grey.png"); }, "must be 8-bit RGB");
+  expect_error([&] { load_normal_map(d / "grey.png", nms); }, "must be 8-bit RGB");
   image ok{16, 16, 3, std::vector<std::uint8_t>(16 * 16 * 3, 128)};
   for (std::size_t i = 2; i < ok.data.size(); i += 3) ok.data[i] = 255;
   write_png(d / "ok.png", ok);
@@ -82,7 +88,7 @@ TEST(BadInput, NormalMapPng) {
     std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     write(d, "cut.png", bytes.substr(0, bytes.size() / 2));
   }
-  expect_error([&] { load_normal_map_png(d / "cut.png"); }, "malformed PNG data");
+  expect_error([&] { load_normal_map(d / "cut.png", nms); }, "malformed PNG data");
   // A grey ramp as a height map: x slopes only, so every normal leans the same way in x (−x: uphill
   // to +x) and not at all in y, except where the ramp wraps back at the border.
   image ramp{16, 16, 1, std::vector<std::uint8_t>(256)};
@@ -93,7 +99,7 @@ TEST(BadInput, NormalMapPng) {
   EXPECT_LT(inner.x, -0.3f);
   EXPECT_NEAR(inner.y, 0.0f, 1e-5f);
   expect_error([&] { load_height_map_png(d / "odd.png", 1.0f); }, "must be powers of two");
-  const normal_map m = load_normal_map_png(d / "ok.png");
+  const normal_map m = load_normal_map(d / "ok.png", nms).map;
   EXPECT_EQ(m.width, 16);
   ASSERT_EQ(m.palette.size(), 1u);
   EXPECT_NEAR(m.palette[0].z, 1.0f, 1e-2f);

@@ -8,8 +8,9 @@
 #include <utility>
 
 #include <assimp/Importer.hpp>
-#include <assimp/importerdesc.h>
 #include <assimp/material.h>
+#include <assimp/commonMetaData.h>
+#include <assimp/metadata.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
@@ -167,10 +168,11 @@ imported_mesh from_scene(const aiScene* s, const Assimp::Importer& imp, const st
   return out;
 }
 
-std::string format_of(const Assimp::Importer& imp, const std::string& extension) {
-  const std::size_t i = imp.GetImporterIndex(extension.c_str());
-  const aiImporterDesc* d = i == static_cast<std::size_t>(-1) ? nullptr : imp.GetImporterInfo(i);
-  return d != nullptr && d->mName != nullptr ? d->mName : extension;
+// The importer that read the scene, as assimp records it (AI_METADATA_SOURCE_FORMAT); else the extension.
+std::string format_of(const aiScene* s, const std::string& extension) {
+  aiString f;
+  if (s != nullptr && s->mMetaData != nullptr && s->mMetaData->Get(AI_METADATA_SOURCE_FORMAT, f) && f.length > 0) return f.C_Str();
+  return extension;
 }
 
 }  // namespace
@@ -182,13 +184,13 @@ imported_mesh import_mesh(const std::filesystem::path& file, const import_option
   const aiScene* s = imp.ReadFile(file.string(), import_flags);
   std::string ext = file.extension().string();
   if (!ext.empty()) ext.erase(0, 1);
-  return from_scene(s, imp, file.string(), file.parent_path(), format_of(imp, ext), options);
+  return from_scene(s, imp, file.string(), file.parent_path(), format_of(s, ext), options);
 }
 
 imported_mesh import_mesh_from_memory(const std::string& bytes, const std::string& extension, const import_options& options) {
   Assimp::Importer imp;
   const aiScene* s = imp.ReadFileFromMemory(bytes.data(), bytes.size(), import_flags, extension.c_str());
-  return from_scene(s, imp, "<memory>." + extension, {}, format_of(imp, extension), options);
+  return from_scene(s, imp, "<memory>." + extension, {}, format_of(s, extension), options);
 }
 
 }  // namespace gsdot3::pipeline

@@ -206,6 +206,7 @@ report_summary write_report(const scene& s, const report_request& r) {
                   {"path", r.options.path == raster_path::cached ? "cached" : "reference"}, {"threads", r.options.threads}};
   for (const auto& opt : gs::option_catalogue())
     j["options"]["model"][std::string(opt.name)] = std::string(gs::option_value(r.options.model, opt.name));
+  if (!r.input_json.empty()) j["input"] = nlohmann::json::parse(r.input_json);
   j["units"] = "dot products in 1/128 (a DPB byte 0x80 + d stands for d/128)";
   j["reference"] = {{"seconds", sum.reference_seconds}, {"normalisation_error", to_json(sum.normalisation)}};
   write_png(r.out_dir / "reference-lit.png", rgb_image(w, h, ref.colour));
@@ -265,7 +266,8 @@ report_summary write_report(const scene& s, const report_request& r) {
         " lights, normal map " + std::to_string(s.normals.width) + "×" + std::to_string(s.normals.height) + " (" +
         std::to_string(s.normals.palette.size()) + " palette entries), s = " + std::to_string(r.options.s) + ", filter " +
         (r.options.bilinear ? "bilinear" : "nearest") +
-        (r.options.specular ? ", specular (half vectors, ILP power " + fmt(r.options.specular_power, 1) + ")" : std::string()) + ".</p>\n"
+        (r.options.specular ? ", specular (half vectors, ILP power " + fmt(r.options.specular_power, 1) + ")" : std::string()) + ".</p>\n" +
+        r.input_html +
         "<p>Errors e = GS dot product − float dot product, in 1/128 units, over every covered pixel and every light. "
         "A wrap error is |e| &gt; 128 (the modulo-256 sum wrapped). Frame times are one wall-clock run of this "
         "command; the benchmarks give stable figures.</p>\n"
