@@ -44,13 +44,17 @@ glm::vec3 turn(glm::vec3 p, float azimuth, float elevation) {
 
 }  // namespace
 
-camera frame_unit_sphere(float azimuth, float elevation, int width, int height, float fov_y_degrees, float margin) {
-  const float half_y = glm::radians(fov_y_degrees) / 2.0f;
-  const float half_x = std::atan(std::tan(half_y) * static_cast<float>(width) / static_cast<float>(height));
+camera frame_unit_sphere(float azimuth, float elevation, int width, int height, float fov_degrees, float margin) {
+  const float aspect = static_cast<float>(width) / static_cast<float>(height);
+  const float half = glm::radians(fov_degrees) / 2.0f;
+  // fov_degrees is the narrower field: for a frame taller than wide the vertical field widens
+  // (up to 160°), so the camera never backs off beyond prepare's far plane (100).
+  const float half_y = aspect >= 1.0f ? half : std::min(std::atan(std::tan(half) / aspect), glm::radians(80.0f));
+  const float half_x = std::atan(std::tan(half_y) * aspect);
   // The unit sphere seen from distance d subtends the half angle asin(1/d); its outline lies inside
   // the frame when that angle is below both half fields of view.
   const float d = margin / std::sin(std::min(half_y, half_x));
-  return {view_direction(azimuth, elevation) * d, glm::vec3(0.0f), fov_y_degrees};
+  return {view_direction(azimuth, elevation) * d, glm::vec3(0.0f), glm::degrees(2.0f * half_y)};
 }
 
 std::vector<point_light> default_lights(float azimuth, float elevation) {
