@@ -1,11 +1,15 @@
 // fuzz/parse_inputs.cpp — libFuzzer harness: every reader of user input must survive anything.
-//   meshes through assimp (pipeline::import_mesh_from_memory), normal maps (load_normal_map) and PNG height maps (
-//   load_height_map_png), vector files and ps2autotests recordings (vectors::verify_*), register
-//   values by name (gs::set_register) and model options (gs::set_option).
+//   Meshes through assimp and gsdot3's conversion and repairs (pipeline::import_mesh_from_memory,
+//   as OBJ, PLY, glTF/GLB, FBX, Collada, STL, OFF or 3DS), normal maps from a file
+//   (load_normal_map) and from memory (the PNG/JPEG/TGA decoders, resampling, both green
+//   conventions, grey as height), PNG height maps (load_height_map_png), vector files and
+//   ps2autotests recordings (vectors::verify_*), register values by name (gs::set_register) and
+//   model options (gs::set_option).
 // Bad input must come back as the documented error (std::runtime_error from the file readers,
 // vectors::format_error, gs::register_error, an error string from set_option); any other exception,
 // a crash, a leak (LeakSanitizer) or a hang (libFuzzer -timeout) is a finding. A result that is
 // accepted must also satisfy its documented postconditions (checked below).
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
@@ -17,6 +21,7 @@
 #include <unistd.h>
 
 #include <fuzzer/FuzzedDataProvider.h>
+#include <glm/geometric.hpp>
 
 #include "fuzz_check.hpp"
 #include "gs_arith/options.hpp"
@@ -48,9 +53,16 @@ const std::filesystem::path& scratch(const std::string& bytes) {
   return file.png;
 }
 
+// An accepted mesh has triangles with indices in range and unit, orthogonal tangent frames.
 void check_mesh(const pl::mesh& m) {
+  require(!m.triangles.empty(), [] { return std::string("import_mesh accepted a mesh without triangles"); });
   for (const auto& t : m.triangles) {
     for (auto i : t) require(i < m.vertices.size(), [] { return std::string("import_mesh accepted a triangle index out of range"); });
+  }
+  for (const pl::vertex& v : m.vertices) {
+    const bool unit = std::fabs(glm::length(v.normal) - 1.0f) < 1e-3f && std::fabs(glm::length(v.tangent) - 1.0f) < 1e-3f &&
+                      std::fabs(glm::dot(v.normal, v.tangent)) < 1e-3f;
+    require(unit, [] { return std::string("import_mesh gave a vertex without a unit orthogonal normal and tangent"); });
   }
 }
 
@@ -68,6 +80,17 @@ void check_normal_map(const pl::normal_map& n) {
 void parse_mesh(const std::string& bytes, const char* extension) {
   try {
     check_mesh(pl::import_mesh_from_memory(bytes, extension).model);
+  } catch (const std::runtime_error&) {
+  }
+}
+
+void parse_image(const std::string& bytes, bool y_up, bool grey_is_height, float strength) {
+  pl::normal_map_settings s;
+  s.y = y_up ? pl::normal_map_y::up : pl::normal_map_y::down;
+  s.grey_is_height = grey_is_height;
+  s.height_strength = strength;
+  try {
+    check_normal_map(pl::load_normal_map(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size(), "fuzz", s).map);
   } catch (const std::runtime_error&) {
   }
 }
@@ -119,19 +142,25 @@ void parse_registers(FuzzedDataProvider& in) {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   FuzzedDataProvider in(data, size);
-  const int reader = in.ConsumeIntegralInRange<int>(0, 5);
+  // The last byte picks the reader (readers 0..5 kept their numbers when 6 and 7 were added).
+  const int reader = in.ConsumeIntegralInRange<int>(0, 7);
   const float strength = in.ConsumeFloatingPointInRange<float>(-100.0f, 100.0f);
   if (reader == 5) {
     parse_registers(in);
     return 0;
   }
+  static const char* const mesh_formats[] = {"obj", "ply", "glb", "gltf", "fbx", "dae", "stl", "off", "3ds"};
+  const char* format = reader == 6 ? mesh_formats[in.ConsumeIntegralInRange<std::size_t>(0, std::size(mesh_formats) - 1)] : "obj";
+  const bool flag = reader == 7 && in.ConsumeBool();
   const std::string bytes = in.ConsumeRemainingBytesAsString();
   switch (reader) {
     case 0: parse_mesh(bytes, "obj"); break;
     case 1: parse_png(bytes, false, strength); break;
     case 2: parse_png(bytes, true, strength); break;
     case 3: parse_vectors(bytes, false); break;
-    default: parse_vectors(bytes, true); break;
+    case 4: parse_vectors(bytes, true); break;
+    case 6: parse_mesh(bytes, format); break;
+    default: parse_image(bytes, strength >= 0.0f, flag, std::fabs(strength)); break;
   }
   return 0;
 }
