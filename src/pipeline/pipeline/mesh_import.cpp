@@ -164,7 +164,8 @@ imported_mesh from_scene(const aiScene* s, const Assimp::Importer& imp, const st
   if (r.zero_uv_area_triangles > 0)
     r.notices.push_back("tangents: " + std::to_string(r.zero_uv_area_triangles) +
                         " triangle(s) with zero UV area: their corners take a neighbouring triangle's frame, " +
-                        std::to_string(r.fallback_tangent_corners) + " corner(s) without one a fixed frame from the normal");
+                        std::to_string(r.fallback_tangent_corners) + " corner(s) without one a fixed frame from the normal" +
+                        (2 * r.zero_uv_area_triangles > r.triangles ? "; most of the mesh samples the normal map at single points (are its UVs real?)" : ""));
   return out;
 }
 
