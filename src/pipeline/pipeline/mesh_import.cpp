@@ -84,7 +84,7 @@ std::vector<source_instance> instances_of(const aiScene& s) {
 // The first normal map of the instanced meshes' materials: glTF normalTexture / MTL norm
 // (aiTextureType_NORMALS), else an MTL bump / map_Bump (aiTextureType_HEIGHT).
 std::optional<texture_ref> find_normal_map(const aiScene& s, const std::vector<source_instance>& inst,
-                                           const std::filesystem::path& dir, import_report& report) {
+                                           const std::filesystem::path& dir) {
   std::optional<texture_ref> found;
   std::size_t others = 0;
   for (aiTextureType type : {aiTextureType_NORMALS, aiTextureType_HEIGHT}) {
@@ -118,9 +118,7 @@ std::optional<texture_ref> find_normal_map(const aiScene& s, const std::vector<s
     }
     if (found) break;
   }
-  if (others > 0)
-    report.notices.push_back("normal map: " + std::to_string(others) + " other material(s) name other normal maps; only '" +
-                             found->name + "' is used (the renderer has one normal map)");
+  if (found) found->other_maps = others;
   return found;
 }
 
@@ -151,7 +149,7 @@ imported_mesh from_scene(const aiScene* s, const Assimp::Importer& imp, const st
       r.notices.push_back(std::to_string(r.dropped_points) + " point(s) and " + std::to_string(r.dropped_lines) +
                           " line(s) ignored (only triangles are rendered)");
     out.model = build_mesh(meshes, inst, options, r);
-    out.normal_texture = find_normal_map(*s, inst, dir, r);
+    out.normal_texture = find_normal_map(*s, inst, dir);
   } catch (const std::runtime_error& e) {
     throw fail(e.what());
   }

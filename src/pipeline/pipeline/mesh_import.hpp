@@ -31,6 +31,7 @@ struct texture_ref {
   std::filesystem::path file;          // resolved path of an external image (empty when embedded)
   std::vector<std::uint8_t> embedded;  // the encoded image (PNG, JPEG, TGA) when embedded
   image raw;                           // or its texels, when the file embeds them uncompressed
+  std::size_t other_maps = 0;          // further materials naming other normal maps (one is used)
   std::string slot;                    // "normal" (glTF normalTexture, MTL norm) or "bump" (MTL bump, map_Bump)
 };
 

@@ -78,6 +78,9 @@ scene_input make_scene(const scene_request& r, const std::function<void(const st
     sum.normal_map_source = "--normal-map " + r.normal_map.string();
     in.description += ", normal map " + r.normal_map.string();
   } else if (material_map) {
+    if (material_map->other_maps > 0)
+      say("normal map: " + std::to_string(material_map->other_maps) + " other material(s) name other normal maps; only '" +
+          material_map->name + "' is used (the renderer has one normal map)");
     nm = material_normal_map(*material_map, r.normal_maps, r.bump, sum, say);
     if (nm) in.description += ", its material's normal map";
   }
