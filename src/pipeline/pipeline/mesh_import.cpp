@@ -1,9 +1,11 @@
 // pipeline/mesh_import.cpp — assimp's scene to source meshes and instances (mesh_repair.hpp), and
-// the material's normal map.
+// the material's normal map. Files are imported in a child process (child_process.hpp).
 #include "pipeline/mesh_import.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstring>
 #include <stdexcept>
 #include <utility>
 
@@ -14,6 +16,7 @@
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
+#include "pipeline/child_process.hpp"
 #include "pipeline/mesh_repair.hpp"
 
 namespace gsdot3::pipeline {
@@ -174,16 +177,125 @@ std::string format_of(const aiScene* s, const std::string& extension) {
   return extension;
 }
 
+// The child's result as bytes: PODs copied, strings and vectors with their lengths in front.
+struct writer {
+  std::string out;
+  template <class T>
+  void pod(const T& v) { out.append(reinterpret_cast<const char*>(&v), sizeof v); }
+  void text(const std::string& t) { pod(t.size()); out += t; }
+  template <class T>
+  void pods(const std::vector<T>& v) {
+    pod(v.size());
+    out.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
+  }
+};
+
+struct reader {
+  const std::string& in;
+  std::size_t at = 0;
+  void take(void* to, std::size_t n) {
+    if (n > in.size() - at) throw std::runtime_error("the reader process returned a short result");
+    std::memcpy(to, in.data() + at, n);
+    at += n;
+  }
+  template <class T>
+  T pod() {
+    T v{};
+    take(&v, sizeof v);
+    return v;
+  }
+  std::string text() {
+    std::string t(std::min(pod<std::size_t>(), in.size() - at), '\0');
+    take(t.data(), t.size());
+    return t;
+  }
+  template <class T>
+  std::vector<T> pods() {
+    std::vector<T> v(std::min(pod<std::size_t>(), (in.size() - at) / sizeof(T)));
+    take(v.data(), v.size() * sizeof(T));
+    return v;
+  }
+};
+
+std::string serialise(const imported_mesh& m) {
+  writer w;
+  w.pods(m.model.vertices);
+  w.pods(m.model.triangles);
+  const import_report& r = m.report;
+  for (const std::string* t : {&r.file, &r.format, &r.normals, &r.uvs, &r.tangents}) w.text(*t);
+  for (std::size_t n : {r.meshes, r.instances, r.triangles, r.dropped_points, r.dropped_lines, r.dropped_degenerate, r.normals_generated,
+                        r.normals_renormalised, r.normals_replaced, r.zero_uv_area_triangles, r.fallback_tangent_corners})
+    w.pod(n);
+  w.pod(r.notices.size());
+  for (const std::string& n : r.notices) w.text(n);
+  w.pod(m.normal_texture.has_value());
+  if (m.normal_texture) {
+    const texture_ref& t = *m.normal_texture;
+    w.text(t.name);
+    w.text(t.file.string());
+    w.pods(t.embedded);
+    w.pod(t.raw.width);
+    w.pod(t.raw.height);
+    w.pod(t.raw.channels);
+    w.pods(t.raw.data);
+    w.pod(t.other_maps);
+    w.text(t.slot);
+  }
+  return std::move(w.out);
+}
+
+imported_mesh deserialise(const std::string& bytes) {
+  reader rd{bytes};
+  imported_mesh m;
+  m.model.vertices = rd.pods<vertex>();
+  m.model.triangles = rd.pods<std::array<std::uint32_t, 3>>();
+  import_report& r = m.report;
+  for (std::string* t : {&r.file, &r.format, &r.normals, &r.uvs, &r.tangents}) *t = rd.text();
+  for (std::size_t* n : {&r.meshes, &r.instances, &r.triangles, &r.dropped_points, &r.dropped_lines, &r.dropped_degenerate, &r.normals_generated,
+                         &r.normals_renormalised, &r.normals_replaced, &r.zero_uv_area_triangles, &r.fallback_tangent_corners})
+    *n = rd.pod<std::size_t>();
+  for (std::size_t i = 0, n = rd.pod<std::size_t>(); i < n && rd.at < bytes.size(); ++i) r.notices.push_back(rd.text());
+  if (rd.pod<bool>()) {
+    texture_ref t;
+    t.name = rd.text();
+    t.file = rd.text();
+    t.embedded = rd.pods<std::uint8_t>();
+    t.raw.width = rd.pod<int>();
+    t.raw.height = rd.pod<int>();
+    t.raw.channels = rd.pod<int>();
+    t.raw.data = rd.pods<std::uint8_t>();
+    t.other_maps = rd.pod<std::size_t>();
+    t.slot = rd.text();
+    m.normal_texture = std::move(t);
+  }
+  return m;
+}
+
+// Address space of the importing child: realistic assets of millions of triangles fit, a header
+// that claims 10^11 vertices does not.
+constexpr std::size_t import_address_space = std::size_t{3} << 30;
+
 }  // namespace
 
 imported_mesh import_mesh(const std::filesystem::path& file, const import_options& options) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(file, ec)) throw std::runtime_error(file.string() + ": cannot open the mesh");
-  Assimp::Importer imp;
-  const aiScene* s = imp.ReadFile(file.string(), import_flags);
-  std::string ext = file.extension().string();
-  if (!ext.empty()) ext.erase(0, 1);
-  return from_scene(s, imp, file.string(), file.parent_path(), format_of(s, ext), options);
+  std::string bytes;
+  try {
+    bytes = run_in_child(
+        [&] {
+          Assimp::Importer imp;
+          const aiScene* s = imp.ReadFile(file.string(), import_flags);
+          std::string ext = file.extension().string();
+          if (!ext.empty()) ext.erase(0, 1);
+          return serialise(from_scene(s, imp, file.string(), file.parent_path(), format_of(s, ext), options));
+        },
+        import_address_space);
+  } catch (const std::runtime_error& e) {
+    const std::string what = e.what(), prefix = file.string() + ": ";
+    throw std::runtime_error(what.compare(0, prefix.size(), prefix) == 0 ? what : prefix + what);
+  }
+  return deserialise(bytes);
 }
 
 imported_mesh import_mesh_from_memory(const std::string& bytes, const std::string& extension, const import_options& options) {

@@ -59,9 +59,12 @@ struct imported_mesh {
 
 // Reads a mesh file. Throws std::runtime_error "FILE: why" (one line) for an importer error, no
 // triangles, NaN/Inf positions, out-of-range indices, or missing UVs with uv_projection::none.
+// The import runs in a child process with a 3 GiB address space: an importer that crashes or runs
+// out of memory on a malformed file is an error, not the end of gsdot3 (child_process.hpp).
 imported_mesh import_mesh(const std::filesystem::path& file, const import_options& options = {});
 
-// The same from bytes in memory; `extension` ("obj", "glb", "ply", …) tells the importer the format.
+// The same from bytes in memory, in this process (the fuzz harness: a crash must be seen there);
+// `extension` ("obj", "glb", "ply", …) tells the importer the format.
 imported_mesh import_mesh_from_memory(const std::string& bytes, const std::string& extension, const import_options& options = {});
 
 }  // namespace gsdot3::pipeline
