@@ -186,7 +186,7 @@ struct writer {
   template <class T>
   void pods(const std::vector<T>& v) {
     pod(v.size());
-    out.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
+    if (!v.empty()) out.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
   }
 };
 
@@ -194,6 +194,7 @@ struct reader {
   const std::string& in;
   std::size_t at = 0;
   void take(void* to, std::size_t n) {
+    if (n == 0) return;  // an empty vector's data() may be null
     if (n > in.size() - at) throw std::runtime_error("the reader process returned a short result");
     std::memcpy(to, in.data() + at, n);
     at += n;
