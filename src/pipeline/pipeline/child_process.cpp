@@ -27,7 +27,7 @@ void write_all(int fd, const std::string& bytes) {
 
 }  // namespace
 
-std::string run_in_child(const std::function<std::string()>& work, std::size_t address_space_limit) {
+std::string run_in_child(const std::function<std::string()>& work, std::size_t address_space_limit, rlim_t cpu_seconds) {
   int fds[2];
   if (::pipe(fds) != 0) throw std::runtime_error("cannot create a pipe for the reader");
   const pid_t pid = ::fork();
@@ -44,6 +44,8 @@ std::string run_in_child(const std::function<std::string()>& work, std::size_t a
     const rlimit cap{address_space_limit, address_space_limit};
     ::setrlimit(RLIMIT_AS, &cap);
 #endif
+    const rlimit cpu{cpu_seconds, cpu_seconds + 1};  // a parser stuck in a loop gets SIGXCPU
+    ::setrlimit(RLIMIT_CPU, &cpu);
     std::string out(1, 'O');
     try {
       out.append(work());
@@ -71,6 +73,8 @@ std::string run_in_child(const std::function<std::string()>& work, std::size_t a
   while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
   }
   const std::string gib = std::to_string(address_space_limit >> 30);
+  if (WIFSIGNALED(status) && WTERMSIG(status) == SIGXCPU)
+    throw std::runtime_error("the reader used more than " + std::to_string(cpu_seconds) + " s of CPU (stuck on a malformed file?)");
   if (WIFSIGNALED(status)) throw std::runtime_error("the reader crashed (signal " + std::to_string(WTERMSIG(status)) + "): a malformed file");
   if (got.empty() || got[0] == 'M') throw std::runtime_error("the reader ran out of memory (more than " + gib + " GiB): a malformed or huge file");
   if (got[0] == 'E') throw std::runtime_error(got.substr(1));

@@ -1,5 +1,5 @@
 // pipeline/image_io.cpp — image files to 8-bit pixels: format by signature, PNG by libpng from
-// memory (JPEG and TGA: stb_decode.cpp).
+// memory (JPEG: jpeg_decode.cpp, TGA: stb_decode.cpp).
 #include "pipeline/image_io.hpp"
 
 #include <algorithm>
@@ -92,8 +92,12 @@ image decode_image(const std::uint8_t* data, std::size_t size, const std::string
     format = "PNG";
     return decode_png(data, size, name);
   }
-  format = size >= 3 && data[0] == 0xFF && data[1] == 0xD8 && data[2] == 0xFF ? "JPEG" : "TGA";
-  return decode_jpeg_or_tga(data, size, name);
+  if (size >= 3 && data[0] == 0xFF && data[1] == 0xD8 && data[2] == 0xFF) {
+    format = "JPEG";
+    return decode_jpeg(data, size, name);
+  }
+  format = "TGA";  // TGA has no signature: the last format tried
+  return decode_tga(data, size, name);
 }
 
 }  // namespace gsdot3::pipeline

@@ -1,5 +1,5 @@
-// pipeline/image_io.hpp — decoding user images from memory: PNG through libpng, JPEG and TGA
-// through stb_image (Debian's libstb-dev). Every failure throws std::runtime_error "NAME: why" (one
+// pipeline/image_io.hpp — decoding user images from memory: PNG through libpng, JPEG through
+// libjpeg-turbo, TGA through stb_image (Debian's libstb-dev). Every failure throws std::runtime_error "NAME: why" (one
 // line); images larger than max_image_side on a side or max_image_pixels in all are refused from
 // their header, before any pixel is decoded.
 #pragma once
@@ -28,6 +28,7 @@ std::vector<std::uint8_t> read_file_bytes(const std::filesystem::path& file, con
 // `format` receives "PNG", "JPEG" or "TGA".
 image decode_image(const std::uint8_t* data, std::size_t size, const std::string& name, std::string& format);
 image decode_png(const std::uint8_t* data, std::size_t size, const std::string& name);
-image decode_jpeg_or_tga(const std::uint8_t* data, std::size_t size, const std::string& name);
+image decode_jpeg(const std::uint8_t* data, std::size_t size, const std::string& name);
+image decode_tga(const std::uint8_t* data, std::size_t size, const std::string& name);
 
 }  // namespace gsdot3::pipeline

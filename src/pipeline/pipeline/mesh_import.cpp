@@ -275,6 +275,7 @@ imported_mesh deserialise(const std::string& bytes) {
 // Address space of the importing child: realistic assets of millions of triangles fit, a header
 // that claims 10^11 vertices does not.
 constexpr std::size_t import_address_space = std::size_t{3} << 30;
+constexpr rlim_t import_cpu_seconds = 120;  // a 100k-triangle OBJ takes 0.7 s
 
 }  // namespace
 
@@ -291,7 +292,7 @@ imported_mesh import_mesh(const std::filesystem::path& file, const import_option
           if (!ext.empty()) ext.erase(0, 1);
           return serialise(from_scene(s, imp, file.string(), file.parent_path(), format_of(s, ext), options));
         },
-        import_address_space);
+        import_address_space, import_cpu_seconds);
   } catch (const std::runtime_error& e) {
     const std::string what = e.what(), prefix = file.string() + ": ";
     throw std::runtime_error(what.compare(0, prefix.size(), prefix) == 0 ? what : prefix + what);

@@ -59,8 +59,9 @@ struct imported_mesh {
 
 // Reads a mesh file. Throws std::runtime_error "FILE: why" (one line) for an importer error, no
 // triangles, NaN/Inf positions, out-of-range indices, or missing UVs with uv_projection::none.
-// The import runs in a child process with a 3 GiB address space: an importer that crashes or runs
-// out of memory on a malformed file is an error, not the end of gsdot3 (child_process.hpp).
+// The import runs in a child process with a 3 GiB address space and 120 s of CPU: an importer that
+// crashes, runs out of memory or loops on a malformed file is an error, not the end (or the hang)
+// of gsdot3 (child_process.hpp).
 imported_mesh import_mesh(const std::filesystem::path& file, const import_options& options = {});
 
 // The same from bytes in memory, in this process (the fuzz harness: a crash must be seen there);

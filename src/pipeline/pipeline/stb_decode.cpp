@@ -1,13 +1,12 @@
 // pipeline/stb_decode.cpp — the one translation unit that compiles stb_image (libstb-dev, a
-// single-header library: STB_IMAGE_IMPLEMENTATION goes in exactly one .cpp). Only its JPEG and TGA
-// decoders are compiled; <stb/stb_image.h> is found in /usr/include, a system directory, so its
-// own warnings do not trip -Werror.
+// single-header library: STB_IMAGE_IMPLEMENTATION goes in exactly one .cpp). Only its TGA decoder
+// is compiled (JPEG: jpeg_decode.cpp); <stb/stb_image.h> is found in /usr/include, a system
+// directory, so its own warnings do not trip -Werror.
 #include <stdexcept>
 
 #include "pipeline/image_io.hpp"
 
 #define STB_IMAGE_IMPLEMENTATION
-#define STBI_ONLY_JPEG
 #define STBI_ONLY_TGA
 #define STBI_NO_STDIO
 #define STBI_FAILURE_USERMSG
@@ -16,7 +15,7 @@
 
 namespace gsdot3::pipeline {
 
-image decode_jpeg_or_tga(const std::uint8_t* data, std::size_t size, const std::string& name) {
+image decode_tga(const std::uint8_t* data, std::size_t size, const std::string& name) {
   if (size > 0x7fffffffu) throw std::runtime_error(name + ": the image file is too large");
   const int len = static_cast<int>(size);
   int w = 0, h = 0, n = 0;
