@@ -1,4 +1,4 @@
-// Normal maps from images: the formats (PNG by libpng, JPEG and TGA by stb_image), the green-channel
+// Normal maps from images: the formats (PNG by libpng, JPEG by libjpeg-turbo, TGA by stb_image), the green-channel
 // convention, resampling to GS sizes, materials' maps found from a mesh, and hostile headers. The
 // image fixtures were written with stb_image_write (tests/data/README.md); expected normals follow
 // from the bytes written, n = rgb/127.5 − 1.
