@@ -10,9 +10,9 @@
 #include "commands.hpp"
 #include "gs_arith/options.hpp"
 #include "gs_arith/profiles.hpp"
-#include "pipeline/default_scene.hpp"
-#include "pipeline/files.hpp"
+#include "pipeline/mesh_import.hpp"
 #include "pipeline/report.hpp"
+#include "pipeline/scene_input.hpp"
 #include "pipeline/scheme_method.hpp"
 
 namespace gsdot3::cli {
@@ -22,6 +22,7 @@ struct render_args {
   std::string out = "gsdot3-out", method = "all", mesh, normal_map, size = "512x448", filter = "nearest", path = "cached";
   std::string camera, height_map;
   std::string profile;
+  std::string normals = "smooth", uv_projection, tangents = "auto", normal_map_y = "up", view;
   float bump = 0.05f;
   std::vector<std::string> lights, model_options;
   int s = 122, threads = 2;
@@ -146,36 +147,48 @@ void run(const render_args& a, bool html, context& ctx) {
   std::vector<float> eye;
   if (!a.camera.empty()) eye = parse_floats("--camera", a.camera, 3);
 
+  pipeline::import_options import;
+  if (a.normals != "smooth" && a.normals != "flat") throw usage_error("--normals: expected flat or smooth, got '" + a.normals + "'");
+  import.normals = a.normals == "flat" ? pipeline::normals_mode::flat : pipeline::normals_mode::smooth;
+  if (!a.uv_projection.empty()) {
+    if (a.uv_projection == "box") import.uvs = pipeline::uv_projection::box;
+    else if (a.uv_projection == "sphere") import.uvs = pipeline::uv_projection::sphere;
+    else if (a.uv_projection == "planar") import.uvs = pipeline::uv_projection::planar;
+    else throw usage_error("--uv-projection: expected box, sphere or planar, got '" + a.uv_projection + "'");
+  }
+  if (a.tangents != "auto" && a.tangents != "mikktspace") throw usage_error("--tangents: expected auto or mikktspace, got '" + a.tangents + "'");
+  import.tangents = a.tangents == "auto" ? pipeline::tangent_mode::automatic : pipeline::tangent_mode::mikktspace;
+
   auto progress = [](const std::string& m) { std::cerr << "gsdot3: " << m << "\n"; };
+  if (!a.normal_map.empty() && !a.height_map.empty()) throw usage_error("--normal-map and --height-map exclude each other");
+  if (!a.height_map.empty() && !(a.bump > 0.0f && a.bump <= 100.0f)) throw usage_error("--bump: expected a strength in (0, 100]");
+  if (a.normal_map_y != "up" && a.normal_map_y != "down") throw usage_error("--normal-map-y: expected up or down, got '" + a.normal_map_y + "'");
+  pipeline::scene_request sr;
+  sr.mesh = a.mesh;
+  sr.normal_map = a.normal_map;
+  sr.height_map = a.height_map;
+  sr.bump = a.bump;
+  sr.import = import;
+  sr.normal_maps.y = a.normal_map_y == "up" ? pipeline::normal_map_y::up : pipeline::normal_map_y::down;
+  if (!a.view.empty()) {
+    const auto v = parse_floats("--view", a.view, 2);
+    sr.view = std::array<float, 2>{v[0], v[1]};
+  }
+  if (!eye.empty()) sr.eye = glm::vec3(eye[0], eye[1], eye[2]);
+  sr.lights = lights;
+  sr.width = w;
+  sr.height = h;
   progress("building the scene");
-  pipeline::scene s = pipeline::default_scene();
-  std::string description = "embedded procedural head (" + std::to_string(s.model.triangles.size()) + " triangles)";
+  pipeline::scene_input in;
   try {
-    if (!a.mesh.empty()) {
-      s.model = pipeline::load_obj(a.mesh);
-      description = "mesh " + a.mesh + " (" + std::to_string(s.model.triangles.size()) + " triangles)";
-    }
-    if (!a.normal_map.empty() && !a.height_map.empty()) throw usage_error("--normal-map and --height-map exclude each other");
-    if (!a.height_map.empty()) {
-      if (!(a.bump > 0.0f && a.bump <= 100.0f)) throw usage_error("--bump: expected a strength in (0, 100]");
-      progress("making a normal map from the height map, quantised to 256 entries");
-      s.normals = pipeline::load_height_map_png(a.height_map, a.bump);
-      s.diffuse = pipeline::procedural_diffuse(s.normals.width, s.normals.height);
-      description += ", height map " + a.height_map;
-    }
-    if (!a.normal_map.empty()) {
-      progress("quantising the normal map to 256 entries");
-      s.normals = pipeline::load_normal_map_png(a.normal_map);
-      s.diffuse = pipeline::procedural_diffuse(s.normals.width, s.normals.height);
-      description += ", normal map " + a.normal_map;
-    }
+    in = pipeline::make_scene(sr, progress);
   } catch (const std::runtime_error& e) {
     throw usage_error(e.what());
   }
-  s.width = w;
-  s.height = h;
-  if (!lights.empty()) s.lights = lights;
-  if (!eye.empty()) s.view.eye = {eye[0], eye[1], eye[2]};
+  const pipeline::scene& s = in.s;
+  const std::string& description = in.description;
+  req.input_json = pipeline::input_json(in.summary);
+  req.input_html = pipeline::input_html(in.summary);
   req.scene_description = description;
   req.progress = progress;
   pipeline::report_summary sum;
@@ -200,16 +213,28 @@ void add_options(CLI::App* cmd, render_args& a) {
   std::string methods = "comma-separated: two-pass, four-pass, baseline";
   for (const auto& m : pipeline::scheme_methods()) methods += ", " + std::string(m.name);
   cmd->add_option("--method", a.method, methods + "; gs = the three GS methods, all = every method")->capture_default_str();
-  cmd->add_option("--mesh", a.mesh, "Wavefront OBJ mesh (v, vt, vn, f v/vt/vn); default: the embedded head");
+  cmd->add_option("--mesh", a.mesh,
+                  "mesh file read by assimp: OBJ, glTF 2.0 (.gltf, .glb), PLY, FBX, Collada, ...; all its meshes merged with "
+                  "their node transforms; default: the embedded head");
+  cmd->add_option("--normals", a.normals, "normals generated for a mesh without them: smooth (angle-weighted) | flat")->capture_default_str();
+  cmd->add_option("--uv-projection", a.uv_projection, "generate UVs for a mesh without them: box | sphere | planar");
+  cmd->add_option("--tangents", a.tangents, "auto (the file's tangents, e.g. glTF TANGENT, else MikkTSpace) | mikktspace (always computed)")
+      ->capture_default_str();
   cmd->add_option("--normal-map", a.normal_map,
-                  "8-bit RGB PNG tangent-space normal map (power-of-two sides 8..1024), quantised to 256 entries");
+                  "tangent-space normal map, PNG, JPEG or TGA of any size (resampled to power-of-two sides 8..1024), quantised "
+                  "to 256 entries; default: the mesh material's (glTF normalTexture, MTL norm/bump), else the procedural one");
+  cmd->add_option("--normal-map-y", a.normal_map_y, "the normal map's green channel points up (OpenGL, glTF) | down (DirectX) the image")
+      ->capture_default_str();
   cmd->add_option("--height-map", a.height_map,
                   "8-bit grey PNG height map (power-of-two sides) turned into the normal map (instead of --normal-map)");
   cmd->add_option("--bump", a.bump, "height-map slope scale (per grey level)")->capture_default_str();
   cmd->add_option("--light", a.lights,
                   "point light X,Y,Z:RRGGBB (world position; colour in hex, 0x80 = 1.0); repeat for more lights; "
-                  "default: green 109820 at -2.2,1.4,2.2 and blue 1038B0 at 2.6,-0.2,0.4");
-  cmd->add_option("--camera", a.camera, "camera position X,Y,Z looking at the origin (default 0,0.15,3.6)");
+                  "default: green 109820 at -2.2,1.4,2.2 and blue 1038B0 at 2.6,-0.2,0.4 (for a framed mesh: turned with --view)");
+  cmd->add_option("--camera", a.camera,
+                  "camera position X,Y,Z looking at the origin (default: embedded scene 0,0.15,3.6; a mesh is framed, and "
+                  "centred and scaled to its unit bounding sphere, so X,Y,Z are in units of its radius from its centre)");
+  cmd->add_option("--view", a.view, "frame the model from AZIMUTH,ELEVATION in degrees (0,0: from +z; 90,0: from +x); default 0,0 for a mesh");
   cmd->add_option("--size", a.size, "frame size WxH")->capture_default_str();
   cmd->add_option("--s", a.s, "two-pass tolight scale s (section 3.5), 1..127")->capture_default_str();
   cmd->add_option("--filter", a.filter, "normal-map sampling: nearest | bilinear")->capture_default_str();

@@ -1,4 +1,4 @@
-// pipeline/files.hpp — reading user input (Wavefront OBJ meshes, 8-bit RGB PNG normal maps) and
+// pipeline/files.hpp — reading height maps (normal maps: normal_map_image.hpp; meshes: mesh_import.hpp) and
 // writing PNG images. Every failure throws std::runtime_error with a one-line message naming the
 // file; nothing is left half written (PNGs go to a temporary name and are renamed when complete).
 #pragma once
@@ -10,14 +10,6 @@
 #include "pipeline/scene.hpp"
 
 namespace gsdot3::pipeline {
-
-// Positions (v), normals (vn), texture coordinates (vt) and faces (f v/vt/vn, polygons fanned into
-// triangles). Every face corner needs a UV and a normal. Tangents are computed per vertex.
-mesh load_obj(const std::filesystem::path& file);
-
-// An 8-bit RGB(A) PNG whose texels are tangent-space normals packed as n·127.5 + 127.5, quantised to
-// a 256-entry palette. Width and height must be powers of two from 8 to 1024 (GS texture sizes).
-normal_map load_normal_map_png(const std::filesystem::path& file);
 
 // A normal map made from an 8-bit grey (or RGB: red) height map PNG: central differences with
 // slopes scaled by `strength` (height units: grey levels), then quantised to 256 entries.

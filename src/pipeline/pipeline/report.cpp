@@ -199,6 +199,7 @@ report_summary write_report(const scene& s, const report_request& r) {
                   {"path", r.options.path == raster_path::cached ? "cached" : "reference"}, {"threads", r.options.threads}};
   for (const auto& opt : gs::option_catalogue())
     j["options"]["model"][std::string(opt.name)] = std::string(gs::option_value(r.options.model, opt.name));
+  if (!r.input_json.empty()) j["input"] = nlohmann::json::parse(r.input_json);
   j["units"] = "dot products in 1/128 (a DPB byte 0x80 + d stands for d/128)";
   j["reference"] = {{"seconds", sum.reference_seconds}, {"normalisation_error", to_json(sum.normalisation)}};
   write_png(r.out_dir / "reference-lit.png", rgb_image(w, h, ref.colour));

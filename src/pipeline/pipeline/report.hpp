@@ -35,6 +35,7 @@ struct report_request {
   std::string scene_description = "embedded procedural scene";
   bool write_html = true;                                 // false: `render` (images + JSON only)
   std::function<void(const std::string&)> progress;       // one line of stderr progress
+  std::string input_json, input_html;                     // input_report.hpp; empty: no "input" entry
 };
 
 struct method_result {

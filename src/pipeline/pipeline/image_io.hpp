@@ -1,0 +1,34 @@
+// pipeline/image_io.hpp — decoding user images from memory: PNG through libpng, JPEG through
+// libjpeg-turbo, TGA through stb_image (Debian's libstb-dev). Every failure throws std::runtime_error "NAME: why" (one
+// line); images larger than max_image_side on a side or max_image_pixels in all are refused from
+// their header, before any pixel is decoded.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "pipeline/files.hpp"
+
+namespace gsdot3::pipeline {
+
+inline constexpr int max_image_side = 16384;
+inline constexpr long long max_image_pixels = 1LL << 24;  // 4096², 64 MiB as RGBA
+
+// Throws "NAME: the image is WxH; ..." unless both sides are 1..max_image_side and the area is at
+// most max_image_pixels.
+void check_image_size(long long width, long long height, const std::string& name);
+
+// The whole file; `what` names it in the message ("cannot open the normal map").
+std::vector<std::uint8_t> read_file_bytes(const std::filesystem::path& file, const std::string& what);
+
+// 8-bit grey (1 channel) or RGB (3 channels): palettes expanded, 16-bit reduced to 8, alpha dropped.
+// `format` receives "PNG", "JPEG" or "TGA".
+image decode_image(const std::uint8_t* data, std::size_t size, const std::string& name, std::string& format);
+image decode_png(const std::uint8_t* data, std::size_t size, const std::string& name);
+image decode_jpeg(const std::uint8_t* data, std::size_t size, const std::string& name);
+image decode_tga(const std::uint8_t* data, std::size_t size, const std::string& name);
+
+}  // namespace gsdot3::pipeline

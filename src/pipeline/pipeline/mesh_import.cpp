@@ -1,0 +1,309 @@
+// pipeline/mesh_import.cpp — assimp's scene to source meshes and instances (mesh_repair.hpp), and
+// the material's normal map. Files are imported in a child process (child_process.hpp).
+#include "pipeline/mesh_import.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <stdexcept>
+#include <utility>
+
+#include <assimp/Importer.hpp>
+#include <assimp/material.h>
+#include <assimp/commonMetaData.h>
+#include <assimp/metadata.h>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+#include "pipeline/child_process.hpp"
+#include "pipeline/mesh_repair.hpp"
+
+namespace gsdot3::pipeline {
+
+namespace {
+
+// Triangulate n-gons; nothing else: normals, UVs and tangents are gsdot3's business (and counted).
+constexpr unsigned import_flags = aiProcess_Triangulate;
+
+glm::mat4 to_glm(const aiMatrix4x4& m) {  // assimp is row-major (a4, b4, c4: translation)
+  return glm::mat4(m.a1, m.b1, m.c1, m.d1, m.a2, m.b2, m.c2, m.d2, m.a3, m.b3, m.c3, m.d3, m.a4, m.b4, m.c4, m.d4);
+}
+
+glm::vec3 v3(const aiVector3D& v) { return {v.x, v.y, v.z}; }
+
+source_mesh convert(const aiMesh& am, std::size_t index, import_report& report) {
+  source_mesh m;
+  const std::string which = "mesh " + std::to_string(index);
+  if (am.mVertices == nullptr && am.mNumVertices > 0) throw std::runtime_error(which + " has no positions");
+  m.positions.reserve(am.mNumVertices);
+  for (unsigned i = 0; i < am.mNumVertices; ++i) {
+    const glm::vec3 p = v3(am.mVertices[i]);
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+      throw std::runtime_error(which + ": vertex " + std::to_string(i) + " has a non-finite position (NaN or infinity)");
+    m.positions.push_back(p);
+  }
+  if (am.mNormals != nullptr)
+    for (unsigned i = 0; i < am.mNumVertices; ++i) m.normals.push_back(v3(am.mNormals[i]));
+  if (am.mTextureCoords[0] != nullptr)  // assimp: v runs up the image; the renderer's v runs down
+    for (unsigned i = 0; i < am.mNumVertices; ++i) m.uvs.push_back({am.mTextureCoords[0][i].x, 1.0f - am.mTextureCoords[0][i].y});
+  if (am.mTangents != nullptr && am.mBitangents != nullptr)
+    for (unsigned i = 0; i < am.mNumVertices; ++i) {
+      m.tangents.push_back(v3(am.mTangents[i]));
+      m.bitangents.push_back(v3(am.mBitangents[i]));
+    }
+  for (unsigned f = 0; f < am.mNumFaces; ++f) {
+    const aiFace& face = am.mFaces[f];
+    if (face.mNumIndices == 1) ++report.dropped_points;
+    if (face.mNumIndices == 2) ++report.dropped_lines;
+    if (face.mNumIndices < 3) continue;
+    for (unsigned k = 0; k < face.mNumIndices; ++k)
+      if (face.mIndices[k] >= am.mNumVertices)
+        throw std::runtime_error(which + ": face " + std::to_string(f) + " refers to vertex " + std::to_string(face.mIndices[k]) +
+                                 " of " + std::to_string(am.mNumVertices));
+    for (unsigned k = 1; k + 1 < face.mNumIndices; ++k)  // a polygon the triangulation left: a fan
+      m.triangles.push_back({face.mIndices[0], face.mIndices[k], face.mIndices[k + 1]});
+  }
+  return m;
+}
+
+// Every node's meshes with the node's accumulated transform (iteratively: hostile files nest deeply).
+std::vector<source_instance> instances_of(const aiScene& s) {
+  std::vector<source_instance> out;
+  std::vector<std::pair<const aiNode*, glm::mat4>> todo;
+  if (s.mRootNode != nullptr) todo.push_back({s.mRootNode, glm::mat4(1.0f)});
+  while (!todo.empty()) {
+    const auto [node, parent] = todo.back();
+    todo.pop_back();
+    const glm::mat4 t = parent * to_glm(node->mTransformation);
+    for (unsigned i = 0; i < node->mNumMeshes; ++i)
+      if (node->mMeshes[i] < s.mNumMeshes) out.push_back({node->mMeshes[i], t});
+    for (unsigned c = 0; c < node->mNumChildren; ++c)
+      if (node->mChildren[c] != nullptr) todo.push_back({node->mChildren[c], t});
+  }
+  return out;
+}
+
+// The first normal map of the instanced meshes' materials: glTF normalTexture / MTL norm
+// (aiTextureType_NORMALS), else an MTL bump / map_Bump (aiTextureType_HEIGHT).
+std::optional<texture_ref> find_normal_map(const aiScene& s, const std::vector<source_instance>& inst,
+                                           const std::filesystem::path& dir) {
+  std::optional<texture_ref> found;
+  std::size_t others = 0;
+  for (aiTextureType type : {aiTextureType_NORMALS, aiTextureType_HEIGHT}) {
+    for (const source_instance& in : inst) {
+      const aiMesh& am = *s.mMeshes[in.mesh];
+      if (am.mMaterialIndex >= s.mNumMaterials || s.mMaterials[am.mMaterialIndex] == nullptr) continue;
+      aiString path;
+      if (s.mMaterials[am.mMaterialIndex]->GetTexture(type, 0, &path) != aiReturn_SUCCESS || path.length == 0) continue;
+      std::string name(path.C_Str());
+      if (found) {
+        others += name != found->name;
+        continue;
+      }
+      texture_ref t;
+      t.name = name;
+      t.slot = type == aiTextureType_NORMALS ? "normal" : "bump";
+      if (const aiTexture* tex = s.GetEmbeddedTexture(path.C_Str())) {
+        if (tex->mHeight == 0) {  // compressed: mWidth bytes of an image file
+          const auto* bytes = reinterpret_cast<const std::uint8_t*>(tex->pcData);
+          t.embedded.assign(bytes, bytes + tex->mWidth);
+        } else {  // raw BGRA texels
+          t.raw = {static_cast<int>(tex->mWidth), static_cast<int>(tex->mHeight), 3, {}};
+          for (std::size_t i = 0; i < static_cast<std::size_t>(tex->mWidth) * tex->mHeight; ++i)
+            t.raw.data.insert(t.raw.data.end(), {tex->pcData[i].r, tex->pcData[i].g, tex->pcData[i].b});
+        }
+      } else {
+        std::replace(name.begin(), name.end(), '\\', '/');  // Windows exporters
+        t.file = dir / std::filesystem::path(name);
+      }
+      found = std::move(t);
+    }
+    if (found) break;
+  }
+  if (found) found->other_maps = others;
+  return found;
+}
+
+imported_mesh from_scene(const aiScene* s, const Assimp::Importer& imp, const std::string& name,
+                         const std::filesystem::path& dir, const std::string& format, const import_options& options) {
+  auto fail = [&](const std::string& why) { return std::runtime_error(name + ": " + why); };
+  if (s == nullptr) {
+    std::string why = imp.GetErrorString();
+    std::replace(why.begin(), why.end(), '\n', ' ');
+    throw fail("cannot read the mesh (" + (why.empty() ? std::string("unknown format") : why) + ")");
+  }
+  imported_mesh out;
+  import_report& r = out.report;
+  r.file = name;
+  r.format = format;
+  try {
+    const std::vector<source_instance> inst = instances_of(*s);
+    r.instances = inst.size();
+    std::vector<source_mesh> meshes(s->mNumMeshes);
+    std::vector<char> used(s->mNumMeshes, 0);
+    for (const source_instance& in : inst) {
+      if (used[in.mesh] || s->mMeshes[in.mesh] == nullptr) continue;
+      used[in.mesh] = 1;
+      meshes[in.mesh] = convert(*s->mMeshes[in.mesh], in.mesh, r);
+      ++r.meshes;
+    }
+    if (r.dropped_points + r.dropped_lines > 0)
+      r.notices.push_back(std::to_string(r.dropped_points) + " point(s) and " + std::to_string(r.dropped_lines) +
+                          " line(s) ignored (only triangles are rendered)");
+    out.model = build_mesh(meshes, inst, options, r);
+    out.normal_texture = find_normal_map(*s, inst, dir);
+  } catch (const std::runtime_error& e) {
+    throw fail(e.what());
+  }
+  if (r.dropped_degenerate > 0) r.notices.push_back(std::to_string(r.dropped_degenerate) + " zero-area triangle(s) dropped");
+  if (r.normals_generated > 0) r.notices.push_back("normals: " + std::to_string(r.normals_generated) + " vertex position(s) had none; " + r.normals);
+  if (r.normals_renormalised > 0) r.notices.push_back("normals: " + std::to_string(r.normals_renormalised) + " non-unit normal(s) renormalised");
+  if (r.normals_replaced > 0)
+    r.notices.push_back("normals: " + std::to_string(r.normals_replaced) + " zero or NaN normal(s) replaced by the smooth normal");
+  if (r.uvs != "file") r.notices.push_back("UVs: none in the file; generated by " + r.uvs);
+  if (r.zero_uv_area_triangles > 0)
+    r.notices.push_back("tangents: " + std::to_string(r.zero_uv_area_triangles) +
+                        " triangle(s) with zero UV area: their corners take a neighbouring triangle's frame, " +
+                        std::to_string(r.fallback_tangent_corners) + " corner(s) without one a fixed frame from the normal" +
+                        (2 * r.zero_uv_area_triangles > r.triangles ? "; most of the mesh samples the normal map at single points (are its UVs real?)" : ""));
+  return out;
+}
+
+// The importer that read the scene, as assimp records it (AI_METADATA_SOURCE_FORMAT); else the extension.
+std::string format_of(const aiScene* s, const std::string& extension) {
+  aiString f;
+  if (s != nullptr && s->mMetaData != nullptr && s->mMetaData->Get(AI_METADATA_SOURCE_FORMAT, f) && f.length > 0) return f.C_Str();
+  return extension;
+}
+
+// The child's result as bytes: PODs copied, strings and vectors with their lengths in front.
+struct writer {
+  std::string out;
+  template <class T>
+  void pod(const T& v) { out.append(reinterpret_cast<const char*>(&v), sizeof v); }
+  void text(const std::string& t) { pod(t.size()); out += t; }
+  template <class T>
+  void pods(const std::vector<T>& v) {
+    pod(v.size());
+    if (!v.empty()) out.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
+  }
+};
+
+struct reader {
+  const std::string& in;
+  std::size_t at = 0;
+  void take(void* to, std::size_t n) {
+    if (n == 0) return;  // an empty vector's data() may be null
+    if (n > in.size() - at) throw std::runtime_error("the reader process returned a short result");
+    std::memcpy(to, in.data() + at, n);
+    at += n;
+  }
+  template <class T>
+  T pod() {
+    T v{};
+    take(&v, sizeof v);
+    return v;
+  }
+  std::string text() {
+    std::string t(std::min(pod<std::size_t>(), in.size() - at), '\0');
+    take(t.data(), t.size());
+    return t;
+  }
+  template <class T>
+  std::vector<T> pods() {
+    std::vector<T> v(std::min(pod<std::size_t>(), (in.size() - at) / sizeof(T)));
+    take(v.data(), v.size() * sizeof(T));
+    return v;
+  }
+};
+
+std::string serialise(const imported_mesh& m) {
+  writer w;
+  w.pods(m.model.vertices);
+  w.pods(m.model.triangles);
+  const import_report& r = m.report;
+  for (const std::string* t : {&r.file, &r.format, &r.normals, &r.uvs, &r.tangents}) w.text(*t);
+  for (std::size_t n : {r.meshes, r.instances, r.triangles, r.dropped_points, r.dropped_lines, r.dropped_degenerate, r.normals_generated,
+                        r.normals_renormalised, r.normals_replaced, r.zero_uv_area_triangles, r.fallback_tangent_corners})
+    w.pod(n);
+  w.pod(r.notices.size());
+  for (const std::string& n : r.notices) w.text(n);
+  w.pod(m.normal_texture.has_value());
+  if (m.normal_texture) {
+    const texture_ref& t = *m.normal_texture;
+    w.text(t.name);
+    w.text(t.file.string());
+    w.pods(t.embedded);
+    w.pod(t.raw.width);
+    w.pod(t.raw.height);
+    w.pod(t.raw.channels);
+    w.pods(t.raw.data);
+    w.pod(t.other_maps);
+    w.text(t.slot);
+  }
+  return std::move(w.out);
+}
+
+imported_mesh deserialise(const std::string& bytes) {
+  reader rd{bytes};
+  imported_mesh m;
+  m.model.vertices = rd.pods<vertex>();
+  m.model.triangles = rd.pods<std::array<std::uint32_t, 3>>();
+  import_report& r = m.report;
+  for (std::string* t : {&r.file, &r.format, &r.normals, &r.uvs, &r.tangents}) *t = rd.text();
+  for (std::size_t* n : {&r.meshes, &r.instances, &r.triangles, &r.dropped_points, &r.dropped_lines, &r.dropped_degenerate, &r.normals_generated,
+                         &r.normals_renormalised, &r.normals_replaced, &r.zero_uv_area_triangles, &r.fallback_tangent_corners})
+    *n = rd.pod<std::size_t>();
+  for (std::size_t i = 0, n = rd.pod<std::size_t>(); i < n && rd.at < bytes.size(); ++i) r.notices.push_back(rd.text());
+  if (rd.pod<bool>()) {
+    texture_ref t;
+    t.name = rd.text();
+    t.file = rd.text();
+    t.embedded = rd.pods<std::uint8_t>();
+    t.raw.width = rd.pod<int>();
+    t.raw.height = rd.pod<int>();
+    t.raw.channels = rd.pod<int>();
+    t.raw.data = rd.pods<std::uint8_t>();
+    t.other_maps = rd.pod<std::size_t>();
+    t.slot = rd.text();
+    m.normal_texture = std::move(t);
+  }
+  return m;
+}
+
+// Address space of the importing child: realistic assets of millions of triangles fit, a header
+// that claims 10^11 vertices does not.
+constexpr std::size_t import_address_space = std::size_t{3} << 30;
+constexpr rlim_t import_cpu_seconds = 120;  // a 100k-triangle OBJ takes 0.7 s
+
+}  // namespace
+
+imported_mesh import_mesh(const std::filesystem::path& file, const import_options& options) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(file, ec)) throw std::runtime_error(file.string() + ": cannot open the mesh");
+  std::string bytes;
+  try {
+    bytes = run_in_child(
+        [&] {
+          Assimp::Importer imp;
+          const aiScene* s = imp.ReadFile(file.string(), import_flags);
+          std::string ext = file.extension().string();
+          if (!ext.empty()) ext.erase(0, 1);
+          return serialise(from_scene(s, imp, file.string(), file.parent_path(), format_of(s, ext), options));
+        },
+        import_address_space, import_cpu_seconds);
+  } catch (const std::runtime_error& e) {
+    const std::string what = e.what(), prefix = file.string() + ": ";
+    throw std::runtime_error(what.compare(0, prefix.size(), prefix) == 0 ? what : prefix + what);
+  }
+  return deserialise(bytes);
+}
+
+imported_mesh import_mesh_from_memory(const std::string& bytes, const std::string& extension, const import_options& options) {
+  Assimp::Importer imp;
+  const aiScene* s = imp.ReadFileFromMemory(bytes.data(), bytes.size(), import_flags, extension.c_str());
+  return from_scene(s, imp, "<memory>." + extension, {}, format_of(s, extension), options);
+}
+
+}  // namespace gsdot3::pipeline

@@ -1,0 +1,71 @@
+// pipeline/mesh_import.hpp — meshes as modelling tools export them (OBJ, glTF 2.0 / GLB, PLY, FBX,
+// Collada, … whatever Debian's assimp 5.2 reads), turned into the renderer's mesh: every mesh of the
+// file merged with its node transforms, triangulated, checked, repaired where a repair is well
+// defined, with MikkTSpace tangents. Every repair is counted in the import report.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "pipeline/files.hpp"
+#include "pipeline/scene.hpp"
+
+namespace gsdot3::pipeline {
+
+enum class normals_mode { smooth, flat };               // for meshes without normals
+enum class uv_projection { none, box, sphere, planar };  // for meshes without UVs; none: refuse
+enum class tangent_mode { automatic, mikktspace };       // automatic: the file's tangents when it has them
+
+struct import_options {
+  normals_mode normals = normals_mode::smooth;
+  uv_projection uvs = uv_projection::none;
+  tangent_mode tangents = tangent_mode::automatic;
+};
+
+// The material's normal map: a file beside the mesh, or an image embedded in it (.glb).
+struct texture_ref {
+  std::string name;                    // as the mesh file names it
+  std::filesystem::path file;          // resolved path of an external image (empty when embedded)
+  std::vector<std::uint8_t> embedded;  // the encoded image (PNG, JPEG, TGA) when embedded
+  image raw;                           // or its texels, when the file embeds them uncompressed
+  std::size_t other_maps = 0;          // further materials naming other normal maps (one is used)
+  std::string slot;                    // "normal" (glTF normalTexture, MTL norm) or "bump" (MTL bump, map_Bump)
+};
+
+// What was read and what was done to it (report.json "input", and one stderr line per notice).
+struct import_report {
+  std::string file, format;
+  std::size_t meshes = 0, instances = 0, triangles = 0;      // source meshes, node instances, triangles kept
+  std::size_t dropped_points = 0, dropped_lines = 0, dropped_degenerate = 0;
+  std::string normals = "file";            // file | generated smooth | generated flat
+  // Normal repairs, counted in distinct vertex positions:
+  std::size_t normals_generated = 0;       // positions that had no normal in the file
+  std::size_t normals_renormalised = 0;    // non-unit normals scaled to unit length
+  std::size_t normals_replaced = 0;        // zero or NaN normals replaced by the generated smooth normal
+  std::string uvs = "file";                // file | box projection | sphere projection | planar projection
+  std::string tangents = "MikkTSpace (computed)";  // or "file (TANGENT)"
+  std::size_t zero_uv_area_triangles = 0, fallback_tangent_corners = 0;
+  std::vector<std::string> notices;        // one line each, in the order they arose
+};
+
+struct imported_mesh {
+  mesh model;
+  import_report report;
+  std::optional<texture_ref> normal_texture;
+};
+
+// Reads a mesh file. Throws std::runtime_error "FILE: why" (one line) for an importer error, no
+// triangles, NaN/Inf positions, out-of-range indices, or missing UVs with uv_projection::none.
+// The import runs in a child process with a 3 GiB address space and 120 s of CPU: an importer that
+// crashes, runs out of memory or loops on a malformed file is an error, not the end (or the hang)
+// of gsdot3 (child_process.hpp).
+imported_mesh import_mesh(const std::filesystem::path& file, const import_options& options = {});
+
+// The same from bytes in memory, in this process (the fuzz harness: a crash must be seen there);
+// `extension` ("obj", "glb", "ply", …) tells the importer the format.
+imported_mesh import_mesh_from_memory(const std::string& bytes, const std::string& extension, const import_options& options = {});
+
+}  // namespace gsdot3::pipeline

@@ -1,0 +1,307 @@
+// pipeline/mesh_repair.cpp — normals, UVs, tangents and merging (see mesh_repair.hpp).
+#include "pipeline/mesh_repair.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <unordered_map>
+
+#include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
+#include <glm/matrix.hpp>
+
+#include "pipeline/mikktspace.hpp"
+
+namespace gsdot3::pipeline {
+
+const char* const missing_uv_message =
+    "the mesh has no texture coordinates (UVs); a normal map needs them to place its texels on the surface "
+    "(give --uv-projection box|sphere|planar to generate them)";
+
+namespace {
+
+bool finite(glm::vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+// Zero area relative to the triangle's size (also true for NaN): the test compute_tangents uses.
+bool degenerate(glm::vec3 a, glm::vec3 b, glm::vec3 c) {
+  const glm::vec3 e1 = b - a, e2 = c - a;
+  const float scale = std::max({glm::length(e1), glm::length(e2), 1e-30f});
+  return !(glm::length(glm::cross(e1, e2)) > 1e-7f * scale * scale);
+}
+
+glm::vec3 face_normal(glm::vec3 a, glm::vec3 b, glm::vec3 c) { return glm::normalize(glm::cross(b - a, c - a)); }
+
+float corner_angle(glm::vec3 p, glm::vec3 a, glm::vec3 b) {
+  return std::acos(std::clamp(glm::dot(glm::normalize(a - p), glm::normalize(b - p)), -1.0f, 1.0f));
+}
+
+struct key3_hash {
+  std::size_t operator()(const std::array<std::uint32_t, 3>& k) const {
+    return (static_cast<std::size_t>(k[0]) * 73856093u) ^ (static_cast<std::size_t>(k[1]) * 19349663u) ^
+           (static_cast<std::size_t>(k[2]) * 83492791u);
+  }
+};
+std::array<std::uint32_t, 3> bits(glm::vec3 v) {
+  return {std::bit_cast<std::uint32_t>(v.x), std::bit_cast<std::uint32_t>(v.y), std::bit_cast<std::uint32_t>(v.z)};
+}
+
+// Smooth normals, angle-weighted (Thürmer and Wüthrich 1998): each triangle adds its unit normal
+// times its angle at the vertex; vertices at bit-identical positions share the sum, so UV seams do
+// not crease the shading. A zero sum gives a zero normal (the caller falls back to the face normal).
+std::vector<glm::vec3> smooth_normals(const source_mesh& m, const std::vector<char>& keep) {
+  std::unordered_map<std::array<std::uint32_t, 3>, glm::vec3, key3_hash> sum;
+  for (std::size_t t = 0; t < m.triangles.size(); ++t) {
+    if (!keep[t]) continue;
+    const auto& tri = m.triangles[t];
+    const glm::vec3 p[3] = {m.positions[tri[0]], m.positions[tri[1]], m.positions[tri[2]]};
+    const glm::vec3 n = face_normal(p[0], p[1], p[2]);
+    for (int k = 0; k < 3; ++k) sum[bits(p[k])] += corner_angle(p[k], p[(k + 1) % 3], p[(k + 2) % 3]) * n;
+  }
+  std::vector<glm::vec3> out(m.positions.size(), glm::vec3(0.0f));
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    const auto it = sum.find(bits(m.positions[i]));
+    if (it != sum.end() && glm::length(it->second) > 1e-12f) out[i] = glm::normalize(it->second);
+  }
+  return out;
+}
+
+struct box {
+  glm::vec3 lo{INFINITY}, hi{-INFINITY};
+  float extent() const { return std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z, 1e-30f}); }
+};
+
+// UVs generated from model-space positions, one repeat of the map across the model's largest extent
+// (v runs down the image, so it decreases with height).
+std::array<glm::vec2, 3> project(uv_projection how, const std::array<glm::vec3, 3>& p, const box& b) {
+  const float L = b.extent();
+  std::array<glm::vec2, 3> uv{};
+  auto along = [&](glm::vec3 q, int ua, int va) { return glm::vec2((q[ua] - b.lo[ua]) / L, (b.hi[va] - q[va]) / L); };
+  if (how == uv_projection::sphere) {
+    const glm::vec3 c = 0.5f * (b.lo + b.hi);
+    constexpr float pi = std::numbers::pi_v<float>;
+    for (int k = 0; k < 3; ++k) {
+      const glm::vec3 d = p[k] - c;
+      const float r = glm::length(d);
+      uv[k] = {0.5f + std::atan2(d.x, d.z) / (2 * pi), r > 0 ? std::acos(std::clamp(d.y / r, -1.0f, 1.0f)) / pi : 0.5f};
+    }
+    // A triangle across the back meridian (u jumps from ~1 to ~0) is moved onto one side of it.
+    const float umax = std::max({uv[0].x, uv[1].x, uv[2].x});
+    for (auto& q : uv)
+      if (umax - q.x > 0.5f) q.x += 1.0f;
+  } else if (how == uv_projection::planar) {
+    // The plane of the two largest extents.
+    const glm::vec3 e = b.hi - b.lo;
+    const int drop = e.x <= e.y && e.x <= e.z ? 0 : (e.y <= e.z ? 1 : 2);
+    const int ua = drop == 0 ? 2 : 0, va = drop == 1 ? 2 : 1;
+    for (int k = 0; k < 3; ++k) uv[k] = along(p[k], ua, va);
+  } else {  // box: each triangle onto the side of the box its normal faces most
+    const glm::vec3 n = glm::abs(glm::cross(p[1] - p[0], p[2] - p[0]));
+    const int axis = n.x >= n.y && n.x >= n.z ? 0 : (n.y >= n.z ? 1 : 2);
+    const int ua = axis == 0 ? 2 : 0, va = axis == 1 ? 2 : 1;
+    for (int k = 0; k < 3; ++k) uv[k] = along(p[k], ua, va);
+  }
+  return uv;
+}
+
+const char* projection_name(uv_projection how) {
+  switch (how) {
+    case uv_projection::box: return "box projection";
+    case uv_projection::sphere: return "sphere projection";
+    case uv_projection::planar: return "planar projection";
+    default: return "file";
+  }
+}
+
+struct corner {
+  glm::vec3 position, normal, tangent;
+  glm::vec2 uv;
+  float sign;
+};
+
+struct corner_hash {
+  std::size_t operator()(const std::array<std::uint32_t, 12>& k) const {
+    std::uint64_t h = 1469598103934665603ull;
+    for (std::uint32_t w : k) h = (h ^ w) * 1099511628211ull;
+    return static_cast<std::size_t>(h);
+  }
+};
+
+// Corners with identical attributes become one vertex.
+mesh weld(const std::vector<corner>& corners) {
+  mesh m;
+  std::unordered_map<std::array<std::uint32_t, 12>, std::uint32_t, corner_hash> ids;
+  std::array<std::uint32_t, 3> tri{};
+  for (std::size_t c = 0; c < corners.size(); ++c) {
+    const corner& k = corners[c];
+    const std::array<float, 12> f = {k.position.x, k.position.y, k.position.z, k.normal.x, k.normal.y, k.normal.z,
+                                     k.tangent.x,  k.tangent.y,  k.tangent.z,  k.uv.x,     k.uv.y,     k.sign};
+    std::array<std::uint32_t, 12> key{};
+    for (std::size_t i = 0; i < 12; ++i) key[i] = std::bit_cast<std::uint32_t>(f[i]);
+    const auto [it, fresh] = ids.try_emplace(key, static_cast<std::uint32_t>(m.vertices.size()));
+    if (fresh) m.vertices.push_back({k.position, k.normal, k.tangent, glm::cross(k.normal, k.tangent) * k.sign, k.uv});
+    tri[c % 3] = it->second;
+    if (c % 3 == 2) m.triangles.push_back(tri);
+  }
+  return m;
+}
+
+}  // namespace
+
+mesh build_mesh(const std::vector<source_mesh>& meshes, const std::vector<source_instance>& instances,
+                const import_options& options, import_report& report) {
+  // Model-space bounds (for generated UVs).
+  box b;
+  for (const source_instance& in : instances)
+    for (const glm::vec3& p : meshes[in.mesh].positions) {
+      const glm::vec3 q = glm::vec3(in.transform * glm::vec4(p, 1.0f));
+      b.lo = glm::min(b.lo, q);
+      b.hi = glm::max(b.hi, q);
+    }
+
+  std::vector<char> counted(meshes.size(), 0);
+  std::size_t meshes_file_tangents = 0, meshes_mikk = 0, meshes_generated_normals = 0;
+  std::vector<corner> all;
+  for (const source_instance& in : instances) {
+    const source_mesh& sm = meshes[in.mesh];
+    const bool first = !counted[in.mesh];
+    counted[in.mesh] = 1;
+    std::vector<char> keep(sm.triangles.size()), used(sm.positions.size(), 0);
+    for (std::size_t t = 0; t < sm.triangles.size(); ++t) {
+      const auto& tri = sm.triangles[t];
+      keep[t] = !degenerate(sm.positions[tri[0]], sm.positions[tri[1]], sm.positions[tri[2]]);
+      if (first && !keep[t]) ++report.dropped_degenerate;
+      if (keep[t]) used[tri[0]] = used[tri[1]] = used[tri[2]] = 1;
+    }
+
+    // Normals per vertex: the file's, repaired, or generated. Repairs are counted per distinct
+    // position (importers such as assimp's OBJ reader give every face corner its own vertex).
+    const std::vector<glm::vec3> smooth = smooth_normals(sm, keep);
+    std::vector<glm::vec3> normal(sm.positions.size(), glm::vec3(0.0f));  // zero: take the face normal
+    std::unordered_map<std::array<std::uint32_t, 3>, int, key3_hash> generated, replaced, renormalised;
+    for (std::size_t i = 0; i < sm.positions.size(); ++i) {
+      if (!used[i]) continue;
+      const auto at = bits(sm.positions[i]);
+      if (sm.normals.empty()) {
+        if (options.normals == normals_mode::smooth) normal[i] = smooth[i];
+        generated[at] = 1;
+        continue;
+      }
+      const glm::vec3 n = sm.normals[i];
+      const float len = glm::length(n);
+      if (!finite(n) || !(len > 1e-6f)) {
+        normal[i] = smooth[i];
+        replaced[at] = 1;
+      } else {
+        normal[i] = n / len;
+        if (std::fabs(len - 1.0f) > 1e-3f) renormalised[at] = 1;
+      }
+    }
+    if (first) {
+      meshes_generated_normals += sm.normals.empty();
+      report.normals_generated += generated.size();
+      report.normals_replaced += replaced.size();
+      report.normals_renormalised += renormalised.size();
+    }
+
+    // Corners in mesh space, with UVs.
+    std::vector<tangent_corner> tc;
+    std::vector<std::uint32_t> source;  // vertex of each corner
+    for (std::size_t t = 0; t < sm.triangles.size(); ++t) {
+      if (!keep[t]) continue;
+      const auto& tri = sm.triangles[t];
+      std::array<glm::vec3, 3> p{}, world{};
+      for (int k = 0; k < 3; ++k) {
+        p[k] = sm.positions[tri[k]];
+        world[k] = glm::vec3(in.transform * glm::vec4(p[k], 1.0f));
+      }
+      const glm::vec3 fn = face_normal(p[0], p[1], p[2]);
+      std::array<glm::vec2, 3> uv{};
+      if (!sm.uvs.empty()) {
+        for (int k = 0; k < 3; ++k) {
+          uv[k] = sm.uvs[tri[k]];
+          if (!std::isfinite(uv[k].x) || !std::isfinite(uv[k].y))
+            throw std::runtime_error("vertex " + std::to_string(tri[k]) + " has a non-finite UV (NaN or infinity)");
+        }
+      } else {
+        if (options.uvs == uv_projection::none) throw std::runtime_error(missing_uv_message);
+        uv = project(options.uvs, world, b);
+      }
+      for (int k = 0; k < 3; ++k) {
+        const glm::vec3 n = normal[tri[k]];
+        const bool flat = sm.normals.empty() && options.normals == normals_mode::flat;
+        tc.push_back({p[k], flat || glm::length(n) == 0.0f ? fn : n, uv[k]});
+        source.push_back(tri[k]);
+      }
+    }
+
+    // Tangents: the file's (all usable), else MikkTSpace. The file's bitangent points up the image;
+    // the renderer's bitangent points down it (v runs down), hence the sign's minus.
+    std::vector<corner_tangent> tan(tc.size());
+    bool from_file = !sm.tangents.empty() && options.tangents == tangent_mode::automatic;
+    for (std::size_t c = 0; from_file && c < tc.size(); ++c) {
+      const glm::vec3 n = tc[c].normal, t = sm.tangents[source[c]], bt = sm.bitangents[source[c]];
+      const glm::vec3 tp = t - n * glm::dot(n, t);
+      const float handed = glm::dot(glm::cross(n, tp), bt);
+      if (!finite(t) || !finite(bt) || !(glm::length(tp) > 1e-6f) || !(std::fabs(handed) > 0.0f)) {
+        if (first)
+          report.notices.push_back("tangents: the file's tangent at vertex " + std::to_string(source[c]) +
+                                   " is unusable (zero, NaN or along the normal); MikkTSpace tangents computed for that mesh instead");
+        from_file = false;
+        break;
+      }
+      tan[c] = {glm::normalize(tp), handed < 0.0f ? 1.0f : -1.0f};
+    }
+    if (!from_file) {
+      const mikktspace_result mr = mikktspace_tangents(tc);
+      tan = mr.corners;
+      if (first) {
+        report.zero_uv_area_triangles += mr.zero_uv_area_triangles;
+        report.fallback_tangent_corners += mr.fallback_corners;
+      }
+    }
+    if (first) ++(from_file ? meshes_file_tangents : meshes_mikk);
+
+    // Into model space: normals by the inverse transpose, tangent and bitangent as surface
+    // directions; a mirroring transform also reverses the winding (front faces stay counter-clockwise).
+    const glm::mat3 m3(in.transform), nm = glm::transpose(glm::inverse(m3));
+    const bool mirrored = glm::determinant(m3) < 0.0f;
+    for (std::size_t t = 0; t + 2 < tc.size(); t += 3) {
+      std::array<corner, 3> k{};
+      for (std::size_t i = 0; i < 3; ++i) {
+        const tangent_corner& c = tc[t + i];
+        const glm::vec3 n = glm::normalize(nm * c.normal);
+        glm::vec3 tt = m3 * tan[t + i].tangent;
+        const glm::vec3 bt = m3 * (glm::cross(c.normal, tan[t + i].tangent) * tan[t + i].sign);
+        tt = tt - n * glm::dot(n, tt);
+        k[i] = {glm::vec3(in.transform * glm::vec4(c.position, 1.0f)), n, glm::normalize(tt), c.uv,
+                glm::dot(glm::cross(n, tt), bt) < 0.0f ? -1.0f : 1.0f};
+      }
+      if (mirrored) std::swap(k[1], k[2]);
+      if (degenerate(k[0].position, k[1].position, k[2].position) || !finite(k[0].normal) || !finite(k[1].normal) ||
+          !finite(k[2].normal) || !finite(k[0].tangent) || !finite(k[1].tangent) || !finite(k[2].tangent)) {
+        ++report.dropped_degenerate;  // collapsed by its node's transform
+        continue;
+      }
+      all.insert(all.end(), k.begin(), k.end());
+    }
+  }
+  if (all.empty()) throw std::runtime_error("no triangles (0 faces after dropping points, lines and zero-area triangles)");
+
+  const std::string gen = options.normals == normals_mode::smooth ? "generated smooth (angle-weighted)" : "generated flat";
+  report.normals = meshes_generated_normals == 0 ? "file" : (meshes_generated_normals == report.meshes ? gen : "file + " + gen);
+  report.uvs = projection_name(std::all_of(meshes.begin(), meshes.end(), [](const source_mesh& m) { return !m.uvs.empty(); })
+                                   ? uv_projection::none
+                                   : options.uvs);
+  report.tangents = meshes_mikk == 0 ? "file (TANGENT)"
+                    : meshes_file_tangents == 0 ? "MikkTSpace (computed)"
+                                                : "file (TANGENT) for " + std::to_string(meshes_file_tangents) +
+                                                      " meshes, MikkTSpace (computed) for " + std::to_string(meshes_mikk);
+  mesh out = weld(all);
+  report.triangles = out.triangles.size();
+  validate(out);
+  return out;
+}
+
+}  // namespace gsdot3::pipeline

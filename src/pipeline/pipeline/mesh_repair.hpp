@@ -1,0 +1,42 @@
+// pipeline/mesh_repair.hpp — from the meshes of a file (any importer) to the renderer's mesh:
+// normals generated or repaired, UVs projected when asked, tangents from the file or MikkTSpace,
+// instances transformed into one space and merged. Counts go into the import report.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include "pipeline/mesh_import.hpp"
+
+namespace gsdot3::pipeline {
+
+// One mesh of the file in its own coordinates; triangles only, indices in range, positions finite.
+struct source_mesh {
+  std::vector<glm::vec3> positions;
+  std::vector<glm::vec3> normals;     // empty: the file has none
+  std::vector<glm::vec2> uvs;         // the renderer's convention (v runs down the image); empty: none
+  std::vector<glm::vec3> tangents;    // empty: none; with them:
+  std::vector<glm::vec3> bitangents;  // the file's bitangents (pointing up the image)
+  std::vector<std::array<std::uint32_t, 3>> triangles;
+};
+
+struct source_instance {
+  std::size_t mesh = 0;
+  glm::mat4 transform{1.0f};  // mesh coordinates to the model's
+};
+
+// Throws std::runtime_error (one line, without the file name) when no triangle is left, when a UV is
+// NaN/Inf, or when UVs are missing and options.uvs is uv_projection::none.
+mesh build_mesh(const std::vector<source_mesh>& meshes, const std::vector<source_instance>& instances,
+                const import_options& options, import_report& report);
+
+// The error for a mesh without UVs (also used by the CLI's help).
+extern const char* const missing_uv_message;
+
+}  // namespace gsdot3::pipeline

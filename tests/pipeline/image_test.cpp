@@ -1,0 +1,138 @@
+// Normal maps from images: the formats (PNG by libpng, JPEG by libjpeg-turbo, TGA by stb_image), the green-channel
+// convention, resampling to GS sizes, materials' maps found from a mesh, and hostile headers. The
+// image fixtures were written with stb_image_write (tests/data/README.md); expected normals follow
+// from the bytes written, n = rgb/127.5 − 1.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <functional>
+
+#include <glm/geometric.hpp>
+
+#include "pipeline/image_io.hpp"
+#include "pipeline/mesh_import.hpp"
+#include "pipeline/normal_map_image.hpp"
+
+namespace gsdot3::pipeline {
+namespace {
+
+namespace fs = std::filesystem;
+const fs::path meshes = fs::path(GSDOT3_TEST_DATA) / "meshes";
+const fs::path images = fs::path(GSDOT3_TEST_DATA) / "images";
+
+void expect_error(const std::function<void()>& f, const std::string& part) {
+  try {
+    f();
+    FAIL() << "no error; expected one containing '" << part << "'";
+  } catch (const std::runtime_error& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find(part), std::string::npos) << "message: " << what;
+    EXPECT_EQ(what.find('\n'), std::string::npos) << "message spans lines: " << what;
+  }
+}
+
+glm::vec3 texel(const normal_map& m, int x, int y) { return m.palette[m.index[static_cast<std::size_t>(y * m.width + x)]]; }
+
+TEST(NormalMapImage, TgaAndTheGreenConvention) {
+  // Every texel (128, 200, 200): green up the image is −y in the renderer's frame (v runs down).
+  const glm::vec3 raw = glm::normalize(glm::vec3(128 / 127.5f - 1, 200 / 127.5f - 1, 200 / 127.5f - 1));
+  normal_map_settings s;
+  const loaded_normal_map up = load_normal_map(meshes / "tilt_green.tga", s);
+  s.y = normal_map_y::down;
+  const loaded_normal_map down = load_normal_map(meshes / "tilt_green.tga", s);
+  EXPECT_EQ(up.format, "TGA");
+  ASSERT_EQ(up.map.palette.size(), 1u);
+  ASSERT_EQ(down.map.palette.size(), 1u);
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_NEAR(up.map.palette[0][i], i == 1 ? -raw[i] : raw[i], 1e-6f);
+    EXPECT_NEAR(down.map.palette[0][i], raw[i], 1e-6f);
+  }
+  EXPECT_FALSE(up.resampled);
+}
+
+TEST(NormalMapImage, JpegOfOddSizeIsResampled) {
+  const loaded_normal_map m = load_normal_map(meshes / "halves_24x20.jpg", {});
+  EXPECT_EQ(m.format, "JPEG");
+  EXPECT_TRUE(m.resampled);
+  EXPECT_EQ(m.map.width, 32);   // 2^round(log2 24) = 2^5
+  EXPECT_EQ(m.map.height, 16);  // 2^round(log2 20) = 2^4
+  // Left half written as (200, 128, 200), right half as (128, 128, 255); JPEG loses a little.
+  const glm::vec3 left = glm::normalize(glm::vec3(200 / 127.5f - 1, 0, 200 / 127.5f - 1));
+  EXPECT_GT(glm::dot(texel(m.map, 3, 8), left), 0.995f);
+  EXPECT_GT(glm::dot(texel(m.map, 28, 8), glm::vec3(0, 0, 1)), 0.995f);
+}
+
+TEST(NormalMapImage, TextureSideIsTheNearestPowerOfTwoInLogScale) {
+  // 2^round(log2 n), clamped to 8..1024; 724 < 512·√2 ≈ 724.08 < 725.
+  const std::pair<int, int> cases[] = {{1, 8}, {8, 8}, {11, 8}, {12, 16}, {100, 128}, {724, 512}, {725, 1024}, {1024, 1024}, {4096, 1024}};
+  for (const auto& [in, out] : cases) EXPECT_EQ(texture_side(in), out) << in;
+}
+
+TEST(NormalMapImage, BoxResamplingAveragesCoveredTexels) {
+  // 16×16 → 8×8: each output texel is the renormalised mean of a 2×2 block.
+  std::vector<glm::vec3> n(256);
+  for (int y = 0; y < 16; ++y)
+    for (int x = 0; x < 16; ++x) n[static_cast<std::size_t>(y * 16 + x)] = (x + y) % 2 ? glm::vec3(1, 0, 0) : glm::vec3(0, 0, 1);
+  const auto down = resample_normals(n, 16, 16, 8, 8);
+  for (const glm::vec3& v : down) {
+    EXPECT_NEAR(v.x, std::sqrt(0.5f), 1e-6f);
+    EXPECT_NEAR(v.z, std::sqrt(0.5f), 1e-6f);
+  }
+  // 3×1 → 8×1 (upsampling): output texel i covers [3i/8, 3(i+1)/8) of the source.
+  const std::vector<glm::vec3> row = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  const auto up = resample_normals(row, 3, 1, 8, 1);
+  EXPECT_EQ(up[0], glm::vec3(1, 0, 0));                                          // [0, 0.375)
+  EXPECT_NEAR(up[2].x, 1 / std::sqrt(1.0f + (0.125f / 0.25f) * (0.125f / 0.25f)), 1e-6f);  // [0.75, 1.125): 0.25 x, 0.125 y
+  EXPECT_EQ(up[7], glm::vec3(0, 0, 1));
+}
+
+TEST(NormalMapImage, MaterialsNameTheirNormalMaps) {
+  const imported_mesh norm = import_mesh(meshes / "quad_norm.obj");
+  ASSERT_TRUE(norm.normal_texture.has_value());
+  EXPECT_EQ(norm.normal_texture->slot, "normal");  // MTL norm
+  EXPECT_EQ(norm.normal_texture->file.filename(), "tilt_green.tga");
+  const imported_mesh bump = import_mesh(meshes / "quad_bump.obj");
+  ASSERT_TRUE(bump.normal_texture.has_value());
+  EXPECT_EQ(bump.normal_texture->slot, "bump");  // MTL map_Bump
+  EXPECT_EQ(bump.normal_texture->file.filename(), "halves_24x20.jpg");
+  const imported_mesh height = import_mesh(meshes / "quad_height.obj");
+  ASSERT_TRUE(height.normal_texture.has_value());
+  normal_map_settings s;
+  s.grey_is_height = true;
+  const loaded_normal_map h = load_normal_map(height.normal_texture->file, s);
+  EXPECT_TRUE(h.from_height);  // a grey bump image is a height map
+  EXPECT_FALSE(import_mesh(meshes / "cube_seams.obj").normal_texture.has_value());  // its .mtl is missing
+}
+
+TEST(NormalMapImage, GlbEmbeddedNormalMapDecodes) {
+  const imported_mesh im = import_mesh(meshes / "mikk_mirrored.glb");
+  ASSERT_TRUE(im.normal_texture.has_value());
+  const auto& e = im.normal_texture->embedded;
+  const loaded_normal_map m = load_normal_map(e.data(), e.size(), "embedded", {});
+  EXPECT_EQ(m.format, "PNG");
+  EXPECT_EQ(m.map.width, 16);
+  // The centred bump (gen.mjs): the texel right of centre leans +x; below centre, green < 128 in the
+  // file (leaning down the image) is +y in the renderer's v-down frame.
+  EXPECT_GT(texel(m.map, 14, 8).x, 0.3f);
+  EXPECT_GT(texel(m.map, 8, 14).y, 0.3f);
+}
+
+TEST(NormalMapImage, HostileImagesGiveOneLineErrors) {
+  expect_error([] { load_normal_map(images / "huge_header.png", {}); }, "the image is 65536x65536; at most 16384");
+  expect_error([] { load_normal_map(images / "huge_header.tga", {}); }, "huge_header.tga: ");
+  // A cut or overrunning RLE stream: stb_image decodes what is there (texels past the end are
+  // zero, read as the flat normal) or reports it; either way no crash and a well-formed map.
+  for (const char* f : {"cut_rle.tga", "overrun_rle.tga"}) {
+    try {
+      const loaded_normal_map m = load_normal_map(images / f, {});
+      EXPECT_EQ(m.map.index.size(), 256u);
+      EXPECT_FALSE(m.map.palette.empty());
+    } catch (const std::runtime_error& e) {
+      EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace gsdot3::pipeline
