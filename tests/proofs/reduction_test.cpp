@@ -149,7 +149,8 @@ TEST(Reduction, ErrorExtremesEqualBruteForceOnSubsampledNormals) {
 }
 
 TEST(Reduction, InterpolatedLightsDoNotWrapAtTheArguedS) {
-  // The argument of two-pass.max-s.interpolated says no span of <= 128 pixels wraps for s <= 123.
+  // Short spans (the pre-triangle model of two-pass.max-s.interpolated): no span of <= 128 pixels
+  // wraps for s <= 123, since the lag stays below 1 level per channel.
   // Brute force on the part of the domain nearest to wrapping: s = 123, the normals with iX = −127
   // (where the vertex wraps of s = 126 are), every ordered pair of vertex lights with n·l/128 >= 121.5
   // at Chebyshev distance 1, every span length and pixel; plain
