@@ -115,7 +115,7 @@ TEST(Reduction, PrunedWrapSearchEqualsBruteForceOnSmallerInstances) {
     const auto table_brute = tp::wrap_search_brute(normals, g, t, in.hi, in.lo, cfg);
     const auto plain = brute(normals, g, in.hi, in.lo);
     EXPECT_EQ(pruned.hits.count, plain.count) << "s " << in.s << " hi " << in.hi;
-    EXPECT_EQ(pruned.hits.first, plain.first) << "s " << in.s;
+    EXPECT_TRUE(pruned.hits.first == plain.first) << "s " << in.s;
     EXPECT_EQ(table_brute.hits.count, plain.count);
     EXPECT_LT(pruned.evaluated, table_brute.evaluated);
     if (in.s == 125) {
