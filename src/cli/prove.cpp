@@ -25,7 +25,7 @@ namespace gsdot3::cli {
 namespace {
 struct prove_args {
   std::vector<std::string> claims, options;
-  bool json = false, markdown = false, no_variants = false, list = false;
+  bool json = false, markdown = false, no_variants = false, list = false, brute_force = false;
   unsigned threads = 0;
   std::string shard, output;        // --shard K/N, --output FILE
   std::vector<std::string> parts;   // prove merge PARTS...
@@ -95,6 +95,7 @@ void run_prove(const prove_args& a, context& ctx) {
   proofs::run_config cfg;
   if (a.threads > 0) cfg.sweep.threads = a.threads;
   cfg.variants = !a.no_variants;
+  cfg.sweep.brute_force = a.brute_force;
   cfg.sweep.progress = [printer](double f) { printer->update(f); };
   cfg.starting = [printer](const proofs::claim& c) {
     printer->finish();
@@ -157,6 +158,9 @@ void add_prove_command(CLI::App& app, context& ctx) {
                   "K/N: evaluate only the K-th of N deterministic slices of the claim's sweeps (0 <= K < N) and write a "
                   "partial ledger (needs one --claim and --json; combine the N parts with `prove merge`)");
   cmd->add_option("-o,--output", args->output, "Write the ledger to FILE (atomically) instead of stdout");
+  cmd->add_flag("--brute-force", args->brute_force,
+                "Claims with a direct enumeration beside their reduction run it instead (two-pass.max-s.interpolated: "
+                "2^24 full-size lattice triangle cases; split it with --shard)");
   auto* merge = cmd->add_subcommand("merge", "Combine the partial ledgers of `prove --claim ID --shard K/N --json` (K = 0..N-1) into the ledger of the unsplit run");
   merge->add_option("parts", args->parts, "Partial ledger files, one per shard, any order")->check(CLI::ExistingFile);
   merge->allow_extras();  // the second and later PARTS (every option takes one value, main.cpp)

@@ -132,6 +132,26 @@ std::string describe_certificate(const triangle_case& c, const gs::model_options
          std::to_string(p.iZ) + ") alpha " + hexdec(p.alpha) + "; vertices 12.4 " + v + " with " + describe_light(c.light[0]) +
          ", " + describe_light(c.light[1]) + ", " + describe_light(c.light[2]) + buf + hexdec(r.dot);
 }
+
+// --brute-force (two_pass::triangle::brute_force): the lemma of the bound at full size. The light
+// does not depend on the model options (the Gouraud unit has none; truncate_to_8 is applied after,
+// in the multiply, and adds its 128 units to the bound), so every variant re-checks the same cases.
+outcome interpolated_brute_force(const gs::model_options&, const sweep_config& cfg) {
+  const auto r = two_pass::triangle::brute_force(cfg);
+  outcome out = verdict_of(r.violations, two_pass::triangle::brute_force_cases, [](std::uint64_t i) {
+    const auto c = two_pass::triangle::brute_force_case(i);
+    return "case " + std::to_string(i) + ": vertices (" + std::to_string(c.xy16[0]) + ", " + std::to_string(c.xy16[1]) + "), (" +
+           std::to_string(c.xy16[2]) + ", " + std::to_string(c.xy16[3]) + "), (" + std::to_string(c.xy16[4]) + ", " +
+           std::to_string(c.xy16[5]) + ") with " + describe_light(c.light[0]) + ", " + describe_light(c.light[1]) + ", " +
+           describe_light(c.light[2]) + " breaks |E| < 1 + a + b";
+  });
+  out.figures = {fig("pixels", static_cast<std::int64_t>(r.pixels)),
+                 fig("max_error_units", r.error_units.empty() ? 0 : r.error_units.max),
+                 fig("max_error_over_bound_ppm", r.ratio_ppm.empty() ? 0 : r.ratio_ppm.max)};
+  out.note = "brute force of the bound's lemma |L_c − P_c(pixel)| < 1 + a + b on lattice triangles of the full window × "
+             "4 lights of L_122 (every pixel centre in each closed triangle)";
+  return out;
+}
 }  // namespace
 
 outcome two_pass_max_s_interpolated(const gs::model_options& o, const sweep_config& cfg) {
@@ -146,7 +166,7 @@ outcome two_pass_max_s_interpolated(const gs::model_options& o, const sweep_conf
   //     Spans are the special case of a thin triangle; the old span bound (no wrap for s <= 123 on
   //     spans of <= 128 pixels) does not carry over, because the lag grows with the distance from
   //     the reference pixel (up to 2047/128 levels per axis), not with the span's 128 pixels.
-  (void)cfg;
+  if (cfg.brute_force) return interpolated_brute_force(o, cfg);
   const auto& normals = appendix2_normals();
   const int proven_safe = two_pass::triangle::bound_safe_s(o);
   int first_wrap = 128;

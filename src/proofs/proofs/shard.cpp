@@ -60,6 +60,7 @@ std::string run_shard(const claim& c, const gs::model_options& base, const run_c
   doc["shard"] = {{"k", shard.k}, {"n", shard.n}};
   doc["options"] = options_json(base);
   doc["variants"] = cfg.variants;
+  doc["brute_force"] = cfg.sweep.brute_force;
   nlohmann::ordered_json sweeps = nlohmann::ordered_json::array();
   for (const auto& r : log->sweeps) {
     nlohmann::ordered_json parts = nlohmann::ordered_json::array();
@@ -75,7 +76,7 @@ merged merge_shards(const std::vector<std::string>& parts, const run_config& cfg
   auto log = std::make_shared<shard_log>();
   log->m = shard_log::mode::replay;
   std::string claim_id, options;
-  bool variants = true;
+  bool variants = true, brute = false;
   unsigned n = 0;
   std::vector<bool> seen;
   for (std::size_t i = 0; i < parts.size(); ++i) {
@@ -91,13 +92,13 @@ merged merge_shards(const std::vector<std::string>& parts, const run_config& cfg
       const auto id = j.at("claim").get<std::string>();
       const auto opts = j.at("options").dump();
       const auto k = j.at("shard").at("k").get<unsigned>(), nn = j.at("shard").at("n").get<unsigned>();
-      const bool var = j.at("variants").get<bool>();
+      const bool var = j.at("variants").get<bool>(), bf = j.at("brute_force").get<bool>();
       if (i == 0) {
-        claim_id = id, options = opts, n = nn, variants = var;
+        claim_id = id, options = opts, n = nn, variants = var, brute = bf;
         seen.assign(n, false);
       }
-      if (id != claim_id || opts != options || var != variants || nn != n)
-        throw std::invalid_argument("part " + std::to_string(i + 1) + " is of another run (claim, options, variants or N differ)");
+      if (id != claim_id || opts != options || var != variants || bf != brute || nn != n)
+        throw std::invalid_argument("part " + std::to_string(i + 1) + " is of another run (claim, options, variants, brute force or N differ)");
       if (k >= n || seen[k]) throw std::invalid_argument("shard " + std::to_string(k) + "/" + std::to_string(n) + " given twice");
       seen[k] = true;
       for (const auto& s : j.at("sweeps")) {
@@ -120,6 +121,7 @@ merged merge_shards(const std::vector<std::string>& parts, const run_config& cfg
     if (auto err = gs::set_option(o, item.key(), item.value().get<std::string>())) throw std::invalid_argument(*err);
   run_config rc = cfg;
   rc.variants = variants;
+  rc.sweep.brute_force = brute;
   rc.sweep.shard = log;
   merged m{run_claim(*c, o, rc), 0};
   m.recomputed_chunks = log->recomputed;

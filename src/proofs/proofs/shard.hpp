@@ -4,7 +4,7 @@
 // the sweep engine's, proofs/sweep.hpp shard_log).
 //
 // Partial ledger (JSON): {"partial_ledger": 1, "claim": id, "shard": {"k", "n"}, "options": {every
-// model option: value}, "variants": bool, "sweeps": [{"eval", "call", "n", "chunks", "kind",
+// model option: value}, "variants": bool, "brute_force": bool, "sweeps": [{"eval", "call", "n", "chunks", "kind",
 // "parts": [[chunk, "hex bytes"], ...]}, ...]}. The bytes are the chunks' accumulators as this build
 // lays them out: merge parts made by the same gsdot3 binary.
 #pragma once

@@ -58,13 +58,15 @@ struct sweep_config {
   std::function<void(double)> progress;
   // Set for a shard run or a merge (see shard_log); sweeps are then called one at a time.
   std::shared_ptr<shard_log> shard;
+  // A claim with a direct enumeration besides its reduction evaluates that instead (--brute-force).
+  bool brute_force = false;
 };
 
 // Runs body(acc, begin, end) over [0, n) in chunks; Acc needs a default constructor and
-// merge(const Acc& later). Chunk boundaries depend only on n.
+// merge(const Acc& later). Chunk boundaries depend only on n and max_chunks (a sweep whose indices
+// are costly asks for more, so that shards can be small).
 template <class Acc, class Body>
-Acc sweep(std::uint64_t n, const sweep_config& cfg, Body&& body) {
-  constexpr std::uint64_t max_chunks = 512;
+Acc sweep(std::uint64_t n, const sweep_config& cfg, Body&& body, std::uint64_t max_chunks = 512) {
   const std::uint64_t chunk = std::max<std::uint64_t>(1, (n + max_chunks - 1) / max_chunks);
   const std::uint64_t chunks = n == 0 ? 0 : (n + chunk - 1) / chunk;
   std::vector<Acc> parts(chunks);

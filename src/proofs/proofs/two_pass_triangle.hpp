@@ -11,6 +11,8 @@
 #include "gs_arith/texture_function.hpp"
 #include "proofs/domains.hpp"
 #include "proofs/paper_code.hpp"
+#include "proofs/sweep.hpp"
+#include "proofs/verdict.hpp"
 
 namespace gsdot3::proofs::two_pass::triangle {
 
@@ -66,5 +68,25 @@ constexpr int max_error_units(const gs::model_options& o) noexcept {
 bool cannot_wrap(const paper::packed_normal& p, int e, int s, const gs::model_options& o) noexcept;
 // The largest s such that no normal can wrap for any s' <= s by that bound (0 if none).
 int bound_safe_s(const gs::model_options& o);
+
+// --brute-force: the bound's one lemma, |L_c − P_c(pixel)| < 1 + a + b, checked directly at full
+// size against the exact rational plane, on every triangle whose vertices lie on an 8 × 8 lattice
+// spanning the window (step 256 pixels plus a 12.4 fraction that differs per point, every ordered
+// triple, 2^18) × every ordered triple of 4 lights of L_122 (2^6), every pixel centre in the closed
+// triangle (a superset of the covered pixels). 2^24 cases of ~10^5 pixels each: a run for a
+// cluster, split with --shard (65 536 chunks).
+struct brute_force_acc {
+  tally violations;           // cases with a pixel breaking the lemma
+  extremes ratio_ppm;         // max over pixels of |E_c| / (1 + a + b), in millionths
+  extremes error_units;       // max |E_c| (8.7 units, rounded down)
+  std::uint64_t pixels = 0;
+  void merge(const brute_force_acc& later) {
+    violations.merge(later.violations), ratio_ppm.merge(later.ratio_ppm), error_units.merge(later.error_units);
+    pixels += later.pixels;
+  }
+};
+inline constexpr std::uint64_t brute_force_cases = std::uint64_t{1} << 24;
+triangle_case brute_force_case(std::uint64_t index);  // s, iX, iY unused (0)
+brute_force_acc brute_force(const sweep_config& cfg);
 
 }  // namespace gsdot3::proofs::two_pass::triangle
