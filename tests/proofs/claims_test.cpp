@@ -257,6 +257,7 @@ TEST(Claims, TwoPassMaxSInterpolated) {
   EXPECT_EQ(fig(o, "first_wrapping_s"), 100);
   EXPECT_EQ(fig(o, "s_max_upper"), 99);
   EXPECT_EQ(fig(o, "certificates_not_wrapping"), 1);  // the truncate_to_8 row for s = 100
+  EXPECT_EQ(o.witnesses.size(), 5u);                   // s = 100, 122, 123, 124, 125
   const auto& t = variant("two-pass.max-s.interpolated", "gouraud_fraction", "truncate_to_8");
   EXPECT_EQ(t.result, p::verdict::refuted);
   EXPECT_EQ(fig(t, "s_max"), 68);
