@@ -30,6 +30,16 @@ std::string describe_pair(const paper::packed_normal& p, const ivec3& l, const g
          hexdec(r.dot) + ", floor(n·l/128) = " + std::to_string(two_pass::exact_dot(p, l));
 }
 
+// Domain option tolight = attenuated_T (|T| <= 1, §3.5's per-vertex attenuation): the lights are the
+// ball Σ l² <= s² instead of its shell. Every argument of these claims uses only |l| <= s (the error
+// terms r_c, the value bounds of two_pass::wrap_search, the triangle bound), so their bounds hold on
+// the ball, and every extreme and witness found is a unit-T light, a member of the ball: the outcome
+// is the same. tests/proofs/reduction_test.cpp checks it against brute force over the ball at s = 40.
+outcome for_domain(outcome o, const sweep_config& cfg) {
+  if (cfg.domain.light == domain_options::tolight::attenuated)
+    o.note += " (tolight = attenuated_T: the same on the ball of lights, by the bounds' use of |l| <= s only)";
+  return o;
+}
 }  // namespace
 
 outcome two_pass_error_bound(const gs::model_options& o, const sweep_config& cfg) {
@@ -59,7 +69,7 @@ outcome two_pass_error_bound(const gs::model_options& o, const sweep_config& cfg
                    "err_max: " + describe_pair(normals[err.arg_max / nl], g.lights[err.arg_max % nl], o)};
   out.note = "per-pixel result − floor(n·l/128) over normals × packed lights (s = 122): the floors of the "
              "split products and the n'_a rounding add up to ±3";
-  return out;
+  return for_domain(std::move(out), cfg);
 }
 
 namespace {
@@ -102,7 +112,7 @@ outcome two_pass_max_s_vertex(const gs::model_options& o, const sweep_config& cf
   out.counterexamples = static_cast<std::uint64_t>(wrapping);
   out.note = "no Appendix 2 normal and no vertex-packed light wraps for s <= " + std::to_string(s_max) +
              " (s <= 125 by the bound, larger s by the pruned exhaustive search); the paper's 122 is safe";
-  return out;
+  return for_domain(std::move(out), cfg);
 }
 
 }  // namespace gsdot3::proofs::claims
@@ -209,7 +219,7 @@ outcome two_pass_max_s_interpolated(const gs::model_options& o, const sweep_conf
              " wraps (error bound, |E| < 1 + a + b units per channel). s = " + std::to_string(proven_safe + 1) + ".." +
              std::to_string(first_wrap - 1) + " is bracketed, not settled: the bound counts both axes' lag at full size, "
              "the certificates use one";
-  return out;
+  return for_domain(std::move(out), cfg);
 }
 
 }  // namespace gsdot3::proofs::claims

@@ -128,7 +128,11 @@ std::string ledger_markdown(const std::vector<claim_result>& results) {
         "  applied per vertex. The claim takes each sphere-map texel as a vertex's own direction (tangent-space\n"
         "  normal (0, 0, 1), so n·l = the texel's z); a pixel between vertices sees an interpolated fade, which\n"
         "  the text does not pin down. The text supports the per-vertex reading the claim uses at vertices.\n\n"
-        "These are not yet run-time domain options with verdicts under each (issue 13, left open).\n";
+        "Each is a domain option of the claims it affects — `tolight` = unit_T | attenuated_T,\n"
+        "`normal_map` = n_z_nonnegative | full_sphere, `fade_att` = texel_z | any_vertex (defaults first) — and\n"
+        "every claim below is also evaluated under the other value (its `Option` lines). `attenuated_T` is\n"
+        "argued (the bounds use only |l| <= s) and checked by brute force at s = 40; `any_vertex` lets a vertex\n"
+        "facing the light (fade 1) meet any texel, so the faded domain is the plain one.\n";
   for (const auto& r : results) {
     os << "\n## " << r.row->id << "\n\n";
     os << "- Paper: " << r.row->paper << ". " << r.row->statement << ".\n";

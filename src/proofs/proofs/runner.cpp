@@ -1,5 +1,6 @@
 #include "proofs/runner.hpp"
 
+#include <algorithm>
 #include <chrono>
 
 namespace gsdot3::proofs {
@@ -31,6 +32,21 @@ claim_result run_claim(const claim& c, const gs::model_options& base, const run_
           v.changed = !same(v.result, r.result);
           r.variants.push_back(std::move(v));
         }
+      }
+    }
+  }
+  if (cfg.variants) {
+    for (const auto& info : domain_option_catalogue()) {
+      if (std::find(info.claims.begin(), info.claims.end(), c.id) == info.claims.end()) continue;
+      const auto current = domain_option_value(cfg.sweep.domain, info.name);
+      for (auto value : info.values) {
+        if (value == current) continue;
+        run_config d = cfg;
+        (void)set_domain_option(d.sweep.domain, info.name, value);
+        if (d.sweep.shard) d.sweep.shard->begin_evaluation();
+        option_variant v{std::string(info.name), std::string(value), c.evaluate(base, d.sweep), false};
+        v.changed = !same(v.result, r.result);
+        r.variants.push_back(std::move(v));
       }
     }
   }

@@ -17,6 +17,8 @@
 #include <thread>
 #include <vector>
 
+#include "proofs/domain_options.hpp"
+
 namespace gsdot3::proofs {
 
 // Sharding splits a sweep across processes (machines) the way the thread pool splits it across
@@ -60,6 +62,8 @@ struct sweep_config {
   std::shared_ptr<shard_log> shard;
   // A claim with a direct enumeration besides its reduction evaluates that instead (--brute-force).
   bool brute_force = false;
+  // The input-set choices of the claims (proofs/domain_options.hpp).
+  domain_options domain;
 };
 
 // Runs body(acc, begin, end) over [0, n) in chunks; Acc needs a default constructor and
