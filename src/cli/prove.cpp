@@ -1,11 +1,15 @@
 // gsdot3 prove — runs the proof catalogue (src/proofs) and prints its ledger: as a table, as one JSON
 // document (--json), or as the Markdown of docs/claims.md (--markdown). Progress goes to stderr for
-// claims that take longer than a second. Exit 0 when the catalogue ran (refutations are results),
+// claims that take longer than a second. `--shard K/N` and `prove merge` split one claim's sweeps
+// across processes (proofs/shard.hpp; docs/sharding.md). Exit 0 when the catalogue ran (refutations are results),
 // 2 for bad arguments or an unknown claim id.
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <memory>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -15,6 +19,7 @@
 #include "proofs/claim.hpp"
 #include "proofs/ledger.hpp"
 #include "proofs/runner.hpp"
+#include "proofs/shard.hpp"
 
 namespace gsdot3::cli {
 
@@ -22,9 +27,34 @@ namespace {
 struct prove_args {
   std::vector<std::string> claims, options;
   std::string profile;
-  bool json = false, markdown = false, no_variants = false, list = false;
+  bool json = false, markdown = false, no_variants = false, list = false, brute_force = false;
   unsigned threads = 0;
+  std::string shard, output;        // --shard K/N, --output FILE
+  std::vector<std::string> parts;   // prove merge PARTS...
 };
+
+// The ledger text on stdout, or into FILE through a temporary name and a rename (no half-written file).
+void emit(const std::string& text, const std::string& output) {
+  if (output.empty()) {
+    std::cout << text;
+    return;
+  }
+  const std::string tmp = output + ".tmp";
+  {
+    std::ofstream f(tmp, std::ios::binary);
+    f << text;
+    if (!f.flush()) throw usage_error("--output: cannot write '" + tmp + "'");
+  }
+  std::error_code ec;
+  std::filesystem::rename(tmp, output, ec);
+  if (ec) throw usage_error("--output: cannot rename to '" + output + "': " + ec.message());
+}
+
+std::string ledger_as(const std::vector<proofs::claim_result>& results, const prove_args& a) {
+  if (a.json) return proofs::ledger_json(results);
+  if (a.markdown) return proofs::ledger_markdown(results);
+  return proofs::ledger_text(results);
+}
 
 // Progress on stderr, only once a claim has run for more than a second.
 struct progress_printer {
@@ -69,16 +99,51 @@ void run_prove(const prove_args& a, context& ctx) {
   proofs::run_config cfg;
   if (a.threads > 0) cfg.sweep.threads = a.threads;
   cfg.variants = !a.no_variants;
+  cfg.sweep.brute_force = a.brute_force;
   cfg.sweep.progress = [printer](double f) { printer->update(f); };
   cfg.starting = [printer](const proofs::claim& c) {
     printer->finish();
     *printer = progress_printer{std::string(c.id)};
   };
+  if (!a.shard.empty()) {
+    const auto shard = proofs::parse_shard(a.shard);
+    if (!shard) throw usage_error("--shard: expected K/N with 0 <= K < N, got '" + a.shard + "'");
+    if (selected.size() != 1 || a.claims.empty()) throw usage_error("--shard needs exactly one --claim ID");
+    if (!a.json) throw usage_error("--shard writes a partial ledger: add --json");
+    cfg.starting(*selected[0]);
+    const auto text = proofs::run_shard(*selected[0], opts, cfg, *shard);
+    printer->finish();
+    emit(text, a.output);
+    ctx.exit_code = 0;
+    return;
+  }
   const auto results = proofs::run(selected, opts, cfg);
   printer->finish();
-  if (a.json) std::cout << proofs::ledger_json(results);
-  else if (a.markdown) std::cout << proofs::ledger_markdown(results);
-  else std::cout << proofs::ledger_text(results);
+  emit(ledger_as(results, a), a.output);
+  ctx.exit_code = 0;
+}
+
+void run_merge(const prove_args& a, context& ctx) {
+  if (a.json && a.markdown) throw usage_error("--json and --markdown are exclusive");
+  std::vector<std::string> texts;
+  for (const auto& path : a.parts) {
+    std::ifstream f(path, std::ios::binary);
+    if (!f) throw usage_error("merge: cannot read '" + path + "'");
+    std::ostringstream ss;
+    ss << f.rdbuf();
+    texts.push_back(ss.str());
+  }
+  proofs::run_config cfg;
+  if (a.threads > 0) cfg.sweep.threads = a.threads;
+  try {
+    const auto m = proofs::merge_shards(texts, cfg);
+    if (m.recomputed_chunks > 0)
+      std::fprintf(stderr, "gsdot3 prove merge: %llu chunks were in no part and were computed here\n",
+                   static_cast<unsigned long long>(m.recomputed_chunks));
+    emit(ledger_as({m.result}, a), a.output);
+  } catch (const std::invalid_argument& e) {
+    throw usage_error(std::string("merge: ") + e.what());
+  }
   ctx.exit_code = 0;
 }
 }  // namespace
@@ -95,7 +160,30 @@ void add_prove_command(CLI::App& app, context& ctx) {
   cmd->add_flag("--no-variants", args->no_variants, "Skip the re-runs under the other option values");
   cmd->add_option("--threads", args->threads, "Worker threads (default: all cores)")->check(CLI::Range(1U, 256U));
   cmd->add_flag("--list", args->list, "List the claim ids and exit");
-  cmd->callback([args, &ctx] {
+  cmd->add_option("--shard", args->shard,
+                  "K/N: evaluate only the K-th of N deterministic slices of the claim's sweeps (0 <= K < N) and write a "
+                  "partial ledger (needs one --claim and --json; combine the N parts with `prove merge`)");
+  cmd->add_option("-o,--output", args->output, "Write the ledger to FILE (atomically) instead of stdout");
+  cmd->add_flag("--brute-force", args->brute_force,
+                "Claims with a direct enumeration beside their reduction run it instead (two-pass.max-s.interpolated: "
+                "2^24 full-size lattice triangle cases; split it with --shard)");
+  auto* merge = cmd->add_subcommand("merge", "Combine the partial ledgers of `prove --claim ID --shard K/N --json` (K = 0..N-1) into the ledger of the unsplit run");
+  merge->add_option("parts", args->parts, "Partial ledger files, one per shard, any order")->check(CLI::ExistingFile);
+  merge->allow_extras();  // the second and later PARTS (every option takes one value, main.cpp)
+  merge->add_flag("--json", args->json, "Print the ledger as one JSON document");
+  merge->add_flag("--markdown", args->markdown, "Print the ledger as Markdown");
+  merge->add_option("--threads", args->threads, "Worker threads for chunks no part holds (default: all cores)")->check(CLI::Range(1U, 256U));
+  merge->add_option("-o,--output", args->output, "Write the ledger to FILE (atomically) instead of stdout");
+  merge->callback([args, merge, &ctx] {
+    for (const auto& extra : merge->remaining()) {
+      if (extra.starts_with("-")) throw usage_error("merge: unknown option '" + extra + "'");
+      args->parts.push_back(extra);
+    }
+    if (args->parts.empty()) throw usage_error("merge: no partial ledger files given");
+    run_merge(*args, ctx);
+  });
+  cmd->callback([args, merge, &ctx] {
+    if (merge->parsed()) return;
     if (args->list) {
       for (const auto& c : proofs::catalogue()) std::cout << c.id << "\t" << c.paper << "\n";
       ctx.exit_code = 0;

@@ -21,7 +21,7 @@ TEST(Tally, CountsEverythingAndKeepsTheFirstWitnessesInOrder) {
   left.merge(right);
   EXPECT_EQ(left.count, 7u);
   ASSERT_EQ(left.first.size(), p::witness_cap);
-  EXPECT_EQ(left.first, (std::vector<std::uint64_t>{3, 5, 8, 10}));
+  EXPECT_TRUE(left.first == (std::vector<std::uint64_t>{3, 5, 8, 10}));
 }
 
 TEST(Extremes, KeepTheEarliestIndexOnTies) {
@@ -74,7 +74,7 @@ TEST(Sweep, SameResultForAnyThreadCountAndEqualToAPlainLoop) {
     for (unsigned threads : {1u, 2u, 3u}) {
       const auto r = run_synthetic(n, threads);
       EXPECT_EQ(r.t.count, count) << "n " << n << " threads " << threads;
-      EXPECT_EQ(r.t.first, first);
+      EXPECT_TRUE(r.t.first == first);
       if (n > 0) {
         EXPECT_EQ(r.e.min, mn);
         EXPECT_EQ(r.e.arg_min, amn);

@@ -58,7 +58,7 @@ const std::vector<claim>& catalogue() {
        {"tfx_rounding", "blend_shift"}, c::two_pass_max_s_vertex},
       {"two-pass.max-s.interpolated", "§3.5",
        "s = 122 avoids wrapping for the barycentrically interpolated light vectors; the largest safe s",
-       "every span of <= 128 pixels between two packed vertex lights (8.7 Gouraud) × every Appendix 2 normal (size: spans × pixels per normal at s = 122)",
+       "every triangle in the GS's 2048² window (12.4 vertices) × three packed vertex lights × every covered pixel (8.7 Gouraud, gs::gouraud_triangle) × every Appendix 2 normal (size: the normals × s bound evaluations and the certificates)",
        M::reduction, {"tfx_rounding", "gouraud_fraction", "blend_shift"}, c::two_pass_max_s_interpolated},
       {"four-pass.channel-exact", "§3.6",
        "each pass's signed multiplication is identical to a char multiplication a·b with a signed >> 7, offset by 128",

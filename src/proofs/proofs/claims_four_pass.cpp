@@ -110,13 +110,18 @@ outcome four_pass_sum_wrap(const gs::model_options& o, const sweep_config& cfg) 
   // sum mod 256 (eq9.rgb-sum: exact iff the sum is in [−128, 127]).
   constexpr int size = 64;
   const auto lights = sphere_map_vectors(size);
-  const auto normals = normal_map_vectors();
+  // Domain options: normal_map = full_sphere adds the vectors with n_z < 0; fade_att = any_vertex
+  // takes the fade from a vertex whose direction is not the pixel's texel, so a vertex facing the
+  // light (fade 1) can meet any texel: the faded domain contains the plain one, and is it.
+  const auto normals = normal_map_vectors(cfg.domain.normals == domain_options::normal_map::full_sphere);
   const four_pass::table t(o);
   const auto plain = sum_sweep(lights, normals, t, cfg);
   std::vector<ivec3> faded_lights;
+  const bool any_vertex = cfg.domain.fade == domain_options::fade_source::any_vertex;
   for (int y = 0; y < size; ++y)
-    for (int x = 0; x < size; ++x) faded_lights.push_back(faded(paper::sphere_map_texel(x, y, size, size), o));
-  const auto with_fade = sum_sweep(faded_lights, normals, t, cfg);
+    for (int x = 0; x < size; ++x)
+      faded_lights.push_back(any_vertex ? lights[static_cast<std::size_t>(y * size + x)] : faded(paper::sphere_map_texel(x, y, size, size), o));
+  const auto with_fade = any_vertex ? plain : sum_sweep(faded_lights, normals, t, cfg);
   const std::uint64_t nn = normals.size();
   auto describe = [&](const std::vector<ivec3>& ls, std::uint64_t i) {
     const auto& a = ls[i / nn];

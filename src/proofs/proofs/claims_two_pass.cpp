@@ -3,12 +3,12 @@
 #include <cstdio>
 #include <string>
 
-#include "gs_arith/gouraud.hpp"
 #include "proofs/claim_util.hpp"
 #include "proofs/claims.hpp"
 #include "proofs/domains.hpp"
 #include "proofs/methods.hpp"
 #include "proofs/two_pass.hpp"
+#include "proofs/two_pass_triangle.hpp"
 
 namespace gsdot3::proofs::claims {
 
@@ -30,6 +30,16 @@ std::string describe_pair(const paper::packed_normal& p, const ivec3& l, const g
          hexdec(r.dot) + ", floor(n·l/128) = " + std::to_string(two_pass::exact_dot(p, l));
 }
 
+// Domain option tolight = attenuated_T (|T| <= 1, §3.5's per-vertex attenuation): the lights are the
+// ball Σ l² <= s² instead of its shell. Every argument of these claims uses only |l| <= s (the error
+// terms r_c, the value bounds of two_pass::wrap_search, the triangle bound), so their bounds hold on
+// the ball, and every extreme and witness found is a unit-T light, a member of the ball: the outcome
+// is the same. tests/proofs/reduction_test.cpp checks it against brute force over the ball at s = 40.
+outcome for_domain(outcome o, const sweep_config& cfg) {
+  if (cfg.domain.light == domain_options::tolight::attenuated)
+    o.note += " (tolight = attenuated_T: the same on the ball of lights, by the bounds' use of |l| <= s only)";
+  return o;
+}
 }  // namespace
 
 outcome two_pass_error_bound(const gs::model_options& o, const sweep_config& cfg) {
@@ -59,7 +69,7 @@ outcome two_pass_error_bound(const gs::model_options& o, const sweep_config& cfg
                    "err_max: " + describe_pair(normals[err.arg_max / nl], g.lights[err.arg_max % nl], o)};
   out.note = "per-pixel result − floor(n·l/128) over normals × packed lights (s = 122): the floors of the "
              "split products and the n'_a rounding add up to ±3";
-  return out;
+  return for_domain(std::move(out), cfg);
 }
 
 namespace {
@@ -102,7 +112,7 @@ outcome two_pass_max_s_vertex(const gs::model_options& o, const sweep_config& cf
   out.counterexamples = static_cast<std::uint64_t>(wrapping);
   out.note = "no Appendix 2 normal and no vertex-packed light wraps for s <= " + std::to_string(s_max) +
              " (s <= 125 by the bound, larger s by the pruned exhaustive search); the paper's 122 is safe";
-  return out;
+  return for_domain(std::move(out), cfg);
 }
 
 }  // namespace gsdot3::proofs::claims
@@ -110,87 +120,106 @@ outcome two_pass_max_s_vertex(const gs::model_options& o, const sweep_config& cf
 namespace gsdot3::proofs::claims {
 
 namespace {
-// Wrapping pixels found by bench/proofs_span_search (a search over spans between nearby vertex
-// lights of the cap around each candidate normal). They are certificates: each run re-derives the
-// span through the model's Gouraud unit and the pixel through the two-pass passes, and a
-// certificate that no longer wraps is reported, not trusted.
-struct span_certificate {
-  int s, iX, iY;
-  ivec3 l0, l1;
-  int pixels, k;
-};
-constexpr span_certificate certificates[] = {
-    {125, -123, -26, {-121, -24, 20}, {-120, -26, 23}, 65, 35},
-};
-constexpr int span_max_pixels = 128;
+// The certificates (two_pass::triangle::certificates()) are re-derived on every run: the pixel's
+// light through gs::gouraud_triangle and the pixel through the two-pass passes; one that does not
+// wrap under the options in force is counted (certificates_not_wrapping), not trusted.
+using two_pass::triangle::triangle_case;
 
+std::string describe_certificate(const triangle_case& c, const gs::model_options& o) {
+  const auto p = paper::pack_normal_from(c.iX, c.iY);
+  const auto light = two_pass::triangle::pixel_light(c);
+  const auto r = two_pass::pixel(p, light, o);
+  std::string v;
+  for (std::size_t k = 0; k < 3; ++k) {
+    char b[48];
+    std::snprintf(b, sizeof b, "%s(0x%04x, 0x%04x)", k == 0 ? "" : ", ", c.xy16[2 * k], c.xy16[2 * k + 1]);
+    v += b;
+  }
+  char buf[200];
+  std::snprintf(buf, sizeof buf, "; pixel (%d, %d) => light 8.7 (0x%04x, 0x%04x, 0x%04x), value %d, DPB dot ", c.px, c.py,
+                light.r.value(), light.g.value(), light.b.value(), r.value);
+  return "s = " + std::to_string(c.s) + ": n = (" + std::to_string(p.iX) + ", " + std::to_string(p.iY) + ", " +
+         std::to_string(p.iZ) + ") alpha " + hexdec(p.alpha) + "; vertices 12.4 " + v + " with " + describe_light(c.light[0]) +
+         ", " + describe_light(c.light[1]) + ", " + describe_light(c.light[2]) + buf + hexdec(r.dot);
+}
+
+// --brute-force (two_pass::triangle::brute_force): the lemma of the bound at full size. The light
+// does not depend on the model options (the Gouraud unit has none; truncate_to_8 is applied after,
+// in the multiply, and adds its 128 units to the bound), so every variant re-checks the same cases.
+outcome interpolated_brute_force(const gs::model_options&, const sweep_config& cfg) {
+  const auto r = two_pass::triangle::brute_force(cfg);
+  outcome out = verdict_of(r.violations, two_pass::triangle::brute_force_cases, [](std::uint64_t i) {
+    const auto c = two_pass::triangle::brute_force_case(i);
+    return "case " + std::to_string(i) + ": vertices (" + std::to_string(c.xy16[0]) + ", " + std::to_string(c.xy16[1]) + "), (" +
+           std::to_string(c.xy16[2]) + ", " + std::to_string(c.xy16[3]) + "), (" + std::to_string(c.xy16[4]) + ", " +
+           std::to_string(c.xy16[5]) + ") with " + describe_light(c.light[0]) + ", " + describe_light(c.light[1]) + ", " +
+           describe_light(c.light[2]) + " breaks |E| < 1 + a + b";
+  });
+  out.figures = {fig("pixels", static_cast<std::int64_t>(r.pixels)),
+                 fig("max_error_units", r.error_units.empty() ? 0 : r.error_units.max),
+                 fig("max_error_over_bound_ppm", r.ratio_ppm.empty() ? 0 : r.ratio_ppm.max)};
+  out.note = "brute force of the bound's lemma |L_c − P_c(pixel)| < 1 + a + b on lattice triangles of the full window × "
+             "4 lights of L_122 (every pixel centre in each closed triangle)";
+  return out;
+}
 }  // namespace
 
 outcome two_pass_max_s_interpolated(const gs::model_options& o, const sweep_config& cfg) {
-  // Domain: every span (scanline or edge) of n <= 128 pixels between two vertex lights of L_s
-  // (packed_lights), every pixel k in 0..n, light colour from gs::gouraud_span / gouraud_at (8.7,
-  // steps truncated toward zero), against every Appendix 2 normal. Far too large to enumerate
-  // (|L_s|² · Σ (n + 1)); reduction:
-  // (1) s <= 123 never wraps. Pixel k's 8.7 channel is 128·l0 + k·trunc(128·Δ/n): it lags the exact
-  //     segment point p = l0 + (k/n)·Δ by less than k/128 <= 1 per component, and |p| <= s. The
-  //     bounds of two_pass::wrap_search hold for 8.7 lights too (q_c = floor / ceil of n_c·l_c/128),
-  //     so value < n·l/128 + 2 + e <= s + |n|_1/128 + 3 < s + 4.74 and value > −s − 1.74 − 4:
-  //     −s − 5 <= value <= s + 4, inside [−128, 127] for s <= 123.
-  // (2) Wraps at larger s are shown by certificates (above), re-verified here through the model; the
-  //     vertex wraps of two-pass.max-s.vertex (s = 126) are pixels k = 0 of every span.
-  //     With gouraud_fraction = truncate_to_8 the channel is further truncated to an integer (lag < 2
-  //     per component): −s − 7 <= value <= s + 6, safe for s <= 121.
-  // s between the proven bound and the first certified wrap is left undecided: reported as the gap.
-  (void)cfg;
+  // Domain: every triangle the GS can draw in its 2048² window (vertices in 12.4), three vertex
+  // lights of L_s (packed_lights), every pixel it covers, the light from gs::gouraud_triangle with
+  // the pipeline's reference pixel (two_pass_triangle.hpp), against every Appendix 2 normal. Far too
+  // large to enumerate; settled by:
+  // (1) safe s: the error bound of two_pass::triangle::cannot_wrap (argument beside it): a pixel's
+  //     light is its exact plane value plus less than 1 + a + b 8.7 units per channel, a + b up to
+  //     4094 pixels from the reference, i.e. up to 32 levels. Evaluated per normal for every s.
+  // (2) wraps: certificates (above), re-verified here; each refutes "s avoids wrapping" at its s.
+  //     Spans are the special case of a thin triangle; the old span bound (no wrap for s <= 123 on
+  //     spans of <= 128 pixels) does not carry over, because the lag grows with the distance from
+  //     the reference pixel (up to 2047/128 levels per axis), not with the span's 128 pixels.
+  if (cfg.brute_force) return interpolated_brute_force(o, cfg);
   const auto& normals = appendix2_normals();
-  const int proven_safe = o.gouraud == gs::gouraud_fraction::keep_fraction ? 123 : 121;
-  int first_wrap = 126;  // two-pass.max-s.vertex: vertex pixels wrap at s = 126
+  const int proven_safe = two_pass::triangle::bound_safe_s(o);
+  int first_wrap = 128;
   std::vector<std::string> witnesses;
-  tally failed;
+  tally failed, wrapping;
   std::uint64_t index = 0;
-  for (const auto& c : certificates) {
+  for (const auto& c : two_pass::triangle::certificates()) {
     const auto p = paper::pack_normal_from(c.iX, c.iY);
-    const bool normal_ok = c.iX * c.iX + c.iY * c.iY <= 16358;
-    const bool lights_ok = is_packed_light(c.s, c.l0) && is_packed_light(c.s, c.l1) && c.pixels >= 1 &&
-                           c.pixels <= span_max_pixels && c.k >= 0 && c.k <= c.pixels;
-    auto colour = [](const ivec3& l) {
-      return gs::rgba8{methods::byte(128 + l[0]), methods::byte(128 + l[1]), methods::byte(128 + l[2]), methods::byte(0x80)};
-    };
-    const auto light = gs::gouraud_at(gs::gouraud_span(colour(c.l0), colour(c.l1), c.pixels), c.k);
-    const auto r = two_pass::pixel(p, light, o);
-    const bool wraps = r.dot != r.value;
-    if (normal_ok && lights_ok && wraps) {
+    bool ok = c.iX * c.iX + c.iY * c.iY <= 16358;
+    for (const auto& l : c.light) ok = ok && is_packed_light(c.s, l);
+    for (int v : c.xy16) ok = ok && v >= 0 && v <= (two_pass::triangle::window_pixels - 1) * 16;
+    const auto r = two_pass::pixel(p, two_pass::triangle::pixel_light(c), o);
+    if (ok && r.dot != r.value) {
       first_wrap = std::min(first_wrap, c.s);
-      char buf[160];
-      std::snprintf(buf, sizeof buf, " => light 8.7 (0x%04x, 0x%04x, 0x%04x), value %d, DPB dot ", light.r.value(),
-                    light.g.value(), light.b.value(), r.value);
-      witnesses.push_back("s = " + std::to_string(c.s) + ": n = (" + std::to_string(p.iX) + ", " + std::to_string(p.iY) +
-                          ", " + std::to_string(p.iZ) + "), span of " + std::to_string(c.pixels) + " pixels from " +
-                          describe_light(c.l0) + " to " + describe_light(c.l1) + ", pixel " + std::to_string(c.k) + buf +
-                          hexdec(r.dot));
+      wrapping.add(index);
+      witnesses.push_back(describe_certificate(c, o));
     } else {
       failed.add(index);
     }
     ++index;
   }
+  const bool paper_wraps = std::any_of(two_pass::triangle::certificates().begin(), two_pass::triangle::certificates().end(), [&](const triangle_case& c) {
+    const auto r = two_pass::pixel(paper::pack_normal_from(c.iX, c.iY), two_pass::triangle::pixel_light(c), o);
+    return c.s == paper_s && r.dot != r.value;
+  });
   outcome out;
-  out.result = verdict::bound;
-  // Per normal at s = 122: |L_122|² spans of each length n, n + 1 pixels each.
-  const std::uint64_t l122 = packed_lights(paper_s).size();
-  out.domain_size = l122 * l122 * static_cast<std::uint64_t>((span_max_pixels + 1) * (span_max_pixels + 2) / 2 - 1);
-  out.counterexamples = failed.count;
+  out.result = paper_wraps ? verdict::refuted : verdict::bound;
+  out.domain_size = normals.size() * static_cast<std::uint64_t>(proven_safe + 1) + two_pass::triangle::certificates().size();
+  out.counterexamples = wrapping.count;
   out.figures = {fig("s_max", proven_safe), fig("s_max_upper", first_wrap - 1), fig("first_wrapping_s", first_wrap),
-                 fig("paper_s", paper_s), fig("margin", proven_safe - paper_s), fig("span_max_pixels", span_max_pixels),
-                 fig("certificates_failed", static_cast<std::int64_t>(failed.count)),
+                 fig("paper_s", paper_s), fig("window_pixels", two_pass::triangle::window_pixels),
+                 fig("certificates_not_wrapping", static_cast<std::int64_t>(failed.count)),
                  fig("normals", static_cast<std::int64_t>(normals.size()))};
   out.witnesses = std::move(witnesses);
-  out.note = "Gouraud-interpolated lights never wrap for s <= " + std::to_string(proven_safe) +
-             " (argument); a pixel wraps at s = " + std::to_string(first_wrap) + " (certificate); " +
-             (first_wrap - 1 == proven_safe + 1 ? "s = " + std::to_string(proven_safe + 1)
-                                                : "s = " + std::to_string(proven_safe + 1) + ".." + std::to_string(first_wrap - 1)) +
-             " is undecided. The truncated Gouraud steps let a pixel's light stick out of the vertex sphere, so the "
-             "safe s is below the vertex one; the paper's 122 is still safe";
-  return out;
+  out.note = "on whole triangles the paper's s = " + std::to_string(paper_s) +
+             (paper_wraps ? " wraps" : " is not shown to wrap") + ": a pixel ~2030 pixels from the plane's reference pixel "
+             "misses the truncated fraction of each 8.7 step, up to 16 levels per channel, and that pushes its light out "
+             "of the vertex sphere along the normal. Wraps are certified from s = " + std::to_string(first_wrap) +
+             " and at s = 122..125 (certificates, each a refutation at its s, under either gouraud_fraction); no s <= " + std::to_string(proven_safe) +
+             " wraps (error bound, |E| < 1 + a + b units per channel). s = " + std::to_string(proven_safe + 1) + ".." +
+             std::to_string(first_wrap - 1) + " is bracketed, not settled: the bound counts both axes' lag at full size, "
+             "the certificates use one";
+  return for_domain(std::move(out), cfg);
 }
 
 }  // namespace gsdot3::proofs::claims

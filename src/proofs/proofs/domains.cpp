@@ -41,6 +41,15 @@ bool is_packed_light(int s, const ivec3& l) noexcept {
   return near <= s * s && s * s < ax * ax + ay * ay + az * az;
 }
 
+std::vector<ivec3> attenuated_lights(int s) {
+  std::vector<ivec3> out;
+  for (int x = -s; x <= s; ++x)
+    for (int y = -s; y <= s; ++y)
+      for (int z = -s; z <= s; ++z)
+        if (x * x + y * y + z * z <= s * s) out.push_back({x, y, z});
+  return out;
+}
+
 std::vector<ivec3> packed_lights(int s) {
   std::vector<ivec3> out;
   for (int x = -s; x <= s; ++x)
@@ -50,14 +59,14 @@ std::vector<ivec3> packed_lights(int s) {
   return out;
 }
 
-std::vector<ivec3> normal_map_vectors() {
+std::vector<ivec3> normal_map_vectors(bool full_sphere) {
   std::vector<ivec3> out;
   const int r4 = 4 * 127 * 127;
   auto lo = [](int b) { const int v = 2 * std::abs(b) - 1; return v > 0 ? v * v : 0; };
   auto hi = [](int b) { const int v = 2 * std::abs(b) + 1; return v * v; };
   for (int x = -127; x <= 127; ++x)
     for (int y = -127; y <= 127; ++y)
-      for (int z = 0; z <= 127; ++z)
+      for (int z = full_sphere ? -127 : 0; z <= 127; ++z)
         if (lo(x) + lo(y) + lo(z) <= r4 && r4 <= hi(x) + hi(y) + hi(z)) out.push_back({x, y, z});
   return out;
 }

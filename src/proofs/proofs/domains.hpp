@@ -29,11 +29,15 @@ const std::vector<paper::packed_normal>& appendix2_normals();  // computed once
 // Σ k_i² <= s² < Σ (|k_i| + 1)².
 std::vector<ivec3> packed_lights(int s);
 bool is_packed_light(int s, const ivec3& l) noexcept;  // the membership test above
+// The domain option tolight = attenuated_T: (char)(s·T) for |T| <= 1 is every cell whose nearest
+// point is in the ball, Σ k_i² <= s² (the shell above and its inside).
+std::vector<ivec3> attenuated_lights(int s);
 
 // Every 8-bit normal-map vector b = round(127·n) of a unit n with n_z >= 0 (section 3.6; stored
 // centred at 128). The cell [b − ½, b + ½] meets the sphere of radius 127 iff
 // Σ max(2|b_i| − 1, 0)² <= 4·127² <= Σ (2|b_i| + 1)² (ties are measure-zero and taken as reachable).
-std::vector<ivec3> normal_map_vectors();
+// full_sphere: any unit n (z from −127), the domain option normal_map=full_sphere.
+std::vector<ivec3> normal_map_vectors(bool full_sphere = false);
 
 // Appendix 1's sphere map of size × size: each texel's signed vector a = 128 − (r, g, b) (the zero
 // vector outside the disc), in texel order.

@@ -122,6 +122,28 @@ std::string ledger_markdown(const std::vector<claim_result>& results) {
     }() << ") | " << r.row->paper << " | " << verdict_text(r.result) << " | " << r.result.domain_size << " | "
        << (changes.empty() ? "—" : changes) << " |\n";
   }
+  os << "\n## Domain choices\n\n"
+        "Three input sets are taken, not confirmed by the paper's code; what its text (Mikkelsen 2004,\n"
+        "`../shared/seeds/000_fe07726062b04b44.txt`) supports:\n\n"
+        "- **Lights packed from a real unit T** (two-pass claims): eq. (2) packs \"the normalized direction\n"
+        "  towards the light source T\", `(char)(s·T)`, which is the shell `packed_lights` enumerates. §3.5 also\n"
+        "  allows \"per vertex attenuation ... by scaling down the vectors towards the light source\", i.e. any\n"
+        "  |T| <= 1. Every wrap argument here uses only |l| <= s, so the safe bounds hold for attenuated lights\n"
+        "  too, and the witnesses (unit T) stay witnesses; the text supports unit T as the case that matters.\n"
+        "- **Normal-map vectors with n_z >= 0** (`four-pass.sum-wrap`, `lod.two-vs-four`): Appendix 2 computes\n"
+        "  the two-pass normal's z as `sqrt(...)` (never negative) from \"the unit length normal in tangent\n"
+        "  space\", and §3.6 uses \"a traditional normal map as known from the PC\"; a tangent-space normal\n"
+        "  points out of the surface, so the text supports n_z >= 0.\n"
+        "- **fade_att from the texel's own z** (`four-pass.sum-wrap`): §3.6 defines fade_att = clamp(6·(n·l), 0, 1)\n"
+        "  with n·l \"between the unit length vertex normal and the unit length direction towards the light\",\n"
+        "  applied per vertex. The claim takes each sphere-map texel as a vertex's own direction (tangent-space\n"
+        "  normal (0, 0, 1), so n·l = the texel's z); a pixel between vertices sees an interpolated fade, which\n"
+        "  the text does not pin down. The text supports the per-vertex reading the claim uses at vertices.\n\n"
+        "Each is a domain option of the claims it affects — `tolight` = unit_T | attenuated_T,\n"
+        "`normal_map` = n_z_nonnegative | full_sphere, `fade_att` = texel_z | any_vertex (defaults first) — and\n"
+        "every claim below is also evaluated under the other value (its `Option` lines). `attenuated_T` is\n"
+        "argued (the bounds use only |l| <= s) and checked by brute force at s = 40; `any_vertex` lets a vertex\n"
+        "facing the light (fade 1) meet any texel, so the faded domain is the plain one.\n";
   section = claim::mikkelsen_section;
   for (const auto& r : results) {
     if (r.row->section != section) {

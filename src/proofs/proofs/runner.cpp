@@ -1,5 +1,6 @@
 #include "proofs/runner.hpp"
 
+#include <algorithm>
 #include <chrono>
 
 namespace gsdot3::proofs {
@@ -12,7 +13,12 @@ bool same(const outcome& a, const outcome& b) {
 
 claim_result run_claim(const claim& c, const gs::model_options& base, const run_config& cfg) {
   const auto t0 = std::chrono::steady_clock::now();
-  claim_result r{&c, base, c.evaluate(base, cfg.sweep), {}, 0};
+  // A shard run or merge numbers the evaluations so that each sweep is matched with its own.
+  auto evaluate = [&](const gs::model_options& o) {
+    if (cfg.sweep.shard) cfg.sweep.shard->begin_evaluation();
+    return c.evaluate(o, cfg.sweep);
+  };
+  claim_result r{&c, base, evaluate(base), {}, 0};
   if (cfg.variants) {
     for (auto name : c.depends_on) {
       const auto current = gs::option_value(base, name);
@@ -22,10 +28,25 @@ claim_result run_claim(const claim& c, const gs::model_options& base, const run_
           if (value == current) continue;
           gs::model_options o = base;
           gs::set_option(o, name, value);
-          option_variant v{std::string(name), std::string(value), c.evaluate(o, cfg.sweep), false};
+          option_variant v{std::string(name), std::string(value), evaluate(o), false};
           v.changed = !same(v.result, r.result);
           r.variants.push_back(std::move(v));
         }
+      }
+    }
+  }
+  if (cfg.variants) {
+    for (const auto& info : domain_option_catalogue()) {
+      if (std::find(info.claims.begin(), info.claims.end(), c.id) == info.claims.end()) continue;
+      const auto current = domain_option_value(cfg.sweep.domain, info.name);
+      for (auto value : info.values) {
+        if (value == current) continue;
+        run_config d = cfg;
+        (void)set_domain_option(d.sweep.domain, info.name, value);
+        if (d.sweep.shard) d.sweep.shard->begin_evaluation();
+        option_variant v{std::string(info.name), std::string(value), c.evaluate(base, d.sweep), false};
+        v.changed = !same(v.result, r.result);
+        r.variants.push_back(std::move(v));
       }
     }
   }

@@ -7,6 +7,8 @@
 // earliest witnesses, so the result does not depend on how the domain was split between threads.
 #pragma once
 
+#include <algorithm>
+#include <array>
 #include <cstdint>
 #include <limits>
 #include <string>
@@ -44,10 +46,29 @@ struct outcome {
 // How many witnesses a claim reports at most.
 inline constexpr std::size_t witness_cap = 4;
 
+// At most `witness_cap` domain indices in a fixed array, so that every accumulator built from
+// tally / extremes / integers is trivially copyable (a shard writes its chunks' accumulators as bytes).
+struct index_list {
+  std::array<std::uint64_t, witness_cap> at{};
+  std::size_t n = 0;
+  void push_back(std::uint64_t i) noexcept { at[n++] = i; }
+  std::size_t size() const noexcept { return n; }
+  bool empty() const noexcept { return n == 0; }
+  const std::uint64_t* begin() const noexcept { return at.data(); }
+  const std::uint64_t* end() const noexcept { return at.data() + n; }
+  std::uint64_t operator[](std::size_t k) const noexcept { return at[k]; }
+  friend bool operator==(const index_list& a, const index_list& b) noexcept {
+    return std::equal(a.begin(), a.end(), b.begin(), b.end());
+  }
+  friend bool operator==(const index_list& a, const std::vector<std::uint64_t>& b) noexcept {
+    return std::equal(a.begin(), a.end(), b.begin(), b.end());
+  }
+};
+
 // Counterexamples: their number and the first `witness_cap` domain indices.
 struct tally {
   std::uint64_t count = 0;
-  std::vector<std::uint64_t> first;
+  index_list first;
 
   void add(std::uint64_t index) {
     ++count;

@@ -1,0 +1,154 @@
+#include "proofs/two_pass_triangle.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "gs_arith/gouraud.hpp"
+#include "proofs/methods.hpp"
+#include "proofs/two_pass.hpp"
+
+namespace gsdot3::proofs::two_pass::triangle {
+
+namespace {
+constexpr triangle_case certificate_table[] = {
+    {100, -105, -54, {{{-82, -46, 34}, {-77, -48, 42}, {34, 63, -69}}}, {32521, 0, 0, 32752, 32521, 32752}, 2032, 1},
+    {100, -106, -58, {{{-82, -46, 34}, {-77, -48, 42}, {34, 63, -69}}}, {32521, 0, 0, 32752, 32521, 32752}, 2032, 1},  // truncate_to_8
+    {122, -127, -15, {{{-122, 0, 0}, {-106, -46, 39}, {21, 81, -88}}}, {32552, 0, 0, 32752, 32552, 32752}, 2034, 1},
+    {123, -127, -15, {{{-123, 0, 0}, {-108, -44, 39}, {19, 83, -88}}}, {32552, 0, 0, 32752, 32552, 32752}, 2034, 1},
+    {124, -127, -15, {{{-124, 0, 0}, {-109, -49, 33}, {18, 78, -94}}}, {32552, 0, 0, 32752, 32552, 32752}, 2034, 1},
+    {125, -127, -15, {{{-125, 0, 0}, {-83, -69, 63}, {60, 74, -80}}}, {32576, 0, 0, 32752, 32576, 32752}, 2035, 2},
+};
+}  // namespace
+
+std::span<const triangle_case> certificates() noexcept { return certificate_table; }
+
+gs::rgba8 light_colour(const ivec3& l) noexcept {
+  return {methods::byte(128 + l[0]), methods::byte(128 + l[1]), methods::byte(128 + l[2]), methods::byte(0x80)};
+}
+
+namespace {
+// ceil(v / 16) for a 12.4 value (pipeline/raster.hpp ceil_124).
+constexpr int ceil_124(int v) noexcept { return static_cast<int>((static_cast<std::int64_t>(v) + 15) >> 4); }
+}  // namespace
+
+gs::fragment_colour pixel_light(const triangle_case& c) noexcept {
+  std::array<gs::gouraud_vertex, 3> v{};
+  int x_ref = 1 << 16, y_ref = 1 << 16;
+  for (std::size_t k = 0; k < 3; ++k) {
+    const int x = c.xy16[2 * k], y = c.xy16[2 * k + 1];
+    v[k] = {x + xy_offset_pixels * 16, y + xy_offset_pixels * 16, light_colour(c.light[k])};
+    x_ref = std::min(x_ref, ceil_124(x));
+    y_ref = std::min(y_ref, ceil_124(y));
+  }
+  const auto plane = gs::gouraud_triangle(v[0], v[1], v[2], x_ref + xy_offset_pixels, y_ref + xy_offset_pixels);
+  if (!plane) return gs::fragment_colour::flat(light_colour(c.light[2]));  // zero area: covers nothing
+  return gs::gouraud_at(*plane, c.px + xy_offset_pixels, c.py + xy_offset_pixels);
+}
+
+namespace {
+std::int64_t isqrt_ceil(std::int64_t v) {
+  std::int64_t r = static_cast<std::int64_t>(std::sqrt(static_cast<double>(v)));
+  while (r * r < v) ++r;
+  while (r > 0 && (r - 1) * (r - 1) >= v) --r;
+  return r;
+}
+}  // namespace
+
+namespace {
+// The largest s (0 .. 127) for which the bound of cannot_wrap holds for this normal: the reach
+// len·s·128 + l1·E grows with s, so that is every s below the least failing one.
+int safe_s(std::int64_t len, std::int64_t l1, int neg, int e, const gs::model_options& o) {
+  const std::int64_t err = l1 * max_error_units(o);
+  const std::int64_t top = std::int64_t{16384} * (128 - neg - e) - err, bottom = std::int64_t{16384} * (129 - (3 - neg) + e) - err;
+  const std::int64_t room = std::min(top, bottom) - 1;  // reach <= room
+  if (room < 0) return 0;
+  return static_cast<int>(std::min<std::int64_t>(127, room / (len * 128)));
+}
+}  // namespace
+
+bool cannot_wrap(const paper::packed_normal& p, int e, int s, const gs::model_options& o) noexcept {
+  const std::int64_t len = isqrt_ceil(std::int64_t{p.iX} * p.iX + std::int64_t{p.iY} * p.iY + std::int64_t{p.iZ} * p.iZ);
+  const std::int64_t l1 = std::abs(p.iX) + std::abs(p.iY) + std::abs(p.iZ);
+  const int neg = (p.iX < 0) + (p.iY < 0) + (p.iZ < 0), nonneg = 3 - neg;
+  // reach = (|n|·s·128 + |n|_1·E) / 16384, compared without division: value < reach + neg + e.
+  const std::int64_t reach = len * s * 128 + l1 * max_error_units(o);
+  return reach < std::int64_t{16384} * (128 - neg - e) && reach < std::int64_t{16384} * (129 - nonneg + e);
+}
+
+int bound_safe_s(const gs::model_options& o) {
+  const two_pass::table t(o);
+  int s = 127;
+  for (const auto& p : appendix2_normals()) {
+    const std::int64_t len = isqrt_ceil(std::int64_t{p.iX} * p.iX + std::int64_t{p.iY} * p.iY + std::int64_t{p.iZ} * p.iZ);
+    const int neg = (p.iX < 0) + (p.iY < 0) + (p.iZ < 0);
+    s = std::min(s, safe_s(len, std::abs(p.iX) + std::abs(p.iY) + std::abs(p.iZ), neg, t.alpha_error(p), o));
+  }
+  return s;
+}
+
+triangle_case brute_force_case(std::uint64_t index) {
+  static const std::vector<ivec3> lights = [] {
+    const auto all = packed_lights(122);
+    return std::vector<ivec3>{all[0], all[all.size() / 4], all[all.size() / 2], all[3 * all.size() / 4]};
+  }();
+  triangle_case c{0, 0, 0, {}, {}, 0, 0};
+  const std::uint64_t light_part = index & 63, tri = index >> 6;
+  for (std::size_t k = 0; k < 3; ++k) {
+    const std::uint64_t point = (tri >> (6 * k)) & 63;
+    const int i = static_cast<int>(point & 7), j = static_cast<int>(point >> 3);
+    c.xy16[2 * k] = std::min(4096 * i + 5 * i + 3 * j, (window_pixels - 1) * 16);
+    c.xy16[2 * k + 1] = std::min(4096 * j + 7 * j + 2 * i, (window_pixels - 1) * 16);
+    c.light[k] = lights[(light_part >> (2 * k)) & 3];
+  }
+  return c;
+}
+
+brute_force_acc brute_force(const sweep_config& cfg) {
+  return sweep<brute_force_acc>(
+      brute_force_cases, cfg,
+      [](brute_force_acc& acc, std::uint64_t begin, std::uint64_t end) {
+        for (std::uint64_t i = begin; i < end; ++i) {
+          const triangle_case c = brute_force_case(i);
+          const std::int64_t x0 = c.xy16[0], y0 = c.xy16[1];
+          const std::int64_t ax = c.xy16[2] - x0, ay = c.xy16[3] - y0, bx = c.xy16[4] - x0, by = c.xy16[5] - y0;
+          const std::int64_t det = ax * by - bx * ay;
+          if (det == 0) continue;
+          const std::int64_t sign = det > 0 ? 1 : -1, adet = det * sign;
+          const int xmin = ceil_124(std::min({c.xy16[0], c.xy16[2], c.xy16[4]})), ymin = ceil_124(std::min({c.xy16[1], c.xy16[3], c.xy16[5]}));
+          const int xmax = std::max({c.xy16[0], c.xy16[2], c.xy16[4]}) >> 4, ymax = std::max({c.xy16[1], c.xy16[3], c.xy16[5]}) >> 4;
+          // the plane once (pixel_light's set-up, read per pixel)
+          std::array<gs::gouraud_vertex, 3> v{};
+          for (std::size_t k = 0; k < 3; ++k)
+            v[k] = {c.xy16[2 * k] + xy_offset_pixels * 16, c.xy16[2 * k + 1] + xy_offset_pixels * 16, light_colour(c.light[k])};
+          const auto plane = gs::gouraud_triangle(v[0], v[1], v[2], xmin + xy_offset_pixels, ymin + xy_offset_pixels);
+          std::int64_t c0[3], d1[3], d2[3];
+          for (std::size_t ch = 0; ch < 3; ++ch)
+            c0[ch] = 128 + c.light[0][ch], d1[ch] = c.light[1][ch] - c.light[0][ch], d2[ch] = c.light[2][ch] - c.light[0][ch];
+          bool bad = false;
+          for (int y = ymin; y <= ymax; ++y)
+            for (int x = xmin; x <= xmax; ++x) {
+              const std::int64_t qx = 16 * x - x0, qy = 16 * y - y0;
+              // barycentric numerators (×det): inside the closed triangle iff all have det's sign
+              const std::int64_t u = (by * qx - bx * qy) * sign, w = (ax * qy - ay * qx) * sign;
+              if (u < 0 || w < 0 || u + w > adet) continue;
+              ++acc.pixels;
+              const auto f = gs::gouraud_at(*plane, x + xy_offset_pixels, y + xy_offset_pixels);
+              const int L[3] = {f.r.value(), f.g.value(), f.b.value()};
+              const std::int64_t bound = 1 + (x - xmin) + (y - ymin);
+              for (std::size_t ch = 0; ch < 3; ++ch) {
+                const std::int64_t Pdet = 128 * (c0[ch] * adet + d1[ch] * u + d2[ch] * w);  // P_c·|det|
+                const std::int64_t diff = std::abs(L[ch] * adet - Pdet);
+                if (diff >= bound * adet) bad = true;
+                acc.error_units.add(diff / adet, i);
+                acc.ratio_ppm.add(static_cast<std::int64_t>(static_cast<double>(diff) / static_cast<double>(bound * adet) * 1e6), i);
+              }
+            }
+          if (bad) acc.violations.add(i);
+        }
+      },
+      std::uint64_t{1} << 16);
+}
+
+}  // namespace gsdot3::proofs::two_pass::triangle
