@@ -16,6 +16,7 @@
 #include "gs_arith/options.hpp"
 #include "gs_arith/pixel_pipeline.hpp"
 #include "gs_arith/registers.hpp"
+#include "gs_memory/local_memory.hpp"
 
 namespace gsdot3::pipeline {
 
@@ -60,6 +61,10 @@ struct texture_ref {
   const std::uint32_t* texels = nullptr;    // PSMCT32 / PSMCT24 (alpha as stored)
   bool clamp = false;
   gs::bilinear_mode filter = gs::bilinear_mode::nearest;
+  // The memory path: the texels read from the modelled local memory at `at` (TBP0, TBW, PSM)
+  // instead of the arrays above (index / texels then only give the kind: CLUT or 32-bit).
+  const gs::mem::local_memory* memory = nullptr;
+  gs::mem::buffer at{};
 
   gs::rgba8 fetch(std::int32_t u, std::int32_t v) const noexcept {
     if (clamp) {
@@ -69,9 +74,13 @@ struct texture_ref {
       u &= width - 1;
       v &= height - 1;
     }
-    const std::size_t at = static_cast<std::size_t>(v) * static_cast<std::size_t>(width) + static_cast<std::size_t>(u);
-    if (index != nullptr) return gs::clut_t8(*clut, gs::u8::from_wrapped(index[at]));
-    return gs::rgba8::from_u32(texels[at]);
+    if (memory != nullptr) {
+      const std::uint32_t t = memory->read_pixel(at, static_cast<std::uint32_t>(u), static_cast<std::uint32_t>(v));
+      return clut != nullptr ? gs::clut_t8(*clut, gs::u8::from_wrapped(t)) : gs::rgba8::from_u32(t);
+    }
+    const std::size_t i = static_cast<std::size_t>(v) * static_cast<std::size_t>(width) + static_cast<std::size_t>(u);
+    if (index != nullptr) return gs::clut_t8(*clut, gs::u8::from_wrapped(index[i]));
+    return gs::rgba8::from_u32(texels[i]);
   }
   // u16, v16: texel coordinates in 12.4 (UV with PRIM.FST = 1).
   gs::rgba8 sample(std::int32_t u16, std::int32_t v16) const noexcept {

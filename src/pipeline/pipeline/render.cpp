@@ -13,21 +13,26 @@
 //   local memory (gs_memory) at FBP 0, P, 2P, 3P (P = pages per buffer); the post filter, the ILP
 //   read and step 4's channel move are gs_memory's channel-fetch sprites (the DPB / LAB read as a
 //   PSMT8 texture, TBW = 2·FBW, TBP0 per page, CLAMP_1 REGION_REPEAT), each texel through the PSMT8
-//   address function; the two-pass alpha pass reads the DPB as PSMT8H. Still value level on this
-//   path: the copy of the LAB into the output before step 4 (a local -> local PSMCT32 copy of the
-//   same layout), the Z buffer (row-major), and the normal maps, sphere map and CLUTs, which are
-//   sampled from the scene's arrays rather than uploaded by transfers.
+//   address function; the two-pass alpha pass reads the DPB as PSMT8H. The normal map (PSMT8), the
+//   sphere map and the diffuse texture (PSMCT32) are uploaded by host -> local transfers and every
+//   texel is read from memory; the palettes (incl. the ILP) are uploaded as CSM1 images and loaded
+//   into the CLUT buffer by TEX0.CLD (upload_inputs). Still value level on this path: the copy of
+//   the LAB into the output before step 4 (a local -> local PSMCT32 copy of the same layout) and the
+//   Z buffer (row-major; ZTST = GEQUAL is evaluated on it).
 #include "pipeline/render.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <thread>
 
 #include "gs_memory/address.hpp"
 #include "gs_memory/channel_fetch.hpp"
+#include "gs_memory/clut_load.hpp"
+#include "gs_memory/transfer.hpp"
 #include "gs_memory/local_memory.hpp"
 #include "gs_memory/texture_buffer.hpp"
 #include "gs_memory/texture_wrap.hpp"
@@ -103,7 +108,70 @@ struct gs_inputs {
   gs::clut_buffer pos, neg, axis[3], ilp, grey;
   std::vector<std::uint32_t> sphere;
   const texture32* diffuse = nullptr;
+  // The memory path: where the textures were uploaded (the CLUTs above are then the ones loaded
+  // from memory by TEX0.CLD).
+  const gs::mem::local_memory* memory = nullptr;
+  gs::mem::buffer nm_at, sphere_at, diffuse_at;
 };
+
+// Host -> local transfer of a w × h image packed as `data` into buffer b (BITBLTBUF, TRXPOS = 0,
+// TRXREG, TRXDIR = 0).
+void upload(gs::mem::local_memory& m, const gs::mem::buffer& b, int w, int h, std::span<const std::uint8_t> data) {
+  gs::mem::bitbltbuf_reg blt;
+  blt.DBP = b.BP;
+  blt.DBW = b.BW;
+  blt.DPSM = b.PSM;
+  gs::mem::host_to_local(m, blt, {}, {fixed::uint<12>::from_wrapped(w), fixed::uint<12>::from_wrapped(h)}, {}, data);
+}
+std::vector<std::uint8_t> bytes_of(const std::vector<std::uint32_t>& words) {
+  std::vector<std::uint8_t> b(words.size() * 4);
+  for (std::size_t i = 0; i < words.size(); ++i)
+    for (std::size_t k = 0; k < 4; ++k) b[4 * i + k] = static_cast<std::uint8_t>(words[i] >> (8 * k));
+  return b;
+}
+
+// The memory path's uploads from block `first` on: the normal map (PSMT8), the sphere map and the
+// diffuse texture (PSMCT32) by transfers; each palette as its 16×16 CSM1 image (entry i at
+// gs::csm1_position(i)), then loaded back into the CLUT buffer by TEX0 with CLD = 1.
+gs_inputs upload_inputs(gs::mem::local_memory& m, const gs_inputs& direct, std::uint32_t first) {
+  gs_inputs in = direct;
+  in.memory = &m;
+  std::uint32_t next = first;
+  auto place = [&](int w, int h, gs::mem::psm p) {
+    const gs::mem::extent pg = gs::mem::page_size(gs::mem::layout_of(p));
+    auto bw = static_cast<std::uint32_t>((w + 63) / 64);
+    if (pg.w == 128) bw = std::max(2u, bw + bw % 2);  // a PSMT8 page is 128 wide: an even TBW
+    const std::uint32_t pages = bw * 64 / pg.w * ((static_cast<std::uint32_t>(h) + pg.h - 1) / pg.h);
+    const gs::mem::buffer b{fixed::uint<14>::from_wrapped(next), fixed::uint<6>::from_wrapped(bw), p};
+    next += 32 * pages;
+    if (next > gs::mem::memory_blocks) throw std::invalid_argument("memory path: the textures do not fit in the GS's 4 MiB");
+    return b;
+  };
+  in.nm_at = place(direct.nm->width, direct.nm->height, gs::mem::psm::PSMT8);
+  upload(m, in.nm_at, direct.nm->width, direct.nm->height, direct.nm->index);
+  if (!direct.sphere.empty()) {
+    in.sphere_at = place(64, 64, gs::mem::psm::PSMCT32);
+    upload(m, in.sphere_at, 64, 64, bytes_of(direct.sphere));
+  }
+  in.diffuse_at = place(direct.diffuse->width, direct.diffuse->height, gs::mem::psm::PSMCT32);
+  upload(m, in.diffuse_at, direct.diffuse->width, direct.diffuse->height, bytes_of(direct.diffuse->texels));
+  const gs::mem::buffer palettes = place(64, 32, gs::mem::psm::PSMCT32);  // one page: 8 CLUTs of 4 blocks
+  std::uint32_t cbp = static_cast<std::uint32_t>(palettes.BP.value());
+  auto clut = [&](gs::clut_buffer& entries) {
+    std::vector<std::uint32_t> image(256);
+    for (unsigned p = 0; p < 256; ++p) image[p] = entries[gs::csm1_position(gs::u8::from_wrapped(p))].to_u32();
+    const gs::mem::buffer at{fixed::uint<14>::from_wrapped(cbp), fixed::uint<6>::from_wrapped(1), gs::mem::psm::PSMCT32};
+    upload(m, at, 16, 16, bytes_of(image));
+    gs::tex0_reg t;
+    t.PSM = gs::tex_psm::PSMT8;
+    t.CBP = at.BP;
+    t.CLD = gs::u3::from_wrapped(1);
+    entries = gs::mem::load_clut(m, t, {}).buffer;
+    cbp += 4;
+  };
+  for (gs::clut_buffer* c : {&in.pos, &in.neg, &in.axis[0], &in.axis[1], &in.axis[2], &in.ilp, &in.grey}) clut(*c);
+  return in;
+}
 
 gs_inputs make_inputs(const scene& s, method m, const render_options& o) {
   gs_inputs in;
@@ -244,7 +312,7 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
 
   const gs::bilinear_mode filter = o.bilinear ? o.model.bilinear : gs::bilinear_mode::nearest;
   auto nm_texture = [&](const gs::clut_buffer& clut) {
-    return texture_ref{in.nm->width, in.nm->height, in.nm->index.data(), &clut, nullptr, false, filter};
+    return texture_ref{in.nm->width, in.nm->height, in.nm->index.data(), &clut, nullptr, false, filter, in.memory, in.nm_at};
   };
   const gs::rgba8 white = rgb(0x80, 0x80, 0x80, 0x80);
   auto flat_white = [&](std::uint32_t) { return white; };
@@ -299,7 +367,7 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
               return std::array<std::int32_t, 2>{static_cast<std::int32_t>(std::lround(c.s * 64 * 16)),
                                                  static_cast<std::int32_t>(std::lround(c.t * 64 * 16))};
             });
-        const texture_ref sphere{64, 64, nullptr, nullptr, in.sphere.data(), true, gs::bilinear_mode::nearest};
+        const texture_ref sphere{64, 64, nullptr, nullptr, in.sphere.data(), true, gs::bilinear_mode::nearest, in.memory, in.sphere_at};
         r.draw<four_pass_sphere>(&sphere, pass1, fb.dpb);
         note("2.3 sphere map · fade (HIGHLIGHT)", li, "DPB", fb.dpb);
         const auto attr = attributes(ps, flat_white, normal_map_uv);
@@ -356,7 +424,8 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
 
   // Step 3: the unlit diffuse layer.
   r.fill(fb.diff, 0, false);
-  const texture_ref diffuse{in.diffuse->width, in.diffuse->height, nullptr, nullptr, in.diffuse->texels.data(), false, filter};
+  const texture_ref diffuse{in.diffuse->width, in.diffuse->height, nullptr, nullptr, in.diffuse->texels.data(), false, filter,
+                            in.memory, in.diffuse_at};
   r.draw<diffuse_layer>(&diffuse, attributes(ps, flat_white, normal_map_uv), fb.diff);
   note("3 diffuse layer", -1, "diffuse", fb.diff);
 
@@ -442,7 +511,7 @@ frame render(const scene& s, const prepared_scene& ps, method m, const render_op
     fb.lab.z = o.dpb_clear == dpb_clear_mode::z_trick_psmz32;
     render_options one = o;
     if (o.dpb_clear != dpb_clear_mode::explicit_clear) one.threads = 1;  // draw order is the model's
-    render_bands(s, ps, m, one, in, fb, result);
+    render_bands(s, ps, m, one, upload_inputs(memory, in, 4 * 32 * pages), fb, result);
   } else {
     std::vector<std::uint32_t> rows(4 * n, 0);  // value level: DPB, LAB, diffuse, output, frame-sized each
     frame_buffers<row_view> fb;
