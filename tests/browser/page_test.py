@@ -363,6 +363,7 @@ def main():
         imgs = sc["images"]
         expected_images = sum(1 + 2 * report["scene"]["lights"] for _ in names) + 1 + report["scene"]["lights"] + 2
         expected_images += 1 if page.get("side_by_side") else 0
+        expected_images += len(report.get("memory", {}).get("pictures", []))  # the GS local-memory section
         if imgs["failed"] or imgs["loaded"] != imgs["total"] or imgs["total"] != expected_images:
             fail(f"images: {imgs}, expected {expected_images} loaded")
         if not sc["pixels"].startswith(f"loaded {n} "):
@@ -411,10 +412,12 @@ def main():
     r = n // 3
     x, y = cols["pixel"][r] % width, cols["pixel"][r] // width
     # Scrolled into the viewport first: with many methods the tables push the views below the window.
+    # DevTools takes whole CSS pixels: the click goes to the first whole position inside the pixel (the image may
+    # sit at a fractional position).
     rect = tab.evaluate("(() => { const e = document.getElementById('img-a'); e.scrollIntoView({block: 'start'});"
                         " const b = e.getBoundingClientRect(); return [b.left, b.top]; })()")
     for kind in ("mouseMoved", "mousePressed", "mouseReleased"):
-        tab.call("Input.dispatchMouseEvent", type=kind, x=rect[0] + x + 0.5, y=rect[1] + y + 0.5, button="left", clickCount=1)
+        tab.call("Input.dispatchMouseEvent", type=kind, x=math.ceil(rect[0] + x - 1e-9), y=math.ceil(rect[1] + y - 1e-9), button="left", clickCount=1)
     dom = Dom()
     dom.feed(tab.evaluate("document.documentElement.outerHTML"))
     want, _ = expected_cells(report, page["passes"], cols, page["palette"], r)

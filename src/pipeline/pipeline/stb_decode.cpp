@@ -15,6 +15,40 @@
 
 namespace gsdot3::pipeline {
 
+namespace {
+
+// stb_image fills the texels of a cut RLE stream with zeros (and stops silently at an overrun), so
+// a run-length-encoded TGA (image types 9, 10, 11) has its packet stream checked first: the packets
+// must cover exactly width × height pixels within the file. Layout (Truevision TGA 2.0 spec): an
+// 18-byte header (ID length at 0, colour-map type at 1, image type at 2, colour-map length at 5-6 and
+// entry bits at 7, width at 12-13, height at 14-15, pixel bits at 16, little-endian), the ID, the
+// colour map, then packets: a byte h, and 1 + (h & 0x7f) pixels, given once if h & 0x80 (a run)
+// or one by one (raw).
+void check_tga_rle(const std::uint8_t* d, std::size_t size, const std::string& name) {
+  if (size < 18 || (d[2] != 9 && d[2] != 10 && d[2] != 11)) return;  // not RLE: stb checks the rest
+  auto u16 = [&](std::size_t at) { return static_cast<std::size_t>(d[at]) | static_cast<std::size_t>(d[at + 1]) << 8; };
+  const std::size_t map_bytes = d[1] != 0 ? u16(5) * ((static_cast<std::size_t>(d[7]) + 7) / 8) : 0;
+  const std::size_t pixel_bytes = (static_cast<std::size_t>(d[16]) + 7) / 8;
+  const std::size_t total = u16(12) * u16(14);
+  std::size_t at = 18 + d[0] + map_bytes, done = 0;
+  while (done < total) {
+    if (at >= size)
+      throw std::runtime_error(name + ": the TGA's RLE stream ends after " + std::to_string(done) + " of " +
+                               std::to_string(total) + " pixels");
+    const std::size_t n = 1 + (d[at] & 0x7fu);
+    const std::size_t bytes = (d[at] & 0x80u) != 0 ? pixel_bytes : n * pixel_bytes;
+    if (done + n > total)
+      throw std::runtime_error(name + ": a TGA RLE packet at byte " + std::to_string(at) + " runs past the image's " +
+                               std::to_string(total) + " pixels");
+    if (at + 1 + bytes > size)
+      throw std::runtime_error(name + ": the TGA's RLE stream ends inside the packet at byte " + std::to_string(at));
+    at += 1 + bytes;
+    done += n;
+  }
+}
+
+}  // namespace
+
 image decode_tga(const std::uint8_t* data, std::size_t size, const std::string& name) {
   if (size > 0x7fffffffu) throw std::runtime_error(name + ": the image file is too large");
   const int len = static_cast<int>(size);
@@ -22,6 +56,7 @@ image decode_tga(const std::uint8_t* data, std::size_t size, const std::string& 
   if (!stbi_info_from_memory(data, len, &w, &h, &n))
     throw std::runtime_error(name + ": not a PNG, JPEG or TGA image (" + stbi_failure_reason() + ")");
   check_image_size(w, h, name);
+  check_tga_rle(data, size, name);
   const int channels = n <= 2 ? 1 : 3;  // grey (+alpha) stays grey, RGB(A) becomes RGB
   stbi_uc* px = stbi_load_from_memory(data, len, &w, &h, &n, channels);
   if (px == nullptr) throw std::runtime_error(name + ": malformed image data (" + std::string(stbi_failure_reason()) + ")");
