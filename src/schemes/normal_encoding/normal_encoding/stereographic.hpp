@@ -6,6 +6,7 @@
 #pragma once
 
 #include "normal_encoding/quantise.hpp"
+#include "normal_encoding/two_channel.hpp"
 #include "normal_encoding/vec.hpp"
 
 namespace gsdot3::normal_encoding::stereographic {
@@ -23,15 +24,7 @@ inline vec3 dec(double ex, double ey) noexcept {
   return {g * x, g * y, g - 1};
 }
 
-inline code encode(vec3 n, int bits) {
-  check_bits(bits);
-  double ex, ey;
-  enc(n, ex, ey);
-  return {{unorm_encode(ex, bits), unorm_encode(ey, bits), 0}};
-}
-inline vec3 decode(code q, int bits) {
-  check_bits(bits);
-  return dec(unorm_decode(q.c[0], bits), unorm_decode(q.c[1], bits));
-}
+inline code encode(vec3 n, int bits) { return unorm2_encode<enc>(n, bits); }
+inline vec3 decode(code q, int bits) { return unorm2_decode<dec>(q, bits); }
 
 }  // namespace gsdot3::normal_encoding::stereographic
