@@ -268,7 +268,8 @@ void channel_pass(band_renderer& r, const frame_buffers<memory_view>& fb, gs::rg
                                           gs::mem::page_bytes);
       for (const gs::mem::fetch_sprite& sp : f.sprites) {
         const int mx = px * 64 + static_cast<int>(sp.x0), my = py * 32 + static_cast<int>(sp.y0);  // PSMCT32 pixel fetched
-        const auto [x0, y0] = src.z ? zsigma(mx, my) : std::array<int, 2>{mx, my};                  // where it is drawn
+        const std::array<int, 2> drawn = src.z ? zsigma(mx, my) : std::array<int, 2>{mx, my};   // where it is drawn
+        const int x0 = drawn[0], y0 = drawn[1];  // plain ints: clang 14 cannot capture structured bindings
         const int w = static_cast<int>(sp.x1 - sp.x0), h = static_cast<int>(sp.y1 - sp.y0);
         r.sprite_rect<Pass>(colour, {x0, y0, x0 + w, y0 + h},
                             [&](int x, int y) {
