@@ -30,5 +30,6 @@ void add_render_command(CLI::App& app, context& ctx);  // render and report
 void add_ssbump_command(CLI::App& app, context& ctx);
 void add_vectors_command(CLI::App& app, context& ctx);
 void add_dump_info_command(CLI::App& app, context& ctx);  // PCSX2 GS dumps
+void add_compare_command(CLI::App& app, context& ctx);    // two frames, pixel by pixel
 
 }  // namespace gsdot3::cli
