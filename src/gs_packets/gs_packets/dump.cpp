@@ -189,6 +189,12 @@ std::vector<path_stream> decode_paths(const gs_dump& d) {
       throw dump_error("byte " + std::to_string(pkt->offset + 6 + (e.byte_offset - start)) + " (path " + std::to_string(i) +
                        " transfer at byte " + std::to_string(pkt->offset) + "): " + e.what());
     }
+    std::size_t k = 0;
+    for (const auto& e : paths[i].events) {
+      const std::size_t at = 16 * std::size_t{e.offset};
+      while (k + 1 < starts[i].size() && starts[i][k + 1].first <= at) ++k;
+      paths[i].file_offsets.push_back(starts[i][k].second->offset + 6 + (at - starts[i][k].first));
+    }
   }
   return paths;
 }

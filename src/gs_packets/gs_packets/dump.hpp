@@ -74,6 +74,7 @@ gs_dump read_dump(std::span<const std::uint8_t> bytes);
 struct path_stream {
   std::vector<std::uint8_t> bytes;
   std::vector<packets::gif_event> events;  // image data points into bytes
+  std::vector<std::uint64_t> file_offsets;  // per event: the byte of the dump its qword starts at
 };
 std::vector<path_stream> decode_paths(const gs_dump& d);
 
