@@ -167,7 +167,8 @@ TEST(Builder, WhatItBuildsDecodesToTheSameWrites) {
   std::vector<std::uint8_t> img(40);
   for (std::size_t i = 0; i < img.size(); ++i) img[i] = static_cast<std::uint8_t>(i * 7);
   pb.image(img, true);
-  const auto ev = decode_gif(pb.bytes());
+  const auto stream = pb.bytes();  // image events point into it
+  const auto ev = decode_gif(stream);
   std::vector<std::pair<std::uint8_t, std::uint64_t>> w;
   std::vector<std::uint8_t> data;
   for (const auto& e : ev) {
@@ -188,7 +189,8 @@ TEST(Builder, ImageSplitsAt32767Qwords) {
   packet_builder pb;
   std::vector<std::uint8_t> img(16 * 32768 + 1, 0xAB);  // 32769 qwords
   pb.image(img, true);
-  const auto ev = decode_gif(pb.bytes());
+  const auto stream = pb.bytes();  // image events point into it
+  const auto ev = decode_gif(stream);
   std::vector<std::size_t> sizes;
   bool eop_last = false;
   for (const auto& e : ev) {
