@@ -29,5 +29,8 @@ void add_pvr_bump_command(CLI::App& app, context& ctx);  // seed 004 bump textur
 void add_render_command(CLI::App& app, context& ctx);  // render and report
 void add_ssbump_command(CLI::App& app, context& ctx);
 void add_vectors_command(CLI::App& app, context& ctx);
+void add_dump_info_command(CLI::App& app, context& ctx);  // PCSX2 GS dumps
+void add_compare_command(CLI::App& app, context& ctx);    // two frames, pixel by pixel
+void add_replay_command(CLI::App& app, context& ctx);     // a GS dump through the model
 
 }  // namespace gsdot3::cli

@@ -1,0 +1,228 @@
+#include "gs_packets/dump.hpp"
+
+#include <fstream>
+#include <iterator>
+#include <system_error>
+
+#include "gs_packets/state.hpp"
+
+namespace gs::dump {
+namespace {
+
+void put32(std::vector<std::uint8_t>& out, std::uint32_t v) {
+  for (int b = 0; b < 4; ++b) out.push_back(static_cast<std::uint8_t>(v >> (8 * b)));
+}
+void put(std::vector<std::uint8_t>& out, std::span<const std::uint8_t> bytes) { out.insert(out.end(), bytes.begin(), bytes.end()); }
+
+// Reads the dump front to back; every fault names the byte where it is.
+class reader {
+ public:
+  explicit reader(std::span<const std::uint8_t> b) : b_(b) {}
+  std::size_t at() const { return at_; }
+  std::size_t left() const { return b_.size() - at_; }
+  bool done() const { return at_ == b_.size(); }
+  std::span<const std::uint8_t> take(std::size_t n, const std::string& what) {
+    if (n > left())
+      throw dump_error("byte " + std::to_string(at_) + ": " + what + " of " + std::to_string(n) +
+                       " bytes runs past the end of the dump (" + std::to_string(left()) + " left)");
+    const auto s = b_.subspan(at_, n);
+    at_ += n;
+    return s;
+  }
+  std::uint8_t u8(const std::string& what) { return take(1, what)[0]; }
+  std::uint32_t u32(const std::string& what) {
+    const auto s = take(4, what);
+    return std::uint32_t{s[0]} | (std::uint32_t{s[1]} << 8) | (std::uint32_t{s[2]} << 16) | (std::uint32_t{s[3]} << 24);
+  }
+
+ private:
+  std::span<const std::uint8_t> b_;
+  std::size_t at_ = 0;
+};
+
+std::uint32_t le32(std::span<const std::uint8_t> s, std::size_t at) {
+  return std::uint32_t{s[at]} | (std::uint32_t{s[at + 1]} << 8) | (std::uint32_t{s[at + 2]} << 16) |
+         (std::uint32_t{s[at + 3]} << 24);
+}
+
+void check_state(const gs_dump& d, std::size_t at) {
+  if (d.state.size() < 4)
+    throw dump_error("byte " + std::to_string(at) + ": state size " + std::to_string(d.state.size()) +
+                     " is too small for the state version u32");
+  const std::uint32_t blob_version = le32(d.state, 0);
+  if (blob_version != d.state_version)
+    throw dump_error("byte " + std::to_string(at) + ": state blob version " + std::to_string(blob_version) +
+                     " differs from the header's state_version " + std::to_string(d.state_version));
+  if (d.state_version == 8 && d.state.size() != state_size_v8)
+    throw dump_error("byte " + std::to_string(at) + ": state size " + std::to_string(d.state.size()) +
+                     ", version 8 has " + std::to_string(state_size_v8));
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> write_dump(const gs_dump& d) {
+  if (d.screenshot.size() != std::uint64_t{d.screenshot_width} * d.screenshot_height * 4)
+    throw dump_error("screenshot: " + std::to_string(d.screenshot.size()) + " bytes for " +
+                     std::to_string(d.screenshot_width) + "x" + std::to_string(d.screenshot_height) + " RGBA");
+  if (d.privileged.size() != privileged_bytes) throw dump_error("privileged registers: need 8192 bytes");
+  std::vector<std::uint8_t> out;
+  const auto serial_size = static_cast<std::uint32_t>(d.serial.size());
+  const auto shot_size = static_cast<std::uint32_t>(d.screenshot.size());
+  put32(out, new_layout_marker);
+  put32(out, header_bytes + serial_size + shot_size);
+  for (const std::uint32_t v : {d.state_version, static_cast<std::uint32_t>(d.state.size()), header_bytes, serial_size,
+                                d.crc, d.screenshot_width, d.screenshot_height, header_bytes + serial_size, shot_size})
+    put32(out, v);
+  out.insert(out.end(), d.serial.begin(), d.serial.end());
+  put(out, d.screenshot);
+  put(out, d.state);
+  put(out, d.privileged);
+  for (const packet& p : d.packets) {
+    out.push_back(static_cast<std::uint8_t>(p.type));
+    switch (p.type) {
+      case packet_type::transfer:
+        out.push_back(p.path);
+        put32(out, static_cast<std::uint32_t>(p.data.size()));
+        put(out, p.data);
+        break;
+      case packet_type::vsync: out.push_back(p.field); break;
+      case packet_type::read_fifo2: put32(out, p.size); break;
+      case packet_type::registers:
+        if (p.data.size() != privileged_bytes) throw dump_error("registers packet: need 8192 bytes");
+        put(out, p.data);
+        break;
+    }
+  }
+  return out;
+}
+
+gs_dump read_dump(std::span<const std::uint8_t> bytes) {
+  reader r(bytes);
+  gs_dump d;
+  const std::uint32_t first = r.u32("dump header");
+  d.new_layout = first == new_layout_marker;
+  if (d.new_layout) {
+    const std::uint32_t header_size = r.u32("header size");
+    const std::size_t header_at = r.at();
+    if (header_size < header_bytes)
+      throw dump_error("byte 4: header size " + std::to_string(header_size) + " is smaller than GSDumpHeader (36)");
+    const auto h = r.take(header_size, "header");
+    d.state_version = le32(h, 0);
+    const std::uint32_t state_size = le32(h, 4), serial_offset = le32(h, 8), serial_size = le32(h, 12);
+    d.crc = le32(h, 16);
+    d.screenshot_width = le32(h, 20);
+    d.screenshot_height = le32(h, 24);
+    const std::uint32_t shot_offset = le32(h, 28), shot_size = le32(h, 32);
+    auto within = [&](std::uint32_t off, std::uint32_t size, const char* what) {
+      if (std::uint64_t{off} + size > header_size)
+        throw dump_error("byte " + std::to_string(header_at) + ": " + what + " at " + std::to_string(off) + " (+" +
+                         std::to_string(size) + ") lies outside the header of " + std::to_string(header_size) + " bytes");
+    };
+    within(serial_offset, serial_size, "serial");
+    within(shot_offset, shot_size, "screenshot");
+    if (std::uint64_t{d.screenshot_width} * d.screenshot_height * 4 != shot_size)
+      throw dump_error("byte " + std::to_string(header_at) + ": screenshot size " + std::to_string(shot_size) + " is not " +
+                       std::to_string(d.screenshot_width) + "x" + std::to_string(d.screenshot_height) + "x4");
+    d.serial.assign(h.begin() + serial_offset, h.begin() + serial_offset + serial_size);
+    d.screenshot.assign(h.begin() + shot_offset, h.begin() + shot_offset + shot_size);
+    const std::size_t state_at = r.at();
+    const auto s = r.take(state_size, "state");
+    d.state.assign(s.begin(), s.end());
+    check_state(d, state_at);
+  } else {
+    d.crc = first;
+    const std::uint32_t state_size = r.u32("state size");
+    const std::size_t state_at = r.at();
+    const auto s = r.take(state_size, "state");
+    d.state.assign(s.begin(), s.end());
+    if (state_size < 4) throw dump_error("byte 4: state size " + std::to_string(state_size) + " is too small for the state version u32");
+    d.state_version = le32(d.state, 0);
+    check_state(d, state_at);
+  }
+  const auto regs = r.take(privileged_bytes, "privileged registers");
+  d.privileged.assign(regs.begin(), regs.end());
+  while (!r.done()) {
+    packet p;
+    p.offset = r.at();
+    const std::uint8_t type = r.u8("packet type");
+    switch (type) {
+      case 0: {
+        p.type = packet_type::transfer;
+        p.path = r.u8("transfer path");
+        if (p.path > 3) throw dump_error("byte " + std::to_string(p.offset) + ": transfer path " + std::to_string(p.path) + " (0..3)");
+        const std::uint32_t size = r.u32("transfer size");
+        const auto data = r.take(size, "transfer data");
+        p.data.assign(data.begin(), data.end());
+        break;
+      }
+      case 1: p.type = packet_type::vsync; p.field = r.u8("vsync field"); break;
+      case 2: p.type = packet_type::read_fifo2; p.size = r.u32("readFIFO2 size"); break;
+      case 3: {
+        p.type = packet_type::registers;
+        const auto data = r.take(privileged_bytes, "registers packet");
+        p.data.assign(data.begin(), data.end());
+        break;
+      }
+      default:
+        throw dump_error("byte " + std::to_string(p.offset) + ": unknown packet type " + std::to_string(type) + " (0..3)");
+    }
+    d.packets.push_back(std::move(p));
+  }
+  return d;
+}
+
+std::vector<path_stream> decode_paths(const gs_dump& d) {
+  std::vector<path_stream> paths(4);
+  std::vector<std::vector<std::pair<std::size_t, const packet*>>> starts(4);  // (stream byte, packet)
+  for (const packet& p : d.packets) {
+    if (p.type != packet_type::transfer) continue;
+    starts[p.path].emplace_back(paths[p.path].bytes.size(), &p);
+    paths[p.path].bytes.insert(paths[p.path].bytes.end(), p.data.begin(), p.data.end());
+  }
+  for (unsigned i = 0; i < 4; ++i) {
+    try {
+      paths[i].events = packets::decode_gif(paths[i].bytes);
+    } catch (const packets::packet_error& e) {
+      std::size_t k = 0;
+      while (k + 1 < starts[i].size() && starts[i][k + 1].first <= e.byte_offset) ++k;
+      const auto& [start, pkt] = starts[i][k];
+      throw dump_error("byte " + std::to_string(pkt->offset + 6 + (e.byte_offset - start)) + " (path " + std::to_string(i) +
+                       " transfer at byte " + std::to_string(pkt->offset) + "): " + e.what());
+    }
+    std::size_t k = 0;
+    for (const auto& e : paths[i].events) {
+      const std::size_t at = 16 * std::size_t{e.offset};
+      while (k + 1 < starts[i].size() && starts[i][k + 1].first <= at) ++k;
+      paths[i].file_offsets.push_back(starts[i][k].second->offset + 6 + (at - starts[i][k].first));
+    }
+  }
+  return paths;
+}
+
+gs_dump load_dump(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw dump_error(file.string() + ": cannot open");
+  const std::vector<std::uint8_t> raw((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  try {
+    return read_dump(decompress(raw));
+  } catch (const dump_error& e) {
+    throw dump_error(file.string() + ": " + e.what());
+  }
+}
+
+void save_dump(const std::filesystem::path& file, const gs_dump& d) {
+  const std::vector<std::uint8_t> bytes = compress(write_dump(d), compression_for(file));
+  std::filesystem::path tmp = file;
+  tmp += ".tmp";
+  {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    if (!out) throw dump_error(file.string() + ": cannot write");
+    out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+    if (!out) throw dump_error(file.string() + ": write failed");
+  }
+  std::error_code ec;
+  std::filesystem::rename(tmp, file, ec);
+  if (ec) throw dump_error(file.string() + ": " + ec.message());
+}
+
+}  // namespace gs::dump

@@ -1,0 +1,207 @@
+// The GS dump container: the header and state blob checked byte by byte against offsets worked out by
+// hand from PCSX2 `GSDumpBase::AddHeader` / `GSDumpHeader` / `GSState::Freeze` (see
+// src/gs_packets/gs_packets/dump.hpp, state.hpp), round trips through xz and zstd, and one-line errors.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "gs_packets/builder.hpp"
+#include "gs_packets/dump.hpp"
+#include "gs_packets/state.hpp"
+
+namespace {
+
+using namespace gs::dump;
+namespace pk = gs::packets;
+
+std::uint32_t le32(const std::vector<std::uint8_t>& b, std::size_t at) {
+  return std::uint32_t{b[at]} | (std::uint32_t{b[at + 1]} << 8) | (std::uint32_t{b[at + 2]} << 16) |
+         (std::uint32_t{b[at + 3]} << 24);
+}
+
+gs_dump sample() {
+  gs_dump d;
+  d.crc = 0x12345678;
+  d.state_version = 8;
+  d.serial = "gsdot3";
+  d.screenshot_width = 2;
+  d.screenshot_height = 1;
+  d.screenshot = {1, 2, 3, 4, 5, 6, 7, 8};
+  d.state = make_state_v8();
+  state_set(d.state, *state_field_v8("FRAME_1"), 0x000A0000);
+  d.privileged[0] = 0x55;
+  pk::packet_builder pb;
+  const std::pair<std::uint8_t, std::uint64_t> w[] = {{0x53, 0}};
+  pb.ad(w);
+  const std::uint8_t img[16] = {9, 9, 9, 9, 9, 9, 9, 9, 9, 9, 9, 9, 9, 9, 9, 9};
+  pb.image(img, true);
+  d.packets.push_back({packet_type::transfer, 2, 0, 0, pb.bytes(), 0});
+  d.packets.push_back({packet_type::registers, 0, 0, 0, std::vector<std::uint8_t>(privileged_bytes, 0x66), 0});
+  d.packets.push_back({packet_type::vsync, 0, 1, 0, {}, 0});
+  d.packets.push_back({packet_type::read_fifo2, 0, 0, 7, {}, 0});
+  return d;
+}
+
+TEST(StateLayout, OffsetsWorkedByHand) {
+  // version 4 bytes; 15 environment u64 from 4; context 1 from 124, context 2 from 220; vertex from 316.
+  EXPECT_EQ(state_field_v8("PRIM")->offset, 4u);
+  EXPECT_EQ(state_field_v8("TRXREG_obsolete")->offset, 4u + 14 * 8);
+  EXPECT_EQ(state_field_v8("XYOFFSET_1")->offset, 124u);
+  EXPECT_EQ(state_field_v8("FRAME_1")->offset, 124u + 10 * 8);
+  EXPECT_EQ(state_field_v8("ZBUF_2")->offset, 220u + 11 * 8);
+  EXPECT_EQ(state_field_v8("RGBAQ")->offset, 316u);
+  EXPECT_EQ(state_field_v8("tr.x")->offset, 364u);
+  EXPECT_EQ(state_field_v8("memory")->offset, 372u);
+  EXPECT_EQ(state_field_v8("path0.tag")->offset, 372u + 4194304);
+  EXPECT_EQ(state_field_v8("path3.reg")->offset, 372u + 4194304 + 3 * 20 + 16);
+  EXPECT_EQ(state_field_v8("Q")->offset, 4194756u);
+  EXPECT_EQ(state_size_v8, 4194760u);
+}
+
+TEST(Dump, NewLayoutByteByByte) {
+  const auto b = write_dump(sample());
+  EXPECT_EQ(le32(b, 0), 0xFFFFFFFFu);
+  EXPECT_EQ(le32(b, 4), 36u + 6 + 8);  // header size = GSDumpHeader + serial + screenshot
+  EXPECT_EQ(le32(b, 8), 8u);           // state_version
+  EXPECT_EQ(le32(b, 12), 4194760u);    // state_size
+  EXPECT_EQ(le32(b, 16), 36u);         // serial_offset (from the start of GSDumpHeader)
+  EXPECT_EQ(le32(b, 20), 6u);          // serial_size
+  EXPECT_EQ(le32(b, 24), 0x12345678u); // crc
+  EXPECT_EQ(le32(b, 28), 2u);
+  EXPECT_EQ(le32(b, 32), 1u);
+  EXPECT_EQ(le32(b, 36), 42u);         // screenshot_offset = 36 + 6
+  EXPECT_EQ(le32(b, 40), 8u);
+  EXPECT_EQ(std::string(b.begin() + 44, b.begin() + 50), "gsdot3");
+  EXPECT_EQ(b[50], 1);
+  EXPECT_EQ(b[57], 8);
+  const std::size_t state = 58;
+  EXPECT_EQ(le32(b, state), 8u);                 // the blob's own version
+  EXPECT_EQ(le32(b, state + 4 + 8), 1u);         // PRMODECONT.AC = 1
+  EXPECT_EQ(le32(b, state + 204), 0x000A0000u);  // FRAME_1
+  EXPECT_EQ(le32(b, state + 4194756), 0x3F800000u);  // Q = 1.0f
+  const std::size_t regs = state + 4194760;
+  EXPECT_EQ(b[regs], 0x55);
+  const std::size_t pk0 = regs + 8192;
+  EXPECT_EQ(b[pk0], 0);      // transfer
+  EXPECT_EQ(b[pk0 + 1], 2);  // PATH3
+  EXPECT_EQ(le32(b, pk0 + 2), 16u * 4);  // A+D tag + 1 write, IMAGE tag + 1 qword
+  const std::size_t pk1 = pk0 + 6 + 64;
+  EXPECT_EQ(b[pk1], 3);
+  EXPECT_EQ(b[pk1 + 1], 0x66);
+  const std::size_t pk2 = pk1 + 1 + 8192;
+  EXPECT_EQ(b[pk2], 1);
+  EXPECT_EQ(b[pk2 + 1], 1);
+  EXPECT_EQ(b[pk2 + 2], 2);
+  EXPECT_EQ(le32(b, pk2 + 3), 7u);
+  EXPECT_EQ(b.size(), pk2 + 7);
+}
+
+TEST(Dump, ReadsBackWhatItWrote) {
+  const gs_dump d = sample();
+  const auto b = write_dump(d);
+  const gs_dump r = read_dump(b);
+  EXPECT_TRUE(r.new_layout);
+  EXPECT_EQ(r.crc, d.crc);
+  EXPECT_EQ(r.serial, d.serial);
+  EXPECT_EQ(r.screenshot, d.screenshot);
+  EXPECT_EQ(r.state, d.state);
+  EXPECT_EQ(r.privileged, d.privileged);
+  ASSERT_EQ(r.packets.size(), 4u);
+  EXPECT_EQ(r.packets[0].data, d.packets[0].data);
+  EXPECT_EQ(r.packets[0].offset, 58u + 4194760 + 8192);
+  EXPECT_EQ(r.packets[2].field, 1);
+  EXPECT_EQ(r.packets[3].size, 7u);
+  EXPECT_EQ(write_dump(r), b);
+  const auto paths = decode_paths(r);
+  EXPECT_EQ(paths[2].events.size(), 4u);  // A+D tag, TRXDIR write, IMAGE tag, image data
+  EXPECT_TRUE(paths[0].events.empty());
+}
+
+TEST(Dump, ReadsTheOldLayout) {
+  // u32 CRC, u32 state size, state, 8 KiB registers, packets (GSDumpBase::AddHeader before the header).
+  const gs_dump d = sample();
+  std::vector<std::uint8_t> b;
+  for (const std::uint32_t v : {0xCAFEF00Du, state_size_v8})
+    for (int k = 0; k < 4; ++k) b.push_back(static_cast<std::uint8_t>(v >> (8 * k)));
+  b.insert(b.end(), d.state.begin(), d.state.end());
+  b.insert(b.end(), d.privileged.begin(), d.privileged.end());
+  b.insert(b.end(), {1, 0});  // vsync, field 0
+  const gs_dump r = read_dump(b);
+  EXPECT_FALSE(r.new_layout);
+  EXPECT_EQ(r.crc, 0xCAFEF00Du);
+  EXPECT_EQ(r.state_version, 8u);
+  EXPECT_EQ(r.state, d.state);
+  ASSERT_EQ(r.packets.size(), 1u);
+  EXPECT_EQ(r.packets[0].type, packet_type::vsync);
+}
+
+TEST(Dump, CompressedRoundTrips) {
+  const auto raw = write_dump(sample());
+  for (const compression c : {compression::xz, compression::zstd}) {
+    const auto z = compress(raw, c);
+    EXPECT_LT(z.size(), raw.size() / 100);  // 4 MiB of zero memory
+    EXPECT_EQ(decompress(z), raw);
+  }
+  EXPECT_EQ(compression_for("a.gs.xz"), compression::xz);
+  EXPECT_EQ(compression_for("a.gs.zst"), compression::zstd);
+  EXPECT_EQ(compression_for("a.gs"), compression::none);
+  const auto dir = std::filesystem::temp_directory_path() / "gsdot3_dump_test";
+  std::filesystem::create_directories(dir);
+  for (const char* name : {"t.gs", "t.gs.xz", "t.gs.zst"}) {
+    save_dump(dir / name, sample());
+    EXPECT_EQ(write_dump(load_dump(dir / name)), raw) << name;
+  }
+  std::filesystem::remove_all(dir);
+}
+
+std::string error_of(const std::vector<std::uint8_t>& b) {
+  try {
+    const gs_dump d = read_dump(b);
+    decode_paths(d);
+  } catch (const dump_error& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(Dump, MalformedDumpsGiveOneLineErrors) {
+  const auto good = write_dump(sample());
+  EXPECT_EQ(error_of({0xFF, 0xFF}), "byte 0: dump header of 4 bytes runs past the end of the dump (2 left)");
+  auto bad = good;
+  bad[4] = 10;  // header size 10 < 36
+  bad[5] = bad[6] = bad[7] = 0;
+  EXPECT_EQ(error_of(bad), "byte 4: header size 10 is smaller than GSDumpHeader (36)");
+  bad = good;
+  bad[12] = 100;  // state_size 100 for version 8
+  bad[13] = bad[14] = bad[15] = 0;
+  EXPECT_EQ(error_of(bad).rfind("byte 58: state size 100, version 8 has 4194760", 0), 0u) << error_of(bad);
+  bad = good;
+  bad.resize(good.size() - 3);  // the readFIFO2 size is cut
+  EXPECT_EQ(error_of(bad), "byte " + std::to_string(good.size() - 4) +
+                               ": readFIFO2 size of 4 bytes runs past the end of the dump (1 left)");
+  bad = good;
+  bad.push_back(9);
+  EXPECT_EQ(error_of(bad), "byte " + std::to_string(good.size()) + ": unknown packet type 9 (0..3)");
+  // A transfer whose GIF tag claims more data than the path's stream holds: IMAGE NLOOP 5, no data.
+  gs_dump d = sample();
+  d.packets = {{packet_type::transfer, 1, 0, 0, {5, 0, 0, 0, 0, 0, 0, 0x08, 0, 0, 0, 0, 0, 0, 0, 0}, 0}};
+  EXPECT_EQ(error_of(write_dump(d)), "byte " + std::to_string(58 + 4194760 + 8192 + 6) + " (path 1 transfer at byte " +
+                                          std::to_string(58 + 4194760 + 8192) +
+                                          "): qword 0: GIF tag NLOOP 5 needs 5 data qwords, 0 left");
+}
+
+TEST(Dump, PacketsContinueAcrossTransfers) {
+  gs_dump d = sample();
+  pk::packet_builder pb;
+  std::vector<std::uint8_t> img(64, 3);
+  pb.image(img, true);
+  const auto all = pb.bytes();  // tag + 4 qwords, split after the second data qword
+  d.packets = {{packet_type::transfer, 2, 0, 0, {all.begin(), all.begin() + 48}, 0},
+               {packet_type::vsync, 0, 0, 0, {}, 0},
+               {packet_type::transfer, 2, 0, 0, {all.begin() + 48, all.end()}, 0}};
+  const auto paths = decode_paths(read_dump(write_dump(d)));
+  ASSERT_EQ(paths[2].events.size(), 2u);
+  EXPECT_EQ(paths[2].events[1].data.size(), 64u);
+}
+
+}  // namespace
