@@ -1,5 +1,5 @@
 // fuzz/parse_inputs.cpp — libFuzzer harness: every reader of user input must survive anything.
-//   Meshes through assimp and gsdot3's conversion and repairs (pipeline::import_mesh_from_memory,
+//   Meshes through assimp and gsdot3's conversion and repairs in a child process (pipeline::import_mesh_from_memory,
 //   as OBJ, glTF or GLB), normal maps from a file
 //   (load_normal_map) and from memory (the PNG/JPEG/TGA decoders, resampling, both green
 //   conventions, grey as height), PNG height maps (load_height_map_png), vector files and
@@ -154,9 +154,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     parse_registers(in);
     return 0;
   }
-  // In this process assimp's own bugs are findings too; its PLY reader leaked (suppressed above) and
-  // looped on malformed headers within seconds of fuzzing, so only OBJ and glTF/GLB are fuzzed
-  // here (gsdot3's conversion is the same for every format; the CLI's child process bounds the rest).
+  // The import runs in a child process, as the CLI runs it (a crash inside assimp — its OBJ reader
+  // wrote to a wild address on a fuzzed file — is a one-line error there); assimp's PLY reader also
+  // leaked (suppressed above) and looped on malformed headers, so only OBJ and glTF/GLB are fuzzed
+  // (gsdot3's conversion is the same for every format).
   static const char* const mesh_formats[] = {"obj", "glb", "gltf"};
   const char* format = reader == 6 ? mesh_formats[in.ConsumeIntegralInRange<std::size_t>(0, std::size(mesh_formats) - 1)] : "obj";
   const bool flag = reader == 7 && in.ConsumeBool();

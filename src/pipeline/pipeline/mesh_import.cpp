@@ -301,9 +301,21 @@ imported_mesh import_mesh(const std::filesystem::path& file, const import_option
 }
 
 imported_mesh import_mesh_from_memory(const std::string& bytes, const std::string& extension, const import_options& options) {
-  Assimp::Importer imp;
-  const aiScene* s = imp.ReadFileFromMemory(bytes.data(), bytes.size(), import_flags, extension.c_str());
-  return from_scene(s, imp, "<memory>." + extension, {}, format_of(s, extension), options);
+  const std::string name = "<memory>." + extension;
+  std::string result;
+  try {
+    result = run_in_child(
+        [&] {
+          Assimp::Importer imp;
+          const aiScene* s = imp.ReadFileFromMemory(bytes.data(), bytes.size(), import_flags, extension.c_str());
+          return serialise(from_scene(s, imp, name, {}, format_of(s, extension), options));
+        },
+        import_address_space, import_cpu_seconds);
+  } catch (const std::runtime_error& e) {
+    const std::string what = e.what(), prefix = name + ": ";
+    throw std::runtime_error(what.compare(0, prefix.size(), prefix) == 0 ? what : prefix + what);
+  }
+  return deserialise(result);
 }
 
 }  // namespace gsdot3::pipeline

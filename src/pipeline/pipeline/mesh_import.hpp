@@ -64,8 +64,9 @@ struct imported_mesh {
 // of gsdot3 (child_process.hpp).
 imported_mesh import_mesh(const std::filesystem::path& file, const import_options& options = {});
 
-// The same from bytes in memory, in this process (the fuzz harness: a crash must be seen there);
-// `extension` ("obj", "glb", "ply", …) tells the importer the format.
+// The same from bytes in memory, also in a child process (the fuzz harness: assimp 5.2's OBJ
+// reader writes to a wild address on some fuzzed files, a crash no gsdot3 code can prevent and the
+// CLI survives the same way); `extension` ("obj", "glb", "ply", …) tells the importer the format.
 imported_mesh import_mesh_from_memory(const std::string& bytes, const std::string& extension, const import_options& options = {});
 
 }  // namespace gsdot3::pipeline
