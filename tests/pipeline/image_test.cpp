@@ -4,6 +4,8 @@
 // from the bytes written, n = rgb/127.5 − 1.
 #include <gtest/gtest.h>
 
+#include "expect_error.hpp"
+
 #include <cmath>
 #include <filesystem>
 #include <functional>
@@ -21,16 +23,7 @@ namespace fs = std::filesystem;
 const fs::path meshes = fs::path(GSDOT3_TEST_DATA) / "meshes";
 const fs::path images = fs::path(GSDOT3_TEST_DATA) / "images";
 
-void expect_error(const std::function<void()>& f, const std::string& part) {
-  try {
-    f();
-    FAIL() << "no error; expected one containing '" << part << "'";
-  } catch (const std::runtime_error& e) {
-    const std::string what = e.what();
-    EXPECT_NE(what.find(part), std::string::npos) << "message: " << what;
-    EXPECT_EQ(what.find('\n'), std::string::npos) << "message spans lines: " << what;
-  }
-}
+using test::expect_error;
 
 glm::vec3 texel(const normal_map& m, int x, int y) { return m.palette[m.index[static_cast<std::size_t>(y * m.width + x)]]; }
 

@@ -1,6 +1,8 @@
 // Bad input: each case fails with a one-line message naming the problem, and leaves no report.
 #include <gtest/gtest.h>
 
+#include "expect_error.hpp"
+
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -31,16 +33,7 @@ fs::path write(const fs::path& dir, const std::string& name, const std::string& 
   return p;
 }
 
-void expect_error(const std::function<void()>& f, const std::string& part) {
-  try {
-    f();
-    FAIL() << "no error; expected one containing '" << part << "'";
-  } catch (const std::runtime_error& e) {
-    const std::string what = e.what();
-    EXPECT_NE(what.find(part), std::string::npos) << "message: " << what;
-    EXPECT_EQ(what.find('\n'), std::string::npos) << "message spans lines: " << what;
-  }
-}
+using test::expect_error;
 
 const std::string good_quad =
     "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nvn 0 0 1\n"

@@ -3,6 +3,8 @@
 // one-line errors for bad files. Expected values follow from how each file was constructed.
 #include <gtest/gtest.h>
 
+#include "expect_error.hpp"
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -18,16 +20,7 @@ namespace {
 namespace fs = std::filesystem;
 const fs::path data = fs::path(GSDOT3_TEST_DATA) / "meshes";
 
-void expect_error(const std::function<void()>& f, const std::string& part) {
-  try {
-    f();
-    FAIL() << "no error; expected one containing '" << part << "'";
-  } catch (const std::runtime_error& e) {
-    const std::string what = e.what();
-    EXPECT_NE(what.find(part), std::string::npos) << "message: " << what;
-    EXPECT_EQ(what.find('\n'), std::string::npos) << "message spans lines: " << what;
-  }
-}
+using test::expect_error;
 
 void expect_near(glm::vec3 a, glm::vec3 b, float tol) {
   EXPECT_NEAR(a.x, b.x, tol);

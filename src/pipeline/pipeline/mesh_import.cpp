@@ -70,16 +70,16 @@ source_mesh convert(const aiMesh& am, std::size_t index, import_report& report) 
 // Every node's meshes with the node's accumulated transform (iteratively: hostile files nest deeply).
 std::vector<source_instance> instances_of(const aiScene& s) {
   std::vector<source_instance> out;
-  std::vector<std::pair<const aiNode*, glm::mat4>> todo;
-  if (s.mRootNode != nullptr) todo.push_back({s.mRootNode, glm::mat4(1.0f)});
-  while (!todo.empty()) {
-    const auto [node, parent] = todo.back();
-    todo.pop_back();
+  std::vector<std::pair<const aiNode*, glm::mat4>> pending;
+  if (s.mRootNode != nullptr) pending.push_back({s.mRootNode, glm::mat4(1.0f)});
+  while (!pending.empty()) {
+    const auto [node, parent] = pending.back();
+    pending.pop_back();
     const glm::mat4 t = parent * to_glm(node->mTransformation);
     for (unsigned i = 0; i < node->mNumMeshes; ++i)
       if (node->mMeshes[i] < s.mNumMeshes) out.push_back({node->mMeshes[i], t});
     for (unsigned c = 0; c < node->mNumChildren; ++c)
-      if (node->mChildren[c] != nullptr) todo.push_back({node->mChildren[c], t});
+      if (node->mChildren[c] != nullptr) pending.push_back({node->mChildren[c], t});
   }
   return out;
 }

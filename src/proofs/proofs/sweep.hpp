@@ -75,7 +75,7 @@ Acc sweep(std::uint64_t n, const sweep_config& cfg, Body&& body, std::uint64_t m
   const std::uint64_t chunks = n == 0 ? 0 : (n + chunk - 1) / chunk;
   std::vector<Acc> parts(chunks);
   // Which chunks this process computes (all of them unless sharded).
-  std::vector<std::uint64_t> todo;
+  std::vector<std::uint64_t> to_run;
   shard_log* log = cfg.shard.get();
   sweep_record recorded;
   if (log != nullptr) {
@@ -95,36 +95,36 @@ Acc sweep(std::uint64_t n, const sweep_config& cfg, Body&& body, std::uint64_t m
       recorded = key;
       for (std::uint64_t c = 0; c < chunks; ++c) {
         const bool mine = log->m == shard_log::mode::record ? c * log->n / chunks == log->k : !have[c];
-        if (mine) todo.push_back(c);
+        if (mine) to_run.push_back(c);
       }
-      if (log->m == shard_log::mode::replay) log->recomputed += todo.size();
+      if (log->m == shard_log::mode::replay) log->recomputed += to_run.size();
     }
   } else {
-    for (std::uint64_t c = 0; c < chunks; ++c) todo.push_back(c);
+    for (std::uint64_t c = 0; c < chunks; ++c) to_run.push_back(c);
   }
   std::atomic<std::uint64_t> next{0};
   std::atomic<std::uint64_t> done{0};
   std::atomic_flag reporting = ATOMIC_FLAG_INIT;
   auto work = [&] {
-    for (std::uint64_t t = next++; t < todo.size(); t = next++) {
-      const std::uint64_t c = todo[t];
+    for (std::uint64_t t = next++; t < to_run.size(); t = next++) {
+      const std::uint64_t c = to_run[t];
       const std::uint64_t begin = c * chunk;
       body(parts[c], begin, std::min(n, begin + chunk));
       const auto d = ++done;
       if (cfg.progress && !reporting.test_and_set()) {
-        cfg.progress(static_cast<double>(d) / static_cast<double>(todo.size()));
+        cfg.progress(static_cast<double>(d) / static_cast<double>(to_run.size()));
         reporting.clear();
       }
     }
   };
-  const unsigned workers = static_cast<unsigned>(std::min<std::uint64_t>(std::max(1U, cfg.threads), todo.size()));
+  const unsigned workers = static_cast<unsigned>(std::min<std::uint64_t>(std::max(1U, cfg.threads), to_run.size()));
   std::vector<std::jthread> pool;
   for (unsigned t = 1; t < workers; ++t) pool.emplace_back(work);
   work();
   pool.clear();  // joins
   if constexpr (std::is_trivially_copyable_v<Acc>) {
     if (log != nullptr && log->m == shard_log::mode::record) {
-      for (auto c : todo) recorded.parts.push_back({c, std::string(reinterpret_cast<const char*>(&parts[c]), sizeof(Acc))});
+      for (auto c : to_run) recorded.parts.push_back({c, std::string(reinterpret_cast<const char*>(&parts[c]), sizeof(Acc))});
       log->sweeps.push_back(std::move(recorded));
     }
   }
