@@ -21,9 +21,9 @@
 #include <unistd.h>
 
 #include <fuzzer/FuzzedDataProvider.h>
-#include <glm/geometric.hpp>
 
 #include "fuzz_check.hpp"
+#include "mesh_check.hpp"
 #include "gs_arith/options.hpp"
 #include "gs_arith/registers.hpp"
 #include "pipeline/files.hpp"
@@ -34,6 +34,7 @@
 
 namespace {
 
+using gsdot3::fuzz::check_mesh;
 using gsdot3::fuzz::require;
 namespace pl = gsdot3::pipeline;
 
@@ -51,19 +52,6 @@ const std::filesystem::path& scratch(const std::string& bytes) {
   static const scratch_file file;
   std::ofstream(file.png, std::ios::binary).write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
   return file.png;
-}
-
-// An accepted mesh has triangles with indices in range and unit, orthogonal tangent frames.
-void check_mesh(const pl::mesh& m) {
-  require(!m.triangles.empty(), [] { return std::string("import_mesh accepted a mesh without triangles"); });
-  for (const auto& t : m.triangles) {
-    for (auto i : t) require(i < m.vertices.size(), [] { return std::string("import_mesh accepted a triangle index out of range"); });
-  }
-  for (const pl::vertex& v : m.vertices) {
-    const bool unit = std::fabs(glm::length(v.normal) - 1.0f) < 1e-3f && std::fabs(glm::length(v.tangent) - 1.0f) < 1e-3f &&
-                      std::fabs(glm::dot(v.normal, v.tangent)) < 1e-3f;
-    require(unit, [] { return std::string("import_mesh gave a vertex without a unit orthogonal normal and tangent"); });
-  }
 }
 
 void check_normal_map(const pl::normal_map& n) {

@@ -13,6 +13,8 @@
 #include "pipeline/files.hpp"
 #include "pipeline/scene.hpp"
 
+struct aiScene;  // <assimp/scene.h>
+
 namespace gsdot3::pipeline {
 
 enum class normals_mode { smooth, flat };               // for meshes without normals
@@ -68,5 +70,13 @@ imported_mesh import_mesh(const std::filesystem::path& file, const import_option
 // reader writes to a wild address on some fuzzed files, a crash no gsdot3 code can prevent and the
 // CLI survives the same way); `extension` ("obj", "glb", "ply", …) tells the importer the format.
 imported_mesh import_mesh_from_memory(const std::string& bytes, const std::string& extension, const import_options& options = {});
+
+// The conversion both imports run on the scene assimp read (in their child process), here in the
+// calling process: every instanced mesh converted with its node transforms, repaired and merged, the
+// material's normal map found (external names resolved against `dir`). Throws std::runtime_error
+// "NAME: why" like import_mesh. For callers that build the scene themselves and run no parser
+// (fuzz/mesh_from_scene.cpp); `format` goes into the report.
+imported_mesh from_scene(const aiScene& scene, const std::string& name, const std::filesystem::path& dir, const std::string& format,
+                         const import_options& options = {});
 
 }  // namespace gsdot3::pipeline
