@@ -2,7 +2,7 @@
 //   gsdot3 ssbump from-normal IN.png OUT.png [--rounding truncate|nearest] [--threads N]
 //   gsdot3 ssbump from-height IN.png OUT.png --scale S [--rays 250] [--bias 0.55] [--tile 1|0]
 //                 [--filter-radius 10] [--filter-threshold 0.00784314] [--height alpha|grey|auto] [--rounding ...]
-// PNG in (any 8-bit PNG), RGB PNG out (written atomically). Progress on stderr.
+// PNG in (any PNG, as RGBA by pipeline::read_png_rgba; 16-bit reduced to 8), RGB PNG out (written atomically). Progress on stderr.
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -15,7 +15,7 @@
 
 #include "commands.hpp"
 #include "pipeline/files.hpp"
-#include "pipeline/png_read.hpp"
+#include "pipeline/image_io.hpp"
 #include "valve/encode.hpp"
 #include "valve/height2ssbump.hpp"
 

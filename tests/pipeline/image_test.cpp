@@ -11,6 +11,7 @@
 #include <functional>
 
 #include <glm/geometric.hpp>
+#include <png.h>
 
 #include "pipeline/image_io.hpp"
 #include "pipeline/mesh_import.hpp"
@@ -122,6 +123,53 @@ TEST(NormalMapImage, HostileImagesGiveOneLineErrors) {
   const loaded_normal_map over = load_normal_map(images / "overrun_rle.tga", {});
   EXPECT_EQ(over.map.index.size(), 256u);
   EXPECT_EQ(over.map.palette.size(), 1u);
+}
+
+// A PNG written by libpng's simplified API (png_image) from 5x3 pixels of `format`.
+std::vector<std::uint8_t> encode_png(png_uint_32 format, const std::vector<std::uint8_t>& pixels, const std::uint8_t* colormap) {
+  png_image img{};
+  img.version = PNG_IMAGE_VERSION;
+  img.width = 5;
+  img.height = 3;
+  img.format = format;
+  img.colormap_entries = colormap != nullptr ? 4 : 0;
+  png_alloc_size_t size = 0;
+  EXPECT_TRUE(png_image_write_to_memory(&img, nullptr, &size, 0, pixels.data(), 0, colormap)) << img.message;
+  std::vector<std::uint8_t> out(size);
+  EXPECT_TRUE(png_image_write_to_memory(&img, out.data(), &size, 0, pixels.data(), 0, colormap)) << img.message;
+  out.resize(size);
+  return out;
+}
+
+// decode_png_rgba equals libpng's simplified reader (png_image to PNG_FORMAT_RGBA: its own
+// transformation code, and gsdot3's RGBA reader before image_io had one) in texels and flags, on
+// 8-bit files of every colour type: grey, grey + alpha, RGB, RGBA, a palette with tRNS.
+TEST(PngRgba, AgreesWithLibpngsSimplifiedReader) {
+  std::vector<std::uint8_t> values(5 * 3 * 4), indices(5 * 3);
+  for (std::size_t i = 0; i < values.size(); ++i) values[i] = static_cast<std::uint8_t>(37 * i + 11);
+  for (std::size_t i = 0; i < indices.size(); ++i) indices[i] = static_cast<std::uint8_t>(i % 4);
+  const std::uint8_t colormap[16] = {200, 10, 30, 255, 0, 90, 250, 0, 60, 60, 61, 128, 255, 255, 255, 255};
+  for (const png_uint_32 format : std::initializer_list<png_uint_32>{PNG_FORMAT_GRAY, PNG_FORMAT_GA, PNG_FORMAT_RGB, PNG_FORMAT_RGBA, PNG_FORMAT_RGBA_COLORMAP}) {
+    const bool mapped = (format & PNG_FORMAT_FLAG_COLORMAP) != 0;
+    const std::vector<std::uint8_t> file = encode_png(format, mapped ? indices : values, mapped ? colormap : nullptr);
+    const rgba_image got = decode_png_rgba(file.data(), file.size(), "test.png");
+
+    png_image ref{};
+    ref.version = PNG_IMAGE_VERSION;
+    ASSERT_TRUE(png_image_begin_read_from_memory(&ref, file.data(), file.size())) << ref.message;
+    const bool alpha = (ref.format & PNG_FORMAT_FLAG_ALPHA) != 0, grey = (ref.format & PNG_FORMAT_FLAG_COLOR) == 0;
+    ref.format = PNG_FORMAT_RGBA;
+    std::vector<std::uint8_t> want(PNG_IMAGE_SIZE(ref));
+    ASSERT_TRUE(png_image_finish_read(&ref, nullptr, want.data(), 0, nullptr)) << ref.message;
+    png_image_free(&ref);
+
+    EXPECT_EQ(got.width, 5) << format;
+    EXPECT_EQ(got.height, 3) << format;
+    EXPECT_EQ(got.rgba, want) << format;
+    EXPECT_EQ(got.has_alpha, alpha) << format;
+    EXPECT_EQ(got.grey, grey) << format;
+  }
+  expect_error([] { read_png_rgba(images / "huge_header.png"); }, "the image is 65536x65536; at most 16384");
 }
 
 }  // namespace

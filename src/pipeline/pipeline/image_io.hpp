@@ -31,4 +31,16 @@ image decode_png(const std::uint8_t* data, std::size_t size, const std::string& 
 image decode_jpeg(const std::uint8_t* data, std::size_t size, const std::string& name);
 image decode_tga(const std::uint8_t* data, std::size_t size, const std::string& name);
 
+// Any PNG as RGBA8 for the image tools (gsdot3 ssbump: the height from alpha, as Source's tools
+// read it): the same reader as decode_png (palettes expanded, 16-bit reduced to 8, the same size
+// limits), grey expanded to RGB, alpha 255 where the file has none.
+struct rgba_image {
+  int width = 0, height = 0;
+  bool has_alpha = false;          // the file had an alpha channel (or a tRNS chunk)
+  bool grey = false;               // the file was grey (R = G = B)
+  std::vector<std::uint8_t> rgba;  // width·height·4, rows top first
+};
+rgba_image decode_png_rgba(const std::uint8_t* data, std::size_t size, const std::string& name);
+rgba_image read_png_rgba(const std::filesystem::path& file);  // the file's bytes through decode_png_rgba
+
 }  // namespace gsdot3::pipeline

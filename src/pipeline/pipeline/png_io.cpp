@@ -32,12 +32,7 @@ void on_png_warning(png_structp, png_const_charp) {}
 }  // namespace
 
 normal_map load_height_map_png(const std::filesystem::path& file, float strength) {
-  const std::vector<std::uint8_t> bytes = read_file_bytes(file, "height map");
-  const image img = decode_png(bytes.data(), bytes.size(), file.string());
-  auto power_of_two = [](int v) { return v >= 8 && v <= 1024 && (v & (v - 1)) == 0; };
-  if (!power_of_two(img.width) || !power_of_two(img.height))
-    fail(file, "height map is " + std::to_string(img.width) + "x" + std::to_string(img.height) +
-                   "; width and height must be powers of two from 8 to 1024");
+  const image img = read_texture_image_png(file, true);
   std::vector<float> h;
   h.reserve(static_cast<std::size_t>(img.width) * static_cast<std::size_t>(img.height));
   for (std::size_t i = 0; i < img.data.size(); i += static_cast<std::size_t>(img.channels)) h.push_back(img.data[i]);

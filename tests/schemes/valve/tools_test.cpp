@@ -9,7 +9,7 @@
 #include <string>
 
 #include "pipeline/files.hpp"
-#include "pipeline/png_read.hpp"
+#include "pipeline/image_io.hpp"
 
 namespace {
 
