@@ -1,54 +1,26 @@
 #include "gs_memory/memory_registers.hpp"
 
-#include <cstdio>
-#include <string>
 #include <string_view>
+
+#include "gs_arith/field_reader.hpp"
 
 namespace gs::mem {
 namespace {
 
-std::string hex(std::uint64_t v) {
-  char buf[24];
-  std::snprintf(buf, sizeof buf, "0x%llx", static_cast<unsigned long long>(v));
-  return buf;
-}
-
-// Reads fields of a register value; done() checks that no bit outside them is set.
-class fields {
+// Reads fields of a register value (gs_arith/field_reader.hpp), and the transfer registers' PSM fields.
+class fields : public field_reader {
  public:
-  fields(std::string_view reg, std::uint64_t v) : reg_(reg), v_(v) {}
-  template <int N>
-  fixed::uint<N> uint(int lo) {
-    used_ |= ((std::uint64_t{1} << N) - 1) << lo;
-    return fixed::uint<N>::from_wrapped((v_ >> lo) & ((std::uint64_t{1} << N) - 1));
-  }
+  using field_reader::field_reader;
   psm format(std::string_view field, int lo) {
     const auto v = static_cast<std::uint64_t>(uint<6>(lo).value());
     for (const psm p : {psm::PSMCT32, psm::PSMCT24, psm::PSMCT16, psm::PSMCT16S, psm::PSMT8, psm::PSMT8H, psm::PSMT4,
                         psm::PSMT4HL, psm::PSMT4HH, psm::PSMZ32, psm::PSMZ24, psm::PSMZ16, psm::PSMZ16S})
       if (static_cast<std::uint64_t>(p) == v) return p;
-    throw register_error(std::string(reg_) + "." + std::string(field) + " = " + hex(v) +
-                         ": not a GS pixel storage format");
+    fail(field, v, "not a GS pixel storage format");
   }
-  void done() const {
-    if ((v_ & ~used_) != 0)
-      throw register_error(std::string(reg_) + " = " + hex(v_) + ": reserved bits " + hex(v_ & ~used_) + " must be 0");
-  }
-
- private:
-  std::string_view reg_;
-  std::uint64_t v_;
-  std::uint64_t used_ = 0;
 };
 
-template <int N>
-std::uint64_t bits(fixed::uint<N> v) {
-  return static_cast<std::uint64_t>(v.value());
-}
-template <typename E>
-std::uint64_t bits(E e) {
-  return static_cast<std::uint64_t>(e);
-}
+using field_bits::bits;
 
 }  // namespace
 
