@@ -269,18 +269,23 @@ mesh build_mesh(const std::vector<source_mesh>& meshes, const std::vector<source
     const bool mirrored = glm::determinant(m3) < 0.0f;
     for (std::size_t t = 0; t + 2 < tc.size(); t += 3) {
       std::array<corner, 3> k{};
+      bool ill_conditioned = false;
       for (std::size_t i = 0; i < 3; ++i) {
         const tangent_corner& c = tc[t + i];
         const glm::vec3 n = glm::normalize(nm * c.normal);
-        glm::vec3 tt = m3 * tan[t + i].tangent;
+        const glm::vec3 tm = m3 * tan[t + i].tangent;
         const glm::vec3 bt = m3 * (glm::cross(c.normal, tan[t + i].tangent) * tan[t + i].sign);
-        tt = tt - n * glm::dot(n, tt);
+        // Exactly, m3·t is orthogonal to the transformed normal; what is left after the projection
+        // is only rounding when the transform is ill-conditioned (found by fuzz/mesh_from_scene:
+        // a tangent normalised from a residual along n came out as −n).
+        const glm::vec3 tt = tm - n * glm::dot(n, tm);
+        ill_conditioned = ill_conditioned || !(glm::length(tt) > 1e-3f * glm::length(tm));
         k[i] = {glm::vec3(in.transform * glm::vec4(c.position, 1.0f)), n, glm::normalize(tt), c.uv,
                 glm::dot(glm::cross(n, tt), bt) < 0.0f ? -1.0f : 1.0f};
       }
       if (mirrored) std::swap(k[1], k[2]);
       if (degenerate(k[0].position, k[1].position, k[2].position) || !finite(k[0].normal) || !finite(k[1].normal) ||
-          !finite(k[2].normal) || !finite(k[0].tangent) || !finite(k[1].tangent) || !finite(k[2].tangent)) {
+          !finite(k[2].normal) || !finite(k[0].tangent) || !finite(k[1].tangent) || !finite(k[2].tangent) || ill_conditioned) {
         ++report.dropped_degenerate;  // collapsed by its node's transform
         continue;
       }
