@@ -74,6 +74,16 @@ TEST_P(MemoryPath, EqualsTheValueLevelFrameOnRandomScenes) {
     o.threads = threads(rng);
     EXPECT_GT(expect_same(s, ps, GetParam(), o, "trial " + std::to_string(trial)), 200) << "trial " << trial
                                                                                        << ": the head should be in view";
+    // Section 3.4's z-trick (the DPB drawn in PSMZ32, cleared by the ILP pass's Z writes) on the
+    // memory path gives the value-level frame too (every texture_buffer model: each Z write lands on
+    // the word just read).
+    render_options z = o;
+    z.memory_path = true;
+    z.dpb_clear = dpb_clear_mode::z_trick;
+    z.model.tex_buffer = trial % 2 == 0 ? gs::texture_buffer::per_fragment : gs::texture_buffer::quarter_page;
+    o.memory_path = false;
+    const frame a = render(s, ps, GetParam(), o), b = render(s, ps, GetParam(), z);
+    EXPECT_TRUE(a.colour == b.colour && a.dot == b.dot) << "trial " << trial << ": z-trick on the memory path";
   }
 }
 
