@@ -8,6 +8,7 @@
 #include "gs_packets/builder.hpp"
 #include "gs_packets/dump.hpp"
 #include "gs_packets/state.hpp"
+#include "common/temp_dir.hpp"
 
 namespace {
 
@@ -145,8 +146,7 @@ TEST(Dump, CompressedRoundTrips) {
   EXPECT_EQ(compression_for("a.gs.xz"), compression::xz);
   EXPECT_EQ(compression_for("a.gs.zst"), compression::zstd);
   EXPECT_EQ(compression_for("a.gs"), compression::none);
-  const auto dir = std::filesystem::temp_directory_path() / "gsdot3_dump_test";
-  std::filesystem::create_directories(dir);
+  const auto dir = gsdot3::test::fresh_temp_dir("gsdot3-dump-test");
   for (const char* name : {"t.gs", "t.gs.xz", "t.gs.zst"}) {
     save_dump(dir / name, sample());
     EXPECT_EQ(write_dump(load_dump(dir / name)), raw) << name;

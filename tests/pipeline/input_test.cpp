@@ -14,6 +14,7 @@
 #include "pipeline/mesh_import.hpp"
 #include "pipeline/normal_map_image.hpp"
 #include "pipeline/report.hpp"
+#include "common/temp_dir.hpp"
 
 namespace gsdot3::pipeline {
 namespace {
@@ -21,10 +22,7 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path temp_dir() {
-  const fs::path d = fs::temp_directory_path() / ("gsdot3-pipeline-test-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-                                                  "-" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
-  fs::create_directories(d);
-  return d;
+  return gsdot3::test::fresh_temp_dir(std::string("gsdot3-pipeline-test-") + ::testing::UnitTest::GetInstance()->current_test_info()->name());
 }
 
 fs::path write(const fs::path& dir, const std::string& name, const std::string& text) {

@@ -13,6 +13,7 @@
 #include <glm/geometric.hpp>
 
 #include "pipeline/mesh_import.hpp"
+#include "common/temp_dir.hpp"
 
 namespace gsdot3::pipeline {
 namespace {
@@ -137,8 +138,7 @@ TEST(MeshImport, GlbWithEmbeddedNormalMapAndTangents) {
 }
 
 TEST(MeshImport, ZeroUvAreaTriangleGetsACountedFallbackFrame) {
-  const fs::path d = fs::temp_directory_path() / "gsdot3-mesh-import-flatuv";
-  fs::create_directories(d);
+  const fs::path d = gsdot3::test::fresh_temp_dir("gsdot3-mesh-import-flatuv");
   std::ofstream(d / "flatuv.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0.5 0.5\nvn 0 0 1\nf 1/1/1 2/1/1 3/1/1\n";
   const imported_mesh im = import_mesh(d / "flatuv.obj");
   EXPECT_EQ(im.report.zero_uv_area_triangles, 1u);

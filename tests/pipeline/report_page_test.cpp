@@ -13,6 +13,7 @@
 #include "pipeline/report.hpp"
 #include "pipeline/report_page.hpp"
 #include "proofs/claim.hpp"
+#include "common/temp_dir.hpp"
 
 namespace gsdot3::pipeline {
 namespace {
@@ -42,8 +43,7 @@ TEST(ReportPage, GsMethodClaimsAreInTheCatalogue) {
 }
 
 TEST(ReportPage, PageAndPixelFileAreWritten) {
-  const fs::path d = fs::temp_directory_path() / "gsdot3-report-page-test";
-  fs::remove_all(d);
+  const fs::path d = gsdot3::test::fresh_temp_dir("gsdot3-report-page-test");
   scene s = default_scene(16);
   s.width = 64;
   s.height = 56;

@@ -13,6 +13,7 @@
 #include "pipeline/report.hpp"
 #include "pipeline/scheme_method.hpp"
 #include "test_scenes.hpp"
+#include "common/temp_dir.hpp"
 
 namespace gsdot3::pipeline {
 namespace {
@@ -65,8 +66,7 @@ TEST(SchemeHook, PixelWalkCoversTheQuadWithTheClosedFormDot) {
 TEST(SchemeHook, ReportComparesSchemesWithTheReferenceAndClampsWhereTheySaySo) {
   const scheme_method exact{"exact-test", "none", "float N·L", false, exact_scheme};
   const scheme_method clamped{"clamped-test", "none", "float max(N·L, 0)", true, clamped_scheme};
-  const auto dir = std::filesystem::temp_directory_path() / "gsdot3-scheme-test";
-  std::filesystem::remove_all(dir);
+  const auto dir = gsdot3::test::fresh_temp_dir("gsdot3-scheme-test");
   report_request req;
   req.out_dir = dir;
   req.methods = {method::two_pass};

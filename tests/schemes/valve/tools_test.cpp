@@ -10,6 +10,7 @@
 
 #include "pipeline/files.hpp"
 #include "pipeline/image_io.hpp"
+#include "common/temp_dir.hpp"
 
 namespace {
 
@@ -21,8 +22,10 @@ struct run_result {
   std::string err;
 };
 
+fs::path dir();
+
 run_result run(const std::string& args) {
-  const fs::path err = fs::temp_directory_path() / "gsdot3-ssbump-test.err";
+  const fs::path err = dir() / "stderr.txt";
   const int status = std::system((gsdot3_bin + " " + args + " 2>" + err.string() + " >/dev/null").c_str());
   std::ifstream in(err);
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -31,10 +34,7 @@ run_result run(const std::string& args) {
 
 fs::path dir() {
   static const fs::path d = [] {
-    auto p = fs::temp_directory_path() / "gsdot3-ssbump-tools";
-    fs::remove_all(p);
-    fs::create_directories(p);
-    return p;
+    return gsdot3::test::fresh_temp_dir("gsdot3-ssbump-tools");
   }();
   return d;
 }
