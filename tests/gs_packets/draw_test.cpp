@@ -88,6 +88,22 @@ TEST(Draw, FlatSpriteFillsCeilOfItsCornersRightAndBottomExcluded) {
   EXPECT_EQ(g.count_nonzero(), 2);
 }
 
+TEST(Draw, BitsOutsideTheFieldsAreIgnoredReservedFieldValuesNamed) {
+  fixture f;
+  // FRAME_1 with bits 9 and 22 set (between FBP / FBW / PSM: no field there) draws as FRAME_1 = FBP 0, FBW 1.
+  run(f.it, {{FRAME_1, frame(0, 1) | 1 << 9 | 1 << 22}, {PRIM, SPRITE}, {RGBAQ, rgbaq(6, 6, 6, 6)}, {XYZ2, xyz(0, 0)},
+             {XYZ2, xyz(16, 16)}});
+  EXPECT_EQ(f.px(0, 0), 0x06060606u);
+  // ALPHA_1.A = 3 is reserved: the primitive is not drawn and the register is named.
+  mem::local_memory m;
+  interpreter it(m, {.skip_unmodelled = true});
+  run(it, environment());
+  run(it, {{0x42, 3}, {PRIM, SPRITE}, {XYZ2, xyz(0, 0)}, {XYZ2, xyz(16, 16)}});
+  ASSERT_EQ(it.unmodelled_features().size(), 1u);
+  EXPECT_EQ(it.unmodelled_features()[0].what.rfind("SPRITE: context 1 ALPHA (decoded with context 1's layout): ALPHA_1", 0), 0u)
+      << it.unmodelled_features()[0].what;
+}
+
 TEST(Draw, XyoffsetAndScissorPlaceAndClipThePrimitive) {
   fixture f;
   // OFX = 100 px, OFY = 50 px: vertex (101, 52) .. (103, 53) lands on window (1, 2) .. (3, 3).

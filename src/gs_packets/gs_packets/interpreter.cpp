@@ -99,13 +99,21 @@ void interpreter::vertex_kick(bool draw, bool with_fog, std::uint64_t offset) {
 }
 
 void interpreter::load_state(std::span<const std::uint8_t> state, std::uint32_t version) {
-  if (version != 8 || state.size() != dump::state_size_v8) {
-    unmodelled_.push_back({"state version " + std::to_string(version) + ": registers and memory not loaded", 0});
+  const auto layout = dump::state_layout(version, state.size());
+  if (!layout) {
+    unmodelled_.push_back({"state version " + std::to_string(version) + " of " + std::to_string(state.size()) +
+                               " bytes: layout not known, registers and memory not loaded",
+                           0});
     return;
   }
-  for (std::uint32_t i = 0; i < dump::memory_bytes; ++i) mem_.set_byte(i, state[dump::state_memory_offset_v8 + i]);
-  for (const auto& f : dump::state_fields_v8)
+  const std::uint32_t memory = dump::find_field(*layout, "memory")->offset;
+  for (std::uint32_t i = 0; i < dump::memory_bytes; ++i) mem_.set_byte(i, state[memory + i]);
+  for (const auto& f : *layout)
     if (const auto a = gs_register_address(f.name)) regs_[*a] = dump::state_get(state, f);
+  if (const auto* extra = dump::find_field(*layout, "v9_transfer"))
+    unmodelled_.push_back({"state version 9: " + std::to_string(extra->size) +
+                               " bytes of transfer state before the memory skipped (not decoded)",
+                           0});
 }
 
 void interpreter::start_transfer(std::uint64_t offset) {
