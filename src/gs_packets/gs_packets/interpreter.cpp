@@ -50,10 +50,18 @@ draw_registers interpreter::drawing_registers() const {
   return r;
 }
 
+// A CLUT load that cannot be modelled leaves its message until a later load succeeds; a TEX0 that
+// loads nothing (CLD = 0, CLD 4 / 5 with an unchanged CBP, a non-indexed PSM) keeps it. CLD 4 / 5 load
+// exactly when they change CBP0 / CBP1 (gs_memory/clut_load.hpp).
 void interpreter::tex0_written(unsigned context, std::uint64_t offset) {
   try {
-    clut_.state = mem::load_clut(mem_, decode_tex0(regs_[TEX0_1 + context]), clut_.state);
-    clut_.load_error.clear();
+    const tex0_reg t = decode_tex0(regs_[TEX0_1 + context]);
+    const mem::clut_state before = clut_.state;
+    clut_.state = mem::load_clut(mem_, t, clut_.state);
+    const unsigned cld = static_cast<unsigned>(t.CLD.value());
+    const bool loaded = mem::is_indexed(t.PSM) && ((cld >= 1 && cld <= 3) || (cld == 4 && clut_.state.CBP0 != before.CBP0) ||
+                                                   (cld == 5 && clut_.state.CBP1 != before.CBP1));
+    if (loaded) clut_.load_error.clear();
   } catch (const std::invalid_argument& e) {  // register_error too
     clut_.load_error = std::string(e.what()) + " (TEX0 written at byte " + std::to_string(offset) + ")";
   }
