@@ -100,7 +100,7 @@ TEST(Draw, BitsOutsideTheFieldsAreIgnoredReservedFieldValuesNamed) {
   run(it, environment());
   run(it, {{0x42, 3}, {PRIM, SPRITE}, {XYZ2, xyz(0, 0)}, {XYZ2, xyz(16, 16)}});
   ASSERT_EQ(it.unmodelled_features().size(), 1u);
-  EXPECT_EQ(it.unmodelled_features()[0].what.rfind("SPRITE: context 1 ALPHA (decoded with context 1's layout): ALPHA_1", 0), 0u)
+  EXPECT_EQ(it.unmodelled_features()[0].what.rfind("SPRITE: context 1 registers: ALPHA_1", 0), 0u)
       << it.unmodelled_features()[0].what;
 }
 

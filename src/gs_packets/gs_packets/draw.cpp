@@ -38,9 +38,6 @@ constexpr std::uint32_t bits(std::uint64_t v, unsigned lo, unsigned n) noexcept 
   return static_cast<std::uint32_t>((v >> lo) & ((std::uint64_t{1} << n) - 1));
 }
 
-constexpr const char* prim_names[8] = {"POINT", "LINE", "LINE_STRIP", "TRIANGLE", "TRIANGLE_STRIP", "TRIANGLE_FAN",
-                                       "SPRITE", "PRIM 7 (reserved)"};
-
 // Everything one primitive draws with, decoded.
 struct decoded {
   gs_registers regs;  // what gs::pixel_pipeline reads (context registers in the _1 slots)
@@ -100,31 +97,21 @@ std::string decode(const draw_registers& r, std::span<const vertex> v, decoded& 
     return std::string("PRIM.PRIM = ") + prim_names[type & 7] + " (points and lines are not modelled)";
   if (p.FGE) return "PRIM.FGE = 1 (fog)";
   if (p.AA1) return "PRIM.AA1 = 1 (anti-aliasing)";
-  std::string reg = "FRAME";
   try {
     d.regs.FRAME_1 = decode_frame(r.FRAME & frame_fields);
-    reg = "TEST";
     d.regs.TEST_1 = decode_test(r.TEST & test_fields);
-    reg = "ALPHA";
     d.regs.ALPHA_1 = decode_alpha(r.ALPHA & alpha_fields);
-    reg = "FBA";
     d.regs.FBA_1 = decode_fba(r.FBA & one_bit);
-    reg = "COLCLAMP";
     d.regs.COLCLAMP = decode_colclamp(r.COLCLAMP & one_bit);
-    reg = "PABE";
     d.regs.PABE = decode_pabe(r.PABE & one_bit);
-    reg = "DTHE";
     d.regs.DTHE = decode_dthe(r.DTHE & one_bit);
-    reg = "DIMX";
     d.regs.DIMX = decode_dimx(r.DIMX & dimx_fields);
     if (p.TME) {
-      reg = "TEX0";
       d.regs.TEX0_1 = decode_tex0(r.TEX0);
-      reg = "CLAMP";
       d.clamp = mem::decode_clamp(r.CLAMP & clamp_fields);
     }
   } catch (const register_error& e) {
-    return ctx + reg + " (decoded with context 1's layout): " + e.what();
+    return ctx + "registers: " + e.what();  // the decoders name the field as context 1's (ALPHA_1.A ...)
   }
   d.frame = {mem::from_page(d.regs.FRAME_1.FBP), d.regs.FRAME_1.FBW,
              static_cast<mem::psm>(static_cast<std::uint8_t>(d.regs.FRAME_1.PSM))};

@@ -11,9 +11,7 @@
 namespace gs::packets {
 namespace {
 
-// PRIM.PRIM (bits 0-2) names, GS User's Manual, and the vertices each needs.
-constexpr const char* prim_names[8] = {"POINT", "LINE", "LINE_STRIP", "TRIANGLE", "TRIANGLE_STRIP", "TRIANGLE_FAN",
-                                       "SPRITE", "PRIM 7 (reserved)"};
+// The vertices each PRIM.PRIM type needs (GS User's Manual; PCSX2 `NumIndicesForPrim`: 1 for the reserved 7).
 constexpr unsigned prim_vertices[8] = {1, 2, 2, 3, 3, 3, 2, 1};
 
 // Context register addresses (context 2 = context 1 + 1), gs_registers.hpp.
