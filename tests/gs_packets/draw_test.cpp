@@ -44,6 +44,11 @@ constexpr std::uint8_t PRIM = 0x00, RGBAQ = 0x01, UV = 0x03, XYZ2 = 0x05, XYZ3 =
 
 const mem::buffer fb0{fixed::uint<14>::from_wrapped(0), fixed::uint<6>::from_wrapped(1), mem::psm::PSMCT32};
 
+// CSM1 stores a 256-entry CLUT with entries 8..15 and 16..23 of every 32 swapped (GS User's Manual,
+// CLUT buffer; PCSX2's clutTableT32I8): raster position = index with bits 3 and 4 exchanged.
+constexpr unsigned csm1_raster(unsigned i) { return (i & ~0x18u) | ((i & 0x08u) << 1) | ((i & 0x10u) >> 1); }
+constexpr std::uint32_t clut_word(unsigned p) { return 0x80000000u | (p << 16) | ((255u - p) << 8) | p; }
+
 void run(interpreter& it, const writes& w) {
   packet_builder pb;
   pb.ad(w, true);
@@ -230,11 +235,6 @@ TEST(Draw, VertexQueueStripFanListAndXyz3) {
   EXPECT_EQ(xyz3.px(6, 1), 0u);
 }
 
-// CSM1 stores a 256-entry CLUT with entries 8..15 and 16..23 of every 32 swapped (GS User's Manual,
-// CLUT buffer; PCSX2's clutTableT32I8): raster position = index with bits 3 and 4 exchanged.
-constexpr unsigned csm1_raster(unsigned i) { return (i & ~0x18u) | ((i & 0x08u) << 1) | ((i & 0x10u) >> 1); }
-constexpr std::uint32_t clut_word(unsigned p) { return 0x80000000u | (p << 16) | ((255u - p) << 8) | p; }
-
 TEST(Draw, TexturedSpriteReadsPsmt8ThroughTheClutLoadedOnTex0) {
   fixture f;
   packet_builder pb;
@@ -269,6 +269,41 @@ TEST(Draw, TexturedSpriteReadsPsmt8ThroughTheClutLoadedOnTex0) {
     for (unsigned x = 0; x < 16; ++x)
       ASSERT_EQ(f.px(static_cast<int>(x), static_cast<int>(y)), clut_word(csm1_raster(y * 16 + x))) << x << "," << y;
   EXPECT_EQ(f.count_nonzero(), 256);
+}
+
+TEST(Draw, Psmt8ThroughASixteenBitClutIsWidenedWithTexa) {
+  fixture f;
+  packet_builder pb;
+  // The 16×16 PSMT8 texture (index y·16 + x) at block 2048, TBW 2; a PSMCT16 CLUT image 16×16 at block
+  // 4096 whose raster position p holds (p & 31) | 0x8000 for odd p (red p & 31, A bit set), p << 5 for
+  // even p (green, A bit clear). TEXA TA0 0x11, TA1 0x99, AEM 0.
+  pb.ad(writes{{0x50, std::uint64_t{2048} << 32 | std::uint64_t{2} << 48 | std::uint64_t{0x13} << 56}, {0x51, 0},
+               {0x52, 16 | std::uint64_t{16} << 32}, {0x53, 0}});
+  std::vector<std::uint8_t> idx(256);
+  for (unsigned i = 0; i < 256; ++i) idx[i] = static_cast<std::uint8_t>(i);
+  pb.image(idx);
+  pb.ad(writes{{0x50, std::uint64_t{4096} << 32 | std::uint64_t{1} << 48 | std::uint64_t{2} << 56}, {0x51, 0},
+               {0x52, 16 | std::uint64_t{16} << 32}, {0x53, 0}});
+  auto half = [](unsigned p) { return p % 2 == 1 ? (p & 31u) | 0x8000u : (p & 31u) << 5; };
+  std::vector<std::uint8_t> halves;
+  for (unsigned p = 0; p < 256; ++p) halves.push_back(static_cast<std::uint8_t>(half(p))), halves.push_back(static_cast<std::uint8_t>(half(p) >> 8));
+  pb.image(halves);
+  // TEX0 as the PSMCT32-CLUT test but CPSM = PSMCT16 (2, bit 51).
+  const std::uint64_t tex0 = 2048 | 2 << 14 | std::uint64_t{0x13} << 20 | std::uint64_t{4} << 26 | std::uint64_t{4} << 30 |
+                             std::uint64_t{1} << 34 | std::uint64_t{1} << 35 | std::uint64_t{4096} << 37 |
+                             std::uint64_t{2} << 51 | std::uint64_t{1} << 61;
+  pb.ad(writes{{0x3B, 0x11 | std::uint64_t{0x99} << 32}, {TEX0_1, tex0}, {PRIM, SPRITE | TME | FST}, {UV, 8 | 8 << 16},
+               {XYZ2, xyz(0, 0)}, {UV, 264 | 264 << 16}, {XYZ2, xyz(256, 256)}},
+        true);
+  const auto bytes = pb.bytes();
+  for (const gif_event& e : decode_gif(bytes)) f.it.apply(e, 16u * e.offset);
+  ASSERT_TRUE(f.it.unmodelled_features().empty()) << f.it.unmodelled_features()[0].what;
+  for (unsigned y = 0; y < 16; ++y)
+    for (unsigned x = 0; x < 16; ++x) {
+      const unsigned p = csm1_raster(y * 16 + x);
+      const std::uint32_t want = p % 2 == 1 ? 0x99000000u | ((p & 31u) << 3) : 0x11000000u | ((p & 31u) << 3) << 8;
+      ASSERT_EQ(f.px(static_cast<int>(x), static_cast<int>(y)), want) << x << "," << y;
+    }
 }
 
 TEST(Draw, SixteenBitTexelsTakeTheirAlphaFromTexa) {

@@ -55,7 +55,8 @@ TEST(RendererMatch, RandomTexturedGouraudTrianglesGiveTheRenderersFrame) {
   o.path = pl::raster_path::reference;
   std::vector<std::uint32_t> z(W * H, 0), frame(W * H, 0x40808080u);
   std::vector<std::int32_t> visible(W * H, -1);
-  pl::detail::band_renderer r(ps, o, pl::scissor{0, 0, W, H}, z, visible);
+  pl::detail::band_renderer r(ps, o, pl::scissor{0, 0, W, H}, pl::detail::z_view{pl::detail::row_view{z.data(), W}, {}, false},
+                              visible);
   const pl::texture_ref tex{T, T, nullptr, nullptr, texels.data(), false, o.model.bilinear, nullptr, {}};
   const auto attr = pl::detail::attributes(
       ps, [&](std::uint32_t v) { return colours[v]; },
@@ -64,7 +65,7 @@ TEST(RendererMatch, RandomTexturedGouraudTrianglesGiveTheRenderersFrame) {
       });
   r.draw<textured_blend>(&tex, attr, pl::detail::row_view{frame.data(), W});
 
-  // The packets: FRAME_1 FBP 0 FBW 1; ZBUF_1 page 8 PSMZ32 ZMSK; TEST ZTE GEQUAL; XYOFFSET 2048 px;
+  // The packets: FRAME_1 FBP 0 FBW 1; ZBUF_1 page 8 PSMZ24 ZMSK (the renderer's Z buffer); TEST ZTE GEQUAL; XYOFFSET 2048 px;
   // SCISSOR 0..63; the texture PSMCT32 16×16 at block 1024 (TBW 1), uploaded; TEX0 TW = TH = 4,
   // TCC RGBA, TFX MODULATE; TEX1 MMAG = MMIN = LINEAR; CLAMP REPEAT; ALPHA A = Cs, B = Cd, C = As, D = Cd.
   mem::local_memory m;
@@ -82,7 +83,7 @@ TEST(RendererMatch, RandomTexturedGouraudTrianglesGiveTheRenderersFrame) {
   const std::uint64_t tex0 = 1024 | std::uint64_t{1} << 14 | std::uint64_t{4} << 26 | std::uint64_t{4} << 30 |
                              std::uint64_t{1} << 34;  // TFX MODULATE = 0
   std::vector<std::pair<std::uint8_t, std::uint64_t>> w{
-      {0x1A, 1}, {0x46, 1}, {0x4C, std::uint64_t{1} << 16}, {0x4E, 8 | std::uint64_t{1} << 32},
+      {0x1A, 1}, {0x46, 1}, {0x4C, std::uint64_t{1} << 16}, {0x4E, 8 | 1 << 24 | std::uint64_t{1} << 32},
       {0x47, 1 << 16 | 2 << 17}, {0x18, std::uint64_t{2048 * 16} | std::uint64_t{2048 * 16} << 32},
       {0x40, 63 << 16 | std::uint64_t{63} << 48}, {0x06, tex0}, {0x14, 1 << 5 | 1 << 6}, {0x08, 0},
       {0x42, 0 | 1 << 2 | 0 << 4 | 1 << 6}, {0x00, 3 | 1 << 3 | 1 << 4 | 1 << 6 | 1 << 8}};

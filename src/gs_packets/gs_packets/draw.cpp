@@ -22,14 +22,15 @@
 #include "gs_arith/attribute_setup.hpp"
 #include "gs_arith/bilinear.hpp"
 #include "gs_arith/clut.hpp"
+#include "gs_arith/depth_test.hpp"
 #include "gs_arith/pixel_pipeline.hpp"
 #include "gs_arith/rasteriser.hpp"
 #include "gs_arith/registers.hpp"
 #include "gs_memory/address.hpp"
+#include "gs_memory/clut_load.hpp"
 #include "gs_memory/memory_registers.hpp"
 #include "gs_memory/texture_buffer.hpp"
 #include "gs_memory/texture_wrap.hpp"
-#include "gs_packets/depth_test.hpp"
 
 namespace gs::packets {
 namespace {
@@ -45,8 +46,7 @@ struct decoded {
   scissor clip;
   std::int32_t ofx = 0, ofy = 0;
   mem::buffer frame, zbuf;
-  bool zmsk = false;
-  unsigned z_bits = 32;
+  zbuf_reg ZBUF;
   std::uint8_t ta0 = 0, ta1 = 0;
   bool aem = false;
   unsigned scanmsk = 0;
@@ -117,10 +117,8 @@ std::string decode(const draw_registers& r, std::span<const vertex> v, decoded& 
              static_cast<mem::psm>(static_cast<std::uint8_t>(d.regs.FRAME_1.PSM))};
   const unsigned zpsm = bits(r.ZBUF, 24, 4);
   if (zpsm != 0 && zpsm != 1 && zpsm != 2 && zpsm != 0xA) return ctx + "ZBUF.PSM = " + std::to_string(zpsm) + " (reserved)";
-  d.zbuf = {mem::from_page(fixed::uint<9>::from_wrapped(bits(r.ZBUF, 0, 9))), d.regs.FRAME_1.FBW,
-            static_cast<mem::psm>(0x30 | zpsm)};
-  d.zmsk = bits(r.ZBUF, 32, 1) != 0;
-  d.z_bits = mem::value_bits(d.zbuf.PSM);
+  d.ZBUF = {fixed::uint<9>::from_wrapped(bits(r.ZBUF, 0, 9)), static_cast<zbuf_psm>(zpsm), bits(r.ZBUF, 32, 1) != 0};
+  d.zbuf = {mem::from_page(d.ZBUF.ZBP), d.regs.FRAME_1.FBW, static_cast<mem::psm>(0x30 | zpsm)};
   d.ofx = static_cast<std::int32_t>(bits(r.XYOFFSET, 0, 16));
   d.ofy = static_cast<std::int32_t>(bits(r.XYOFFSET, 32, 16));
   d.clip = {static_cast<int>(bits(r.SCISSOR, 0, 11)), static_cast<int>(bits(r.SCISSOR, 32, 11)),
@@ -138,24 +136,32 @@ std::string decode(const draw_registers& r, std::span<const vertex> v, decoded& 
   return {};
 }
 
-// A texel's colour from its raw value (gs_memory's right-aligned value bits). 24- and 16-bit texels
-// take their alpha from TEXA (GS User's Manual TEXA: TA0 for PSMCT24 and for 16-bit texels with the
-// A bit 0, TA1 with it 1; AEM = 1 makes A = 0 where R = G = B = 0); 16-bit RGB are widened as c << 3.
+// A 16-bit colour (texel or CLUT entry) widened with TEXA (GS User's Manual TEXA: TA0 for the A bit 0,
+// TA1 for 1; AEM = 1 makes A = 0 where R = G = B = 0); RGB widened as c << 3.
+rgba8 expand16(const decoded& d, std::uint32_t t) {
+  const std::uint32_t r = (t & 31u) << 3, g = ((t >> 5) & 31u) << 3, b = ((t >> 10) & 31u) << 3;
+  const std::uint8_t a = (t & 0x8000u) != 0 ? d.ta1 : (d.aem && (t & 0x7FFFu) == 0 ? std::uint8_t{0} : d.ta0);
+  return rgba8::from_u32(r | (g << 8) | (b << 16) | (std::uint32_t{a} << 24));
+}
+
+// A texel's colour from its raw value (gs_memory's right-aligned value bits). PSMCT24 takes A = TA0
+// (0 for black under AEM); 16-bit texels expand16; indexed texels look up the CLUT buffer: a 32-bit
+// entry (CPSM = PSMCT32), or a 16-bit half (PSMCT16/16S: half i for PSMT8, 16·CSA + i for PSMT4,
+// gs_memory/clut_load.hpp's storage) widened by expand16.
 rgba8 texel_colour(const decoded& d, const clut_buffer& clut, std::uint32_t t) {
   const tex0_reg& x = d.regs.TEX0_1;
+  const bool clut16 = x.CPSM != clut_psm::PSMCT32;
   switch (mem::value_bits(x.PSM)) {
     case 32: return rgba8::from_u32(t);
     case 24: {
       const bool black = (t & 0xFFFFFFu) == 0;
       return rgba8::from_u32((t & 0xFFFFFFu) | (std::uint32_t{d.aem && black ? std::uint8_t{0} : d.ta0} << 24));
     }
-    case 16: {
-      const std::uint32_t r = (t & 31u) << 3, g = ((t >> 5) & 31u) << 3, b = ((t >> 10) & 31u) << 3;
-      const std::uint8_t a = (t & 0x8000u) != 0 ? d.ta1 : (d.aem && (t & 0x7FFFu) == 0 ? std::uint8_t{0} : d.ta0);
-      return rgba8::from_u32(r | (g << 8) | (b << 16) | (std::uint32_t{a} << 24));
-    }
-    case 8: return clut_t8(clut, u8::from_wrapped(t));
-    default: return clut_t4(clut, fixed::u4::from_wrapped(t), x.CSA);
+    case 16: return expand16(d, t);
+    case 8: return clut16 ? expand16(d, mem::clut_half(clut, t)) : clut_t8(clut, u8::from_wrapped(t));
+    default:
+      return clut16 ? expand16(d, mem::clut_half(clut, 16u * static_cast<std::uint32_t>(x.CSA.value()) + t))
+                    : clut_t4(clut, fixed::u4::from_wrapped(t), x.CSA);
   }
 }
 
@@ -200,7 +206,6 @@ std::uint64_t draw_primitive(mem::local_memory& m, const draw_registers& r, cons
   };
   const bilinear_mode filter = d.linear ? o.bilinear : bilinear_mode::nearest;
   const bool ZTE = d.regs.TEST_1.ZTE;
-  const std::uint32_t zmax = z_max(d.z_bits);
   const unsigned fbits = mem::value_bits(d.frame.PSM);
   std::uint64_t pixels = 0;
   auto shade = [&](int x, int y, const fragment_colour& cf, std::int32_t u16, std::int32_t v16, std::uint32_t z) {
@@ -208,12 +213,12 @@ std::uint64_t draw_primitive(mem::local_memory& m, const draw_registers& r, cons
     const auto ux = static_cast<std::uint32_t>(x), uy = static_cast<std::uint32_t>(y);
     const std::uint32_t dst = m.read_pixel(d.frame, ux, uy);
     if (d.regs.TEST_1.DATE && fbits != 24 && (((dst >> (fbits - 1)) & 1u) != 0) != d.regs.TEST_1.DATM) return;
-    z = std::min(z, zmax);
-    if (ZTE && !depth_test(true, d.regs.TEST_1.ZTST, z, m.read_pixel(d.zbuf, ux, uy))) return;
+    const depth_result zt = depth_test(d.regs.TEST_1, d.ZBUF, z, ZTE ? m.read_pixel(d.zbuf, ux, uy) : 0);
+    if (!zt.pass) return;
     const rgba8 texel = p.TME ? sample(fetch, u16, v16, filter) : rgba8{};
     const pixel_trace t = pixel_pipeline(d.regs, {cf, texel, dst, ux, uy}, o);
     m.write_pixel(d.frame, ux, uy, t.out);
-    if (depth_write(ZTE, d.zmsk, t.test.z)) m.write_pixel(d.zbuf, ux, uy, z);
+    if (zt.write_z && t.test.z) m.write_pixel(d.zbuf, ux, uy, zt.z);  // ZMSK, and the alpha test's Z enable
     ++pixels;
   };
   auto window = [&](const vertex& x) { return xy124{x.X - d.ofx, x.Y - d.ofy}; };

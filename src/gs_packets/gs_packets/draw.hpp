@@ -5,13 +5,13 @@
 // Units used (one implementation each, shared with the renderer): gs::setup_triangle /
 // rasterise_triangle / rasterise_sprite (gs_arith/rasteriser.hpp), gs::setup_attributes (Gouraud and
 // UV planes, gs_arith/attribute_setup.hpp), gs::sample (TEX1 filter), gs::mem::wrap (CLAMP),
-// gs::mem::load_clut (TEX0.CLD), gs::pixel_pipeline, and depth_test.hpp.
+// gs::mem::load_clut (TEX0.CLD), gs::depth_test (gs_arith/depth_test.hpp), gs::pixel_pipeline.
 // Per pixel, in order: SCISSOR (the rasteriser's clip), SCANMSK, the destination-alpha test (TEST.DATE /
 // DATM: the frame pixel's top bit, bit 31 or 15; PSMCT24 has none and passes), the depth test, then
 // texture fetch and gs::pixel_pipeline, the frame write (FBMSK and the alpha test inside the pipeline)
 // and the Z write.
 // What the model lacks is not drawn: check_primitive names it (fog PRIM.FGE, AA1, POINT and LINE
-// primitives, mip-mapping, per-pixel LOD, perspective ST/Q with differing Q, a 16-bit CLUT, a register
+// primitives, mip-mapping, per-pixel LOD, perspective ST/Q with differing Q, a CLUT load gs_memory refuses, a register
 // value the decoders refuse), and draw_primitive draws nothing when the name is not empty.
 #pragma once
 

@@ -17,7 +17,7 @@ constexpr unsigned prim_vertices[8] = {1, 2, 2, 3, 3, 3, 2, 1};
 // Context register addresses (context 2 = context 1 + 1), gs_registers.hpp.
 constexpr std::uint8_t XYOFFSET_1 = 0x18, TEX0_1 = 0x06, TEX1_1 = 0x14, TEX2_1 = 0x16, CLAMP_1 = 0x08, SCISSOR_1 = 0x40,
                        ALPHA_1 = 0x42, TEST_1 = 0x47, FBA_1 = 0x4A, FRAME_1 = 0x4C, ZBUF_1 = 0x4E, PRMODECONT = 0x1A,
-                       PRMODE = 0x1B, TEXA = 0x3B, DIMX = 0x44, DTHE = 0x45, COLCLAMP = 0x46, PABE = 0x49, SCANMSK = 0x22;
+                       PRMODE = 0x1B, TEXCLUT = 0x1C, TEXA = 0x3B, DIMX = 0x44, DTHE = 0x45, COLCLAMP = 0x46, PABE = 0x49, SCANMSK = 0x22;
 // TEX2's fields (PSM 20-25, CBP 37-50, CPSM 51-54, CSM 55, CSA 56-60, CLD 61-63) at TEX0's positions.
 constexpr std::uint64_t tex2_mask = (std::uint64_t{0x3F} << 20) | (~std::uint64_t{0} << 37);
 
@@ -48,6 +48,7 @@ draw_registers interpreter::drawing_registers() const {
   return r;
 }
 
+// TEXCLUT (CBW 0-5, COU 6-11, COV 12-21: bits outside them dropped) is what CSM2 loads read.
 // A CLUT load that cannot be modelled leaves its message until a later load succeeds; a TEX0 that
 // loads nothing (CLD = 0, CLD 4 / 5 with an unchanged CBP, a non-indexed PSM) keeps it. CLD 4 / 5 load
 // exactly when they change CBP0 / CBP1 (gs_memory/clut_load.hpp).
@@ -55,7 +56,7 @@ void interpreter::tex0_written(unsigned context, std::uint64_t offset) {
   try {
     const tex0_reg t = decode_tex0(regs_[TEX0_1 + context]);
     const mem::clut_state before = clut_.state;
-    clut_.state = mem::load_clut(mem_, t, clut_.state);
+    clut_.state = mem::load_clut(mem_, t, clut_.state, mem::decode_texclut(regs_[TEXCLUT] & 0x3FFFFF));
     const unsigned cld = static_cast<unsigned>(t.CLD.value());
     const bool loaded = mem::is_indexed(t.PSM) && ((cld >= 1 && cld <= 3) || (cld == 4 && clut_.state.CBP0 != before.CBP0) ||
                                                    (cld == 5 && clut_.state.CBP1 != before.CBP1));

@@ -1,7 +1,8 @@
 // pipeline/band_renderer.hpp — drawing GS passes over one horizontal band of the frame (internal
 // to render.cpp): step 1 (Z and ambient), triangle passes with ZTST = GEQUAL, 2D sprite passes, and
 // the per-triangle attributes (gs::gouraud_triangle colour planes, UV planes) a pass draws with.
-// Every pixel goes through gs::pixel_pipeline with the pass's registers as a compile-time constant.
+// Every pixel goes through gs::pixel_pipeline with the pass's registers as a compile-time constant,
+// and every triangle pixel through gs::depth_test with the pass's TEST_1 / ZBUF_1.
 #pragma once
 
 #include <algorithm>
@@ -11,6 +12,7 @@
 #include <vector>
 
 #include "gs_arith/attribute_setup.hpp"
+#include "gs_arith/depth_test.hpp"
 #include "gs_arith/gouraud.hpp"
 #include "gs_memory/swizzle_tables.hpp"
 #include "pipeline/gs_pass.hpp"
@@ -19,8 +21,18 @@
 
 namespace gsdot3::pipeline::detail {
 
-// Step 1's register set: TME = 0, ABE = 0, COLCLAMP = 1.
+// Step 1's register set: TME = 0, ABE = 0, COLCLAMP = 1; the memory path's clears use the same.
 inline constexpr pass_regs step1_ambient{};
+inline constexpr pass_regs clear_sprite{};
+
+// The depth test of the methods (section 3.1): TEST_1.ZTE = 1, ZTST = GEQUAL (larger Z is nearer);
+// ZBUF_1.PSM = PSMZ24 (the prepared Z planes are 24-bit, 0..0xFFFFFF, so Z24 holds them exactly and
+// the clamp never acts; the layout is PSMZ32's), ZMSK = 0 in step 1 (Z written), 1 in every later pass.
+// The Z clear before step 1 is a sprite with Z = 0 and ZTST = ALWAYS.
+inline constexpr gs::test_reg depth_gequal{false, gs::atst::NEVER, {}, gs::afail::KEEP, false, false, true, gs::ztst::GEQUAL};
+inline constexpr gs::test_reg depth_always{false, gs::atst::NEVER, {}, gs::afail::KEEP, false, false, true, gs::ztst::ALWAYS};
+inline constexpr gs::zbuf_reg z_written{{}, gs::zbuf_psm::PSMZ24, false};
+inline constexpr gs::zbuf_reg z_masked{{}, gs::zbuf_psm::PSMZ24, true};
 
 // Per-triangle attributes of one pass: the Gouraud plane and the UV planes (gs::setup_attributes).
 using tri_attr = gs::triangle_attributes;
@@ -46,6 +58,21 @@ struct memory_view {
   }
 };
 
+// The Z buffer (ZBUF_1, PSMZ24): row-major on the value path, at ZBP in the modelled local memory on
+// the memory path (the word of PSMZ24 pixel (x, y): memory_view in the Z layout). A write keeps the
+// word's top byte (PSMZ24 stores bits 0-23).
+struct z_view {
+  row_view rows;
+  memory_view memory;
+  bool in_memory = false;
+  std::uint32_t& operator()(int x, int y) const noexcept { return in_memory ? memory(x, y) : rows(x, y); }
+  std::uint32_t read(int x, int y) const noexcept { return (*this)(x, y); }
+  void write(int x, int y, std::uint32_t z) const noexcept {
+    std::uint32_t& w = (*this)(x, y);
+    w = (w & 0xFF000000u) | (z & 0x00FFFFFFu);
+  }
+};
+
 struct fragment {
   std::int32_t tri;
   std::int16_t x, y;
@@ -54,7 +81,7 @@ struct fragment {
 // One band of the frame and its buffers (rows [band.y0, band.y1) of the frame-sized buffers).
 class band_renderer {
  public:
-  band_renderer(const prepared_scene& ps, const render_options& o, scissor band, std::vector<std::uint32_t>& z,
+  band_renderer(const prepared_scene& ps, const render_options& o, scissor band, const z_view& z,
                 std::vector<std::int32_t>& visible)
       : ps_(ps), o_(o), band_(band), sprite_area_(drawn_area(ps, band)), z_(z), visible_(visible) {}
 
@@ -63,16 +90,20 @@ class band_renderer {
   void depth_and_ambient(const FB& lab, gs::rgba8 ambient) {
     fill(lab, 0);
     for (int y = band_.y0; y < band_.y1; ++y)
-      for (int x = band_.x0; x < band_.x1; ++x) z_[index(x, y)] = 0, visible_[index(x, y)] = -1;
+      for (int x = band_.x0; x < band_.x1; ++x) {
+        const gs::depth_result d = gs::depth_test(depth_always, z_written, 0, z_.read(x, y));
+        if (d.write_z) z_.write(x, y, d.z);
+        visible_[index(x, y)] = -1;
+      }
     constexpr gs::gs_registers regs = step1_ambient.registers();
     const gs::fragment_colour cf = gs::fragment_colour::flat(ambient);
     for (std::size_t t = 0; t < ps_.triangles.size(); ++t) {
       const prepared_triangle& tri = ps_.triangles[t];
       rasterise_triangle(tri.setup, band_, [&](int x, int y) {
         const std::size_t i = index(x, y);
-        const auto z = static_cast<std::uint32_t>(tri.z.at(x, y));
-        if (z < z_[i]) return;
-        z_[i] = z;
+        const gs::depth_result d = gs::depth_test(depth_gequal, z_written, static_cast<std::uint32_t>(tri.z.at(x, y)), z_.read(x, y));
+        if (!d.pass) return;
+        if (d.write_z) z_.write(x, y, d.z);
         visible_[i] = static_cast<std::int32_t>(t);
         lab(x, y) = gs_pixel(regs, gs::rgba8{}, cf, lab(x, y), x, y, o_.model);
         ++ops_;
@@ -83,7 +114,7 @@ class band_renderer {
       for (std::size_t t = 0; t < ps_.triangles.size(); ++t) {
         const prepared_triangle& tri = ps_.triangles[t];
         rasterise_triangle(tri.setup, band_, [&](int x, int y) {
-          if (static_cast<std::uint32_t>(tri.z.at(x, y)) >= z_[index(x, y)])
+          if (passes_later_depth_test(tri, x, y))
             frags_.push_back({static_cast<std::int32_t>(t), static_cast<std::int16_t>(x), static_cast<std::int16_t>(y)});
         });
       }
@@ -110,7 +141,7 @@ class band_renderer {
     for (std::size_t t = 0; t < ps_.triangles.size(); ++t) {
       const prepared_triangle& tri = ps_.triangles[t];
       rasterise_triangle(tri.setup, band_, [&](int x, int y) {
-        if (static_cast<std::uint32_t>(tri.z.at(x, y)) >= z_[index(x, y)]) shade(t, x, y);
+        if (passes_later_depth_test(tri, x, y)) shade(t, x, y);
       });
     }
   }
@@ -141,15 +172,17 @@ class band_renderer {
     });
   }
 
-  // Fills the band (`whole`) or only the sprite area (where any pass can write) with v.
+  // Fills the band (`whole`) or only the sprite area (where any pass can write) with v: on the value
+  // path directly, on the memory path as the GS clears, a flat sprite (TME = 0, ABE = 0, RGBAQ = v).
   template <class FB>
   void fill(const FB& fb, std::uint32_t v, bool whole = true) {
     const scissor& a = whole ? band_ : sprite_area_;
-    for (int y = a.y0; y < a.y1; ++y)
-      if (a.x0 < a.x1) {
-        if constexpr (std::is_same_v<FB, row_view>) std::fill(&fb(a.x0, y), &fb(a.x0, y) + (a.x1 - a.x0), v);
-        else for (int x = a.x0; x < a.x1; ++x) fb(x, y) = v;
-      }
+    if constexpr (std::is_same_v<FB, row_view>) {
+      for (int y = a.y0; y < a.y1; ++y)
+        if (a.x0 < a.x1) std::fill(&fb(a.x0, y), &fb(a.x0, y) + (a.x1 - a.x0), v);
+    } else {
+      sprite_rect<clear_sprite>(gs::rgba8::from_u32(v), a, [](int, int) { return gs::rgba8{}; }, fb, &a);
+    }
   }
 
   std::size_t index(int x, int y) const { return static_cast<std::size_t>(y) * static_cast<std::size_t>(ps_.width) + static_cast<std::size_t>(x); }
@@ -167,6 +200,11 @@ class band_renderer {
   }
 
  private:
+  // The depth test of every pass after step 1 (GEQUAL, ZMSK = 1: Z is only read).
+  bool passes_later_depth_test(const prepared_triangle& tri, int x, int y) const noexcept {
+    return gs::depth_test(depth_gequal, z_masked, static_cast<std::uint32_t>(tri.z.at(x, y)), z_.read(x, y)).pass;
+  }
+
   // The bounding rectangle of every drawn triangle's pixels, within the band (may be empty).
   static scissor drawn_area(const prepared_scene& ps, scissor band) {
     scissor a{band.x1, band.y1, band.x0, band.y0};
@@ -183,7 +221,7 @@ class band_renderer {
   const prepared_scene& ps_;
   const render_options& o_;
   scissor band_, sprite_area_;
-  std::vector<std::uint32_t>& z_;
+  z_view z_;
   std::vector<std::int32_t>& visible_;
   std::vector<fragment> frags_;
   std::size_t ops_ = 0;

@@ -5,7 +5,8 @@
 //   colour:   gs::gouraud_at (PRIM.IIP = 1, 8.7)  or  gs::fragment_colour::flat (sprites, RGBAQ)
 //   pixel:    gs::pixel_pipeline (TFX/TCC, alpha test, blend, dither, COLCLAMP, FBA, FBMSK write)
 // The methods leave the alpha test, PABE, FBA and dither off (PSMCT32 targets). The depth test is
-// ZTST = GEQUAL (larger Z is nearer), with ZMSK set in every pass after the first (render.cpp).
+// ZTST = GEQUAL (larger Z is nearer), with ZMSK set in every pass after the first (band_renderer.hpp,
+// through gs::depth_test).
 #pragma once
 
 #include <cstdint>

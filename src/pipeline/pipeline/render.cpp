@@ -9,16 +9,20 @@
 //   channel fetch of the R+G+B post filter (the GS reads the DPB as PSMT8 with swizzled sprites,
 //   section 3.3) takes the byte from the same pixel's word directly, as do the ILP's read of the
 //   summed byte and step 4's move of a LAB channel into the destination alpha (C = Ad).
-// - memory path: the DPB, LAB, diffuse layer and output are PSMCT32 buffers in the modelled 4 MiB
-//   local memory (gs_memory) at FBP 0, P, 2P, 3P (P = pages per buffer); the post filter, the ILP
-//   read and step 4's channel move are gs_memory's channel-fetch sprites (the DPB / LAB read as a
-//   PSMT8 texture, TBW = 2·FBW, TBP0 per page, CLAMP_1 REGION_REPEAT), each texel through the PSMT8
-//   address function; the two-pass alpha pass reads the DPB as PSMT8H. The normal map (PSMT8), the
-//   sphere map and the diffuse texture (PSMCT32) are uploaded by host -> local transfers and every
-//   texel is read from memory; the palettes (incl. the ILP) are uploaded as CSM1 images and loaded
-//   into the CLUT buffer by TEX0.CLD (upload_inputs). Still value level on this path: the copy of
-//   the LAB into the output before step 4 (a local -> local PSMCT32 copy of the same layout) and the
-//   Z buffer (row-major; ZTST = GEQUAL is evaluated on it).
+// - memory path: every buffer is in the modelled 4 MiB local memory (gs_memory): the DPB at FBP 0
+//   (PSMCT32; step 3 draws the diffuse layer into it, as the paper's step 3 says: "We are done with
+//   the DPB. Clear it to zero and render all objects unlit"), the LAB at P, the output at 2P (P =
+//   pages per buffer) and the Z buffer at ZBP = 3P (PSMZ24, band_renderer.hpp's z_view), the
+//   textures from 4P on: at 512×448 that is 4 × 112 of the 512 pages, none overlapping. The post
+//   filter, the ILP read and step 4's channel move are gs_memory's channel-fetch sprites (the DPB /
+//   LAB read as a PSMT8 texture, TBW = 2·FBW, TBP0 per page, CLAMP_1 REGION_REPEAT), each texel
+//   through the PSMT8 address function; the two-pass alpha pass reads the DPB as PSMT8H. The copy of
+//   the LAB into the output before step 4 is a local -> local transfer (TRXDIR = 2, copy_lab): the
+//   GS's own copy, no pixel arithmetic, and with SPSM = PSMZ32 it is also the paper's "unswizzle the
+//   LAB" of the z-trick-psmz32 mode. The normal map (PSMT8), the sphere map and the diffuse texture
+//   (PSMCT32) are uploaded by host -> local transfers and every texel is read from memory; the
+//   palettes (incl. the ILP) are uploaded as CSM1 images and loaded into the CLUT buffer by TEX0.CLD
+//   (upload_inputs). Both paths run the depth test through gs::depth_test.
 #include "pipeline/render.hpp"
 
 #include <algorithm>
@@ -202,7 +206,8 @@ gs::rgba8 rgb(int r, int g, int b, int a) { return {byte(r), byte(g), byte(b), b
 
 template <class FB>
 struct frame_buffers {
-  std::vector<std::uint32_t> z;
+  std::vector<std::uint32_t> z;  // the value path's Z buffer storage (zb's rows)
+  z_view zb;
   FB lab, dpb, diff, out;
   gs::mem::local_memory* memory = nullptr;  // the memory path's local memory, else null
   dpb_clear_mode clear = dpb_clear_mode::explicit_clear;
@@ -278,8 +283,11 @@ void channel_pass(band_renderer& r, const frame_buffers<memory_view>& fb, gs::rg
                               const auto v = gs::mem::wrap_texel(f.CLAMP.WMT, sp.v0 + (y - y0), fixed::u4::literal(6),
                                                                  f.CLAMP.MINV, f.CLAMP.MAXV);
                               const std::uint8_t index = texels.fetch(gs::mem::locate(tex, u, v).byte);
-                              if (z_clear)
-                                mem.write_pixel(zbuf, static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y), 0x00808080u);
+                              if (z_clear) {  // ZBUF = the DPB (PSMZ24), Z = 0x00808080, ZTST = ALWAYS
+                                const auto zx = static_cast<std::uint32_t>(x), zy = static_cast<std::uint32_t>(y);
+                                const gs::depth_result d = gs::depth_test(depth_always, z_written, clear_dpb, mem.read_pixel(zbuf, zx, zy));
+                                if (d.write_z) mem.write_pixel(zbuf, zx, zy, d.z);
+                              }
                               return gs::clut_t8(clut, gs::u8::from_wrapped(index));
                             },
                             dst, z_clear ? &pages : nullptr);
@@ -287,10 +295,30 @@ void channel_pass(band_renderer& r, const frame_buffers<memory_view>& fb, gs::rg
     }
 }
 
+// The memory path's copy of the LAB into the output over `area` (before step 4): BITBLTBUF SBP = the
+// LAB (PSMZ32 when it was drawn in the Z layout: the transfer reads it back to PSMCT32 order), DBP =
+// the output, TRXPOS = the area's corner on both sides, DIR = 0, TRXREG = its size, TRXDIR = 2.
+void copy_lab(const frame_buffers<memory_view>& fb, const scissor& area) {
+  if (area.x0 >= area.x1 || area.y0 >= area.y1) return;
+  gs::mem::bitbltbuf_reg blt;
+  blt.SBP = fixed::uint<14>::from_wrapped(fb.lab.bp);
+  blt.SBW = fixed::uint<6>::from_wrapped(fb.lab.bw);
+  blt.SPSM = fb.lab.z ? gs::mem::psm::PSMZ32 : gs::mem::psm::PSMCT32;
+  blt.DBP = fixed::uint<14>::from_wrapped(fb.out.bp);
+  blt.DBW = fixed::uint<6>::from_wrapped(fb.out.bw);
+  blt.DPSM = gs::mem::psm::PSMCT32;
+  gs::mem::trxpos_reg pos;
+  pos.SSAX = pos.DSAX = fixed::uint<11>::from_wrapped(area.x0);
+  pos.SSAY = pos.DSAY = fixed::uint<11>::from_wrapped(area.y0);
+  gs::mem::local_to_local(*fb.memory, blt, pos,
+                          {fixed::uint<12>::from_wrapped(area.x1 - area.x0), fixed::uint<12>::from_wrapped(area.y1 - area.y0)},
+                          {gs::mem::xdir::local_to_local});
+}
+
 template <class FB>
 std::size_t render_band(const scene& s, const prepared_scene& ps, method m, const render_options& o, const gs_inputs& in,
                         scissor band, frame_buffers<FB>& fb, frame& result) {
-  band_renderer r(ps, o, band, fb.z, result.visible_triangle);
+  band_renderer r(ps, o, band, fb.zb, result.visible_triangle);
   // Tracing (render_options::trace, one band): after each pass, its target buffer and inputs.
   pass_record pending;
   const std::size_t frame_pixels = static_cast<std::size_t>(ps.width) * static_cast<std::size_t>(ps.height);
@@ -435,8 +463,12 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
   // channel-fetch pass of the LAB through a palette with the index in alpha, FBMSK = 0x00FFFFFF).
   // Outside the sprite area the LAB and the output are 0.
   const scissor& area = r.sprite_area();
-  for (int y = area.y0; y < area.y1; ++y)
-    for (int x = area.x0; x < area.x1; ++x) fb.out(x, y) = fb.lab(x, y);
+  if constexpr (in_memory(FB{})) {
+    copy_lab(fb, area);
+  } else {
+    for (int y = area.y0; y < area.y1; ++y)
+      for (int x = area.x0; x < area.x1; ++x) fb.out(x, y) = fb.lab(x, y);
+  }
   static const gs::clut_buffer alpha_index = index_in_alpha();
   auto multiply = [&](int c, auto pass) {
     if constexpr (in_memory(FB{})) {
@@ -464,7 +496,10 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
 template <class FB>
 void render_bands(const scene& s, const prepared_scene& ps, method m, const render_options& o, const gs_inputs& in,
                   frame_buffers<FB>& fb, frame& result) {
-  fb.z.assign(static_cast<std::size_t>(ps.width) * static_cast<std::size_t>(ps.height), 0);
+  if (!fb.zb.in_memory) {
+    fb.z.assign(static_cast<std::size_t>(ps.width) * static_cast<std::size_t>(ps.height), 0);
+    fb.zb.rows = row_view{fb.z.data(), ps.width};
+  }
   for (int y = 0; y < ps.height; ++y)
     for (int x = 0; x < ps.width; ++x) fb.dpb(x, y) = clear_dpb;
   const int bands = o.trace != nullptr ? 1 : std::clamp(o.threads, 1, std::max(1, ps.height));
@@ -496,18 +531,22 @@ frame render(const scene& s, const prepared_scene& ps, method m, const render_op
   result.visible_triangle.assign(n, -1);
   result.dot.assign(s.lights.size(), std::vector<std::uint8_t>(n, 0));
   if (o.memory_path || o.dpb_clear != dpb_clear_mode::explicit_clear) {
-    // PSMCT32 buffers of FBW = ceil(width / 64) at FBP 0, P, 2P, 3P.
+    // Buffers of FBW = ceil(width / 64): the DPB (and in step 3 the diffuse layer) at FBP 0, the
+    // LAB at P, the output at 2P (PSMCT32), the Z buffer at ZBP = 3P (PSMZ24).
     const auto fbw = static_cast<std::uint32_t>((ps.width + 63) / 64);
     const std::uint32_t pages = fbw * static_cast<std::uint32_t>((ps.height + 31) / 32);
     if (4 * pages * gs::mem::page_bytes > gs::mem::memory_bytes)
       throw std::invalid_argument("memory path: four " + std::to_string(ps.width) + "x" + std::to_string(ps.height) +
-                                  " PSMCT32 buffers do not fit in the GS's 4 MiB");
+                                  " 32-bit buffers do not fit in the GS's 4 MiB");
     gs::mem::local_memory memory;
     frame_buffers<memory_view> fb;
     fb.memory = &memory;
     fb.clear = o.dpb_clear;
-    memory_view* views[4] = {&fb.dpb, &fb.lab, &fb.diff, &fb.out};
-    for (std::uint32_t k = 0; k < 4; ++k) *views[k] = memory_view{memory.words(), 32 * k * pages, fbw, false};
+    memory_view* views[3] = {&fb.dpb, &fb.lab, &fb.out};
+    for (std::uint32_t k = 0; k < 3; ++k) *views[k] = memory_view{memory.words(), 32 * k * pages, fbw, false};
+    fb.diff = fb.dpb;
+    fb.zb.memory = memory_view{memory.words(), 32 * 3 * pages, fbw, true};
+    fb.zb.in_memory = true;
     fb.dpb.z = o.dpb_clear == dpb_clear_mode::z_trick;
     fb.lab.z = o.dpb_clear == dpb_clear_mode::z_trick_psmz32;
     render_options one = o;
