@@ -131,4 +131,25 @@ TEST(Interpreter, LoadsStateVersions4To9AtTheirOwnOffsets) {
   EXPECT_EQ(it.unmodelled_features().size(), 2u);
 }
 
+// Local -> local (TRXDIR = 2) runs when TRXDIR is written: the uploaded 4×2 rectangle at (2, 1) copied
+// with SBP = DBP = 0, SBW = DBW = 1 (bits 16, 48) to (10, 5): TRXPOS SSAX 2, SSAY 1 (bit 16), DSAX 10
+// (bit 32), DSAY 5 (bit 48).
+TEST(Interpreter, LocalToLocalCopiesWhenTrxdirIsWritten) {
+  dump::gs_dump d = upload_dump();
+  packet_builder pb;
+  const std::pair<std::uint8_t, std::uint64_t> copy[] = {{0x50, 0x0001000000010000ull},
+                                                         {0x51, 0x0005000A00010002ull},
+                                                         {0x52, 0x0000000200000004ull},
+                                                         {0x53, 2}};
+  pb.ad(copy, true);
+  d.packets.insert(d.packets.begin() + 1, {dump::packet_type::transfer, 2, 0, 0, pb.bytes(), 0});
+  gs::mem::local_memory m;
+  interpreter it(m, {.skip_unmodelled = true});
+  it.replay(dump::read_dump(dump::write_dump(d)));
+  const gs::mem::buffer fb{fixed::uint<14>::from_wrapped(0), fixed::uint<6>::from_wrapped(1), gs::mem::psm::PSMCT32};
+  for (std::uint32_t y = 0; y < 2; ++y)
+    for (std::uint32_t x = 0; x < 4; ++x) EXPECT_EQ(m.read_pixel(fb, 10 + x, 5 + y), 0x11223340u + 4 * y + x);
+  EXPECT_EQ(it.transfers().size(), 2u);
+}
+
 }  // namespace

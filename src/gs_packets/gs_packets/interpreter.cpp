@@ -129,16 +129,22 @@ void interpreter::start_transfer(std::uint64_t offset) {
   try {
     const auto dir = mem::decode_trxdir(regs_[reg::TRXDIR]);
     if (dir.XDIR == mem::xdir::deactivated) return;
-    if (dir.XDIR != mem::xdir::host_to_local) {
-      unmodelled_.push_back({dir.XDIR == mem::xdir::local_to_host ? "TRXDIR.XDIR = 1 (local -> host transfer)"
-                                                                  : "TRXDIR.XDIR = 2 (local -> local transfer)",
-                             offset});
-      return;
-    }
     current_ = {mem::decode_bitbltbuf(regs_[reg::BITBLTBUF]), mem::decode_trxpos(regs_[reg::TRXPOS]),
                 mem::decode_trxreg(regs_[reg::TRXREG]), offset};
+    if (dir.XDIR == mem::xdir::local_to_host) {
+      unmodelled_.push_back({"TRXDIR.XDIR = 1 (local -> host transfer)", offset});
+      return;
+    }
+    if (dir.XDIR == mem::xdir::local_to_local) {  // runs when TRXDIR is written (PCSX2 `GSState::Move`)
+      mem::local_to_local(mem_, current_.bitbltbuf, current_.trxpos, current_.trxreg, dir);
+      done_.push_back(current_);
+      return;
+    }
   } catch (const register_error& e) {
     unmodelled_.push_back({std::string("transfer registers: ") + e.what(), offset});
+    return;
+  } catch (const std::invalid_argument& e) {  // a local -> local copy gs_memory does not model
+    unmodelled_.push_back({e.what(), offset});
     return;
   }
   need_ = mem::transfer_bytes(current_.bitbltbuf.DPSM, static_cast<std::uint32_t>(current_.trxreg.RRW.value()),

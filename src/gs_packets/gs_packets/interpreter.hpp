@@ -1,10 +1,11 @@
 // gs_packets/interpreter.hpp — applies a GS dump's GIF events to a modelled local memory: register
-// writes are kept, host -> local IMAGE transfers go through gs_memory's host_to_local, and vertex kicks
+// writes are kept, host -> local IMAGE transfers go through gs_memory's host_to_local (local -> local
+// ones through local_to_local when TRXDIR is written), and vertex kicks
 // draw through draw.hpp (the rasteriser and gs::pixel_pipeline). The privileged registers (PMODE,
 // DISPFB1/2, DISPLAY1/2) follow the dump's register packets, for the displayed frame (display.hpp).
 // What the model does not cover is reported by name with the dump byte offset: a primitive the model
 // cannot draw stops the replay (unmodelled_error) unless options::skip_unmodelled, which skips it;
-// local -> host / local -> local transfers and state versions it cannot load are listed and passed over.
+// local -> host transfers and state versions it cannot load are listed and passed over.
 //
 // Vertex queue (GS User's Manual, "Drawing primitives"; PCSX2 `GSState::VertexKick`): XYZ2 / XYZF2 add
 // a vertex with the current RGBAQ, ST, UV (and FOG, or XYZF2's F) and kick drawing once the primitive
