@@ -1,6 +1,7 @@
 // probe/decode.cpp — option verdicts from a screenshot (see decode.hpp).
 #include "probe/decode.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <map>
 
@@ -45,17 +46,32 @@ verdict judge(std::string name, bool is_check, const std::vector<const patch*>& 
     if (all) v.matches.push_back(c.value);
   }
   if (!v.matches.empty()) return v;
-  for (const patch* p : patches)
-    for (const auto& [x, y] : sample_pixels(*p)) {
-      bool differs = false;
-      for (const candidate& c : candidates) differs = differs || at(shot, x, y) != at(c.frame, x, y);
-      if (!differs) continue;
-      std::string line = "patch " + p->name + " at (" + std::to_string(p->x) + ", " + std::to_string(p->y) + "), pixel (" +
-                         std::to_string(x) + ", " + std::to_string(y) + "): shows " + hex6(at(shot, x, y)) + ";";
-      for (const candidate& c : candidates) line += " " + c.value + " " + hex6(at(c.frame, x, y));
-      v.details.push_back(line);
-      break;
+  // One line per patch: the candidates it agrees with (when the patches disagree among themselves), or
+  // its first pixel that no candidate shows (else the first that differs from some candidate).
+  for (const patch* p : patches) {
+    std::string agreeing;
+    for (const candidate& c : candidates)
+      if (agrees(shot, c.frame, *p)) agreeing += (agreeing.empty() ? "" : ", ") + c.value;
+    const std::string where = "patch " + p->name + " at (" + std::to_string(p->x) + ", " + std::to_string(p->y) + ")";
+    if (!agreeing.empty()) {
+      v.details.push_back(where + " agrees with " + agreeing + " only");
+      continue;
     }
+    const auto pixels = sample_pixels(*p);
+    auto shown_by_none = [&](std::pair<int, int> px) {
+      for (const candidate& c : candidates)
+        if (at(shot, px.first, px.second) == at(c.frame, px.first, px.second)) return false;
+      return true;
+    };
+    auto pick = std::find_if(pixels.begin(), pixels.end(), shown_by_none);
+    if (pick == pixels.end())
+      pick = std::find_if(pixels.begin(), pixels.end(),
+                          [&](std::pair<int, int> px) { return at(shot, px.first, px.second) != at(candidates[0].frame, px.first, px.second); });
+    const auto [x, y] = *pick;
+    std::string line = where + ", pixel (" + std::to_string(x) + ", " + std::to_string(y) + "): shows " + hex6(at(shot, x, y)) + ";";
+    for (const candidate& c : candidates) line += " " + c.value + " " + hex6(at(c.frame, x, y));
+    v.details.push_back(line);
+  }
   return v;
 }
 
