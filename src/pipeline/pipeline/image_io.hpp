@@ -30,5 +30,7 @@ image decode_image(const std::uint8_t* data, std::size_t size, const std::string
 image decode_png(const std::uint8_t* data, std::size_t size, const std::string& name);
 image decode_jpeg(const std::uint8_t* data, std::size_t size, const std::string& name);
 image decode_tga(const std::uint8_t* data, std::size_t size, const std::string& name);
+// A BMP through stb_image, always as RGB (3 channels).
+image decode_bmp(const std::uint8_t* data, std::size_t size, const std::string& name);
 
 }  // namespace gsdot3::pipeline

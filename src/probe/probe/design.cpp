@@ -262,9 +262,9 @@ design make_design() {
                 "reads cell (8, 88) (quarter q1) after S1 wrote it while quarter q0 was buffered: new 0xc04010 unless "
                 "the whole page (or the draw) was buffered");
     b.add_patch("texture_buffer.same_quarter", "texture_buffer", f.x, f.y,
-                "reads cell (40, 72) after S3 wrote it while its own quarter q2 was buffered: new 0x40c010 only per fragment");
+                "reads cell (40, 72) after S3 wrote it while its own quarter q2 was buffered: new 0x10c040 only per fragment");
     b.add_patch("texture_buffer.after_leaving_page", "texture_buffer", h.x, h.y,
-                "reads cell (8, 88) again after S5 read page 21: new 0xc04010 unless the draw was read once before it began");
+                "reads cell (8, 88) again after S5 read page 21: new 0x1040c0 unless the draw was read once before it began");
   }
   b.d.not_probed.push_back(
       {"tfx_rounding", "floor and truncate round (Ct * Cf) >> 7 alike: the product of the unsigned texel and fragment "
