@@ -3,7 +3,9 @@
 // values equal the ones worked out by hand from the GS rules (comments) — not from the code under test.
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <map>
+#include <set>
 #include <string>
 
 #include "gs_arith/texture_function.hpp"
@@ -174,6 +176,30 @@ TEST(ProbeDesign, SectionThreeFourCellsAreInTheirQuarters) {
   EXPECT_EQ(where(40, 72), q(20, 2));  // e
   for (int x : {40, 48, 56}) EXPECT_EQ(where(x, 88), q(20, 3));  // c, f, h
   EXPECT_EQ(where(72, 72).first, 21u);  // g
+}
+
+}  // namespace
+
+namespace {
+
+// docs/evidence.md's probe list names exactly the design's patches in its last column.
+TEST(ProbeDesign, TheEvidenceProbeListNamesEveryPatch) {
+  std::ifstream in(GSDOT3_EVIDENCE_MD);
+  ASSERT_TRUE(in) << GSDOT3_EVIDENCE_MD;
+  std::set<std::string> named;
+  bool in_list = false;
+  for (std::string l; std::getline(in, l);) {
+    if (l.rfind("## ", 0) == 0) in_list = l == "## Hardware probe list";
+    if (!in_list || l.rfind("| P", 0) != 0) continue;
+    const std::string last = l.substr(l.rfind('|', l.size() - 2) + 1);
+    for (std::size_t b = last.find('`'); b != std::string::npos; b = last.find('`', last.find('`', b + 1) + 1)) {
+      const std::string code = last.substr(b + 1, last.find('`', b + 1) - b - 1);
+      if (code.find('.') != std::string::npos) named.insert(code);
+    }
+  }
+  std::set<std::string> patches;
+  for (const patch& p : probe_design().patches) patches.insert(p.name);
+  EXPECT_EQ(named, patches);
 }
 
 }  // namespace
