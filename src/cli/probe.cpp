@@ -1,8 +1,8 @@
-// gsdot3 probe — the option probe (docs/probe.md): `probe --out F.gs` writes the GS dump whose frame
-// tells the model options' values apart, `probe decode SHOT` reads a console's or emulator's
-// screenshot of that frame (PNG through libpng, BMP through stb_image) and says which value of each
-// option it shows. Exit codes of decode: 0 every probed option and check matched, 1 some did not,
-// 2 bad input.
+// gsdot3 probe — the option probe (docs/dumps.md, "The option probe"): `probe --out F.gs` writes the
+// GS dump whose frame tells the model options' values apart, `probe decode SHOT` reads a console's or
+// an emulator's screenshot of that frame (PNG through libpng, BMP through stb_image) and says which
+// value of each option it shows. Exit codes of decode: 0 every probed option and check matched, 1
+// some did not, 2 bad input.
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -138,7 +138,7 @@ void add_probe_command(CLI::App& app, context& ctx) {
   auto args = std::make_shared<probe_args>();
   auto* cmd = app.add_subcommand(
       "probe",
-      "The option probe: a GS dump whose 640x448 frame tells every model option's values apart (docs/probe.md); "
+      "The option probe: a GS dump whose 640x448 frame tells every model option's values apart (docs/dumps.md); "
       "prints the patch legend. `probe decode SHOT` reads a screenshot of that frame.");
   cmd->add_option("--out", args->out, "GS dump to write (.gs, .gs.xz or .gs.zst; written atomically)");
   cmd->add_option("--png", args->png, "Also write the frame the model predicts (PNG, atomically)");

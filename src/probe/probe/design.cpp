@@ -1,4 +1,4 @@
-// probe/design.cpp — the probe's draws and patches (the table in docs/probe.md).
+// probe/design.cpp — the probe's draws and patches (the table in docs/dumps.md, "The option probe").
 #include "probe/design.hpp"
 
 #include <stdexcept>

@@ -1,6 +1,6 @@
 // probe/design.hpp — the option probe: a grid of 8×8 patches in one displayed 640×448 PSMCT32 frame,
 // each drawn by a few register writes and one or more primitives so that the values of one model
-// option (gs_arith/options.hpp) give different pixel values (docs/probe.md, docs/evidence.md P1..P11).
+// option (gs_arith/options.hpp) give different pixel values (docs/dumps.md "The option probe", docs/evidence.md P1..P11).
 //
 // The design is a list of draws (register state + primitive) in GS order and a list of patches (the
 // cells the decoder reads). Both consumers read this one list: probe/frame.hpp computes the frame the
