@@ -5,7 +5,9 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <iterator>
 #include <memory>
+#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -13,6 +15,7 @@
 #include "commands.hpp"
 #include "gs_arith/options.hpp"
 #include "gs_arith/profiles.hpp"
+#include "probe/recording.hpp"
 #include "vectors/format.hpp"
 #include "vectors/generate.hpp"
 #include "vectors/units.hpp"
@@ -106,8 +109,12 @@ int run_ver(const ver_args& a) {
     in = file.get();
   }
   try {
-    const v::verify_result r =
-        a.format == "ps2autotests" ? v::verify_ps2autotests(*in, std::cout, s) : v::verify_vectors(*in, std::cout, s);
+    // A gsdot3 vector file, or (same --format) a `gsdot3 probe decode` recording, told apart by its header.
+    const std::string text{std::istreambuf_iterator<char>(*in), std::istreambuf_iterator<char>()};
+    std::istringstream body(text);
+    const v::verify_result r = a.format == "ps2autotests" ? v::verify_ps2autotests(body, std::cout, s)
+                               : probe::is_recording(text) ? probe::verify_recording(body, std::cout, s)
+                                                           : v::verify_vectors(body, std::cout, s);
     return r.failed > 0 ? 1 : 0;
   } catch (const v::format_error& e) {
     throw usage_error((a.file == "-" ? std::string("<stdin>") : a.file) + ": " + e.what());
@@ -151,7 +158,7 @@ void add_vectors_command(CLI::App& app, context& ctx) {
   r->add_option("file", ver->file, "Vector file, or - for stdin")->capture_default_str();
   r->add_option("--errors", ver->errors, "Failures printed in full (0 = all); all are counted")->capture_default_str();
   r->add_flag("--errorstop", ver->errorstop, "Stop at the first failure (mismatch or malformed line)");
-  r->add_option("--format", ver->format, "gsdot3 (vector files) | ps2autotests (gs/blend.expected recordings)")
+  r->add_option("--format", ver->format, "gsdot3 (vector files and gsdot3 probe decode recordings, told apart by the header) | ps2autotests (gs/blend.expected recordings)")
       ->check(CLI::IsMember({"gsdot3", "ps2autotests"}))
       ->capture_default_str();
   r->add_option("--option", ver->options, "Model option NAME=VALUE, over the file's header. Repeatable.");

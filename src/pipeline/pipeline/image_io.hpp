@@ -30,6 +30,8 @@ image decode_image(const std::uint8_t* data, std::size_t size, const std::string
 image decode_png(const std::uint8_t* data, std::size_t size, const std::string& name);
 image decode_jpeg(const std::uint8_t* data, std::size_t size, const std::string& name);
 image decode_tga(const std::uint8_t* data, std::size_t size, const std::string& name);
+// A BMP through stb_image, always as RGB (3 channels).
+image decode_bmp(const std::uint8_t* data, std::size_t size, const std::string& name);
 
 // Any PNG as RGBA8 for the image tools (gsdot3 ssbump: the height from alpha, as Source's tools
 // read it): the same reader as decode_png (palettes expanded, 16-bit reduced to 8, the same size

@@ -9,45 +9,12 @@
 #include "vectors/format.hpp"
 
 namespace gsdot3::vectors {
-namespace {
-
-// Counts and prints results, honouring the error cap and --errorstop.
-class reporter {
- public:
-  reporter(std::ostream& out, const verify_settings& s) : out_(out), s_(s) {}
-
-  void pass() { ++r_.passed; }
-  void mismatch(const std::string& inputs, const std::string& observed, const std::string& expected) {
-    fail(inputs + " => " + observed + " expected: " + expected);
-  }
-  void malformed(std::size_t line, const std::string& why) { fail("line " + std::to_string(line) + ": malformed: " + why); }
-  bool stopped() const { return s_.errorstop && r_.failed > 0; }
-  verify_result finish() {
-    out_ << r_.passed << " passed, " << r_.failed << " failed\n";
-    return r_;
-  }
-
- private:
-  void fail(const std::string& text) {
-    ++r_.failed;
-    if (s_.max_errors == 0 || r_.failed <= s_.max_errors) {
-      out_ << text << '\n';
-    } else if (r_.failed == s_.max_errors + 1) {
-      out_ << "... further failures not shown (--errors " << s_.max_errors << ")\n";
-    }
-  }
-  std::ostream& out_;
-  const verify_settings& s_;
-  verify_result r_;
-};
 
 void apply_overrides(gs::model_options& o, const verify_settings& s) {
   for (const auto& [name, value] : s.option_overrides) {
     if (auto err = gs::set_option(o, name, value)) throw format_error(*err);
   }
 }
-
-}  // namespace
 
 verify_result verify_vectors(std::istream& in, std::ostream& report, const verify_settings& s) {
   reporter rep(report, s);

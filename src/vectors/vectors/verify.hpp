@@ -14,6 +14,8 @@
 #include <utility>
 #include <vector>
 
+#include "gs_arith/options.hpp"
+
 namespace gsdot3::vectors {
 
 struct verify_settings {
@@ -26,6 +28,39 @@ struct verify_settings {
 struct verify_result {
   std::size_t passed = 0, failed = 0;
 };
+
+// Counts and prints results, honouring the error cap and --errorstop.
+class reporter {
+ public:
+  reporter(std::ostream& out, const verify_settings& s) : out_(out), s_(s) {}
+
+  void pass() { ++r_.passed; }
+  void mismatch(const std::string& inputs, const std::string& observed, const std::string& expected) {
+    fail(inputs + " => " + observed + " expected: " + expected);
+  }
+  void malformed(std::size_t line, const std::string& why) { fail("line " + std::to_string(line) + ": malformed: " + why); }
+  bool stopped() const { return s_.errorstop && r_.failed > 0; }
+  verify_result finish() {
+    out_ << r_.passed << " passed, " << r_.failed << " failed\n";
+    return r_;
+  }
+
+ private:
+  void fail(const std::string& text) {
+    ++r_.failed;
+    if (s_.max_errors == 0 || r_.failed <= s_.max_errors) {
+      out_ << text << '\n';
+    } else if (r_.failed == s_.max_errors + 1) {
+      out_ << "... further failures not shown (--errors " << s_.max_errors << ")\n";
+    }
+  }
+  std::ostream& out_;
+  const verify_settings& s_;
+  verify_result r_;
+};
+
+// The NAME=VALUE overrides of `s` applied to `o`; throws format_error for an unknown name or value.
+void apply_overrides(gs::model_options& o, const verify_settings& s);
 
 // A gsdot3 vector file. Throws format_error ("line N: ...") when the header is missing or invalid:
 // without it no line can be checked.
