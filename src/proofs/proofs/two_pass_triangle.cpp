@@ -13,6 +13,8 @@ namespace gsdot3::proofs::two_pass::triangle {
 
 namespace {
 constexpr triangle_case certificate_table[] = {
+    {98, -61, -77, {{{-80, -34, 44}, {-45, -59, 64}, {38, 68, -58}}}, {0, 30957, 32752, 385, 30742, 30271}, 2046, 25},
+    {98, -77, -78, {{{-49, -38, 75}, {-59, -60, 50}, {40, 66, -59}}}, {31163, 0, 0, 32752, 31518, 30185}, 2, 2045},  // truncate_to_8
     {100, -105, -54, {{{-82, -46, 34}, {-77, -48, 42}, {34, 63, -69}}}, {32521, 0, 0, 32752, 32521, 32752}, 2032, 1},
     {100, -106, -58, {{{-82, -46, 34}, {-77, -48, 42}, {34, 63, -69}}}, {32521, 0, 0, 32752, 32521, 32752}, 2032, 1},  // truncate_to_8
     {122, -127, -15, {{{-122, 0, 0}, {-106, -46, 39}, {21, 81, -88}}}, {32552, 0, 0, 32752, 32552, 32752}, 2034, 1},
@@ -57,34 +59,40 @@ std::int64_t isqrt_ceil(std::int64_t v) {
 }  // namespace
 
 namespace {
+struct normal_terms {
+  std::int64_t len, l1, least;  // ceil |n|, |n|_1, the least nonzero |n_c|
+  int neg;                      // #{n_c < 0}
+};
+normal_terms terms(const paper::packed_normal& p) {
+  const std::int64_t c[3] = {std::abs(p.iX), std::abs(p.iY), std::abs(p.iZ)};
+  std::int64_t least = 1 << 30;
+  for (std::int64_t v : c)
+    if (v != 0) least = std::min(least, v);
+  return {isqrt_ceil(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]), c[0] + c[1] + c[2], least, (p.iX < 0) + (p.iY < 0) + (p.iZ < 0)};
+}
+
 // The largest s (0 .. 127) for which the bound of cannot_wrap holds for this normal: the reach
-// len·s·128 + l1·E grows with s, so that is every s below the least failing one.
-int safe_s(std::int64_t len, std::int64_t l1, int neg, int e, const gs::model_options& o) {
-  const std::int64_t err = l1 * max_error_units(o);
-  const std::int64_t top = std::int64_t{16384} * (128 - neg - e) - err, bottom = std::int64_t{16384} * (129 - (3 - neg) + e) - err;
+// len·s·128 + G grows with s, so that is every s below the least failing one.
+int safe_s(const normal_terms& n, int e, const gs::model_options& o) {
+  const std::int64_t err = gain_units(n.l1, n.least, window_pixels, o);
+  const std::int64_t top = std::int64_t{16384} * (128 - n.neg - e) - err, bottom = std::int64_t{16384} * (129 - (3 - n.neg) + e) - err;
   const std::int64_t room = std::min(top, bottom) - 1;  // reach <= room
   if (room < 0) return 0;
-  return static_cast<int>(std::min<std::int64_t>(127, room / (len * 128)));
+  return static_cast<int>(std::min<std::int64_t>(127, room / (n.len * 128)));
 }
 }  // namespace
 
 bool cannot_wrap(const paper::packed_normal& p, int e, int s, const gs::model_options& o) noexcept {
-  const std::int64_t len = isqrt_ceil(std::int64_t{p.iX} * p.iX + std::int64_t{p.iY} * p.iY + std::int64_t{p.iZ} * p.iZ);
-  const std::int64_t l1 = std::abs(p.iX) + std::abs(p.iY) + std::abs(p.iZ);
-  const int neg = (p.iX < 0) + (p.iY < 0) + (p.iZ < 0), nonneg = 3 - neg;
-  // reach = (|n|·s·128 + |n|_1·E) / 16384, compared without division: value < reach + neg + e.
-  const std::int64_t reach = len * s * 128 + l1 * max_error_units(o);
-  return reach < std::int64_t{16384} * (128 - neg - e) && reach < std::int64_t{16384} * (129 - nonneg + e);
+  const normal_terms n = terms(p);
+  // reach = (|n|·s·128 + G) / 16384, compared without division: value < reach + neg + e.
+  const std::int64_t reach = n.len * s * 128 + gain_units(n.l1, n.least, window_pixels, o);
+  return reach < std::int64_t{16384} * (128 - n.neg - e) && reach < std::int64_t{16384} * (129 - (3 - n.neg) + e);
 }
 
 int bound_safe_s(const gs::model_options& o) {
   const two_pass::table t(o);
   int s = 127;
-  for (const auto& p : appendix2_normals()) {
-    const std::int64_t len = isqrt_ceil(std::int64_t{p.iX} * p.iX + std::int64_t{p.iY} * p.iY + std::int64_t{p.iZ} * p.iZ);
-    const int neg = (p.iX < 0) + (p.iY < 0) + (p.iZ < 0);
-    s = std::min(s, safe_s(len, std::abs(p.iX) + std::abs(p.iY) + std::abs(p.iZ), neg, t.alpha_error(p), o));
-  }
+  for (const auto& p : appendix2_normals()) s = std::min(s, safe_s(terms(p), t.alpha_error(p), o));
   return s;
 }
 
