@@ -112,7 +112,16 @@ int main(int argc, char** argv) {
     }
     if (mirror)
       for (auto& l : c.light) l = {-l[0], -l[1], std::clamp(-l[2], -s, s)}, l = nearest_light(l[0], l[1], l[2]);
-    if ((start >> 1) % 3 == 1) c.xy16 = {0, max124, max124, 0, max124, max124};  // two-axis
+    if ((start >> 1) % 3 == 1) {  // two-axis: the first certificate of that shape, its lights scaled to S
+      const auto& two = *std::find_if(tt::certificates().begin(), tt::certificates().end(), [](const tt::triangle_case& k) {
+        return k.xy16 == std::array<int, 6>{0, max124, max124, 0, max124, max124};
+      });
+      c = two, c.s = s;
+      for (std::size_t k = 0; k < 3; ++k) {
+        const double f = static_cast<double>(s) / two.s;
+        c.light[k] = nearest_light(two.light[k][0] * f, two.light[k][1] * f, two.light[k][2] * f);
+      }
+    }
     if ((start >> 1) % 3 == 2) c.xy16 = {max124 - seedc.xy16[0], 0, max124, max124, max124 - seedc.xy16[4], max124};
     std::uniform_int_distribution<int> pick(0, 99);
     const int side = evaluate(c, o, t, 1).smooth >= evaluate(c, o, t, -1).smooth ? 1 : -1;

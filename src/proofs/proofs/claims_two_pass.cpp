@@ -215,13 +215,15 @@ outcome two_pass_max_s_interpolated(const gs::model_options& o, const sweep_conf
   out.witnesses = std::move(witnesses);
   out.note = "on whole triangles the paper's s = " + std::to_string(paper_s) +
              (paper_wraps ? " wraps" : " is not shown to wrap") + ": a pixel ~2030 pixels from the plane's reference pixel "
-             "misses the truncated fraction of each 8.7 step, up to 16 levels per channel, and that pushes its light out "
-             "of the vertex sphere along the normal. Wraps are certified from s = " + std::to_string(first_wrap) +
+             "misses the truncated fraction of each 8.7 step, up to 16 levels per channel and axis, and that pushes its light "
+             "out of the vertex sphere along the normal. Wraps are certified from s = " + std::to_string(first_wrap) +
              " and at s = 122..125 (certificates, each a refutation at its s, under either gouraud_fraction); no s <= " + std::to_string(proven_safe) +
              " wraps (error bound: one axis's lag, 16 levels, per channel; two axes' only on channels whose plane falls along "
              "both axes, and not on all channels at once). s = " + std::to_string(proven_safe + 1) + ".." + std::to_string(first_wrap - 1) +
-             " is bracketed, not settled: the bound still lets all but one channel lag along both axes, which no certificate "
-             "does; the local search (bench/proofs_triangle_anneal) found no wrap below " +
+             " is bracketed, not settled: from s = 90 the certificates lag along both axes on the two largest channels "
+             "(2·15 levels each) and keep the plane level along n with the third; the bound allows that lag but does not "
+             "charge the sphere's curvature for the light difference it needs. The local searches (bench/proofs_triangle_two_axis, "
+             "bench/proofs_triangle_anneal) found no wrap below " +
              std::to_string(first_wrap);
   return for_domain(std::move(out), cfg);
 }

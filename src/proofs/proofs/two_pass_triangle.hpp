@@ -38,6 +38,10 @@ struct triangle_case {
 // (s = 100 twice: one for each gouraud_fraction). s = 98, one per gouraud_fraction: found by the
 // local search bench/proofs_triangle_anneal (`proofs_triangle_anneal 98 1 300000` and
 // `proofs_triangle_anneal 98 truncate_to_8 14 1000000`), again one axis of lag (~2046 pixels).
+// s = 91 (bench/proofs_triangle_two_axis 91, with and without truncate_to_8) and s = 90
+// (`proofs_triangle_anneal 90 3 300000`, `proofs_triangle_anneal 90 truncate_to_8 3 300000`, started
+// from the s = 91 row): the pixel lags along both axes, 15 levels per axis, on the two largest
+// channels, the third keeping the plane level along the normal (case (ii) of the bound below).
 // tests/proofs replays each through the pipeline's rasteriser (the pixel is covered) and
 // gs::pixel_pipeline.
 std::span<const triangle_case> certificates() noexcept;
