@@ -15,12 +15,12 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
 #include <random>
 #include <set>
 #include <utility>
 
 #include "pipeline/raster.hpp"
+#include "proofs_search_args.hpp"
 #include "proofs/domains.hpp"
 #include "proofs/two_pass.hpp"
 #include "proofs/two_pass_triangle.hpp"
@@ -71,20 +71,11 @@ scored evaluate(const tt::triangle_case& c, const gs::model_options& o, const p:
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc < 2) {
-    std::fprintf(stderr, "usage: proofs_triangle_anneal S [truncate_to_8] [SEED] [STEPS]\n");
-    return 2;
-  }
-  const int s = std::atoi(argv[1]);
-  gs::model_options o{};
-  int arg = 2;
-  if (argc > arg && std::strcmp(argv[arg], "truncate_to_8") == 0) o.gouraud = gs::gouraud_fraction::truncate_to_8, ++arg;
-  const unsigned seed = argc > arg ? static_cast<unsigned>(std::atoi(argv[arg])) : 1u;
-  const long steps = argc > arg + 1 ? std::atol(argv[arg + 1]) : 200000;
-  if (s < 1 || s > 127) {
-    std::fprintf(stderr, "proofs_triangle_anneal: S in 1..127\n");
-    return 2;
-  }
+  const auto args = gsdot3::bench::parse_search_args(argc, argv, "proofs_triangle_anneal", " [SEED] [STEPS]");
+  const int s = args.s;
+  const gs::model_options o = args.o;
+  const unsigned seed = argc > args.next ? static_cast<unsigned>(std::atoi(argv[args.next])) : 1u;
+  const long steps = argc > args.next + 1 ? std::atol(argv[args.next + 1]) : 200000;
   const p::two_pass::table t(o);
   std::set<std::pair<int, int>> normal_set;
   for (const auto& nm : p::appendix2_normals()) normal_set.insert({nm.iX, nm.iY});
@@ -159,7 +150,7 @@ int main(int argc, char** argv) {
     if (best.value >= 128) {
       const auto& k = best_c;
       std::printf("s = %d (%s): wrap at pixel (%d, %d)\n    {%d, %d, %d, {{{%d, %d, %d}, {%d, %d, %d}, {%d, %d, %d}}}, {%d, %d, %d, %d, %d, %d}, %d, %d},\n",
-                  s, o.gouraud == gs::gouraud_fraction::truncate_to_8 ? "truncate_to_8" : "keep_fraction", best.px, best.py, s, k.iX,
+                  s, args.option_name(), best.px, best.py, s, k.iX,
                   k.iY, k.light[0][0], k.light[0][1], k.light[0][2], k.light[1][0], k.light[1][1], k.light[1][2], k.light[2][0],
                   k.light[2][1], k.light[2][2], k.xy16[0], k.xy16[1], k.xy16[2], k.xy16[3], k.xy16[4], k.xy16[5], best.px, best.py);
       return 0;

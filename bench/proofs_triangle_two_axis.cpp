@@ -17,10 +17,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
-#include <cstring>
 
 #include "pipeline/raster.hpp"
+#include "proofs_search_args.hpp"
 #include "proofs/domains.hpp"
 #include "proofs/two_pass.hpp"
 #include "proofs/two_pass_triangle.hpp"
@@ -30,17 +29,9 @@ namespace pl = gsdot3::pipeline;
 namespace tt = gsdot3::proofs::two_pass::triangle;
 
 int main(int argc, char** argv) {
-  if (argc < 2) {
-    std::fprintf(stderr, "usage: proofs_triangle_two_axis S [truncate_to_8]\n");
-    return 2;
-  }
-  const int s = std::atoi(argv[1]);
-  gs::model_options o{};
-  if (argc > 2 && std::strcmp(argv[2], "truncate_to_8") == 0) o.gouraud = gs::gouraud_fraction::truncate_to_8;
-  if (s < 1 || s > 127) {
-    std::fprintf(stderr, "proofs_triangle_two_axis: S in 1..127\n");
-    return 2;
-  }
+  const auto args = gsdot3::bench::parse_search_args(argc, argv, "proofs_triangle_two_axis");
+  const int s = args.s;
+  const gs::model_options o = args.o;
   constexpr int E = (tt::window_pixels - 1) * 16;
   const std::array<int, 6> xy16{0, E, E, 0, E, E};
   const auto setup = pl::setup_triangle({pl::xy124{0, E}, pl::xy124{E, 0}, pl::xy124{E, E}});
@@ -91,7 +82,7 @@ int main(int argc, char** argv) {
             if (r.value != r.dot) {
               std::printf("s = %d (%s): wrap, value %d (%lld cases evaluated)\n"
                           "    {%d, %d, %d, {{{%d, %d, %d}, {%d, %d, %d}, {%d, %d, %d}}}, {0, %d, %d, 0, %d, %d}, %d, %d},\n",
-                          s, o.gouraud == gs::gouraud_fraction::truncate_to_8 ? "truncate_to_8" : "keep_fraction", r.value, evaluated, s,
+                          s, args.option_name(), r.value, evaluated, s,
                           nm.iX, nm.iY, lx[0], lx[1], lx[2], lx[0], lx[1], lx[2], lz[0], lz[1], lz[2], E, E, E, E, x, y);
               return 0;
             }

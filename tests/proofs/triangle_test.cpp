@@ -97,6 +97,14 @@ namespace {
 // |L_c − P_c(pixel)| < 1 + a + b for every channel, with P_c the exact plane (rational, ×det):
 // P_c·det = 128·(c0·det + d1·(by·qx − bx·qy) + d2·(ax·qy − ay·qx)), q = 16·pixel − v0 (< 2^46).
 // Returns the number of pixels checked.
+// A 5 × 5 lattice of 12.4 points spaced 23/16 pixel, inside a 6-pixel window.
+std::vector<std::array<int, 2>> small_lattice() {
+  std::vector<std::array<int, 2>> pts;
+  for (int i = 0; i < 5; ++i)
+    for (int j = 0; j < 5; ++j) pts.push_back({3 + 23 * i, 5 + 23 * j});
+  return pts;
+}
+
 long check_error_bound(const std::array<int, 6>& xy16, const std::array<p::ivec3, 3>& lights) {
   const tt::triangle_case c{100, 0, 0, lights, xy16, 0, 0};
   const auto setup = pl::setup_triangle({pl::xy124{xy16[0], xy16[1]}, pl::xy124{xy16[2], xy16[3]}, pl::xy124{xy16[4], xy16[5]}});
@@ -129,9 +137,7 @@ TEST(Triangle, ErrorBoundHoldsOnEveryLatticeTriangleOfASmallWindow) {
   // Vertices on a 5 × 5 lattice of 12.4 points spaced 23/16 pixel in a 6-pixel window (every
   // triangle of three distinct points), lights from L_12 by a fixed rotation: every covered pixel.
   const auto lights = p::packed_lights(12);
-  std::vector<std::array<int, 2>> pts;
-  for (int i = 0; i < 5; ++i)
-    for (int j = 0; j < 5; ++j) pts.push_back({3 + 23 * i, 5 + 23 * j});
+  const auto pts = small_lattice();
   long pixels = 0, k = 0;
   for (std::size_t a = 0; a < pts.size(); ++a)
     for (std::size_t b = 0; b < pts.size(); ++b)
@@ -233,9 +239,7 @@ TEST(Triangle, ChannelStatementsHoldOnEveryLatticeTriangleOfASmallWindow) {
   // the lights of L_12 by the same rotation and by a second one that keeps them near each other (small
   // gradients, whose fractions are all of the step: where two-axis lag is largest).
   const auto lights = p::packed_lights(12);
-  std::vector<std::array<int, 2>> pts;
-  for (int i = 0; i < 5; ++i)
-    for (int j = 0; j < 5; ++j) pts.push_back({3 + 23 * i, 5 + 23 * j});
+  const auto pts = small_lattice();
   statement_count n;
   long k = 0;
   for (std::size_t a = 0; a < pts.size(); ++a)

@@ -36,8 +36,9 @@ struct triangle_case {
 // right triangle whose x step fractions are near 1 and point along the normal, the pixel next to its
 // top-right vertex, ~2030 pixels from the plane's reference pixel), one per s it was run for
 // (s = 100 twice: one for each gouraud_fraction). s = 98, one per gouraud_fraction: found by the
-// local search bench/proofs_triangle_anneal (`proofs_triangle_anneal 98 1 300000` and
-// `proofs_triangle_anneal 98 truncate_to_8 14 1000000`), again one axis of lag (~2046 pixels).
+// local search bench/proofs_triangle_anneal as it was at commit 2d5fcd4 (`98 1 300000` and
+// `98 truncate_to_8 14 1000000`; its later two-axis start changes those runs), again one axis of
+// lag (~2046 pixels).
 // s = 91 (bench/proofs_triangle_two_axis 91, with and without truncate_to_8) and s = 90
 // (`proofs_triangle_anneal 90 3 300000`, `proofs_triangle_anneal 90 truncate_to_8 3 300000`, started
 // from the s = 91 row): the pixel lags along both axes, 15 levels per axis, on the two largest
