@@ -6,8 +6,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
+#include <limits>
 #include <random>
+#include <vector>
 
 #include "pipeline/band_renderer.hpp"
 #include "pipeline/gs_pass.hpp"
@@ -276,30 +279,101 @@ TEST(Triangle, ChannelStatementsHoldOnRandomFullSizeTriangles) {
   EXPECT_GT(n.pixels, 1000);
 }
 
+namespace {
+// (iii)'s bound in doubles, written from its closed form: for every set D leaving out a nonzero
+// channel and θ_c = k/16, R·(|α| + |β|) + K; the least over the grid, the greatest over D, and case
+// (i) R·|n| + |n|_1·W; truncate_to_8 adds 128·|n|_1.
+double reach_double(const double n[3], int s, bool truncate_to_8) {
+  const double R = 128.0 * s, W = 2048, l1 = n[0] + n[1] + n[2];
+  double reach = R * std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]) + l1 * W;
+  for (unsigned d = 1; d < 8; ++d) {
+    bool proper = false, inside = true;
+    for (unsigned c = 0; c < 3; ++c) {
+      if ((d >> c & 1) && n[c] == 0) inside = false;
+      if (!(d >> c & 1) && n[c] != 0) proper = true;
+    }
+    if (!inside || !proper) continue;
+    double least = 1e300;
+    const int range[3] = {(d & 1) ? 17 : 1, (d & 2) ? 17 : 1, (d & 4) ? 17 : 1};
+    for (int t = 0; t < range[0] * range[1] * range[2]; ++t) {
+      const int k[3] = {t % range[0], t / range[0] % range[1], t / (range[0] * range[1])};
+      double a2 = 0, b2 = 0, K = 0;
+      for (unsigned c = 0; c < 3; ++c) {
+        if (!(d >> c & 1)) {
+          a2 += n[c] * n[c], K += n[c] * W;
+          continue;
+        }
+        const double th = k[c] / 16.0;
+        a2 += th * th * n[c] * n[c], b2 += (1 - th) * (1 - th) * n[c] * n[c], K += n[c] * (th * (2 * W - 1) + (1 - th) * W);
+      }
+      least = std::min(least, R * (std::sqrt(a2) + std::sqrt(b2)) + K);
+    }
+    reach = std::max(reach, least);
+  }
+  return reach + (truncate_to_8 ? 128 * l1 : 0);
+}
+}  // namespace
+
+TEST(Triangle, TwoPointBoundIsAtLeastTheMaximumOverTheIntegerPointsOfASmallBall) {
+  // (iii) for one D against brute force: every pair v, u of integer points with |v|, |u| <= R = 5,
+  // W = 3, the bracket Σ_{c∉D} n_c·(v_c + W) + Σ_{c∈D} n_c·min(v_c + 2W − 1, u_c + W) at its
+  // maximum; the bound must not be below it, and for some D it is below (ii)'s θ = 1 value.
+  constexpr int R = 5, W = 3;
+  std::vector<std::array<int, 3>> ball;
+  for (int x = -R; x <= R; ++x)
+    for (int y = -R; y <= R; ++y)
+      for (int z = -R; z <= R; ++z)
+        if (x * x + y * y + z * z <= R * R) ball.push_back({x, y, z});
+  int tighter = 0, checked = 0;
+  for (const std::array<std::int64_t, 3>& n : {std::array<std::int64_t, 3>{3, 1, 2}, {0, 2, 5}, {4, 4, 1}, {1, 1, 1}}) {
+    for (unsigned d = 1; d < 8; ++d) {
+      unsigned nonzero = 0;
+      for (unsigned c = 0; c < 3; ++c) nonzero |= (n[c] != 0 ? 1u : 0u) << c;
+      if ((d & nonzero) != d || d == nonzero) continue;
+      std::int64_t best = std::numeric_limits<std::int64_t>::min(), theta_one = 0;
+      for (const auto& v : ball)
+        for (const auto& u : ball) {
+          std::int64_t sum = 0;
+          for (unsigned c = 0; c < 3; ++c)
+            sum += (d >> c & 1) ? n[c] * std::min(v[c] + 2 * W - 1, u[c] + W) : n[c] * (v[c] + W);
+          best = std::max(best, sum);
+        }
+      const std::int64_t bound = tt::two_point_units(n, d, R, W);
+      EXPECT_GE(bound, best) << n[0] << " " << n[1] << " " << n[2] << " D " << d;
+      // θ = 1: R·|n| + Σ_D n_c·(2W − 1) + Σ_rest n_c·W, with |n| rounded up to an integer as (ii) takes it
+      const std::int64_t n2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
+      std::int64_t len = 0;
+      while (len * len < n2) ++len;
+      theta_one = R * len;
+      for (unsigned c = 0; c < 3; ++c) theta_one += n[c] * ((d >> c & 1) ? 2 * W - 1 : W);
+      EXPECT_LE(bound, theta_one);
+      tighter += bound < theta_one;
+      ++checked;
+    }
+  }
+  EXPECT_EQ(checked, 20);
+  EXPECT_GT(tighter, 0);
+}
+
 TEST(Triangle, BoundedSafeSIsWhatTheInequalityGivesForTheWorstNormal) {
-  // Independent form: the inequality evaluated in doubles for every normal and s, with the reach
-  // |n|·s·128 + G, G = 2048·|n|_1 + 2047·(|n|_1 − least nonzero |n_c|) (+ 128·|n|_1 under truncate_to_8).
+  // Independent form (reach_double, every normal, no pruning): every normal is safe at bound_safe_s
+  // by the inequality (and so below it: the reach grows with s), and some normal is not at s + 1.
   for (auto g : {gs::gouraud_fraction::keep_fraction, gs::gouraud_fraction::truncate_to_8}) {
     gs::model_options o{};
     o.gouraud = g;
     const p::two_pass::table t(o);
-    int safe = 127;
+    const int s_max = tt::bound_safe_s(o);
+    bool fails_above = false;
     for (const auto& nm : p::appendix2_normals()) {
-      const double len = std::sqrt(double(nm.iX) * nm.iX + double(nm.iY) * nm.iY + double(nm.iZ) * nm.iZ);
-      const double l1 = std::abs(nm.iX) + std::abs(nm.iY) + std::abs(nm.iZ);
-      double least = 1e9;
-      for (int v : {nm.iX, nm.iY, nm.iZ})
-        if (v != 0) least = std::min(least, double(std::abs(v)));
-      const double G = 2048 * l1 + 2047 * (l1 - least) + (g == gs::gouraud_fraction::keep_fraction ? 0 : 128 * l1);
+      const double n[3] = {double(std::abs(nm.iX)), double(std::abs(nm.iY)), double(std::abs(nm.iZ))};
       const int neg = (nm.iX < 0) + (nm.iY < 0) + (nm.iZ < 0), e = t.alpha_error(nm);
-      for (int s = 1; s <= 127; ++s) {
-        const double reach = (len * s * 128 + G) / 16384;
-        if (!(reach + neg + e < 128 && -reach - (3 - neg) + e > -129)) {
-          safe = std::min(safe, s - 1);
-          break;
-        }
-      }
+      auto safe = [&](int s) {
+        const double reach = reach_double(n, s, g == gs::gouraud_fraction::truncate_to_8) / 16384;
+        return reach + neg + e < 128 && -reach - (3 - neg) + e > -129;
+      };
+      EXPECT_TRUE(safe(s_max)) << nm.iX << " " << nm.iY;
+      fails_above = fails_above || !safe(s_max + 1);
     }
-    EXPECT_EQ(tt::bound_safe_s(o), safe);
+    EXPECT_TRUE(fails_above);
   }
 }

@@ -173,7 +173,10 @@ outcome two_pass_max_s_interpolated(const gs::model_options& o, const sweep_conf
   //     light is a plane value of the triangle (a convex combination of the vertex lights) plus less
   //     than W = 2048 8.7 units per channel, or 2W − 1 on the channels whose plane falls along both
   //     axes, and not on all of them at once (then the lag is paid by a point of the edge between
-  //     the least-x and least-y vertices). Evaluated per normal for every s.
+  //     the least-x and least-y vertices); where they are not, the two-axis lag is charged to the
+  //     curvature: it needs the plane to fall along both axes, so a second plane point, also in the
+  //     vertex lights' ball, lies that much further along those channels ((iii) of the bound).
+  //     Evaluated per normal for every s.
   // (2) wraps: certificates (above), re-verified here; each refutes "s avoids wrapping" at its s.
   //     Spans are the special case of a thin triangle; the old span bound (no wrap for s <= 123 on
   //     spans of <= 128 pixels) does not carry over, because the lag grows with the distance from
@@ -219,10 +222,11 @@ outcome two_pass_max_s_interpolated(const gs::model_options& o, const sweep_conf
              "out of the vertex sphere along the normal. Wraps are certified from s = " + std::to_string(first_wrap) +
              " and at s = 122..125 (certificates, each a refutation at its s, under either gouraud_fraction); no s <= " + std::to_string(proven_safe) +
              " wraps (error bound: one axis's lag, 16 levels, per channel; two axes' only on channels whose plane falls along "
-             "both axes, and not on all channels at once). s = " + std::to_string(proven_safe + 1) + ".." + std::to_string(first_wrap - 1) +
+             "both axes, and not on all channels at once, and then weighed against a second point of the vertex lights' "
+             "ball that the falling plane passes). s = " + std::to_string(proven_safe + 1) + ".." + std::to_string(first_wrap - 1) +
              " is bracketed, not settled: from s = 90 the certificates lag along both axes on the two largest channels "
-             "(2·15 levels each) and keep the plane level along n with the third; the bound allows that lag but does not "
-             "charge the sphere's curvature for the light difference it needs. The local searches (bench/proofs_triangle_two_axis, "
+             "(2·15 levels each) and keep the plane level along n with the third; the bound charges the sphere's curvature "
+             "for the light difference that lag needs only through the two points' ball (θ-relaxation), not the triangle's shape. The local searches (bench/proofs_triangle_two_axis, "
              "bench/proofs_triangle_anneal) found no wrap below " +
              std::to_string(first_wrap);
   return for_domain(std::move(out), cfg);

@@ -86,18 +86,66 @@ int safe_s(const normal_terms& n, int e, const gs::model_options& o) {
 }
 }  // namespace
 
+std::int64_t two_point_units(const std::array<std::int64_t, 3>& n, unsigned in_d, std::int64_t radius, int window) {
+  // θ_c = k_c / steps; the bound ×steps: R·(|steps·α| + |steps·β|) + steps·K, square roots rounded up.
+  constexpr int steps = 16;
+  const std::int64_t W = window;
+  int k[3] = {steps, steps, steps};
+  std::int64_t best = -1;
+  const int grid[3] = {(in_d & 1) ? steps : 0, (in_d & 2) ? steps : 0, (in_d & 4) ? steps : 0};
+  for (k[0] = grid[0]; k[0] >= 0; --k[0])
+    for (k[1] = grid[1]; k[1] >= 0; --k[1])
+      for (k[2] = grid[2]; k[2] >= 0; --k[2]) {
+        std::int64_t a2 = 0, b2 = 0, K = 0;
+        for (std::size_t c = 0; c < 3; ++c) {
+          const std::int64_t kc = (in_d >> c & 1) ? k[c] : steps, a = kc * n[c], b = (steps - kc) * n[c];
+          a2 += a * a, b2 += b * b;
+          K += (in_d >> c & 1) ? n[c] * (kc * (2 * W - 1) + (steps - kc) * W) : n[c] * steps * W;
+        }
+        const std::int64_t v = (radius * (isqrt_ceil(a2) + isqrt_ceil(b2)) + K + steps - 1) / steps;
+        if (best < 0 || v < best) best = v;
+      }
+  return best;
+}
+
+std::int64_t reach_units(const std::array<std::int64_t, 3>& n, int s, int window, const gs::model_options& o) {
+  const std::int64_t radius = std::int64_t{128} * s, l1 = n[0] + n[1] + n[2];
+  std::int64_t reach = radius * isqrt_ceil(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]) + l1 * window;  // (i)
+  const unsigned nonzero = (n[0] != 0) | (n[1] != 0) << 1 | (n[2] != 0) << 2;
+  for (unsigned d = 1; d < 8; ++d)
+    if ((d & nonzero) == d && d != nonzero) reach = std::max(reach, two_point_units(n, d, radius, window));
+  return reach + (o.gouraud == gs::gouraud_fraction::keep_fraction ? 0 : 128 * l1);
+}
+
 bool cannot_wrap(const paper::packed_normal& p, int e, int s, const gs::model_options& o) noexcept {
   const normal_terms n = terms(p);
-  // reach = (|n|·s·128 + G) / 16384, compared without division: value < reach + neg + e.
-  const std::int64_t reach = n.len * s * 128 + gain_units(n.l1, n.least, window_pixels, o);
+  // value < reach/16384 + neg + e, compared without division.
+  const std::int64_t reach = reach_units({std::abs(p.iX), std::abs(p.iY), std::abs(p.iZ)}, s, window_pixels, o);
   return reach < std::int64_t{16384} * (128 - n.neg - e) && reach < std::int64_t{16384} * (129 - (3 - n.neg) + e);
 }
 
 int bound_safe_s(const gs::model_options& o) {
+  // (ii)'s s per normal first (fast, and reach_units <= its reach: θ = 1 is (ii)), then (iii) from
+  // there, for the normals whose (ii) s is below the least found so far and that are not safe at
+  // that least (reach grows with s, so a normal safe there cannot lower it).
   const two_pass::table t(o);
-  int s = 127;
-  for (const auto& p : appendix2_normals()) s = std::min(s, safe_s(terms(p), t.alpha_error(p), o));
-  return s;
+  struct start {
+    int s;
+    const paper::packed_normal* p;
+    int e;
+  };
+  std::vector<start> order;
+  for (const auto& p : appendix2_normals()) order.push_back({safe_s(terms(p), t.alpha_error(p), o), &p, t.alpha_error(p)});
+  std::sort(order.begin(), order.end(), [](const start& a, const start& b) { return a.s < b.s; });
+  int least = 127;
+  for (const auto& k : order) {
+    if (k.s >= least) break;
+    if (least < 127 && cannot_wrap(*k.p, k.e, least, o)) continue;
+    int s = k.s;
+    while (s < least && cannot_wrap(*k.p, k.e, s + 1, o)) ++s;
+    least = std::min(least, s);
+  }
+  return least;
 }
 
 triangle_case brute_force_case(std::uint64_t index) {

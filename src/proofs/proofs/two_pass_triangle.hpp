@@ -88,12 +88,36 @@ gs::fragment_colour pixel_light(const triangle_case& c) noexcept;
 // exact rational plane on every lattice triangle of a small window and on random full-size ones.
 // With λ_c = L_c/128 − 128 and the floors of the two passes (q_c = floor or ceil of n_c·λ_c/128,
 // two_pass::wrap_search), value <= n·λ/128 + #{n_c < 0} + e and value >= n·λ/128 − #{n_c >= 0} + e,
-// so a normal cannot wrap at s when  (|n|·s·128 + G)/16384 + #{n_c < 0} + e < 128  and
-// −(|n|·s·128 + G)/16384 − #{n_c >= 0} + e > −129, G = gain_units (evaluated exactly in integers:
-// |n|·s <= sqrt(|n|²)·s is taken as the ceiling of the square root).
+// so a normal cannot wrap at s when  reach/16384 + #{n_c < 0} + e < 128  and
+// −reach/16384 − #{n_c >= 0} + e > −129, with reach = |n|·s·128 + G, G = gain_units, by (i) and
+// (ii) (evaluated exactly in integers: |n| is taken as the ceiling of the square root), or the
+// tighter reach_units of (iii) below, which bound_safe_s uses where (ii) alone does not settle s.
 constexpr std::int64_t gain_units(std::int64_t l1, std::int64_t least, int window, const gs::model_options& o) noexcept {
   return l1 * window + std::int64_t{window - 1} * (l1 - least) + (o.gouraud == gs::gouraud_fraction::keep_fraction ? 0 : 128 * l1);
 }
+// (iii) The curvature, for case (ii). Write D for the set of channels aligned on both axes. Each
+// channel statement holds on its own (the argument of (i) is channel by channel, w is the same for
+// all; tests/proofs/triangle_test.cpp checks them one by one): for c in D both σ_c·L_c < σ_c·P_c(p) + 2W − 1 (1 + a + b <= 2W − 1) and σ_c·L_c < σ_c·P_c(w) + W,
+// with the same w for every channel of D (w comes from the geometry alone); for c not in D,
+// σ_c·L_c < σ_c·P_c(p) + W. P(p) and P(w) both lie in the ball B of radius R = 128·s around the
+// centre (16384 per channel). min(x, y) <= θx + (1 − θ)y for θ in [0, 1], so for every θ_c:
+//   n·L(p) − n·centre < max over v, u in B of [Σ_{c∉D} |n_c|·σ_c·v_c + Σ_{c∈D} |n_c|·(θ_c·σ_c·v_c + (1 − θ_c)·σ_c·u_c)] + K
+//                     = R·(|α| + |β|) + K   (Cauchy–Schwarz, attained),
+//   α_c = |n_c| (c ∉ D), θ_c·|n_c| (c ∈ D);  β_c = (1 − θ_c)·|n_c| (c ∈ D), 0 (c ∉ D);
+//   K = Σ_{c∉D} |n_c|·W + Σ_{c∈D} |n_c|·(θ_c·(2W − 1) + (1 − θ_c)·W).
+// θ = 1 gives (ii) back (with D the worst set), θ = 0 charges D's lag to the second point: a lag
+// on both axes needs the plane to fall, so the light at w is that much further along n. The
+// bound is taken over every D that leaves out a channel with n_c != 0, each with θ_c = k_c/16
+// chosen by a grid in doubles and then evaluated exactly in integers (any θ gives a valid bound,
+// so the choice needs no proof). Case (i) is R·|n| + |n|_1·W. tests/proofs/triangle_test.cpp
+// checks the maximum over the two points against brute force over the integer points of a small
+// ball.
+// (iii) for one set D (bit c set: c in D) and ball radius R, n_c >= 0: the least bound over the θ grid,
+// rounded up (an integer >= the maximum over v, u in B of the bracket above plus K).
+std::int64_t two_point_units(const std::array<std::int64_t, 3>& n, unsigned in_d, std::int64_t radius, int window);
+// The bound on n·L(p) − n·centre (8.7 units, truncate_to_8's 128·|n|_1 included), for a normal
+// with components |n_c| and s: max of case (i) and (iii) over every D.
+std::int64_t reach_units(const std::array<std::int64_t, 3>& n, int s, int window, const gs::model_options& o);
 bool cannot_wrap(const paper::packed_normal& p, int e, int s, const gs::model_options& o) noexcept;
 // The largest s such that no normal can wrap for any s' <= s by that bound (0 if none).
 int bound_safe_s(const gs::model_options& o);
