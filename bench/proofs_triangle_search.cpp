@@ -16,11 +16,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
-#include <cstring>
 #include <vector>
 
 #include "gs_arith/gouraud.hpp"
+#include "proofs_search_args.hpp"
 #include "pipeline/raster.hpp"
 #include "proofs/methods.hpp"
 #include "proofs/two_pass.hpp"
@@ -30,17 +29,9 @@ namespace p = gsdot3::proofs;
 namespace tt = gsdot3::proofs::two_pass::triangle;
 
 int main(int argc, char** argv) {
-  if (argc < 2) {
-    std::fprintf(stderr, "usage: proofs_triangle_search S [truncate_to_8]\n");
-    return 2;
-  }
-  const int s = std::atoi(argv[1]);
-  gs::model_options o{};
-  if (argc > 2 && std::strcmp(argv[2], "truncate_to_8") == 0) o.gouraud = gs::gouraud_fraction::truncate_to_8;
-  if (s < 1 || s > 127) {
-    std::fprintf(stderr, "proofs_triangle_search: S in 1..127\n");
-    return 2;
-  }
+  const auto args = gsdot3::bench::parse_search_args(argc, argv, "proofs_triangle_search");
+  const int s = args.s;
+  const gs::model_options o = args.o;
   const auto& normals = p::appendix2_normals();
   const p::two_pass::table t(o);
   const auto lights = p::packed_lights(s);
@@ -97,7 +88,7 @@ int main(int argc, char** argv) {
               if (r.value != r.dot) {
                 std::printf("s = %d (%s): wrap, value %d, DPB dot %d (%lld cases evaluated)\n"
                             "    {%d, %d, %d, {{{%d, %d, %d}, {%d, %d, %d}, {%d, %d, %d}}}, {%d, 0, 0, %d, %d, %d}, %d, %d},\n",
-                            s, argc > 2 ? argv[2] : "keep_fraction", r.value, r.dot, evaluated, s, nm.iX, nm.iY, la[0], la[1],
+                            s, args.option_name(), r.value, r.dot, evaluated, s, nm.iX, nm.iY, la[0], la[1],
                             la[2], (*lb)[0], (*lb)[1], (*lb)[2], lc[0], lc[1], lc[2], W16, H16, W16, H16, px, py);
                 return 0;
               }

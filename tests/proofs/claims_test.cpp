@@ -252,19 +252,21 @@ TEST(Claims, TwoPassMaxSVertex) {
 
 TEST(Claims, TwoPassMaxSInterpolated) {
   // Whole triangles: the paper's s = 122 wraps (a certificate, replayed through the pipeline in
-  // triangle_test.cpp); the bound proves s <= 69 (68 under truncate_to_8: the same inequality in
-  // doubles, triangle_test.cpp); the lowest certificate is s = 100 under both options.
+  // triangle_test.cpp); the bound proves s <= 79 (78 under truncate_to_8: the same inequality in
+  // doubles, triangle_test.cpp); the lowest certificate is s = 90 under both options.
   const auto& o = base("two-pass.max-s.interpolated");
   EXPECT_EQ(o.result, p::verdict::refuted);
-  EXPECT_EQ(fig(o, "s_max"), 69);
-  EXPECT_EQ(fig(o, "first_wrapping_s"), 100);
-  EXPECT_EQ(fig(o, "s_max_upper"), 99);
-  EXPECT_EQ(fig(o, "certificates_not_wrapping"), 1);  // the truncate_to_8 row for s = 100
-  EXPECT_EQ(o.witnesses.size(), 5u);                   // s = 100, 122, 123, 124, 125
+  EXPECT_EQ(fig(o, "s_max"), 79);
+  EXPECT_EQ(fig(o, "first_wrapping_s"), 90);
+  EXPECT_EQ(fig(o, "s_max_upper"), 89);
+  EXPECT_EQ(fig(o, "certificates_not_wrapping"), 4);  // the truncate_to_8 rows for s = 90, 91, 98 and 100
+  EXPECT_EQ(o.witnesses.size(), 8u);                   // s = 90, 91, 98, 100, 122, 123, 124, 125
   const auto& t = variant("two-pass.max-s.interpolated", "gouraud_fraction", "truncate_to_8");
   EXPECT_EQ(t.result, p::verdict::refuted);
-  EXPECT_EQ(fig(t, "s_max"), 68);
-  EXPECT_EQ(fig(t, "first_wrapping_s"), 100);
+  EXPECT_EQ(fig(t, "s_max"), 78);
+  EXPECT_EQ(fig(t, "first_wrapping_s"), 90);
+  EXPECT_EQ(fig(t, "s_max_upper"), 89);
+  EXPECT_EQ(fig(t, "certificates_not_wrapping"), 3);  // the keep_fraction rows for s = 90, 98 and 100
   bool paper = false;
   for (const auto& w : o.witnesses) paper = paper || w.rfind("s = 122:", 0) == 0;
   EXPECT_TRUE(paper);

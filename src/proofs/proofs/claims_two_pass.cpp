@@ -170,8 +170,13 @@ outcome two_pass_max_s_interpolated(const gs::model_options& o, const sweep_conf
   // the pipeline's reference pixel (two_pass_triangle.hpp), against every Appendix 2 normal. Far too
   // large to enumerate; settled by:
   // (1) safe s: the error bound of two_pass::triangle::cannot_wrap (argument beside it): a pixel's
-  //     light is its exact plane value plus less than 1 + a + b 8.7 units per channel, a + b up to
-  //     4094 pixels from the reference, i.e. up to 32 levels. Evaluated per normal for every s.
+  //     light is a plane value of the triangle (a convex combination of the vertex lights) plus less
+  //     than W = 2048 8.7 units per channel, or 2W − 1 on the channels whose plane falls along both
+  //     axes, and not on all of them at once (then the lag is paid by a point of the edge between
+  //     the least-x and least-y vertices); where they are not, the two-axis lag is charged to the
+  //     curvature: it needs the plane to fall along both axes, so a second plane point, also in the
+  //     vertex lights' ball, lies that much further along those channels ((iii) of the bound).
+  //     Evaluated per normal for every s.
   // (2) wraps: certificates (above), re-verified here; each refutes "s avoids wrapping" at its s.
   //     Spans are the special case of a thin triangle; the old span bound (no wrap for s <= 123 on
   //     spans of <= 128 pixels) does not carry over, because the lag grows with the distance from
@@ -213,12 +218,17 @@ outcome two_pass_max_s_interpolated(const gs::model_options& o, const sweep_conf
   out.witnesses = std::move(witnesses);
   out.note = "on whole triangles the paper's s = " + std::to_string(paper_s) +
              (paper_wraps ? " wraps" : " is not shown to wrap") + ": a pixel ~2030 pixels from the plane's reference pixel "
-             "misses the truncated fraction of each 8.7 step, up to 16 levels per channel, and that pushes its light out "
-             "of the vertex sphere along the normal. Wraps are certified from s = " + std::to_string(first_wrap) +
+             "misses the truncated fraction of each 8.7 step, up to 16 levels per channel and axis, and that pushes its light "
+             "out of the vertex sphere along the normal. Wraps are certified from s = " + std::to_string(first_wrap) +
              " and at s = 122..125 (certificates, each a refutation at its s, under either gouraud_fraction); no s <= " + std::to_string(proven_safe) +
-             " wraps (error bound, |E| < 1 + a + b units per channel). s = " + std::to_string(proven_safe + 1) + ".." +
-             std::to_string(first_wrap - 1) + " is bracketed, not settled: the bound counts both axes' lag at full size, "
-             "the certificates use one";
+             " wraps (error bound: one axis's lag, 16 levels, per channel; two axes' only on channels whose plane falls along "
+             "both axes, and not on all channels at once, and then weighed against a second point of the vertex lights' "
+             "ball that the falling plane passes). s = " + std::to_string(proven_safe + 1) + ".." + std::to_string(first_wrap - 1) +
+             " is bracketed, not settled: from s = 90 the certificates lag along both axes on the two largest channels "
+             "(2·15 levels each) and keep the plane level along n with the third; the bound charges the sphere's curvature "
+             "for the light difference that lag needs only through the two points' ball (θ-relaxation), not the triangle's shape. The local searches (bench/proofs_triangle_two_axis, "
+             "bench/proofs_triangle_anneal) found no wrap below " +
+             std::to_string(first_wrap);
   return for_domain(std::move(out), cfg);
 }
 

@@ -13,6 +13,12 @@ namespace gsdot3::proofs::two_pass::triangle {
 
 namespace {
 constexpr triangle_case certificate_table[] = {
+    {90, -77, -61, {{{-63, -12, 63}, {-63, -12, 63}, {-48, -59, 48}}}, {0, 32752, 32752, 0, 32368, 32466}, 2023, 2029},
+    {90, -72, -63, {{{-57, -12, 68}, {-57, -14, 68}, {-42, -59, 53}}}, {761, 31626, 32752, 578, 31534, 32511}, 1968, 2029},  // truncate_to_8
+    {91, -93, -50, {{{-69, -11, 58}, {-69, -11, 58}, {-54, -59, 43}}}, {0, 32752, 32752, 0, 32752, 32752}, 2046, 2045},
+    {91, -93, -50, {{{-69, -11, 58}, {-69, -11, 58}, {-54, -59, 43}}}, {0, 32752, 32752, 0, 32752, 32752}, 2045, 2045},  // truncate_to_8
+    {98, -61, -77, {{{-80, -34, 44}, {-45, -59, 64}, {38, 68, -58}}}, {0, 30957, 32752, 385, 30742, 30271}, 2046, 25},
+    {98, -77, -78, {{{-49, -38, 75}, {-59, -60, 50}, {40, 66, -59}}}, {31163, 0, 0, 32752, 31518, 30185}, 2, 2045},  // truncate_to_8
     {100, -105, -54, {{{-82, -46, 34}, {-77, -48, 42}, {34, 63, -69}}}, {32521, 0, 0, 32752, 32521, 32752}, 2032, 1},
     {100, -106, -58, {{{-82, -46, 34}, {-77, -48, 42}, {34, 63, -69}}}, {32521, 0, 0, 32752, 32521, 32752}, 2032, 1},  // truncate_to_8
     {122, -127, -15, {{{-122, 0, 0}, {-106, -46, 39}, {21, 81, -88}}}, {32552, 0, 0, 32752, 32552, 32752}, 2034, 1},
@@ -57,35 +63,89 @@ std::int64_t isqrt_ceil(std::int64_t v) {
 }  // namespace
 
 namespace {
+struct normal_terms {
+  std::int64_t len, l1, least;  // ceil |n|, |n|_1, the least nonzero |n_c|
+  int neg;                      // #{n_c < 0}
+};
+normal_terms terms(const paper::packed_normal& p) {
+  const std::int64_t c[3] = {std::abs(p.iX), std::abs(p.iY), std::abs(p.iZ)};
+  std::int64_t least = 1 << 30;
+  for (std::int64_t v : c)
+    if (v != 0) least = std::min(least, v);
+  return {isqrt_ceil(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]), c[0] + c[1] + c[2], least, (p.iX < 0) + (p.iY < 0) + (p.iZ < 0)};
+}
+
 // The largest s (0 .. 127) for which the bound of cannot_wrap holds for this normal: the reach
-// len·s·128 + l1·E grows with s, so that is every s below the least failing one.
-int safe_s(std::int64_t len, std::int64_t l1, int neg, int e, const gs::model_options& o) {
-  const std::int64_t err = l1 * max_error_units(o);
-  const std::int64_t top = std::int64_t{16384} * (128 - neg - e) - err, bottom = std::int64_t{16384} * (129 - (3 - neg) + e) - err;
+// len·s·128 + G grows with s, so that is every s below the least failing one.
+int safe_s(const normal_terms& n, int e, const gs::model_options& o) {
+  const std::int64_t err = gain_units(n.l1, n.least, window_pixels, o);
+  const std::int64_t top = std::int64_t{16384} * (128 - n.neg - e) - err, bottom = std::int64_t{16384} * (129 - (3 - n.neg) + e) - err;
   const std::int64_t room = std::min(top, bottom) - 1;  // reach <= room
   if (room < 0) return 0;
-  return static_cast<int>(std::min<std::int64_t>(127, room / (len * 128)));
+  return static_cast<int>(std::min<std::int64_t>(127, room / (n.len * 128)));
 }
 }  // namespace
 
+std::int64_t two_point_units(const std::array<std::int64_t, 3>& n, unsigned in_d, std::int64_t radius, int window) {
+  // θ_c = k_c / steps; the bound ×steps: R·(|steps·α| + |steps·β|) + steps·K, square roots rounded up.
+  constexpr int steps = 16;
+  const std::int64_t W = window;
+  int k[3] = {steps, steps, steps};
+  std::int64_t best = -1;
+  const int grid[3] = {(in_d & 1) ? steps : 0, (in_d & 2) ? steps : 0, (in_d & 4) ? steps : 0};
+  for (k[0] = grid[0]; k[0] >= 0; --k[0])
+    for (k[1] = grid[1]; k[1] >= 0; --k[1])
+      for (k[2] = grid[2]; k[2] >= 0; --k[2]) {
+        std::int64_t a2 = 0, b2 = 0, K = 0;
+        for (std::size_t c = 0; c < 3; ++c) {
+          const std::int64_t kc = (in_d >> c & 1) ? k[c] : steps, a = kc * n[c], b = (steps - kc) * n[c];
+          a2 += a * a, b2 += b * b;
+          K += (in_d >> c & 1) ? n[c] * (kc * (2 * W - 1) + (steps - kc) * W) : n[c] * steps * W;
+        }
+        const std::int64_t v = (radius * (isqrt_ceil(a2) + isqrt_ceil(b2)) + K + steps - 1) / steps;
+        if (best < 0 || v < best) best = v;
+      }
+  return best;
+}
+
+std::int64_t reach_units(const std::array<std::int64_t, 3>& n, int s, int window, const gs::model_options& o) {
+  const std::int64_t radius = std::int64_t{128} * s, l1 = n[0] + n[1] + n[2];
+  std::int64_t reach = radius * isqrt_ceil(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]) + l1 * window;  // (i)
+  const unsigned nonzero = (n[0] != 0) | (n[1] != 0) << 1 | (n[2] != 0) << 2;
+  for (unsigned d = 1; d < 8; ++d)
+    if ((d & nonzero) == d && d != nonzero) reach = std::max(reach, two_point_units(n, d, radius, window));
+  return reach + (o.gouraud == gs::gouraud_fraction::keep_fraction ? 0 : 128 * l1);
+}
+
 bool cannot_wrap(const paper::packed_normal& p, int e, int s, const gs::model_options& o) noexcept {
-  const std::int64_t len = isqrt_ceil(std::int64_t{p.iX} * p.iX + std::int64_t{p.iY} * p.iY + std::int64_t{p.iZ} * p.iZ);
-  const std::int64_t l1 = std::abs(p.iX) + std::abs(p.iY) + std::abs(p.iZ);
-  const int neg = (p.iX < 0) + (p.iY < 0) + (p.iZ < 0), nonneg = 3 - neg;
-  // reach = (|n|·s·128 + |n|_1·E) / 16384, compared without division: value < reach + neg + e.
-  const std::int64_t reach = len * s * 128 + l1 * max_error_units(o);
-  return reach < std::int64_t{16384} * (128 - neg - e) && reach < std::int64_t{16384} * (129 - nonneg + e);
+  const normal_terms n = terms(p);
+  // value < reach/16384 + neg + e, compared without division.
+  const std::int64_t reach = reach_units({std::abs(p.iX), std::abs(p.iY), std::abs(p.iZ)}, s, window_pixels, o);
+  return reach < std::int64_t{16384} * (128 - n.neg - e) && reach < std::int64_t{16384} * (129 - (3 - n.neg) + e);
 }
 
 int bound_safe_s(const gs::model_options& o) {
+  // (ii)'s s per normal first (fast, and reach_units <= its reach: θ = 1 is (ii)), then (iii) from
+  // there, for the normals whose (ii) s is below the least found so far and that are not safe at
+  // that least (reach grows with s, so a normal safe there cannot lower it).
   const two_pass::table t(o);
-  int s = 127;
-  for (const auto& p : appendix2_normals()) {
-    const std::int64_t len = isqrt_ceil(std::int64_t{p.iX} * p.iX + std::int64_t{p.iY} * p.iY + std::int64_t{p.iZ} * p.iZ);
-    const int neg = (p.iX < 0) + (p.iY < 0) + (p.iZ < 0);
-    s = std::min(s, safe_s(len, std::abs(p.iX) + std::abs(p.iY) + std::abs(p.iZ), neg, t.alpha_error(p), o));
+  struct start {
+    int s;
+    const paper::packed_normal* p;
+    int e;
+  };
+  std::vector<start> order;
+  for (const auto& p : appendix2_normals()) order.push_back({safe_s(terms(p), t.alpha_error(p), o), &p, t.alpha_error(p)});
+  std::sort(order.begin(), order.end(), [](const start& a, const start& b) { return a.s < b.s; });
+  int least = 127;
+  for (const auto& k : order) {
+    if (k.s >= least) break;
+    if (least < 127 && cannot_wrap(*k.p, k.e, least, o)) continue;
+    int s = k.s;
+    while (s < least && cannot_wrap(*k.p, k.e, s + 1, o)) ++s;
+    least = std::min(least, s);
   }
-  return s;
+  return least;
 }
 
 triangle_case brute_force_case(std::uint64_t index) {

@@ -32,11 +32,19 @@ struct triangle_case {
   int px, py;
 };
 
-// Wrapping cases found by bench/proofs_triangle_search (its construction: a right triangle whose x
-// step fractions are near 1 and point along the normal, the pixel next to its top-right vertex,
-// ~2030 pixels from the plane's reference pixel), one per s it was run for (s = 100 twice: one
-// for each gouraud_fraction). tests/proofs replays each through the pipeline's rasteriser (the pixel
-// is covered) and gs::pixel_pipeline.
+// Wrapping cases. s = 100 and 122..125: found by bench/proofs_triangle_search (its construction: a
+// right triangle whose x step fractions are near 1 and point along the normal, the pixel next to its
+// top-right vertex, ~2030 pixels from the plane's reference pixel), one per s it was run for
+// (s = 100 twice: one for each gouraud_fraction). s = 98, one per gouraud_fraction: found by the
+// local search bench/proofs_triangle_anneal as it was at commit 2d5fcd4 (`98 1 300000` and
+// `98 truncate_to_8 14 1000000`; its later two-axis start changes those runs), again one axis of
+// lag (~2046 pixels).
+// s = 91 (bench/proofs_triangle_two_axis 91, with and without truncate_to_8) and s = 90
+// (`proofs_triangle_anneal 90 3 300000`, `proofs_triangle_anneal 90 truncate_to_8 3 300000`, started
+// from the s = 91 row): the pixel lags along both axes, 15 levels per axis, on the two largest
+// channels, the third keeping the plane level along the normal (case (ii) of the bound below).
+// tests/proofs replays each through the pipeline's rasteriser (the pixel is covered) and
+// gs::pixel_pipeline.
 std::span<const triangle_case> certificates() noexcept;
 
 // The vertex colour of a packed light: 128 + l per channel, vertex alpha 0x80.
@@ -49,22 +57,67 @@ gs::rgba8 light_colour(const ivec3& l) noexcept;
 gs::fragment_colour pixel_light(const triangle_case& c) noexcept;
 
 // The error bound. Write P_c for the exact plane of channel c (8.7 units) through the three vertex
-// values and (a, b) = pixel − reference pixel, a, b in 0 .. 2047 (the pixel and the reference are
-// window pixels, the reference the least). gouraud_triangle truncates the start value at the
-// reference and the two steps toward zero, each by less than one unit, and gouraud_at adds a·dx +
-// b·dy exactly, so the pixel's channel is L_c = P_c(pixel) + E_c with |E_c| < 1 + a + b <= 4095.
-// The clamp to 0 .. 0x7FFF only moves L_c towards P_c(pixel) ∈ [0, 32640] (a covered pixel lies in
-// the closed triangle, so P(pixel) is a convex combination of the vertex values). With
-// gouraud_fraction = truncate_to_8 the multiply sees 128·floor(L_c/128): |E_c| < 4095 + 128.
+// values, r for the reference pixel and g_c for the exact gradient. gouraud_triangle truncates the
+// start value P_c(r) and the two steps g_c toward zero, each by less than one unit, and gouraud_at
+// adds a·dx + b·dy exactly at the pixel p = r + (a, b), so L_c(p) = P_c(p) + E_c with
+//   E_c = (start − P_c(r)) − a·f_x − b·f_y,   f = g_c − steps: |f| < min(1, |g_c|), sign f = sign g_c,
+// and 0 <= a, b <= W − 1 (W = window_pixels: a covered pixel centre is >= the least vertex
+// coordinate, hence >= r, and every coordinate is <= W − 1). Fix the wrap side's signs σ_c
+// (σ_c = sign n_c for the top wrap, −sign n_c for the bottom) and call channel c aligned on an axis if
+// σ_c·g_c < 0 there (below, n·v stands for Σ |n_c|·σ_c·v_c: n·v for the top, −n·v for the
+// bottom); only aligned axes raise σ_c·E_c, so (|f| < 1, |start error| < 1)
+//   σ_c·E_c < W            for a channel aligned on at most one axis,
+//   σ_c·E_c < 1 + a + b    for a channel aligned on both (<= 2W − 1).
+// (i) If every channel with n_c != 0 is aligned on both axes, one point w of the closed triangle,
+//   chosen from the geometry alone, gives σ_c·L_c(p) < σ_c·P_c(w) + W for every channel. With X the
+//   vertex of least x, X = r + (ξ, b_X), −1 < ξ <= 0, and Y the vertex of least y, Y = r + (a_Y, η),
+//   −1 < η <= 0: if some w = X + t·(Y − X), t in [0, 1], is <= p in both coordinates, then σ_c·P_c
+//   falls along both axes, so σ_c·P_c(w) >= σ_c·P_c(p) + |f_x|·(p − w)_x + |f_y|·(p − w)_y and
+//   σ_c·L_c(p) < σ_c·P_c(w) + 1 + |f_x|·(w − r)_x + |f_y|·(w − r)_y, where (w − r)_x <= t·a_Y and
+//   (w − r)_y <= (1 − t)·b_X, so the lag is < max(a_Y, b_X, 0) + 1 <= W. If no such w exists (X and Y
+//   are not <= p: b_X > b and a_Y > a; the segment meets x <= p_x for t <= t1 = (a − ξ)/(a_Y − ξ)
+//   and y <= p_y for t >= t0 = (b_X − b)/(b_X − η) > t1), then a <= t1·a_Y and b <= (1 − t0)·b_X
+//   < (1 − t1)·b_X, so a + b < max(a_Y, b_X) <= W − 1 and w = p serves. Hence n·L(p) < n·P(w) + m·W.
+// (ii) Otherwise some channel with n_c != 0 is aligned on at most one axis, and
+//   n·L(p) < n·P(p) + m·W + (W − 1)·(m − μ),   m = |n|_1, μ = the least nonzero |n_c|.
+// In both cases the plane point (w or p) lies in the closed triangle, so P there is a convex
+// combination of the vertex values, inside the ball |l| <= s around 128 per channel. The clamp to
+// 0 .. 0x7FFF only moves each L_c towards [0, 32640], where every P_c lies (each bound above holds
+// channel by channel). With gouraud_fraction = truncate_to_8 the multiply sees 128·floor(L_c/128):
+// up to 128 units more per channel. tests/proofs/triangle_test.cpp checks (i) and (ii) against the
+// exact rational plane on every lattice triangle of a small window and on random full-size ones.
 // With λ_c = L_c/128 − 128 and the floors of the two passes (q_c = floor or ceil of n_c·λ_c/128,
 // two_pass::wrap_search), value <= n·λ/128 + #{n_c < 0} + e and value >= n·λ/128 − #{n_c >= 0} + e,
-// and n·λ <= |n|·s + |n|_1·max|E_c|/128 since the convex combination has |·| <= s. So a normal
-// cannot wrap at s when  (|n|·s·128 + |n|_1·E)/16384 + #{n_c < 0} + e < 128  and
-// −(|n|·s·128 + |n|_1·E)/16384 − #{n_c >= 0} + e > −129, E = max|E_c| (evaluated exactly in
-// integers: |n|·s <= sqrt(|n|²)·s is taken as the ceiling of the square root).
-constexpr int max_error_units(const gs::model_options& o) noexcept {
-  return o.gouraud == gs::gouraud_fraction::keep_fraction ? 4095 : 4095 + 128;
+// so a normal cannot wrap at s when  reach/16384 + #{n_c < 0} + e < 128  and
+// −reach/16384 − #{n_c >= 0} + e > −129, with reach = |n|·s·128 + G, G = gain_units, by (i) and
+// (ii) (evaluated exactly in integers: |n| is taken as the ceiling of the square root), or the
+// tighter reach_units of (iii) below, which bound_safe_s uses where (ii) alone does not settle s.
+constexpr std::int64_t gain_units(std::int64_t l1, std::int64_t least, int window, const gs::model_options& o) noexcept {
+  return l1 * window + std::int64_t{window - 1} * (l1 - least) + (o.gouraud == gs::gouraud_fraction::keep_fraction ? 0 : 128 * l1);
 }
+// (iii) The curvature, for case (ii). Write D for the set of channels aligned on both axes. Each
+// channel statement holds on its own (the argument of (i) is channel by channel, w is the same for
+// all; tests/proofs/triangle_test.cpp checks them one by one): for c in D both σ_c·L_c < σ_c·P_c(p) + 2W − 1 (1 + a + b <= 2W − 1) and σ_c·L_c < σ_c·P_c(w) + W,
+// with the same w for every channel of D (w comes from the geometry alone); for c not in D,
+// σ_c·L_c < σ_c·P_c(p) + W. P(p) and P(w) both lie in the ball B of radius R = 128·s around the
+// centre (16384 per channel). min(x, y) <= θx + (1 − θ)y for θ in [0, 1], so for every θ_c:
+//   n·L(p) − n·centre < max over v, u in B of [Σ_{c∉D} |n_c|·σ_c·v_c + Σ_{c∈D} |n_c|·(θ_c·σ_c·v_c + (1 − θ_c)·σ_c·u_c)] + K
+//                     = R·(|α| + |β|) + K   (Cauchy–Schwarz, attained),
+//   α_c = |n_c| (c ∉ D), θ_c·|n_c| (c ∈ D);  β_c = (1 − θ_c)·|n_c| (c ∈ D), 0 (c ∉ D);
+//   K = Σ_{c∉D} |n_c|·W + Σ_{c∈D} |n_c|·(θ_c·(2W − 1) + (1 − θ_c)·W).
+// θ = 1 gives (ii) back (with D the worst set), θ = 0 charges D's lag to the second point: a lag
+// on both axes needs the plane to fall, so the light at w is that much further along n. The
+// bound is taken over every D that leaves out a channel with n_c != 0, each with θ_c = k_c/16
+// chosen by a grid in doubles and then evaluated exactly in integers (any θ gives a valid bound,
+// so the choice needs no proof). Case (i) is R·|n| + |n|_1·W. tests/proofs/triangle_test.cpp
+// checks the maximum over the two points against brute force over the integer points of a small
+// ball.
+// (iii) for one set D (bit c set: c in D) and ball radius R, n_c >= 0: the least bound over the θ grid,
+// rounded up (an integer >= the maximum over v, u in B of the bracket above plus K).
+std::int64_t two_point_units(const std::array<std::int64_t, 3>& n, unsigned in_d, std::int64_t radius, int window);
+// The bound on n·L(p) − n·centre (8.7 units, truncate_to_8's 128·|n|_1 included), for a normal
+// with components |n_c| and s: max of case (i) and (iii) over every D.
+std::int64_t reach_units(const std::array<std::int64_t, 3>& n, int s, int window, const gs::model_options& o);
 bool cannot_wrap(const paper::packed_normal& p, int e, int s, const gs::model_options& o) noexcept;
 // The largest s such that no normal can wrap for any s' <= s by that bound (0 if none).
 int bound_safe_s(const gs::model_options& o);
