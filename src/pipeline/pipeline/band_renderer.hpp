@@ -13,13 +13,11 @@
 #include "gs_arith/gouraud.hpp"
 #include "gs_memory/swizzle_tables.hpp"
 #include "pipeline/gs_pass.hpp"
+#include "pipeline/pass_table.hpp"
 #include "pipeline/prepare.hpp"
 #include "pipeline/render.hpp"
 
 namespace gsdot3::pipeline::detail {
-
-// Step 1's register set: TME = 0, ABE = 0, COLCLAMP = 1.
-inline constexpr pass_regs step1_ambient{};
 
 // Per-triangle attributes of one pass: the Gouraud plane (gs::gouraud_triangle) and the UV planes.
 struct tri_attr {
@@ -66,7 +64,7 @@ class band_renderer {
     fill(lab, 0);
     for (int y = band_.y0; y < band_.y1; ++y)
       for (int x = band_.x0; x < band_.x1; ++x) z_[index(x, y)] = 0, visible_[index(x, y)] = -1;
-    constexpr gs::gs_registers regs = step1_ambient.registers();
+    constexpr gs::gs_registers regs = passes::step1_ambient.registers();
     const gs::fragment_colour cf = gs::fragment_colour::flat(ambient);
     for (std::size_t t = 0; t < ps_.triangles.size(); ++t) {
       const prepared_triangle& tri = ps_.triangles[t];
@@ -168,7 +166,6 @@ class band_renderer {
     pending->shaded[i] = 1;
   }
 
- private:
   // The bounding rectangle of every drawn triangle's pixels, within the band (may be empty).
   static scissor drawn_area(const prepared_scene& ps, scissor band) {
     scissor a{band.x1, band.y1, band.x0, band.y0};
@@ -182,6 +179,7 @@ class band_renderer {
     return {std::max(a.x0, band.x0), std::max(a.y0, band.y0), std::min(a.x1, band.x1), std::min(a.y1, band.y1)};
   }
 
+ private:
   const prepared_scene& ps_;
   const render_options& o_;
   scissor band_, sprite_area_;
