@@ -13,6 +13,7 @@
 #include "gs_packets/builder.hpp"
 #include "gs_packets/gs_registers.hpp"
 #include "gs_packets/packed.hpp"
+#include "gs_packets/state.hpp"
 #include "pipeline/band_renderer.hpp"
 #include "pipeline/pass_table.hpp"
 
@@ -360,13 +361,40 @@ frame_packets build_frame_packets(const scene& s, const prepared_scene& ps, meth
   }
   g.flush();
 
-  fp.gif = g.out.qwords();
+  fp.gif = g.out.bytes();
   fp.triangles = g.triangles_written;
   fp.sprites = g.sprites_written;
   fp.PMODE = pmode_circuit1();
   fp.DISPFB1 = dispfb(OUT, b.fbw);
   fp.DISPLAY1 = display(ps.width, ps.height);
   return fp;
+}
+
+gs::dump::gs_dump frame_dump(const frame_packets& fp) {
+  gs::dump::gs_dump d;
+  d.new_layout = true;
+  d.state_version = gs::dump::state_version_written;
+  d.serial = "gsdot3";
+  d.state = gs::dump::make_state_v8();
+  auto put = [&](std::uint32_t offset, std::uint64_t v) {
+    for (std::uint32_t b = 0; b < 8; ++b) d.privileged[offset + b] = static_cast<std::uint8_t>(v >> (8 * b));
+  };
+  put(PMODE_offset, fp.PMODE);
+  put(DISPFB1_offset, fp.DISPFB1);
+  put(DISPLAY1_offset, fp.DISPLAY1);
+  gs::dump::packet transfer;
+  transfer.type = gs::dump::packet_type::transfer;
+  transfer.path = 2;  // PATH3
+  transfer.data = fp.gif;
+  d.packets.push_back(std::move(transfer));
+  gs::dump::packet regs;
+  regs.type = gs::dump::packet_type::registers;
+  regs.data = d.privileged;
+  d.packets.push_back(std::move(regs));
+  gs::dump::packet vsync;
+  vsync.type = gs::dump::packet_type::vsync;
+  d.packets.push_back(std::move(vsync));
+  return d;
 }
 
 }  // namespace gsdot3::pipeline

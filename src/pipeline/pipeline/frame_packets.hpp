@@ -29,7 +29,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "gs_packets/gif_tag.hpp"
+#include "gs_packets/dump.hpp"
 #include "pipeline/gs_inputs.hpp"
 #include "pipeline/prepare.hpp"
 #include "pipeline/render.hpp"
@@ -38,7 +38,7 @@
 namespace gsdot3::pipeline {
 
 struct frame_packets {
-  std::vector<gs::packets::qword> gif;  // the stream (GIF PATH3)
+  std::vector<std::uint8_t> gif;        // the stream (GIF PATH3), little-endian qwords
   buffer_layout buffers;
   gs::mem::buffer z;                    // ZBUF_1: the Z buffer (PSMZ24)
   // Privileged registers so the displayed frame is the output buffer: PMODE (circuit 1, ALP = 0xFF),
@@ -54,5 +54,11 @@ frame_packets build_frame_packets(const scene& s, const prepared_scene& ps, meth
 // 0x0000, DISPFB1 at 0x0070, DISPLAY1 at 0x0080 (GS User's Manual register map; the same offsets in
 // ps2sdk and Linux's arch/mips/include/asm/mach-ps2/gs-registers.h, read with the search tool).
 inline constexpr std::uint32_t PMODE_offset = 0x0000, DISPFB1_offset = 0x0070, DISPLAY1_offset = 0x0080;
+
+// The frame as a PCSX2 GS dump (new layout, state version 8: gs_packets/state.hpp): serial
+// "gsdot3", no screenshot, a zeroed state blob (memory 0, PRMODECONT.AC = 1, Q = 1.0), the
+// privileged registers above; packets: the stream as one PATH3 transfer (path index 2), then a
+// registers packet and a vsync (field 0), as PCSX2's GSDumpBase::VSync writes them.
+gs::dump::gs_dump frame_dump(const frame_packets& fp);
 
 }  // namespace gsdot3::pipeline
