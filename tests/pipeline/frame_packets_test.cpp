@@ -118,7 +118,7 @@ std::vector<std::string> expected_passes(method m, std::size_t lights) {
     }
     p.insert(p.end(), {"sprite post_add_into_red DPB", "sprite ilp_into_lab LAB"});
   }
-  p.insert(p.end(), {"sprite fill diffuse", "triangle diffuse_layer diffuse", "sprite copy_word out"});
+  p.insert(p.end(), {"sprite fill diffuse", "triangle diffuse_layer diffuse", "sprite fill out", "sprite copy_word out"});
   for (const char* c : {"red", "green", "blue"}) {
     p.push_back("sprite move_into_alpha out");
     p.push_back(std::string("sprite multiply_") + c + " out");

@@ -341,10 +341,13 @@ frame_packets build_frame_packets(const scene& s, const prepared_scene& ps, meth
   g.target(DIFF, diffuse_layer);
   g.triangles(diffuse_layer, true, white_vertex, nm_uv);
 
-  // Step 4: the LAB copied into the output; per channel the LAB byte moved into the output's
-  // alpha, then diffuse × alpha into that channel.
-  g.clip(area);
+  // Step 4: the output cleared over the frame (the Z buffer shared its pages: no Z is read from
+  // here on), the LAB copied into it; per channel the LAB byte moved into the output's alpha, then
+  // diffuse × alpha into that channel.
   g.depth(gs::ztst::ALWAYS, true);
+  g.target(OUT, step1_ambient);
+  g.frame_sprite(step1_ambient, gs::rgba8{});
+  g.clip(area);
   g.texflush();
   g.texture(copy_word, buffer(LAB), ps.width, ps.height, std::nullopt, false, false);
   g.target(OUT, copy_word);
