@@ -1,7 +1,9 @@
-// gsdot3 replay — runs a PCSX2 GS dump through the model's packet interpreter (register writes and
-// host -> local IMAGE transfers into the modelled local memory) and writes chosen buffers as PNG.
-// Drawing is not modelled yet: every primitive, and every other feature the model lacks, is listed
-// by name with its dump byte offset.
+// gsdot3 replay — runs a PCSX2 GS dump through the model's packet interpreter (register writes,
+// host -> local IMAGE transfers and drawing into the modelled local memory), writes the displayed
+// frame (the read circuit PMODE / DISPFB / DISPLAY select, gs_packets/display.hpp) and chosen buffers
+// as PNG, and compares the frame with a screenshot (--expect, the compare command's code). A primitive
+// the model cannot draw stops the replay with a one-line error (exit 2), or with --skip-unmodelled is
+// skipped; either way it is named with its dump byte offset.
 #include <algorithm>
 #include <cstdint>
 #include <filesystem>
@@ -12,8 +14,10 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "image_compare.hpp"
 #include "gs_memory/address.hpp"
 #include "gs_memory/psm_names.hpp"
+#include "gs_packets/display.hpp"
 #include "gs_packets/interpreter.hpp"
 #include "pipeline/files.hpp"
 
@@ -54,15 +58,15 @@ buffer_arg parse_buffer(const std::string& s) {
 
 // 8-bit RGB for colour formats (PSMCT16/16S: 5 bits widened as x << 3 | x >> 2), grey (low 8 bits of
 // the value) for the others.
-pipeline::image picture(const mem::local_memory& m, const buffer_arg& b, unsigned height) {
-  const mem::buffer buf{fixed::uint<14>::from_wrapped(b.fbp * 32), fixed::uint<6>::from_wrapped(b.fbw), b.psm};
-  const unsigned width = 64 * b.fbw;
-  const bool rgb32 = b.psm == mem::psm::PSMCT32 || b.psm == mem::psm::PSMCT24;
-  const bool rgb16 = b.psm == mem::psm::PSMCT16 || b.psm == mem::psm::PSMCT16S;
+// The rectangle (x0, y0) .. + width × height of the buffer.
+pipeline::image picture(const mem::local_memory& m, const mem::buffer& buf, unsigned x0, unsigned y0, unsigned width,
+                        unsigned height) {
+  const bool rgb32 = buf.PSM == mem::psm::PSMCT32 || buf.PSM == mem::psm::PSMCT24;
+  const bool rgb16 = buf.PSM == mem::psm::PSMCT16 || buf.PSM == mem::psm::PSMCT16S;
   pipeline::image img{static_cast<int>(width), static_cast<int>(height), rgb32 || rgb16 ? 3 : 1, {}};
-  for (unsigned y = 0; y < height; ++y)
-    for (unsigned x = 0; x < width; ++x) {
-      const std::uint32_t v = m.read_pixel(buf, x, y);
+  for (unsigned y = y0; y < y0 + height; ++y)
+    for (unsigned x = x0; x < x0 + width; ++x) {
+      const std::uint32_t v = m.read_pixel(buf, x % 2048, y % 2048);
       if (rgb32) {
         for (int c = 0; c < 3; ++c) img.data.push_back(static_cast<std::uint8_t>(v >> (8 * c)));
       } else if (rgb16) {
@@ -78,12 +82,22 @@ pipeline::image picture(const mem::local_memory& m, const buffer_arg& b, unsigne
 }
 
 struct args {
-  std::string file, out = "replay";
+  std::string file, out = "replay", expect, heat;
   std::vector<std::string> buffers;
   unsigned height = 0;
+  bool skip_unmodelled = false;
 };
 
-void run(const args& a) {
+void write_picture(const std::filesystem::path& file, const pipeline::image& img) {
+  try {
+    pipeline::write_png(file, img);
+  } catch (const std::runtime_error& e) {
+    throw usage_error(e.what());
+  }
+  std::cout << file.string() << "\n";
+}
+
+void run(const args& a, context& ctx) {
   std::vector<buffer_arg> bufs;
   for (const auto& s : a.buffers) bufs.push_back(parse_buffer(s));
   if (a.height > 2048) throw usage_error("--height: out of range 1..2048");
@@ -94,21 +108,38 @@ void run(const args& a) {
     throw usage_error(e.what());
   }
   mem::local_memory m;
-  gs::packets::interpreter it(m);
+  gs::packets::interpreter it(m, {.skip_unmodelled = a.skip_unmodelled});
   try {
     it.replay(d);
   } catch (const gs::dump::dump_error& e) {
     throw usage_error(a.file + ": " + e.what());
+  } catch (const gs::packets::unmodelled_error& e) {
+    throw usage_error(a.file + ": " + e.what() + " (not modelled; --skip-unmodelled skips such primitives)");
   }
   for (const auto& t : it.transfers())
     std::cout << "transfer at byte " << t.offset << ": " << t.trxreg.RRW.value() << "x" << t.trxreg.RRH.value() << " "
               << mem::name_of(t.bitbltbuf.DPSM) << " to DBP " << t.bitbltbuf.DBP.value() << " DBW "
               << t.bitbltbuf.DBW.value() << " at (" << t.trxpos.DSAX.value() << ", " << t.trxpos.DSAY.value() << ")\n";
   for (const auto& u : it.unmodelled_features()) std::cout << "unmodelled at byte " << u.offset << ": " << u.what << "\n";
-  if (bufs.empty()) return;
+  std::cout << "primitives drawn " << it.primitives_drawn() << " (" << it.pixels_drawn() << " pixels), skipped "
+            << it.primitives_skipped() << "\n";
+  const gs::packets::display_state disp = gs::packets::decode_display(it.privileged());
+  if (!disp.unmodelled.empty()) std::cout << "display: " << disp.unmodelled << "\n";
+  if (disp.frame)
+    std::cout << "display: circuit " << disp.frame->circuit << ", " << disp.frame->width << "x" << disp.frame->height
+              << " " << mem::name_of(disp.frame->buffer.PSM) << " at (" << disp.frame->x << ", " << disp.frame->y
+              << ") of FBP " << disp.frame->buffer.BP.value() / 32 << " FBW " << disp.frame->buffer.BW.value() << "\n";
+  if (!a.expect.empty() && (!disp.frame || disp.frame->width == 0 || disp.frame->height == 0))
+    throw usage_error("--expect: the dump displays no frame to compare");
+  if (bufs.empty() && !disp.frame) return;
   std::error_code ec;
   std::filesystem::create_directories(a.out, ec);
   if (ec) throw usage_error("--out " + a.out + ": " + ec.message());
+  if (disp.frame && disp.frame->width > 0 && disp.frame->height > 0) {
+    const auto file = std::filesystem::path(a.out) / "display.png";
+    write_picture(file, picture(m, disp.frame->buffer, disp.frame->x, disp.frame->y, disp.frame->width, disp.frame->height));
+    if (!a.expect.empty()) ctx.exit_code = compare_pngs(file.string(), a.expect, a.heat, 10, std::cout) == 0 ? 0 : 1;
+  }
   for (const auto& b : bufs) {
     unsigned h = a.height;
     if (h == 0)  // the lowest row any transfer into this buffer wrote
@@ -119,26 +150,28 @@ void run(const args& a) {
     const auto file = std::filesystem::path(a.out) /
                       ("buffer_" + std::to_string(b.fbp) + "_" + std::to_string(b.fbw) + "_" +
                        std::string(mem::name_of(b.psm)) + ".png");
-    try {
-      pipeline::write_png(file, picture(m, b, h));
-    } catch (const std::runtime_error& e) {
-      throw usage_error(e.what());
-    }
-    std::cout << file.string() << "\n";
+    const mem::buffer buf{fixed::uint<14>::from_wrapped(b.fbp * 32), fixed::uint<6>::from_wrapped(b.fbw), b.psm};
+    write_picture(file, picture(m, buf, 0, 0, 64 * b.fbw, h));
   }
 }
 
 }  // namespace
 
-void add_replay_command(CLI::App& app, context&) {
+void add_replay_command(CLI::App& app, context& ctx) {
   auto a = std::make_shared<args>();
   auto* cmd = app.add_subcommand("replay", "Run a PCSX2 GS dump through the model (register writes, IMAGE "
-                                           "transfers; drawing is reported, not drawn yet) and write buffers as PNG");
+                                           "transfers, drawing) and write the displayed frame and buffers as PNG");
   cmd->add_option("FILE", a->file, "The dump (.gs, .gs.xz, .gs.zst)")->required();
   cmd->add_option("--buffer", a->buffers, "A buffer to write: FBP (8 KiB pages),FBW (64 pixels),PSM; repeatable");
   cmd->add_option("--height", a->height, "Rows to write (default: the lowest row the dump's transfers wrote)");
-  cmd->add_option("--out", a->out, "Directory for the PNGs")->capture_default_str();
-  cmd->callback([a] { run(*a); });
+  cmd->add_option("--out", a->out, "Directory for the PNGs (display.png: the displayed frame)")->capture_default_str();
+  cmd->add_flag("--skip-unmodelled", a->skip_unmodelled,
+                "Skip (and list) primitives using what the model lacks (fog, AA1, points, lines, mip-mapping, ...) "
+                "instead of stopping");
+  cmd->add_option("--expect", a->expect, "Compare the displayed frame with this PNG (a screenshot), as `gsdot3 compare` "
+                                         "does; exit 1 when they differ");
+  cmd->add_option("--heat", a->heat, "With --expect: write the heat map PNG here");
+  cmd->callback([a, &ctx] { run(*a, ctx); });
 }
 
 }  // namespace gsdot3::cli

@@ -1,6 +1,7 @@
 // The packet interpreter: an IMAGE transfer in a dump lands in the modelled memory where the GS
-// manual's transfer rule puts it (pixel words built by hand), drawing is reported, not drawn, with
-// its dump byte offset (worked out from the layout in dump.hpp).
+// manual's transfer rule puts it (pixel words built by hand); a primitive the model cannot draw (a fog
+// sprite) stops the replay with its dump byte offset (worked out from the layout in dump.hpp), or is
+// skipped and listed with skip_unmodelled.
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -26,7 +27,9 @@ dump::gs_dump upload_dump() {
   for (std::uint32_t i = 0; i < 8; ++i)
     for (int b = 0; b < 4; ++b) img.push_back(static_cast<std::uint8_t>((0x11223340u + i) >> (8 * b)));
   pb.image(img);
-  const std::pair<std::uint8_t, std::uint64_t> draw[] = {{0x00, 6}, {0x05, 0x0000000001000100ull}};
+  // PRIM = SPRITE (6) with FGE (bit 5), two XYZ2 corners: the second kicks a fog sprite.
+  const std::pair<std::uint8_t, std::uint64_t> draw[] = {
+      {0x00, 6 | 1 << 5}, {0x05, 0x0000000001000100ull}, {0x05, 0x0000000002000200ull}};
   pb.ad(draw, true);
   dump::gs_dump d;
   d.state_version = 8;
@@ -36,10 +39,10 @@ dump::gs_dump upload_dump() {
   return d;
 }
 
-TEST(Interpreter, ImageTransferReachesMemoryAndDrawingIsReported) {
+TEST(Interpreter, ImageTransferReachesMemoryAndAnUnmodelledPrimitiveIsSkipped) {
   const dump::gs_dump d = dump::read_dump(dump::write_dump(upload_dump()));
   gs::mem::local_memory m;
-  interpreter it(m);
+  interpreter it(m, {.skip_unmodelled = true});
   it.replay(d);
   const gs::mem::buffer fb{fixed::uint<14>::from_wrapped(0), fixed::uint<6>::from_wrapped(1), gs::mem::psm::PSMCT32};
   for (std::uint32_t y = 0; y < 2; ++y)
@@ -47,12 +50,25 @@ TEST(Interpreter, ImageTransferReachesMemoryAndDrawingIsReported) {
   EXPECT_EQ(m.read_pixel(fb, 1, 1), 0u);
   EXPECT_EQ(m.read_pixel(fb, 6, 1), 0u);
   ASSERT_EQ(it.transfers().size(), 1u);
-  // Transfer data at 8 + 36 + 4194760 + 8192 + 6 = 4203002; the XYZ2 write is qword 10 of the stream.
+  // Transfer data at 8 + 36 + 4194760 + 8192 + 6 = 4203002; the second XYZ2 write is qword 11.
   ASSERT_EQ(it.unmodelled_features().size(), 1u);
-  EXPECT_EQ(it.unmodelled_features()[0].what,
-            "drawing SPRITE (vertex kick through XYZ2): primitives are not drawn by replay yet");
-  EXPECT_EQ(it.unmodelled_features()[0].offset, 4203002u + 16 * 10);
+  EXPECT_EQ(it.unmodelled_features()[0].what, "SPRITE: PRIM.FGE = 1 (fog)");
+  EXPECT_EQ(it.unmodelled_features()[0].offset, 4203002u + 16 * 11);
+  EXPECT_EQ(it.primitives_skipped(), 1u);
+  EXPECT_EQ(it.primitives_drawn(), 0u);
   EXPECT_EQ(it.reg(0x52), 0x0000000200000004ull);
+}
+
+TEST(Interpreter, AnUnmodelledPrimitiveStopsTheReplay) {
+  const dump::gs_dump d = dump::read_dump(dump::write_dump(upload_dump()));
+  gs::mem::local_memory m;
+  interpreter it(m);
+  try {
+    it.replay(d);
+    FAIL() << "no unmodelled_error";
+  } catch (const unmodelled_error& e) {
+    EXPECT_STREQ(e.what(), ("byte " + std::to_string(4203002u + 16 * 11) + ": SPRITE: PRIM.FGE = 1 (fog)").c_str());
+  }
 }
 
 TEST(Interpreter, IncompleteAndLocalToHostTransfersAreReported) {

@@ -11,11 +11,92 @@
 namespace gs::packets {
 namespace {
 
-// PRIM.PRIM (bits 0-2) names, GS User's Manual.
+// PRIM.PRIM (bits 0-2) names, GS User's Manual, and the vertices each needs.
 constexpr const char* prim_names[8] = {"POINT", "LINE", "LINE_STRIP", "TRIANGLE", "TRIANGLE_STRIP", "TRIANGLE_FAN",
                                        "SPRITE", "PRIM 7 (reserved)"};
+constexpr unsigned prim_vertices[8] = {1, 2, 2, 3, 3, 3, 2, 1};
+
+// Context register addresses (context 2 = context 1 + 1), gs_registers.hpp.
+constexpr std::uint8_t XYOFFSET_1 = 0x18, TEX0_1 = 0x06, TEX1_1 = 0x14, TEX2_1 = 0x16, CLAMP_1 = 0x08, SCISSOR_1 = 0x40,
+                       ALPHA_1 = 0x42, TEST_1 = 0x47, FBA_1 = 0x4A, FRAME_1 = 0x4C, ZBUF_1 = 0x4E, PRMODECONT = 0x1A,
+                       PRMODE = 0x1B, TEXA = 0x3B, DIMX = 0x44, DTHE = 0x45, COLCLAMP = 0x46, PABE = 0x49, SCANMSK = 0x22;
+// TEX2's fields (PSM 20-25, CBP 37-50, CPSM 51-54, CSM 55, CSA 56-60, CLD 61-63) at TEX0's positions.
+constexpr std::uint64_t tex2_mask = (std::uint64_t{0x3F} << 20) | (~std::uint64_t{0} << 37);
 
 }  // namespace
+
+draw_registers interpreter::drawing_registers() const {
+  const std::uint64_t prim = regs_[reg::PRIM];
+  draw_registers r;
+  r.PRIM = (regs_[PRMODECONT] & 1) != 0 ? prim : (prim & 7) | (regs_[PRMODE] & 0x7F8);
+  const unsigned c = (r.PRIM >> 9) & 1;
+  r.context = c + 1;
+  r.XYOFFSET = regs_[XYOFFSET_1 + c];
+  r.TEX0 = regs_[TEX0_1 + c];
+  r.TEX1 = regs_[TEX1_1 + c];
+  r.CLAMP = regs_[CLAMP_1 + c];
+  r.SCISSOR = regs_[SCISSOR_1 + c];
+  r.ALPHA = regs_[ALPHA_1 + c];
+  r.TEST = regs_[TEST_1 + c];
+  r.FBA = regs_[FBA_1 + c];
+  r.FRAME = regs_[FRAME_1 + c];
+  r.ZBUF = regs_[ZBUF_1 + c];
+  r.TEXA = regs_[TEXA];
+  r.DIMX = regs_[DIMX];
+  r.DTHE = regs_[DTHE];
+  r.COLCLAMP = regs_[COLCLAMP];
+  r.PABE = regs_[PABE];
+  r.SCANMSK = regs_[SCANMSK];
+  return r;
+}
+
+void interpreter::tex0_written(unsigned context, std::uint64_t offset) {
+  try {
+    clut_.state = mem::load_clut(mem_, decode_tex0(regs_[TEX0_1 + context]), clut_.state);
+    clut_.load_error.clear();
+  } catch (const std::invalid_argument& e) {  // register_error too
+    clut_.load_error = std::string(e.what()) + " (TEX0 written at byte " + std::to_string(offset) + ")";
+  }
+}
+
+void interpreter::vertex_kick(bool draw, bool with_fog, std::uint64_t offset) {
+  const std::uint64_t xyz = regs_[draw ? (with_fog ? reg::XYZF2 : reg::XYZ2) : (with_fog ? reg::XYZF3 : reg::XYZ3)];
+  const std::uint64_t rgbaq = regs_[reg::RGBAQ], st = regs_[reg::ST], uv = regs_[reg::UV];
+  vertex v;
+  v.X = static_cast<std::uint16_t>(xyz);
+  v.Y = static_cast<std::uint16_t>(xyz >> 16);
+  v.Z = with_fog ? static_cast<std::uint32_t>((xyz >> 32) & 0xFFFFFF) : static_cast<std::uint32_t>(xyz >> 32);
+  v.F = static_cast<std::uint8_t>(with_fog ? xyz >> 56 : regs_[reg::FOG] >> 56);
+  v.colour = rgba8::from_u32(static_cast<std::uint32_t>(rgbaq));
+  v.Q = static_cast<std::uint32_t>(rgbaq >> 32);
+  v.S = static_cast<std::uint32_t>(st);
+  v.T = static_cast<std::uint32_t>(st >> 32);
+  v.U = static_cast<std::uint16_t>(uv & 0x3FFF);
+  v.V = static_cast<std::uint16_t>((uv >> 16) & 0x3FFF);
+  const unsigned type = regs_[reg::PRIM] & 7, need = prim_vertices[type];
+  if (queued_ >= need) queued_ = 0;
+  queue_[queued_++] = v;
+  if (queued_ < need) return;
+  if (draw) {
+    const draw_registers r = drawing_registers();
+    const std::span<const vertex> vs(queue_.data(), need);
+    if (const std::string why = check_primitive(r, clut_, vs); !why.empty()) {
+      const unmodelled u{std::string(prim_names[type]) + ": " + why, offset};
+      unmodelled_.push_back(u);
+      if (!opt_.skip_unmodelled) throw unmodelled_error(u);
+      ++skipped_;
+    } else {
+      pixels_ += draw_primitive(mem_, r, clut_, vs, opt_.model);
+      ++drawn_;
+    }
+  }
+  switch (type) {
+    case 2: queue_[0] = queue_[1], queued_ = 1; break;                        // LINE_STRIP
+    case 4: queue_[0] = queue_[1], queue_[1] = queue_[2], queued_ = 2; break;  // TRIANGLE_STRIP
+    case 5: queue_[1] = queue_[2], queued_ = 2; break;                        // TRIANGLE_FAN
+    default: queued_ = 0; break;
+  }
+}
 
 void interpreter::load_state(std::span<const std::uint8_t> state, std::uint32_t version) {
   if (version != 8 || state.size() != dump::state_size_v8) {
@@ -74,30 +155,43 @@ void interpreter::apply(const gif_event& e, std::uint64_t offset) {
     if (data_.size() == need_) finish_transfer();
     return;
   }
+  if (e.address == TEX2_1 || e.address == TEX2_1 + 1) {
+    const unsigned c = e.address - TEX2_1;
+    regs_[TEX0_1 + c] = (regs_[TEX0_1 + c] & ~tex2_mask) | (e.value & tex2_mask);
+  }
   regs_[e.address] = e.value;
   switch (e.address) {
     case reg::TRXDIR: start_transfer(offset); break;
-    case reg::PRIM: kicked_since_prim_ = false; break;
-    case reg::XYZ2:
-    case reg::XYZF2:
-      if (!kicked_since_prim_)
-        unmodelled_.push_back({std::string("drawing ") + prim_names[regs_[reg::PRIM] & 7] + " (vertex kick through " +
-                                   (e.address == reg::XYZ2 ? "XYZ2" : "XYZF2") + "): primitives are not drawn by replay yet",
-                               offset});
-      kicked_since_prim_ = true;
-      break;
+    case reg::PRIM: queued_ = 0; break;
+    case reg::XYZ2: vertex_kick(true, false, offset); break;
+    case reg::XYZF2: vertex_kick(true, true, offset); break;
+    case reg::XYZ3: vertex_kick(false, false, offset); break;
+    case reg::XYZF3: vertex_kick(false, true, offset); break;
+    case TEX0_1: case TEX0_1 + 1: tex0_written(e.address - TEX0_1, offset); break;
+    case TEX2_1: case TEX2_1 + 1: tex0_written(e.address - TEX2_1, offset); break;
     default: break;
   }
 }
 
 void interpreter::replay(const dump::gs_dump& d) {
   load_state(d.state, d.state_version);
+  privileged_ = d.privileged;
   const auto paths = dump::decode_paths(d);
-  std::vector<std::tuple<std::uint64_t, unsigned, std::size_t>> order;  // (dump byte, path, event)
+  // (dump byte, path or registers_packet, event or packet index)
+  constexpr unsigned registers_packet = 255;
+  std::vector<std::tuple<std::uint64_t, unsigned, std::size_t>> order;
   for (unsigned p = 0; p < paths.size(); ++p)
     for (std::size_t i = 0; i < paths[p].events.size(); ++i) order.emplace_back(paths[p].file_offsets[i], p, i);
+  for (std::size_t i = 0; i < d.packets.size(); ++i)
+    if (d.packets[i].type == dump::packet_type::registers) order.emplace_back(d.packets[i].offset, registers_packet, i);
   std::stable_sort(order.begin(), order.end());
-  for (const auto& [at, p, i] : order) apply(paths[p].events[i], at);
+  for (const auto& [at, p, i] : order) {
+    if (p == registers_packet) {
+      if (d.packets[i].data.size() == privileged_.size()) privileged_ = d.packets[i].data;
+    } else {
+      apply(paths[p].events[i], at);
+    }
+  }
   if (in_transfer_)
     unmodelled_.push_back({"the dump ends inside a transfer (" + std::to_string(data_.size()) + " of " +
                                std::to_string(need_) + " bytes)",

@@ -1,7 +1,17 @@
 // gs_packets/interpreter.hpp — applies a GS dump's GIF events to a modelled local memory: register
-// writes are kept, host -> local IMAGE transfers go through gs_memory's host_to_local. Everything the
-// model does not cover (drawing primitives, local -> host / local -> local transfers, the display
-// registers) is reported by name with the dump byte offset instead of being drawn.
+// writes are kept, host -> local IMAGE transfers go through gs_memory's host_to_local, and vertex kicks
+// draw through draw.hpp (the rasteriser and gs::pixel_pipeline). The privileged registers (PMODE,
+// DISPFB1/2, DISPLAY1/2) follow the dump's register packets, for the displayed frame (display.hpp).
+// What the model does not cover is reported by name with the dump byte offset: a primitive the model
+// cannot draw stops the replay (unmodelled_error) unless options::skip_unmodelled, which skips it;
+// local -> host / local -> local transfers and state versions it cannot load are listed and passed over.
+//
+// Vertex queue (GS User's Manual, "Drawing primitives"; PCSX2 `GSState::VertexKick`): XYZ2 / XYZF2 add
+// a vertex with the current RGBAQ, ST, UV (and FOG, or XYZF2's F) and kick drawing once the primitive
+// has its vertices; XYZ3 / XYZF3 add one without the kick. After a kick TRIANGLE and SPRITE start over,
+// TRIANGLE_STRIP keeps the last two vertices, TRIANGLE_FAN the first and the last. A PRIM write empties
+// the queue. PRMODECONT.AC = 0 takes the attribute bits (IIP .. FIX) from PRMODE instead of PRIM.
+// TEX0_n (and TEX2_n, which rewrites TEX0_n's PSM and CLUT fields) loads the CLUT as CLD says.
 //
 // Transfer rule (GS User's Manual section 4; PCSX2 `GSState::Write` / `GIFRegHandlerTRXDIR`): writing
 // TRXDIR starts a transfer with the current BITBLTBUF, TRXPOS and TRXREG; the following IMAGE data
@@ -9,13 +19,16 @@
 #pragma once
 
 #include <array>
+#include <stdexcept>
 #include <cstdint>
 #include <string>
 #include <vector>
 
 #include "gs_memory/local_memory.hpp"
 #include "gs_memory/memory_registers.hpp"
+#include "gs_arith/options.hpp"
 #include "gs_packets/decoder.hpp"
+#include "gs_packets/draw.hpp"
 #include "gs_packets/dump.hpp"
 
 namespace gs::packets {
@@ -33,9 +46,22 @@ struct completed_transfer {
   std::uint64_t offset = 0;
 };
 
+// A primitive the model cannot draw, when options::skip_unmodelled is off: what() is one line
+// "byte N: <what the model lacks>".
+struct unmodelled_error : std::runtime_error {
+  unmodelled_error(const unmodelled& u)
+      : std::runtime_error("byte " + std::to_string(u.offset) + ": " + u.what), feature(u) {}
+  unmodelled feature;
+};
+
+struct interpreter_options {
+  model_options model{};
+  bool skip_unmodelled = false;  // skip (and list) primitives the model cannot draw instead of stopping
+};
+
 class interpreter {
  public:
-  explicit interpreter(mem::local_memory& m) : mem_(m) {}
+  explicit interpreter(mem::local_memory& m, interpreter_options o = {}) : mem_(m), opt_(o) {}
 
   // The memory and registers of a version-8 state blob (other versions: memory left as it is, and
   // reported).
@@ -47,17 +73,30 @@ class interpreter {
   std::uint64_t reg(std::uint8_t address) const noexcept { return regs_[address]; }
   const std::vector<unmodelled>& unmodelled_features() const noexcept { return unmodelled_; }
   const std::vector<completed_transfer>& transfers() const noexcept { return done_; }
+  // The 8 KiB privileged registers as the last register packet (or the dump's header block) left them.
+  const std::vector<std::uint8_t>& privileged() const noexcept { return privileged_; }
+  std::uint64_t primitives_drawn() const noexcept { return drawn_; }
+  std::uint64_t primitives_skipped() const noexcept { return skipped_; }
+  std::uint64_t pixels_drawn() const noexcept { return pixels_; }
 
  private:
   void start_transfer(std::uint64_t offset);
   void finish_transfer();
+  void vertex_kick(bool draw, bool with_fog, std::uint64_t offset);
+  draw_registers drawing_registers() const;
+  void tex0_written(unsigned context, std::uint64_t offset);
 
   mem::local_memory& mem_;
   std::array<std::uint64_t, 256> regs_{};
   std::vector<unmodelled> unmodelled_;
   std::vector<completed_transfer> done_;
   bool in_transfer_ = false;
-  bool kicked_since_prim_ = false;
+  interpreter_options opt_;
+  std::array<vertex, 3> queue_{};
+  unsigned queued_ = 0;
+  clut_unit clut_;
+  std::vector<std::uint8_t> privileged_ = std::vector<std::uint8_t>(8192, 0);
+  std::uint64_t drawn_ = 0, skipped_ = 0, pixels_ = 0;
   completed_transfer current_{};
   std::uint64_t need_ = 0;
   std::vector<std::uint8_t> data_;

@@ -10,6 +10,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "gs_arith/attribute_setup.hpp"
 #include "gs_arith/gouraud.hpp"
 #include "gs_memory/swizzle_tables.hpp"
 #include "pipeline/gs_pass.hpp"
@@ -19,11 +20,8 @@
 
 namespace gsdot3::pipeline::detail {
 
-// Per-triangle attributes of one pass: the Gouraud plane (gs::gouraud_triangle) and the UV planes.
-struct tri_attr {
-  gs::gouraud_plane colour{};
-  plane u, v;
-};
+// Per-triangle attributes of one pass: the Gouraud plane and the UV planes (gs::setup_attributes).
+using tri_attr = gs::triangle_attributes;
 
 // Where a frame buffer's pixel (x, y) is: a row-major frame-sized vector (value level, row_view), or
 // a PSMCT32 buffer in the modelled GS local memory (render_options::memory_path, memory_view: `words`
@@ -96,7 +94,7 @@ class band_renderer {
     constexpr gs::gs_registers regs = Pass.registers();
     auto shade = [&](std::size_t t, int x, int y) {
       const tri_attr& a = attr[t];
-      const gs::fragment_colour cf = gs::gouraud_at(a.colour, x + xy_offset_pixels, y + xy_offset_pixels);
+      const gs::fragment_colour cf = a.colour_at(x, y);
       const gs::rgba8 texel = tex != nullptr ? tex->sample(a.u.at(x, y), a.v.at(x, y)) : gs::rgba8{};
       std::uint32_t& word = fb(x, y);
       word = gs_pixel(regs, texel, cf, word, x, y, o_.model);
@@ -195,27 +193,16 @@ std::vector<tri_attr> attributes(const prepared_scene& ps, Colour&& colour, UV&&
   std::vector<tri_attr> out(ps.triangles.size());
   for (std::size_t t = 0; t < ps.triangles.size(); ++t) {
     const prepared_triangle& tri = ps.triangles[t];
-    if (tri.setup.area2 == 0) continue;  // covers no pixel (prepare() never keeps one)
-    std::array<gs::gouraud_vertex, 3> gv{};
-    std::array<std::int32_t, 3> us{}, vs{};
-    int x_ref = 1 << 16, y_ref = 1 << 16;
+    std::array<gs::rgba8, 3> c{};
+    std::array<std::array<std::int32_t, 2>, 3> uv16{};
     for (int k = 0; k < 3; ++k) {
-      const xy124 p = tri.setup.v[static_cast<std::size_t>(k)];
-      gv[static_cast<std::size_t>(k)] = {p.x + xy_offset_pixels * 16, p.y + xy_offset_pixels * 16, colour(tri.vertex[static_cast<std::size_t>(k)])};
+      c[static_cast<std::size_t>(k)] = colour(tri.vertex[static_cast<std::size_t>(k)]);
       const auto [u, v] = uv(tri, k);
-      us[static_cast<std::size_t>(k)] = u;
-      vs[static_cast<std::size_t>(k)] = v;
-      x_ref = std::min(x_ref, ceil_124(p.x));
-      y_ref = std::min(y_ref, ceil_124(p.y));
+      uv16[static_cast<std::size_t>(k)] = {u, v};
     }
-    // The plane's reference pixel is the triangle's top-left pixel (the step error grows with distance).
-    // gouraud_triangle clamps XY to 0..65535 (12.4 around XYOFFSET); empty only for zero area there.
-    if (const auto g = gs::gouraud_triangle(gv[0], gv[1], gv[2], x_ref + xy_offset_pixels, y_ref + xy_offset_pixels)) out[t].colour = *g;
-    out[t].u = make_plane(tri.setup.v, us, -(1 << 20), 1 << 20);
-    out[t].v = make_plane(tri.setup.v, vs, -(1 << 20), 1 << 20);
+    out[t] = gs::setup_attributes(tri.setup, c, uv16, xy_offset_pixels, xy_offset_pixels);
   }
   return out;
 }
-
 
 }  // namespace gsdot3::pipeline::detail

@@ -1,9 +1,9 @@
-// pipeline/raster.cpp — triangle set-up, edge functions and attribute planes (see raster.hpp).
-#include "pipeline/raster.hpp"
+// gs_arith/rasteriser.cpp — triangle set-up, edge functions and attribute planes (see rasteriser.hpp).
+#include "gs_arith/rasteriser.hpp"
 
 #include <stdexcept>
 
-namespace gsdot3::pipeline {
+namespace gs {
 
 namespace {
 
@@ -27,7 +27,7 @@ triangle_setup setup_triangle(const std::array<xy124, 3>& v) {
   return t;
 }
 
-namespace detail {
+namespace raster_detail {
 
 std::array<edge, 3> edges(const triangle_setup& t) {
   // Orientation: with area2 > 0 the interior is on the positive side of each edge function as
@@ -48,10 +48,10 @@ std::array<edge, 3> edges(const triangle_setup& t) {
   return e;
 }
 
-}  // namespace detail
+}  // namespace raster_detail
 
 bool covers(const triangle_setup& t, int x, int y) {
-  for (const detail::edge& e : detail::edges(t)) {
+  for (const raster_detail::edge& e : raster_detail::edges(t)) {
     const std::int64_t w = e.e0 + e.step_x * x + e.step_y * y;
     if (w < 0 || (w == 0 && e.bias != 0)) return false;
   }
@@ -76,4 +76,4 @@ plane make_plane(const std::array<xy124, 3>& p, const std::array<std::int32_t, 3
   return pl;
 }
 
-}  // namespace gsdot3::pipeline
+}  // namespace gs

@@ -1,0 +1,259 @@
+// gs_packets/draw.cpp — one primitive through the model (see draw.hpp).
+//
+// Register fields decoded here (GS User's Manual register map, as PCSX2 `pcsx2/GS/GSRegs.h` transcribes
+// it; the other registers go through gs_arith / gs_memory's strict decoders):
+//   XYOFFSET OFX 0-15, OFY 32-47 (12.4)      SCISSOR SCAX0 0-10, SCAX1 16-26, SCAY0 32-42, SCAY1 48-58
+//   ZBUF     ZBP 0-8, PSM 24-27, ZMSK 32     TEXA    TA0 0-7, AEM 15, TA1 32-39       SCANMSK MSK 0-1
+//   TEX1     LCM 0, MXL 2-4, MMAG 5, MMIN 6-8, MTBA 9, L 19-20, K 32-43 (signed 7.4)
+// The Z buffer is addressed with FRAME.FBW (the GS has no Z width; PCSX2 `GSState::Reset` builds the Z
+// offset from ZBUF.Block() and FRAME.FBW).
+#include "gs_packets/draw.hpp"
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cmath>
+#include <optional>
+
+#include "gs_arith/attribute_setup.hpp"
+#include "gs_arith/bilinear.hpp"
+#include "gs_arith/clut.hpp"
+#include "gs_arith/pixel_pipeline.hpp"
+#include "gs_arith/rasteriser.hpp"
+#include "gs_arith/registers.hpp"
+#include "gs_memory/address.hpp"
+#include "gs_memory/memory_registers.hpp"
+#include "gs_memory/texture_buffer.hpp"
+#include "gs_memory/texture_wrap.hpp"
+#include "gs_packets/depth_test.hpp"
+
+namespace gs::packets {
+namespace {
+
+constexpr std::uint32_t bits(std::uint64_t v, unsigned lo, unsigned n) noexcept {
+  return static_cast<std::uint32_t>((v >> lo) & ((std::uint64_t{1} << n) - 1));
+}
+
+constexpr const char* prim_names[8] = {"POINT", "LINE", "LINE_STRIP", "TRIANGLE", "TRIANGLE_STRIP", "TRIANGLE_FAN",
+                                       "SPRITE", "PRIM 7 (reserved)"};
+
+// Everything one primitive draws with, decoded.
+struct decoded {
+  gs_registers regs;  // what gs::pixel_pipeline reads (context registers in the _1 slots)
+  mem::clamp_reg clamp;
+  scissor clip;
+  std::int32_t ofx = 0, ofy = 0;
+  mem::buffer frame, zbuf;
+  bool zmsk = false;
+  unsigned z_bits = 32;
+  std::uint8_t ta0 = 0, ta1 = 0;
+  bool aem = false;
+  unsigned scanmsk = 0;
+  bilinear_mode filter = bilinear_mode::nearest;
+  bool linear = false;
+};
+
+float as_float(std::uint32_t b) noexcept { return std::bit_cast<float>(b); }
+
+// The TEX1 filter of the primitive (one LOD for the whole primitive: LCM = 1, or Q = 1 with FST = 1,
+// or one Q for every vertex), or what is not modelled.
+std::string texture_filter(const draw_registers& r, const decoded& d, std::span<const vertex> v, bool& linear) {
+  const std::uint64_t t = r.TEX1;
+  const bool lcm = bits(t, 0, 1) != 0;
+  const unsigned mxl = bits(t, 2, 3), mmag = bits(t, 5, 1), mmin = bits(t, 6, 3), l = bits(t, 19, 2);
+  const auto k16 = static_cast<std::int32_t>(bits(t, 32, 12) << 20) >> 20;  // signed 7.4
+  if (mmin > 5) return "TEX1.MMIN = " + std::to_string(mmin) + " (reserved)";
+  double lod = k16 / 16.0;
+  if (!lcm && !d.regs.PRIM.FST) {
+    const float q = as_float(v[0].Q);
+    if (!(std::fabs(q) > 0.0f)) return "TEX1.LCM = 0 with Q = 0 (LOD undefined)";
+    lod += std::log2(1.0 / std::fabs(static_cast<double>(q))) * static_cast<double>(1u << l);
+  }
+  const bool magnify = lod <= 0.0;
+  const unsigned f = magnify ? mmag : mmin;
+  if (!magnify && mmin >= 2 && mxl > 0)
+    return "mip-mapping (TEX1.MMIN = " + std::to_string(mmin) + ", MXL = " + std::to_string(mxl) + ")";
+  linear = f == 1 || f == 4 || f == 5;  // LINEAR, LINEAR_MIPMAP_NEAREST / _LINEAR at the base level
+  return {};
+}
+
+std::string decode(const draw_registers& r, std::span<const vertex> v, decoded& d) {
+  const std::string ctx = "context " + std::to_string(r.context) + " ";
+  try {
+    d.regs.PRIM = decode_prim(r.PRIM);
+  } catch (const register_error& e) {
+    return e.what();
+  }
+  const prim_reg& p = d.regs.PRIM;
+  const auto type = static_cast<unsigned>(p.PRIM);
+  if (p.PRIM != prim_type::TRIANGLE && p.PRIM != prim_type::TRIANGLE_STRIP && p.PRIM != prim_type::TRIANGLE_FAN &&
+      p.PRIM != prim_type::SPRITE)
+    return std::string("PRIM.PRIM = ") + prim_names[type & 7] + " (points and lines are not modelled)";
+  if (p.FGE) return "PRIM.FGE = 1 (fog)";
+  if (p.AA1) return "PRIM.AA1 = 1 (anti-aliasing)";
+  std::string reg = "FRAME";
+  try {
+    d.regs.FRAME_1 = decode_frame(r.FRAME);
+    reg = "TEST";
+    d.regs.TEST_1 = decode_test(r.TEST);
+    reg = "ALPHA";
+    d.regs.ALPHA_1 = decode_alpha(r.ALPHA);
+    reg = "FBA";
+    d.regs.FBA_1 = decode_fba(r.FBA);
+    reg = "COLCLAMP";
+    d.regs.COLCLAMP = decode_colclamp(r.COLCLAMP);
+    reg = "PABE";
+    d.regs.PABE = decode_pabe(r.PABE);
+    reg = "DTHE";
+    d.regs.DTHE = decode_dthe(r.DTHE);
+    reg = "DIMX";
+    d.regs.DIMX = decode_dimx(r.DIMX);
+    if (p.TME) {
+      reg = "TEX0";
+      d.regs.TEX0_1 = decode_tex0(r.TEX0);
+      reg = "CLAMP";
+      d.clamp = mem::decode_clamp(r.CLAMP);
+    }
+  } catch (const register_error& e) {
+    return ctx + reg + " (decoded with context 1's layout): " + e.what();
+  }
+  d.frame = {mem::from_page(d.regs.FRAME_1.FBP), d.regs.FRAME_1.FBW,
+             static_cast<mem::psm>(static_cast<std::uint8_t>(d.regs.FRAME_1.PSM))};
+  const unsigned zpsm = bits(r.ZBUF, 24, 4);
+  if (zpsm != 0 && zpsm != 1 && zpsm != 2 && zpsm != 0xA) return ctx + "ZBUF.PSM = " + std::to_string(zpsm) + " (reserved)";
+  d.zbuf = {mem::from_page(fixed::uint<9>::from_wrapped(bits(r.ZBUF, 0, 9))), d.regs.FRAME_1.FBW,
+            static_cast<mem::psm>(0x30 | zpsm)};
+  d.zmsk = bits(r.ZBUF, 32, 1) != 0;
+  d.z_bits = mem::value_bits(d.zbuf.PSM);
+  d.ofx = static_cast<std::int32_t>(bits(r.XYOFFSET, 0, 16));
+  d.ofy = static_cast<std::int32_t>(bits(r.XYOFFSET, 32, 16));
+  d.clip = {static_cast<int>(bits(r.SCISSOR, 0, 11)), static_cast<int>(bits(r.SCISSOR, 32, 11)),
+            static_cast<int>(bits(r.SCISSOR, 16, 11)) + 1, static_cast<int>(bits(r.SCISSOR, 48, 11)) + 1};
+  d.ta0 = static_cast<std::uint8_t>(bits(r.TEXA, 0, 8));
+  d.aem = bits(r.TEXA, 15, 1) != 0;
+  d.ta1 = static_cast<std::uint8_t>(bits(r.TEXA, 32, 8));
+  d.scanmsk = bits(r.SCANMSK, 0, 2);
+  if (d.scanmsk == 1) return "SCANMSK.MSK = 1 (reserved)";
+  if (!p.TME) return {};
+  if (!p.FST)
+    for (const vertex& x : v)
+      if (x.Q != v[0].Q) return "PRIM.FST = 0 with differing Q (perspective-correct ST/Q texturing)";
+  if (const auto e = texture_filter(r, d, v, d.linear); !e.empty()) return ctx + e;
+  return {};
+}
+
+// A texel's colour from its raw value (gs_memory's right-aligned value bits). 24- and 16-bit texels
+// take their alpha from TEXA (GS User's Manual TEXA: TA0 for PSMCT24 and for 16-bit texels with the
+// A bit 0, TA1 with it 1; AEM = 1 makes A = 0 where R = G = B = 0); 16-bit RGB are widened as c << 3.
+rgba8 texel_colour(const decoded& d, const clut_buffer& clut, std::uint32_t t) {
+  const tex0_reg& x = d.regs.TEX0_1;
+  switch (mem::value_bits(x.PSM)) {
+    case 32: return rgba8::from_u32(t);
+    case 24: {
+      const bool black = (t & 0xFFFFFFu) == 0;
+      return rgba8::from_u32((t & 0xFFFFFFu) | (std::uint32_t{d.aem && black ? std::uint8_t{0} : d.ta0} << 24));
+    }
+    case 16: {
+      const std::uint32_t r = (t & 31u) << 3, g = ((t >> 5) & 31u) << 3, b = ((t >> 10) & 31u) << 3;
+      const std::uint8_t a = (t & 0x8000u) != 0 ? d.ta1 : (d.aem && (t & 0x7FFFu) == 0 ? std::uint8_t{0} : d.ta0);
+      return rgba8::from_u32(r | (g << 8) | (b << 16) | (std::uint32_t{a} << 24));
+    }
+    case 8: return clut_t8(clut, u8::from_wrapped(t));
+    default: return clut_t4(clut, fixed::u4::from_wrapped(t), x.CSA);
+  }
+}
+
+// 12.4 texel coordinates of a vertex: UV with FST = 1, else S/Q·2^TW and T/Q·2^TH (one Q per primitive,
+// so this is exact affine texturing; the conversion floors, a model choice).
+std::array<std::int32_t, 2> texel_position(const decoded& d, const vertex& x) {
+  if (d.regs.PRIM.FST) return {x.U & 0x3FFF, x.V & 0x3FFF};
+  const double q = as_float(x.Q);
+  auto fix = [&](std::uint32_t st, unsigned size_log2) {
+    const double u = static_cast<double>(as_float(st)) / q * 16.0 * static_cast<double>(1u << size_log2);
+    return static_cast<std::int32_t>(std::clamp(std::floor(u), -1048576.0, 1048576.0));
+  };
+  return {fix(x.S, static_cast<unsigned>(d.regs.TEX0_1.TW.value())), fix(x.T, static_cast<unsigned>(d.regs.TEX0_1.TH.value()))};
+}
+
+}  // namespace
+
+std::string check_primitive(const draw_registers& r, const clut_unit& clut, std::span<const vertex> v) {
+  decoded d;
+  if (auto e = decode(r, v, d); !e.empty()) return e;
+  if (d.regs.PRIM.TME && mem::value_bits(d.regs.TEX0_1.PSM) <= 8 && !clut.load_error.empty())
+    return "context " + std::to_string(r.context) + " CLUT: " + clut.load_error;
+  return {};
+}
+
+std::uint64_t draw_primitive(mem::local_memory& m, const draw_registers& r, const clut_unit& clut,
+                             std::span<const vertex> v, const model_options& o) {
+  decoded d;
+  if (!check_primitive(r, clut, v).empty()) return 0;
+  decode(r, v, d);
+  const prim_reg& p = d.regs.PRIM;
+  const tex0_reg& tex = d.regs.TEX0_1;
+  const mem::buffer tb{tex.TBP0, tex.TBW, tex.PSM};
+  mem::texture_page_buffer cache(o.tex_buffer, m, 0, o.tex_buffer == texture_buffer::draw_snapshot ? mem::memory_bytes : 0);
+  auto fetch = [&](std::int32_t u, std::int32_t w) {
+    const mem::texel_coord c = mem::wrap(d.clamp, tex.TW, tex.TH, u, w);
+    const mem::location at = mem::locate(tb, c.u, c.v);
+    std::uint64_t raw = 0;
+    for (unsigned i = 0; i < (at.bit + at.bits + 7) / 8; ++i)
+      raw |= std::uint64_t{cache.fetch((at.byte + i) % mem::memory_bytes)} << (8 * i);
+    return texel_colour(d, clut.state.buffer, static_cast<std::uint32_t>((raw >> at.bit) & ((std::uint64_t{1} << at.bits) - 1)));
+  };
+  const bilinear_mode filter = d.linear ? o.bilinear : bilinear_mode::nearest;
+  const bool ZTE = d.regs.TEST_1.ZTE;
+  const std::uint32_t zmax = z_max(d.z_bits);
+  const unsigned fbits = mem::value_bits(d.frame.PSM);
+  std::uint64_t pixels = 0;
+  auto shade = [&](int x, int y, const fragment_colour& cf, std::int32_t u16, std::int32_t v16, std::uint32_t z) {
+    if ((d.scanmsk == 2 && y % 2 == 0) || (d.scanmsk == 3 && y % 2 == 1)) return;
+    const auto ux = static_cast<std::uint32_t>(x), uy = static_cast<std::uint32_t>(y);
+    const std::uint32_t dst = m.read_pixel(d.frame, ux, uy);
+    if (d.regs.TEST_1.DATE && fbits != 24 && (((dst >> (fbits - 1)) & 1u) != 0) != d.regs.TEST_1.DATM) return;
+    z = std::min(z, zmax);
+    if (ZTE && !depth_test(true, d.regs.TEST_1.ZTST, z, m.read_pixel(d.zbuf, ux, uy))) return;
+    const rgba8 texel = p.TME ? sample(fetch, u16, v16, filter) : rgba8{};
+    const pixel_trace t = pixel_pipeline(d.regs, {cf, texel, dst, ux, uy}, o);
+    m.write_pixel(d.frame, ux, uy, t.out);
+    if (depth_write(ZTE, d.zmsk, t.test.z)) m.write_pixel(d.zbuf, ux, uy, z);
+    ++pixels;
+  };
+  auto window = [&](const vertex& x) { return xy124{x.X - d.ofx, x.Y - d.ofy}; };
+  if (p.PRIM == prim_type::SPRITE) {
+    const xy124 a = window(v[0]), b = window(v[1]);
+    const auto ta = texel_position(d, v[0]), tb2 = texel_position(d, v[1]);
+    const fragment_colour cf = fragment_colour::flat(v[1].colour);  // a sprite takes its second vertex's colour
+    const xy124 lo{std::min(a.x, b.x), std::min(a.y, b.y)}, hi{std::max(a.x, b.x), std::max(a.y, b.y)};
+    if (lo.x == hi.x || lo.y == hi.y) return 0;
+    // U varies along x only and V along y only: the planes through the corners (a, U0), (b.x, U1), (b.y, V1).
+    const std::array<xy124, 3> corners{a, xy124{b.x, a.y}, xy124{a.x, b.y}};
+    const plane pu = make_plane(corners, {ta[0], tb2[0], ta[0]}, -(1 << 20), 1 << 20);
+    const plane pv = make_plane(corners, {ta[1], ta[1], tb2[1]}, -(1 << 20), 1 << 20);
+    rasterise_sprite(lo, hi, d.clip, [&](int x, int y) { shade(x, y, cf, pu.at(x, y), pv.at(x, y), v[1].Z); });
+    return pixels;
+  }
+  const triangle_setup t = setup_triangle({window(v[0]), window(v[1]), window(v[2])});
+  if (t.area2 == 0) return 0;
+  std::array<std::array<std::int32_t, 2>, 3> uv{};
+  if (p.TME)
+    for (std::size_t k = 0; k < 3; ++k) uv[k] = texel_position(d, v[k]);
+  const triangle_attributes a =
+      setup_attributes(t, {v[0].colour, v[1].colour, v[2].colour}, uv, d.ofx >> 4, d.ofy >> 4);
+  // Z as a plane (MODEL-PLANE-16, rasteriser.hpp); Z above 24 bits through Z / 256 (the plane's
+  // 32-bit range), low 8 bits 0: a model limit, stated.
+  const bool wide = std::max({v[0].Z, v[1].Z, v[2].Z}) > 0xFFFFFFu;
+  const unsigned zs = wide ? 8 : 0;
+  const plane pz = make_plane(t.v, {static_cast<std::int32_t>(v[0].Z >> zs), static_cast<std::int32_t>(v[1].Z >> zs),
+                                    static_cast<std::int32_t>(v[2].Z >> zs)},
+                              0, 0xFFFFFF);
+  const fragment_colour flat = flat_shading(v[2].colour);  // IIP = 0: the last vertex's colour
+  rasterise_triangle(t, d.clip, [&](int x, int y) {
+    shade(x, y, p.IIP ? a.colour_at(x, y) : flat, a.u.at(x, y), a.v.at(x, y),
+          static_cast<std::uint32_t>(pz.at(x, y)) << zs);
+  });
+  return pixels;
+}
+
+}  // namespace gs::packets
