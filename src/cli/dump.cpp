@@ -21,6 +21,7 @@ void add_dump_command(CLI::App& app, context& ctx) {
               "header, version-8 state, the GIF packets of every pass, display registers, a vsync");
   cmd->add_option("--out", *out, "the dump file; .xz or .zst compresses it")->required();
   auto scene = add_scene_options(cmd);
+  cmd->get_option("--method")->required();
   cmd->callback([out, scene, &ctx] {
     scene_setup st = scene();
     if (st.methods.size() != 1 || !st.schemes.empty())
