@@ -43,12 +43,15 @@ void run(const std::string& file) {
             << "crc " << hex(d.crc, 8) << "\n"
             << "serial \"" << d.serial << "\"\n"
             << "screenshot " << d.screenshot_width << "x" << d.screenshot_height << "\n";
-  if (d.state_version == 8) {
+  if (const auto layout = dump::state_layout(d.state_version, d.state.size())) {
     std::size_t nonzero = 0;
-    for (std::uint32_t i = 0; i < dump::memory_bytes; ++i) nonzero += d.state[dump::state_memory_offset_v8 + i] != 0;
-    for (const auto& f : dump::state_fields_v8) {
+    const std::uint32_t memory = dump::find_field(*layout, "memory")->offset;
+    for (std::uint32_t i = 0; i < dump::memory_bytes; ++i) nonzero += d.state[memory + i] != 0;
+    for (const auto& f : *layout) {
       if (f.name == "memory") {
         std::cout << "state memory: " << nonzero << " of " << dump::memory_bytes << " bytes non-zero\n";
+      } else if (f.size > 16) {
+        std::cout << "state " << f.name << ": " << f.size << " bytes (not decoded)\n";
       } else if (f.size == 16) {
         const dump::state_field lo{f.name, f.offset, 8}, hi{f.name, f.offset + 8, 8};
         std::cout << "state " << f.name << " = " << hex(dump::state_get(d.state, hi)) << "_"
@@ -58,7 +61,7 @@ void run(const std::string& file) {
       }
     }
   } else {
-    std::cout << "state fields: not decoded (the layout of version " << d.state_version << " is not modelled; 8 is)\n";
+    std::cout << "state fields: not decoded (the layout of version " << d.state_version << " is not known; 0..9 are)\n";
   }
   std::array<std::size_t, 4> by_type{}, transfers{};
   for (const auto& p : d.packets) {

@@ -88,6 +88,22 @@ TEST(Draw, FlatSpriteFillsCeilOfItsCornersRightAndBottomExcluded) {
   EXPECT_EQ(g.count_nonzero(), 2);
 }
 
+TEST(Draw, BitsOutsideTheFieldsAreIgnoredReservedFieldValuesNamed) {
+  fixture f;
+  // FRAME_1 with bits 9 and 22 set (between FBP / FBW / PSM: no field there) draws as FRAME_1 = FBP 0, FBW 1.
+  run(f.it, {{FRAME_1, frame(0, 1) | 1 << 9 | 1 << 22}, {PRIM, SPRITE}, {RGBAQ, rgbaq(6, 6, 6, 6)}, {XYZ2, xyz(0, 0)},
+             {XYZ2, xyz(16, 16)}});
+  EXPECT_EQ(f.px(0, 0), 0x06060606u);
+  // ALPHA_1.A = 3 is reserved: the primitive is not drawn and the register is named.
+  mem::local_memory m;
+  interpreter it(m, {.skip_unmodelled = true});
+  run(it, environment());
+  run(it, {{0x42, 3}, {PRIM, SPRITE}, {XYZ2, xyz(0, 0)}, {XYZ2, xyz(16, 16)}});
+  ASSERT_EQ(it.unmodelled_features().size(), 1u);
+  EXPECT_EQ(it.unmodelled_features()[0].what.rfind("SPRITE: context 1 registers: ALPHA_1", 0), 0u)
+      << it.unmodelled_features()[0].what;
+}
+
 TEST(Draw, XyoffsetAndScissorPlaceAndClipThePrimitive) {
   fixture f;
   // OFX = 100 px, OFY = 50 px: vertex (101, 52) .. (103, 53) lands on window (1, 2) .. (3, 3).
@@ -253,6 +269,50 @@ TEST(Draw, TexturedSpriteReadsPsmt8ThroughTheClutLoadedOnTex0) {
     for (unsigned x = 0; x < 16; ++x)
       ASSERT_EQ(f.px(static_cast<int>(x), static_cast<int>(y)), clut_word(csm1_raster(y * 16 + x))) << x << "," << y;
   EXPECT_EQ(f.count_nonzero(), 256);
+}
+
+TEST(Draw, SixteenBitTexelsTakeTheirAlphaFromTexa) {
+  fixture f;
+  packet_builder pb;
+  // Three PSMCT16 texels at block 2048: 0x801F (red, A bit 1), 0x0000 (black, A bit 0), 0x03E0 (green).
+  const writes upload{{0x50, std::uint64_t{2048} << 32 | std::uint64_t{1} << 48 | std::uint64_t{2} << 56}, {0x51, 0},
+                      {0x52, 3 | std::uint64_t{1} << 32}, {0x53, 0}};
+  pb.ad(upload);
+  const std::vector<std::uint8_t> texels{0x1F, 0x80, 0x00, 0x00, 0xE0, 0x03};
+  pb.image(texels);
+  // TEXA TA0 0x40, AEM 1 (bit 15), TA1 0x90 (bit 32); TEX0 PSMCT16, TW 2, TH 0, TCC RGBA, DECAL.
+  const std::uint64_t tex0 = 2048 | 1 << 14 | std::uint64_t{2} << 20 | std::uint64_t{2} << 26 | std::uint64_t{1} << 34 |
+                             std::uint64_t{1} << 35;
+  const writes draw{{0x3B, 0x40 | 1 << 15 | std::uint64_t{0x90} << 32}, {TEX0_1, tex0}, {PRIM, SPRITE | TME | FST},
+                    {UV, 8 | 8 << 16}, {XYZ2, xyz(0, 0)}, {UV, 56 | 24 << 16}, {XYZ2, xyz(48, 16)}};
+  pb.ad(draw, true);
+  const auto bytes = pb.bytes();
+  for (const gif_event& e : decode_gif(bytes)) f.it.apply(e, 16u * e.offset);
+  // 5-bit channels widened as c << 3: 31 -> 0xF8. A = TA1 with the A bit, 0 for black under AEM, else TA0.
+  EXPECT_EQ(f.px(0, 0), 0x900000F8u);
+  EXPECT_EQ(f.px(1, 0), 0x00000000u);
+  EXPECT_EQ(f.px(2, 0), 0x4000F800u);
+  EXPECT_EQ(f.it.pixels_drawn(), 3u);
+}
+
+TEST(Draw, AClutThatCouldNotBeLoadedStaysUnmodelledUntilALoadSucceeds) {
+  // PSMT8 4×4 texture, CBP 4096; CLD = 6 (reserved: refused), then CLD = 0 (no load: still refused), then
+  // CLD = 1 (a CSM1 PSMCT32 load: drawn).
+  const std::uint64_t t8 = 2048 | 2 << 14 | std::uint64_t{0x13} << 20 | std::uint64_t{2} << 26 | std::uint64_t{2} << 30 |
+                           std::uint64_t{4096} << 37;
+  const writes sprite{{PRIM, SPRITE | TME | FST}, {UV, 0}, {XYZ2, xyz(0, 0)}, {UV, 64 | 64 << 16}, {XYZ2, xyz(64, 64)}};
+  mem::local_memory m;
+  interpreter it(m, {.skip_unmodelled = true});
+  run(it, environment());
+  for (const std::uint64_t cld : {6, 0, 1}) {
+    writes w{{TEX0_1, t8 | cld << 61}};
+    w.insert(w.end(), sprite.begin(), sprite.end());
+    run(it, w);
+  }
+  ASSERT_EQ(it.unmodelled_features().size(), 2u);
+  for (const auto& u : it.unmodelled_features()) EXPECT_EQ(u.what.rfind("SPRITE: context 1 CLUT: ", 0), 0u) << u.what;
+  EXPECT_EQ(it.primitives_drawn(), 1u);
+  EXPECT_EQ(it.pixels_drawn(), 16u);
 }
 
 TEST(Draw, UnmodelledFeaturesAreNamedAndSkipped) {

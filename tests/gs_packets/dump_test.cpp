@@ -174,7 +174,7 @@ TEST(Dump, MalformedDumpsGiveOneLineErrors) {
   bad = good;
   bad[12] = 100;  // state_size 100 for version 8
   bad[13] = bad[14] = bad[15] = 0;
-  EXPECT_EQ(error_of(bad).rfind("byte 58: state size 100, version 8 has 4194760", 0), 0u) << error_of(bad);
+  EXPECT_EQ(error_of(bad).rfind("byte 58: state size 100 does not fit the version 8 layout (version 8 has 4194760)", 0), 0u) << error_of(bad);
   bad = good;
   bad.resize(good.size() - 3);  // the readFIFO2 size is cut
   EXPECT_EQ(error_of(bad), "byte " + std::to_string(good.size() - 4) +

@@ -94,4 +94,41 @@ TEST(Interpreter, WritesTheSampleDumpForTheCliTest) {
   EXPECT_EQ(dump::write_dump(dump::load_dump(out)), dump::write_dump(upload_dump()));
 }
 
+// Older and newer state blobs (state.hpp state_layout), offsets worked by hand: version 6 has PRMODE
+// after PRIM (environment 16 u64 from 4, contexts of 13 u64 from 132 and 236, vertex from 340, tr.x
+// 388, memory 396); version 4 also 28 bytes after each ZBUF (contexts from 132 and 264, memory 452);
+// version 9 has (size - 4194760) opaque bytes before the memory, here 61 (memory at 372 + 61).
+TEST(Interpreter, LoadsStateVersions4To9AtTheirOwnOffsets) {
+  struct layout_case {
+    std::uint32_t version, size, frame_1, frame_2, memory;
+  };
+  const layout_case cases[] = {
+      {8, 4194760, 124 + 10 * 8, 220 + 10 * 8, 372},
+      {7, 4194760, 124 + 10 * 8, 220 + 10 * 8, 372},
+      {6, 4194760 + 24, 132 + 11 * 8, 236 + 11 * 8, 396},
+      {4, 4194760 + 80, 132 + 11 * 8, 264 + 11 * 8, 452},
+      {9, 4194760 + 61, 124 + 10 * 8, 220 + 10 * 8, 372 + 61},
+  };
+  for (const layout_case& c : cases) {
+    std::vector<std::uint8_t> blob(c.size, 0);
+    blob[0] = static_cast<std::uint8_t>(c.version);
+    blob[c.frame_1] = 0x11;
+    blob[c.frame_2] = 0x22;
+    blob[c.memory + 5] = 0x5A;
+    gs::mem::local_memory m;
+    interpreter it(m);
+    it.load_state(blob, c.version);
+    EXPECT_EQ(it.reg(0x4C), 0x11u) << c.version;  // FRAME_1
+    EXPECT_EQ(it.reg(0x4D), 0x22u) << c.version;  // FRAME_2
+    EXPECT_EQ(m.byte(5), 0x5Au) << c.version;
+    EXPECT_EQ(it.unmodelled_features().size(), c.version == 9 ? 1u : 0u) << c.version;
+  }
+  // A size that fits no layout, and an unknown version, are reported and load nothing.
+  gs::mem::local_memory m;
+  interpreter it(m);
+  it.load_state(std::vector<std::uint8_t>(100, 0), 8);
+  it.load_state(std::vector<std::uint8_t>(4194760, 0), 10);
+  EXPECT_EQ(it.unmodelled_features().size(), 2u);
+}
+
 }  // namespace

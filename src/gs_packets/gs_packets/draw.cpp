@@ -5,6 +5,10 @@
 //   XYOFFSET OFX 0-15, OFY 32-47 (12.4)      SCISSOR SCAX0 0-10, SCAX1 16-26, SCAY0 32-42, SCAY1 48-58
 //   ZBUF     ZBP 0-8, PSM 24-27, ZMSK 32     TEXA    TA0 0-7, AEM 15, TA1 32-39       SCANMSK MSK 0-1
 //   TEX1     LCM 0, MXL 2-4, MMAG 5, MMIN 6-8, MTBA 9, L 19-20, K 32-43 (signed 7.4)
+// Bits that belong to no field are dropped before the strict decoders see a value (the GS has nothing
+// there to read; PCSX2's newest `GSState.h` masks register writes the same way, e.g. FRAME_REG_MASK
+// 0xFFFFFFFF3F3F01FF, ALPHA_REG_MASK 0xFF000000FF, DIMX_REG_MASK 0x7777777777777777); reserved values
+// in a field (ALPHA selector 3, PRIM 7, an unknown PSM) are still refused and named.
 // The Z buffer is addressed with FRAME.FBW (the GS has no Z width; PCSX2 `GSState::Reset` builds the Z
 // offset from ZBUF.Block() and FRAME.FBW).
 #include "gs_packets/draw.hpp"
@@ -33,9 +37,6 @@ namespace {
 constexpr std::uint32_t bits(std::uint64_t v, unsigned lo, unsigned n) noexcept {
   return static_cast<std::uint32_t>((v >> lo) & ((std::uint64_t{1} << n) - 1));
 }
-
-constexpr const char* prim_names[8] = {"POINT", "LINE", "LINE_STRIP", "TRIANGLE", "TRIANGLE_STRIP", "TRIANGLE_FAN",
-                                       "SPRITE", "PRIM 7 (reserved)"};
 
 // Everything one primitive draws with, decoded.
 struct decoded {
@@ -77,10 +78,15 @@ std::string texture_filter(const draw_registers& r, const decoded& d, std::span<
   return {};
 }
 
+// The field bits of each register the strict decoders read (the manual's layouts, registers.hpp).
+constexpr std::uint64_t prim_fields = 0x7FF, frame_fields = 0xFFFFFFFF3F3F01FFull, test_fields = 0x7FFFF,
+                        alpha_fields = 0xFF000000FFull, one_bit = 1, dimx_fields = 0x7777777777777777ull,
+                        clamp_fields = (std::uint64_t{1} << 44) - 1;
+
 std::string decode(const draw_registers& r, std::span<const vertex> v, decoded& d) {
   const std::string ctx = "context " + std::to_string(r.context) + " ";
   try {
-    d.regs.PRIM = decode_prim(r.PRIM);
+    d.regs.PRIM = decode_prim(r.PRIM & prim_fields);
   } catch (const register_error& e) {
     return e.what();
   }
@@ -91,31 +97,21 @@ std::string decode(const draw_registers& r, std::span<const vertex> v, decoded& 
     return std::string("PRIM.PRIM = ") + prim_names[type & 7] + " (points and lines are not modelled)";
   if (p.FGE) return "PRIM.FGE = 1 (fog)";
   if (p.AA1) return "PRIM.AA1 = 1 (anti-aliasing)";
-  std::string reg = "FRAME";
   try {
-    d.regs.FRAME_1 = decode_frame(r.FRAME);
-    reg = "TEST";
-    d.regs.TEST_1 = decode_test(r.TEST);
-    reg = "ALPHA";
-    d.regs.ALPHA_1 = decode_alpha(r.ALPHA);
-    reg = "FBA";
-    d.regs.FBA_1 = decode_fba(r.FBA);
-    reg = "COLCLAMP";
-    d.regs.COLCLAMP = decode_colclamp(r.COLCLAMP);
-    reg = "PABE";
-    d.regs.PABE = decode_pabe(r.PABE);
-    reg = "DTHE";
-    d.regs.DTHE = decode_dthe(r.DTHE);
-    reg = "DIMX";
-    d.regs.DIMX = decode_dimx(r.DIMX);
+    d.regs.FRAME_1 = decode_frame(r.FRAME & frame_fields);
+    d.regs.TEST_1 = decode_test(r.TEST & test_fields);
+    d.regs.ALPHA_1 = decode_alpha(r.ALPHA & alpha_fields);
+    d.regs.FBA_1 = decode_fba(r.FBA & one_bit);
+    d.regs.COLCLAMP = decode_colclamp(r.COLCLAMP & one_bit);
+    d.regs.PABE = decode_pabe(r.PABE & one_bit);
+    d.regs.DTHE = decode_dthe(r.DTHE & one_bit);
+    d.regs.DIMX = decode_dimx(r.DIMX & dimx_fields);
     if (p.TME) {
-      reg = "TEX0";
       d.regs.TEX0_1 = decode_tex0(r.TEX0);
-      reg = "CLAMP";
-      d.clamp = mem::decode_clamp(r.CLAMP);
+      d.clamp = mem::decode_clamp(r.CLAMP & clamp_fields);
     }
   } catch (const register_error& e) {
-    return ctx + reg + " (decoded with context 1's layout): " + e.what();
+    return ctx + "registers: " + e.what();  // the decoders name the field as context 1's (ALPHA_1.A ...)
   }
   d.frame = {mem::from_page(d.regs.FRAME_1.FBP), d.regs.FRAME_1.FBW,
              static_cast<mem::psm>(static_cast<std::uint8_t>(d.regs.FRAME_1.PSM))};

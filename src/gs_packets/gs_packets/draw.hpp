@@ -26,6 +26,10 @@
 
 namespace gs::packets {
 
+// PRIM.PRIM (bits 0-2) names, GS User's Manual.
+inline constexpr const char* prim_names[8] = {"POINT", "LINE", "LINE_STRIP", "TRIANGLE", "TRIANGLE_STRIP",
+                                              "TRIANGLE_FAN", "SPRITE", "PRIM 7 (reserved)"};
+
 // One vertex as the GS queues it on an XYZ write: the XYZ value and the current RGBAQ, ST, UV, FOG.
 struct vertex {
   std::uint16_t X = 0, Y = 0;  // 12.4 primitive coordinates (XYZ2.X, XYZ2.Y)

@@ -53,9 +53,12 @@ void check_state(const gs_dump& d, std::size_t at) {
   if (blob_version != d.state_version)
     throw dump_error("byte " + std::to_string(at) + ": state blob version " + std::to_string(blob_version) +
                      " differs from the header's state_version " + std::to_string(d.state_version));
-  if (d.state_version == 8 && d.state.size() != state_size_v8)
+  // Versions 8 and 9 are the ones PCSX2 writes now: their size is checked (older blobs are read and,
+  // when their size fits their layout, decoded by the interpreter).
+  if ((d.state_version == 8 || d.state_version == 9) && !state_layout(d.state_version, d.state.size()))
     throw dump_error("byte " + std::to_string(at) + ": state size " + std::to_string(d.state.size()) +
-                     ", version 8 has " + std::to_string(state_size_v8));
+                     " does not fit the version " + std::to_string(d.state_version) + " layout (version 8 has " +
+                     std::to_string(state_size_v8) + ")");
 }
 
 }  // namespace

@@ -11,9 +11,7 @@
 namespace gs::packets {
 namespace {
 
-// PRIM.PRIM (bits 0-2) names, GS User's Manual, and the vertices each needs.
-constexpr const char* prim_names[8] = {"POINT", "LINE", "LINE_STRIP", "TRIANGLE", "TRIANGLE_STRIP", "TRIANGLE_FAN",
-                                       "SPRITE", "PRIM 7 (reserved)"};
+// The vertices each PRIM.PRIM type needs (GS User's Manual; PCSX2 `NumIndicesForPrim`: 1 for the reserved 7).
 constexpr unsigned prim_vertices[8] = {1, 2, 2, 3, 3, 3, 2, 1};
 
 // Context register addresses (context 2 = context 1 + 1), gs_registers.hpp.
@@ -50,10 +48,18 @@ draw_registers interpreter::drawing_registers() const {
   return r;
 }
 
+// A CLUT load that cannot be modelled leaves its message until a later load succeeds; a TEX0 that
+// loads nothing (CLD = 0, CLD 4 / 5 with an unchanged CBP, a non-indexed PSM) keeps it. CLD 4 / 5 load
+// exactly when they change CBP0 / CBP1 (gs_memory/clut_load.hpp).
 void interpreter::tex0_written(unsigned context, std::uint64_t offset) {
   try {
-    clut_.state = mem::load_clut(mem_, decode_tex0(regs_[TEX0_1 + context]), clut_.state);
-    clut_.load_error.clear();
+    const tex0_reg t = decode_tex0(regs_[TEX0_1 + context]);
+    const mem::clut_state before = clut_.state;
+    clut_.state = mem::load_clut(mem_, t, clut_.state);
+    const unsigned cld = static_cast<unsigned>(t.CLD.value());
+    const bool loaded = mem::is_indexed(t.PSM) && ((cld >= 1 && cld <= 3) || (cld == 4 && clut_.state.CBP0 != before.CBP0) ||
+                                                   (cld == 5 && clut_.state.CBP1 != before.CBP1));
+    if (loaded) clut_.load_error.clear();
   } catch (const std::invalid_argument& e) {  // register_error too
     clut_.load_error = std::string(e.what()) + " (TEX0 written at byte " + std::to_string(offset) + ")";
   }
@@ -99,13 +105,21 @@ void interpreter::vertex_kick(bool draw, bool with_fog, std::uint64_t offset) {
 }
 
 void interpreter::load_state(std::span<const std::uint8_t> state, std::uint32_t version) {
-  if (version != 8 || state.size() != dump::state_size_v8) {
-    unmodelled_.push_back({"state version " + std::to_string(version) + ": registers and memory not loaded", 0});
+  const auto layout = dump::state_layout(version, state.size());
+  if (!layout) {
+    unmodelled_.push_back({"state version " + std::to_string(version) + " of " + std::to_string(state.size()) +
+                               " bytes: layout not known, registers and memory not loaded",
+                           0});
     return;
   }
-  for (std::uint32_t i = 0; i < dump::memory_bytes; ++i) mem_.set_byte(i, state[dump::state_memory_offset_v8 + i]);
-  for (const auto& f : dump::state_fields_v8)
+  const std::uint32_t memory = dump::find_field(*layout, "memory")->offset;
+  for (std::uint32_t i = 0; i < dump::memory_bytes; ++i) mem_.set_byte(i, state[memory + i]);
+  for (const auto& f : *layout)
     if (const auto a = gs_register_address(f.name)) regs_[*a] = dump::state_get(state, f);
+  if (const auto* extra = dump::find_field(*layout, "v9_transfer"))
+    unmodelled_.push_back({"state version 9: " + std::to_string(extra->size) +
+                               " bytes of transfer state before the memory skipped (not decoded)",
+                           0});
 }
 
 void interpreter::start_transfer(std::uint64_t offset) {

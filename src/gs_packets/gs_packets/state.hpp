@@ -8,13 +8,21 @@
 // obsolete GIFReg (u64); tr.x, tr.y (int); the 4 MiB memory; 4 GIF paths (GIFTag 16 bytes + reg u32);
 // Q (float). `GSState::Defrost` reads versions <= 6 with an extra PRMODE after PRIM and TEX2 after
 // TEX1, and versions <= 4 with 7 more u32 per context: those older layouts are not decoded here.
-// PCSX2's `GSState.h` says STATE_VERSION = 9 in the newest sources read, while GSState.cpp of the
-// same era was not found with a version-9 size; Arntzen-Software's parallel-gs renderer for PCSX2
-// (`GSRendererPGS::Freeze`) writes version 8 ("v9 doesn't add anything meaningful"), and Defrost
-// accepts any version <= STATE_VERSION. So gsdot3 writes version 8; version 9 blobs are read but
-// their fields are not decoded (unconfirmed layout).
+// Other versions (state_layout below): `GSState::Defrost` of the same source reads versions 7 and 8
+// with this layout, versions <= 6 with an extra PRMODE after PRIM and TEX2 after TEX1 in each context,
+// and versions <= 4 with 7 more u32 after each context's ZBUF. Version 9: PCSX2's newest `GSState.h`
+// (2026 sources) has STATE_VERSION = 9 and a `GetSaveStateSize(int version)`, whose GSState.cpp was
+// not found with the search tool; Arntzen-Software's parallel-gs renderer for PCSX2
+// (`GSRendererPGS::Freeze` / `Defrost`, read with the search tool) writes version 8 ("v9 doesn't add
+// anything meaningful for us") and reads a version-9 blob as version 8 except that after tr.x / tr.y
+// it skips GetSaveStateSize(9) − GetSaveStateSize(8) bytes ("dummy transfer params") before the
+// memory; its Freeze says "v9 adds a lot more dummy stuff here". So a version-9 blob is decoded here as
+// version 8 with an opaque block of (blob size − 4194760) bytes, "v9_transfer", between tr.y and the
+// memory: its size is taken from the blob, its contents are not decoded (PCSX2's field list for it
+// was not read). gsdot3 writes version 8.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <optional>
@@ -81,6 +89,33 @@ constexpr std::optional<state_field> state_field_v8(std::string_view name) noexc
 }
 inline constexpr std::uint32_t state_memory_offset_v8 = 372;
 static_assert(state_field_v8("memory")->offset == state_memory_offset_v8);
+
+// The fields of a blob of `version` and `size` bytes, in Freeze order, or none when the version's
+// layout is not known (> 9) or the size does not fit it.
+inline std::optional<std::vector<state_field>> state_layout(std::uint32_t version, std::size_t size) {
+  if (version > 9) return std::nullopt;
+  const std::size_t extra = version == 9 ? size - std::min<std::size_t>(size, state_size_v8) : 0;
+  std::vector<state_field> out;
+  std::uint32_t at = 0;
+  auto add = [&](std::string_view n, std::size_t bytes) {
+    out.push_back({n, at, static_cast<std::uint32_t>(bytes)});
+    at += static_cast<std::uint32_t>(bytes);
+  };
+  for (const state_field& f : state_fields_v8) {
+    if (f.name == "memory" && version == 9) add("v9_transfer", extra);
+    add(f.name, f.size);
+    if (version <= 6 && f.name == "PRIM") add("PRMODE", 8);
+    if (version <= 6 && (f.name == "TEX1_1" || f.name == "TEX1_2")) add(f.name == "TEX1_1" ? "TEX2_1" : "TEX2_2", 8);
+    if (version <= 4 && (f.name == "ZBUF_1" || f.name == "ZBUF_2")) add(f.name == "ZBUF_1" ? "obsolete_1" : "obsolete_2", 28);
+  }
+  if (at != size) return std::nullopt;
+  return out;
+}
+inline const state_field* find_field(const std::vector<state_field>& fields, std::string_view name) {
+  for (const auto& f : fields)
+    if (f.name == name) return &f;
+  return nullptr;
+}
 
 // A little-endian field of a blob (fields of up to 8 bytes).
 inline std::uint64_t state_get(std::span<const std::uint8_t> blob, const state_field& f) {
