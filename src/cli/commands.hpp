@@ -33,5 +33,6 @@ void add_dump_info_command(CLI::App& app, context& ctx);  // PCSX2 GS dumps
 void add_compare_command(CLI::App& app, context& ctx);    // two frames, pixel by pixel
 void add_replay_command(CLI::App& app, context& ctx);     // a GS dump through the model
 void add_probe_command(CLI::App& app, context& ctx);      // the option probe and its decoder
+void add_dump_command(CLI::App& app, context& ctx);       // a method's frame as a GS dump
 
 }  // namespace gsdot3::cli

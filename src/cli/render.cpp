@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "scene_options.hpp"
 #include "gs_arith/options.hpp"
 #include "gs_arith/profiles.hpp"
 #include "pipeline/mesh_import.hpp"
@@ -108,13 +109,14 @@ method_choice parse_methods(const std::string& list) {
   return c;
 }
 
-void run(const render_args& a, bool html, context& ctx) {
-  pipeline::report_request req;
-  req.out_dir = a.out;
+void progress(const std::string& m) { std::cerr << "gsdot3: " << m << "\n"; }
+
+// The scene, the render options and the methods of render's options (everything but --out).
+scene_setup setup(const render_args& a) {
+  scene_setup req;
   const method_choice chosen = parse_methods(a.method);
   req.methods = chosen.gs;
   req.schemes = chosen.schemes;
-  req.write_html = html;
   if (a.s < 1 || a.s > 127) throw usage_error("--s: the tolight scale must be 1..127 (it is packed as a signed char), got " + std::to_string(a.s));
   req.options.s = a.s;
   if (a.filter != "nearest" && a.filter != "bilinear") throw usage_error("--filter: expected nearest or bilinear, got '" + a.filter + "'");
@@ -159,7 +161,6 @@ void run(const render_args& a, bool html, context& ctx) {
   if (a.tangents != "auto" && a.tangents != "mikktspace") throw usage_error("--tangents: expected auto or mikktspace, got '" + a.tangents + "'");
   import.tangents = a.tangents == "auto" ? pipeline::tangent_mode::automatic : pipeline::tangent_mode::mikktspace;
 
-  auto progress = [](const std::string& m) { std::cerr << "gsdot3: " << m << "\n"; };
   if (!a.normal_map.empty() && !a.height_map.empty()) throw usage_error("--normal-map and --height-map exclude each other");
   if (!a.height_map.empty() && !(a.bump > 0.0f && a.bump <= 100.0f)) throw usage_error("--bump: expected a strength in (0, 100]");
   if (a.normal_map_y != "up" && a.normal_map_y != "down") throw usage_error("--normal-map-y: expected up or down, got '" + a.normal_map_y + "'");
@@ -179,12 +180,23 @@ void run(const render_args& a, bool html, context& ctx) {
   sr.width = w;
   sr.height = h;
   progress("building the scene");
-  pipeline::scene_input in;
   try {
-    in = pipeline::make_scene(sr, progress);
+    req.in = pipeline::make_scene(sr, progress);
   } catch (const std::runtime_error& e) {
     throw usage_error(e.what());
   }
+  return req;
+}
+
+void run(const render_args& a, bool html, context& ctx) {
+  const scene_setup st = setup(a);
+  const pipeline::scene_input& in = st.in;
+  pipeline::report_request req;
+  req.out_dir = a.out;
+  req.methods = st.methods;
+  req.schemes = st.schemes;
+  req.write_html = html;
+  req.options = st.options;
   const pipeline::scene& s = in.s;
   const std::string& description = in.description;
   req.input_json = pipeline::input_json(in.summary);
@@ -209,7 +221,6 @@ void run(const render_args& a, bool html, context& ctx) {
 }
 
 void add_options(CLI::App* cmd, render_args& a) {
-  cmd->add_option("--out", a.out, "output directory (created if missing)")->capture_default_str();
   std::string methods = "comma-separated: two-pass, four-pass, baseline";
   for (const auto& m : pipeline::scheme_methods()) methods += ", " + std::string(m.name);
   cmd->add_option("--method", a.method, methods + "; gs = the three GS methods, all = every method")->capture_default_str();
@@ -254,15 +265,23 @@ void add_options(CLI::App* cmd, render_args& a) {
 
 }  // namespace
 
+std::function<scene_setup()> add_scene_options(CLI::App* cmd) {
+  auto a = std::make_shared<render_args>();
+  add_options(cmd, *a);
+  return [a] { return setup(*a); };
+}
+
 void add_render_command(CLI::App& app, context& ctx) {
   auto args = std::make_shared<render_args>();
   auto* render = app.add_subcommand("render", "Render the scene with each method through the GS model; PNGs + report.json");
+  render->add_option("--out", args->out, "output directory (created if missing)")->capture_default_str();
   add_options(render, *args);
   render->callback([args, &ctx] { run(*args, false, ctx); });
 
   auto rargs = std::make_shared<render_args>();
   auto* report = app.add_subcommand(
       "report", "Render and compare with the float dot product; writes report.html (+ PNGs, report.json) and prints its path");
+  report->add_option("--out", rargs->out, "output directory (created if missing)")->capture_default_str();
   add_options(report, *rargs);
   report->callback([rargs, &ctx] { run(*rargs, true, ctx); });
 }

@@ -16,14 +16,11 @@
 #include "gs_arith/gouraud.hpp"
 #include "gs_memory/swizzle_tables.hpp"
 #include "pipeline/gs_pass.hpp"
+#include "pipeline/pass_table.hpp"
 #include "pipeline/prepare.hpp"
 #include "pipeline/render.hpp"
 
 namespace gsdot3::pipeline::detail {
-
-// Step 1's register set: TME = 0, ABE = 0, COLCLAMP = 1; the memory path's clears use the same.
-inline constexpr pass_regs step1_ambient{};
-inline constexpr pass_regs clear_sprite{};
 
 // The depth test of the methods (section 3.1): TEST_1.ZTE = 1, ZTST = GEQUAL (larger Z is nearer);
 // ZBUF_1.PSM = PSMZ24 (the prepared Z planes are 24-bit, 0..0xFFFFFF, so Z24 holds them exactly and
@@ -95,7 +92,7 @@ class band_renderer {
         if (d.write_z) z_.write(x, y, d.z);
         visible_[index(x, y)] = -1;
       }
-    constexpr gs::gs_registers regs = step1_ambient.registers();
+    constexpr gs::gs_registers regs = passes::step1_ambient.registers();
     const gs::fragment_colour cf = gs::fragment_colour::flat(ambient);
     for (std::size_t t = 0; t < ps_.triangles.size(); ++t) {
       const prepared_triangle& tri = ps_.triangles[t];
@@ -181,7 +178,7 @@ class band_renderer {
       for (int y = a.y0; y < a.y1; ++y)
         if (a.x0 < a.x1) std::fill(&fb(a.x0, y), &fb(a.x0, y) + (a.x1 - a.x0), v);
     } else {
-      sprite_rect<clear_sprite>(gs::rgba8::from_u32(v), a, [](int, int) { return gs::rgba8{}; }, fb, &a);
+      sprite_rect<passes::step1_ambient>(gs::rgba8::from_u32(v), a, [](int, int) { return gs::rgba8{}; }, fb, &a);
     }
   }
 
@@ -199,12 +196,6 @@ class band_renderer {
     pending->shaded[i] = 1;
   }
 
- private:
-  // The depth test of every pass after step 1 (GEQUAL, ZMSK = 1: Z is only read).
-  bool passes_later_depth_test(const prepared_triangle& tri, int x, int y) const noexcept {
-    return gs::depth_test(depth_gequal, z_masked, static_cast<std::uint32_t>(tri.z.at(x, y)), z_.read(x, y)).pass;
-  }
-
   // The bounding rectangle of every drawn triangle's pixels, within the band (may be empty).
   static scissor drawn_area(const prepared_scene& ps, scissor band) {
     scissor a{band.x1, band.y1, band.x0, band.y0};
@@ -216,6 +207,12 @@ class band_renderer {
         a.y1 = std::max(a.y1, ceil_124(v.y) + 1);
       }
     return {std::max(a.x0, band.x0), std::max(a.y0, band.y0), std::min(a.x1, band.x1), std::min(a.y1, band.y1)};
+  }
+
+ private:
+  // The depth test of every pass after step 1 (GEQUAL, ZMSK = 1: Z is only read).
+  bool passes_later_depth_test(const prepared_triangle& tri, int x, int y) const noexcept {
+    return gs::depth_test(depth_gequal, z_masked, static_cast<std::uint32_t>(tri.z.at(x, y)), z_.read(x, y)).pass;
   }
 
   const prepared_scene& ps_;

@@ -75,7 +75,8 @@ prepared_scene prepare(const scene& s, float yaw_degrees, bool half_vectors) {
       ++ps.culled_back;
       continue;
     }
-    pt.z = make_plane(pt.setup.v, {sv[tri[0]].z, sv[tri[1]].z, sv[tri[2]].z}, 0, 0xFFFFFF);
+    pt.z24 = {sv[tri[0]].z, sv[tri[1]].z, sv[tri[2]].z};
+    pt.z = make_plane(pt.setup.v, pt.z24, 0, 0xFFFFFF);
     // UVs in 12.4 texels; the whole triangle moved by whole repeats so its smallest U and V are in
     // the first repeat (REPEAT wrapping makes that invisible), as a VU1 program would.
     std::array<glm::vec2, 3> uv{};

@@ -26,6 +26,7 @@ struct prepared_triangle {
   std::array<std::uint32_t, 3> vertex{};   // mesh vertex indices
   triangle_setup setup;                    // window 12.4 coordinates
   plane z;                                 // 24-bit depth, larger is nearer
+  std::array<std::int32_t, 3> z24{};       // the vertices' depths the plane is made from (XYZ2.Z)
   std::array<std::array<std::int32_t, 2>, 3> uv16{};  // normal-map texel coordinates in 12.4
 };
 

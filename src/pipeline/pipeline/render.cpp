@@ -22,7 +22,10 @@
 //   LAB" of the z-trick-psmz32 mode. The normal map (PSMT8), the sphere map and the diffuse texture
 //   (PSMCT32) are uploaded by host -> local transfers and every texel is read from memory; the
 //   palettes (incl. the ILP) are uploaded as CSM1 images and loaded into the CLUT buffer by TEX0.CLD
-//   (upload_inputs). Both paths run the depth test through gs::depth_test.
+//   (upload_inputs: the GIF packets of gs_inputs.hpp, run through gs_packets' interpreter). Both paths
+//   run the depth test through gs::depth_test.
+// The register sets and vertex values of the passes are pass_table.hpp's, which frame_packets.cpp
+// writes as the GIF packet stream of the same frame.
 #include "pipeline/render.hpp"
 
 #include <algorithm>
@@ -35,14 +38,15 @@
 
 #include "gs_memory/address.hpp"
 #include "gs_memory/channel_fetch.hpp"
-#include "gs_memory/clut_load.hpp"
-#include "gs_memory/transfer.hpp"
 #include "gs_memory/local_memory.hpp"
 #include "gs_memory/texture_buffer.hpp"
 #include "gs_memory/texture_wrap.hpp"
+#include "gs_memory/transfer.hpp"
 #include "pipeline/band_renderer.hpp"
 #include "pipeline/encoders.hpp"
+#include "pipeline/gs_inputs.hpp"
 #include "pipeline/gs_pass.hpp"
+#include "pipeline/pass_table.hpp"
 
 namespace gsdot3::pipeline {
 
@@ -67,142 +71,9 @@ std::string_view name(dpb_clear_mode m) {
 namespace {
 
 using namespace detail;
-using gs::blend_alpha;
-using gs::blend_colour;
-
-constexpr std::uint32_t clear_dpb = 0x00808080u;        // step 2.1
-constexpr std::uint32_t keep_alpha = 0xFF000000u;       // FBMSK: write RGB only
-constexpr std::uint32_t only_channel[3] = {0xFFFFFF00u, 0xFFFF00FFu, 0xFF00FFFFu};  // FBMSK: R, G, B only
+using namespace passes;
 
 gs::u8 byte(int v) { return gs::u8::from_wrapped(v); }
-
-// ALPHA_1 settings used by the methods.
-constexpr gs::alpha_reg add_source{blend_colour::Cs, blend_colour::zero, blend_alpha::FIX, blend_colour::Cd,
-                                   gs::u8::literal(0x80)};  // Cs + Cd
-constexpr gs::alpha_reg subtract_source{blend_colour::Cd, blend_colour::Cs, blend_alpha::FIX, blend_colour::zero,
-                                        gs::u8::literal(0x80)};  // Cd − Cs
-constexpr gs::alpha_reg signed_multiply{blend_colour::Cs, blend_colour::Cd, blend_alpha::As, blend_colour::Cd,
-                                        gs::u8{}};  // (Cs − Cd)·As + Cd, section 3.6
-constexpr gs::alpha_reg multiply_by_ad{blend_colour::Cs, blend_colour::zero, blend_alpha::Ad, blend_colour::zero,
-                                       gs::u8{}};  // Cs·Ad, step 4
-
-// The register sets of the passes. Each is a constant the pass loops are instantiated with, so the
-// compiler folds gs::pixel_pipeline for it (the same model function, specialised, not a copy).
-//                                              TME    ABE    TFX                 TCC             ALPHA_1          CLAMP  FBMSK
-constexpr pass_regs two_pass_positive{          true,  false, gs::tfx::MODULATE,  gs::tcc::RGB,   {},              false, 0};
-constexpr pass_regs two_pass_negative{          true,  true,  gs::tfx::MODULATE,  gs::tcc::RGBA,  subtract_source, false, 0};
-constexpr pass_regs two_pass_add_alpha{         true,  true,  gs::tfx::DECAL,     gs::tcc::RGB,   add_source,      false, keep_alpha};
-constexpr pass_regs four_pass_sphere{           true,  false, gs::tfx::HIGHLIGHT, gs::tcc::RGB,   {},              false, keep_alpha};
-constexpr pass_regs four_pass_x{                true,  true,  gs::tfx::DECAL,     gs::tcc::RGBA,  signed_multiply, false, only_channel[0]};
-constexpr pass_regs four_pass_y{                true,  true,  gs::tfx::DECAL,     gs::tcc::RGBA,  signed_multiply, false, only_channel[1]};
-constexpr pass_regs four_pass_z{                true,  true,  gs::tfx::DECAL,     gs::tcc::RGBA,  signed_multiply, false, only_channel[2]};
-constexpr pass_regs baseline_add{               true,  true,  gs::tfx::MODULATE,  gs::tcc::RGB,   add_source,      false, keep_alpha};
-constexpr pass_regs baseline_subtract{          true,  true,  gs::tfx::MODULATE,  gs::tcc::RGB,   subtract_source, false, keep_alpha};
-constexpr pass_regs post_add_into_red{          true,  true,  gs::tfx::DECAL,     gs::tcc::RGB,   add_source,      false, only_channel[0]};
-constexpr pass_regs ilp_into_lab{               true,  true,  gs::tfx::MODULATE,  gs::tcc::RGB,   add_source,      true,  keep_alpha};
-constexpr pass_regs diffuse_layer{              true,  false, gs::tfx::DECAL,     gs::tcc::RGB,   {},              true,  0};
-constexpr pass_regs multiply_red{               true,  true,  gs::tfx::DECAL,     gs::tcc::RGB,   multiply_by_ad,  true,  only_channel[0]};
-constexpr pass_regs multiply_green{             true,  true,  gs::tfx::DECAL,     gs::tcc::RGB,   multiply_by_ad,  true,  only_channel[1]};
-constexpr pass_regs multiply_blue{              true,  true,  gs::tfx::DECAL,     gs::tcc::RGB,   multiply_by_ad,  true,  only_channel[2]};
-constexpr pass_regs move_into_alpha{            true,  false, gs::tfx::DECAL,     gs::tcc::RGBA,  {},              true,  0x00FFFFFFu};  // memory path, step 4
-
-// The textures and palettes, built once per frame (VU1/tool side).
-struct gs_inputs {
-  const normal_map* nm = nullptr;
-  gs::clut_buffer pos, neg, axis[3], ilp, grey;
-  std::vector<std::uint32_t> sphere;
-  const texture32* diffuse = nullptr;
-  // The memory path: where the textures were uploaded (the CLUTs above are then the ones loaded
-  // from memory by TEX0.CLD).
-  const gs::mem::local_memory* memory = nullptr;
-  gs::mem::buffer nm_at, sphere_at, diffuse_at;
-};
-
-// Host -> local transfer of a w × h image packed as `data` into buffer b (BITBLTBUF, TRXPOS = 0,
-// TRXREG, TRXDIR = 0).
-void upload(gs::mem::local_memory& m, const gs::mem::buffer& b, int w, int h, std::span<const std::uint8_t> data) {
-  gs::mem::bitbltbuf_reg blt;
-  blt.DBP = b.BP;
-  blt.DBW = b.BW;
-  blt.DPSM = b.PSM;
-  gs::mem::host_to_local(m, blt, {}, {fixed::uint<12>::from_wrapped(w), fixed::uint<12>::from_wrapped(h)}, {}, data);
-}
-std::vector<std::uint8_t> bytes_of(const std::vector<std::uint32_t>& words) {
-  std::vector<std::uint8_t> b(words.size() * 4);
-  for (std::size_t i = 0; i < words.size(); ++i)
-    for (std::size_t k = 0; k < 4; ++k) b[4 * i + k] = static_cast<std::uint8_t>(words[i] >> (8 * k));
-  return b;
-}
-
-// The memory path's uploads from block `first` on: the normal map (PSMT8), the sphere map and the
-// diffuse texture (PSMCT32) by transfers; each palette as its 16×16 CSM1 image (entry i at
-// gs::csm1_position(i)), then loaded back into the CLUT buffer by TEX0 with CLD = 1.
-gs_inputs upload_inputs(gs::mem::local_memory& m, const gs_inputs& direct, std::uint32_t first) {
-  gs_inputs in = direct;
-  in.memory = &m;
-  std::uint32_t next = first;
-  auto place = [&](int w, int h, gs::mem::psm p) {
-    const gs::mem::extent pg = gs::mem::page_size(gs::mem::layout_of(p));
-    auto bw = static_cast<std::uint32_t>((w + 63) / 64);
-    if (pg.w == 128) bw = std::max(2u, bw + bw % 2);  // a PSMT8 page is 128 wide: an even TBW
-    const std::uint32_t pages = bw * 64 / pg.w * ((static_cast<std::uint32_t>(h) + pg.h - 1) / pg.h);
-    const gs::mem::buffer b{fixed::uint<14>::from_wrapped(next), fixed::uint<6>::from_wrapped(bw), p};
-    next += 32 * pages;
-    if (next > gs::mem::memory_blocks) throw std::invalid_argument("memory path: the textures do not fit in the GS's 4 MiB");
-    return b;
-  };
-  in.nm_at = place(direct.nm->width, direct.nm->height, gs::mem::psm::PSMT8);
-  upload(m, in.nm_at, direct.nm->width, direct.nm->height, direct.nm->index);
-  if (!direct.sphere.empty()) {
-    in.sphere_at = place(64, 64, gs::mem::psm::PSMCT32);
-    upload(m, in.sphere_at, 64, 64, bytes_of(direct.sphere));
-  }
-  in.diffuse_at = place(direct.diffuse->width, direct.diffuse->height, gs::mem::psm::PSMCT32);
-  upload(m, in.diffuse_at, direct.diffuse->width, direct.diffuse->height, bytes_of(direct.diffuse->texels));
-  const gs::mem::buffer palettes = place(64, 32, gs::mem::psm::PSMCT32);  // one page: 8 CLUTs of 4 blocks
-  std::uint32_t cbp = static_cast<std::uint32_t>(palettes.BP.value());
-  auto clut = [&](gs::clut_buffer& entries) {
-    std::vector<std::uint32_t> image(256);
-    for (unsigned p = 0; p < 256; ++p) image[p] = entries[gs::csm1_position(gs::u8::from_wrapped(p))].to_u32();
-    const gs::mem::buffer at{fixed::uint<14>::from_wrapped(cbp), fixed::uint<6>::from_wrapped(1), gs::mem::psm::PSMCT32};
-    upload(m, at, 16, 16, bytes_of(image));
-    gs::tex0_reg t;
-    t.PSM = gs::tex_psm::PSMT8;
-    t.CBP = at.BP;
-    t.CLD = gs::u3::from_wrapped(1);
-    entries = gs::mem::load_clut(m, t, {}).buffer;
-    cbp += 4;
-  };
-  for (gs::clut_buffer* c : {&in.pos, &in.neg, &in.axis[0], &in.axis[1], &in.axis[2], &in.ilp, &in.grey}) clut(*c);
-  return in;
-}
-
-gs_inputs make_inputs(const scene& s, method m, const render_options& o) {
-  gs_inputs in;
-  in.nm = &s.normals;
-  in.diffuse = &s.diffuse;
-  in.ilp = intensity_palette(o.specular_power);
-  in.grey = identity_palette();
-  switch (m) {
-    case method::two_pass:
-      in.pos = two_pass_palette(s.normals.palette, false);
-      in.neg = two_pass_palette(s.normals.palette, true);
-      break;
-    case method::four_pass:
-      for (int a = 0; a < 3; ++a) in.axis[a] = reordered_palette(s.normals.palette, a);
-      in.sphere = sphere_map(64, 64);
-      break;
-    case method::baseline:
-      in.pos = signed_side_palette(s.normals.palette, false);
-      in.neg = signed_side_palette(s.normals.palette, true);
-      break;
-  }
-  return in;
-}
-
-std::array<std::int32_t, 2> normal_map_uv(const prepared_triangle& t, int k) { return t.uv16[static_cast<std::size_t>(k)]; }
-
-gs::rgba8 rgb(int r, int g, int b, int a) { return {byte(r), byte(g), byte(b), byte(a)}; }
 
 template <class FB>
 struct frame_buffers {
@@ -229,13 +100,6 @@ std::array<int, 2> zsigma(int x, int y) {
 }
 constexpr bool in_memory(const row_view&) { return false; }
 constexpr bool in_memory(const memory_view&) { return true; }
-
-// A palette with the index in every channel: the memory path's step 4 moves a LAB byte into alpha.
-gs::clut_buffer index_in_alpha() {
-  gs::clut_buffer p{};
-  for (int i = 0; i < 256; ++i) p[static_cast<std::size_t>(i)] = {byte(i), byte(i), byte(i), byte(i)};
-  return p;
-}
 
 // A sprite pass whose texel is byte `channel` of each pixel of `src` through `clut`, into `dst`.
 // Value level: the byte of the same pixel's word. Memory path: gs_memory's channel-fetch sprites
@@ -343,7 +207,6 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
   auto nm_texture = [&](const gs::clut_buffer& clut) {
     return texture_ref{in.nm->width, in.nm->height, in.nm->index.data(), &clut, nullptr, false, filter, in.memory, in.nm_at};
   };
-  const gs::rgba8 white = rgb(0x80, 0x80, 0x80, 0x80);
   auto flat_white = [&](std::uint32_t) { return white; };
 
   for (std::size_t l = 0; l < s.lights.size(); ++l) {
@@ -359,7 +222,7 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
     note("2.1 clear 0x00808080", li, "DPB", fb.dpb);
     switch (m) {
       case method::two_pass: {
-        const auto attr = attributes(ps, [&](std::uint32_t v) { return pack_tolight(lv[v].T * lv[v].fade, o.s); }, normal_map_uv);
+        const auto attr = attributes(ps, [&](std::uint32_t v) { return two_pass_colour(lv[v], o.s); }, normal_map_uv);
         const texture_ref pos = nm_texture(in.pos), neg = nm_texture(in.neg);
         r.draw<two_pass_positive>(&pos, attr, fb.dpb);
         note("2.3 Max(n,0)·l (MODULATE)", li, "DPB", fb.dpb);
@@ -386,16 +249,8 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
       }
       case method::four_pass: {
         const auto pass1 = attributes(
-            ps,
-            [&](std::uint32_t v) {
-              const int scale = std::clamp(static_cast<int>(std::lround(lv[v].fade * 128.0f)), 0, 128);
-              return rgb(scale, scale, scale, 128 - scale);  // HIGHLIGHT: sph·scale + (1 − scale)·128
-            },
-            [&](const prepared_triangle& t, int k) {
-              const st c = sphere_coordinates(lv[t.vertex[static_cast<std::size_t>(k)]].T);
-              return std::array<std::int32_t, 2>{static_cast<std::int32_t>(std::lround(c.s * 64 * 16)),
-                                                 static_cast<std::int32_t>(std::lround(c.t * 64 * 16))};
-            });
+            ps, [&](std::uint32_t v) { return four_pass_sphere_colour(lv[v]); },
+            [&](const prepared_triangle& t, int k) { return sphere_uv(lv[t.vertex[static_cast<std::size_t>(k)]]); });
         const texture_ref sphere{64, 64, nullptr, nullptr, in.sphere.data(), true, gs::bilinear_mode::nearest, in.memory, in.sphere_at};
         r.draw<four_pass_sphere>(&sphere, pass1, fb.dpb);
         note("2.3 sphere map · fade (HIGHLIGHT)", li, "DPB", fb.dpb);
@@ -411,14 +266,7 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
       }
       case method::baseline: {
         auto side = [&](bool negative) {
-          return attributes(
-              ps,
-              [&, negative](std::uint32_t v) {
-                const glm::vec3 t = lv[v].T * lv[v].fade * (negative ? -1.0f : 1.0f);
-                return rgb(nearest(std::max(t.x, 0.0f) * 127), nearest(std::max(t.y, 0.0f) * 127),
-                           nearest(std::max(t.z, 0.0f) * 127), 0x80);
-              },
-              normal_map_uv);
+          return attributes(ps, [&, negative](std::uint32_t v) { return baseline_colour(lv[v], negative); }, normal_map_uv);
         };
         const auto tl_pos = side(false), tl_neg = side(true);
         const texture_ref pos = nm_texture(in.pos), neg = nm_texture(in.neg);
@@ -469,10 +317,9 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
     for (int y = area.y0; y < area.y1; ++y)
       for (int x = area.x0; x < area.x1; ++x) fb.out(x, y) = fb.lab(x, y);
   }
-  static const gs::clut_buffer alpha_index = index_in_alpha();
   auto multiply = [&](int c, auto pass) {
     if constexpr (in_memory(FB{})) {
-      channel_pass<move_into_alpha>(r, fb, white, alpha_index, static_cast<unsigned>(c), fb.lab, fb.out);
+      channel_pass<move_into_alpha>(r, fb, white, in.alpha_index, static_cast<unsigned>(c), fb.lab, fb.out);
     } else {
       for (int y = area.y0; y < area.y1; ++y)
         for (int x = area.x0; x < area.x1; ++x) {
@@ -533,8 +380,8 @@ frame render(const scene& s, const prepared_scene& ps, method m, const render_op
   if (o.memory_path || o.dpb_clear != dpb_clear_mode::explicit_clear) {
     // Buffers of FBW = ceil(width / 64): the DPB (and in step 3 the diffuse layer) at FBP 0, the
     // LAB at P, the output at 2P (PSMCT32), the Z buffer at ZBP = 3P (PSMZ24).
-    const auto fbw = static_cast<std::uint32_t>((ps.width + 63) / 64);
-    const std::uint32_t pages = fbw * static_cast<std::uint32_t>((ps.height + 31) / 32);
+    const buffer_layout layout = buffer_layout_for(ps.width, ps.height);
+    const std::uint32_t fbw = layout.fbw, pages = layout.pages;
     if (4 * pages * gs::mem::page_bytes > gs::mem::memory_bytes)
       throw std::invalid_argument("memory path: four " + std::to_string(ps.width) + "x" + std::to_string(ps.height) +
                                   " 32-bit buffers do not fit in the GS's 4 MiB");
@@ -551,7 +398,7 @@ frame render(const scene& s, const prepared_scene& ps, method m, const render_op
     fb.lab.z = o.dpb_clear == dpb_clear_mode::z_trick_psmz32;
     render_options one = o;
     if (o.dpb_clear != dpb_clear_mode::explicit_clear) one.threads = 1;  // draw order is the model's
-    render_bands(s, ps, m, one, upload_inputs(memory, in, 4 * 32 * pages), fb, result);
+    render_bands(s, ps, m, one, upload_inputs(memory, in, layout.first_texture_block()), fb, result);
   } else {
     std::vector<std::uint32_t> rows(4 * n, 0);  // value level: DPB, LAB, diffuse, output, frame-sized each
     frame_buffers<row_view> fb;

@@ -1,0 +1,403 @@
+#include "pipeline/frame_packets.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include "gs_arith/registers.hpp"
+#include "gs_memory/channel_fetch.hpp"
+#include "gs_memory/memory_registers.hpp"
+#include "gs_packets/builder.hpp"
+#include "gs_packets/gs_registers.hpp"
+#include "gs_packets/packed.hpp"
+#include "gs_packets/state.hpp"
+#include "pipeline/band_renderer.hpp"
+#include "pipeline/pass_table.hpp"
+
+namespace gsdot3::pipeline {
+
+namespace {
+
+using namespace passes;
+namespace pk = gs::packets;
+
+// The A+D addresses this stream writes (GS User's Manual register map; gs_registers.hpp's table).
+constexpr std::uint8_t address(std::string_view name) { return *pk::gs_register_address(name); }
+
+// Registers without a decoder in gs_arith / gs_memory, packed by their manual layouts (PCSX2
+// `GSRegs.h` REG64_ structs): XYOFFSET OFX 0-15, OFY 32-47; SCISSOR SCAX0 0-10, SCAX1 16-26, SCAY0
+// 32-42, SCAY1 48-58; ZBUF ZBP 0-8, PSM 24-27 (the Z PSM's low 4 bits), ZMSK 32; TEX1 LCM 0,
+// MXL 2-4, MMAG 5, MMIN 6-8, MTBA 9, L 19-20, K 32-43; PRMODECONT AC 0.
+constexpr std::uint64_t xyoffset(std::uint32_t ofx, std::uint32_t ofy) { return ofx | (std::uint64_t{ofy} << 32); }
+constexpr std::uint64_t scissor_reg(const scissor& r) {
+  return static_cast<std::uint64_t>(r.x0) | (static_cast<std::uint64_t>(r.x1 - 1) << 16) |
+         (static_cast<std::uint64_t>(r.y0) << 32) | (static_cast<std::uint64_t>(r.y1 - 1) << 48);
+}
+constexpr std::uint64_t zbuf(std::uint32_t zbp, bool zmsk) { return zbp | (std::uint64_t{0x31 & 0xF} << 24) | (std::uint64_t{zmsk} << 32); }
+// LCM = 1 (LOD = K = 0: the base level), MXL = 0, MMAG = MMIN = the filter.
+constexpr std::uint64_t tex1(bool linear) { return 1u | (std::uint64_t{linear} << 5) | (std::uint64_t{linear} << 6); }
+
+// Privileged registers (GS User's Manual): PMODE EN1 0, EN2 1, CRTMD 2-4 (always 001), MMOD 5,
+// AMOD 6, SLBG 7, ALP 8-15; DISPFB FBP 0-8, FBW 9-14, PSM 15-19, DBX 32-42, DBY 43-53; DISPLAY
+// DX 0-11, DY 12-22, MAGH 23-26, MAGV 27-28, DW 32-43, DH 44-54.
+constexpr std::uint64_t pmode_circuit1() { return 1u | (1u << 2) | (1u << 5) | (0xFFu << 8); }
+constexpr std::uint64_t dispfb(std::uint32_t fbp, std::uint32_t fbw) { return fbp | (std::uint64_t{fbw} << 9); }
+constexpr std::uint64_t display(int width, int height) {
+  const auto magh = static_cast<std::uint64_t>(std::clamp(2560 / width - 1, 0, 15));
+  const auto dw = static_cast<std::uint64_t>(width) * (magh + 1) - 1;
+  return (magh << 23) | (dw << 32) | (static_cast<std::uint64_t>(height - 1) << 44);
+}
+
+std::uint64_t rgbaq(gs::rgba8 c) { return gs::encode(gs::rgbaq_reg{c, 0x3F800000u}); }  // Q = 1.0
+
+// log2 of the power of two >= n (TW / TH of a texture n texels wide).
+fixed::u4 size_log2(int n) { return fixed::u4::from_wrapped(std::bit_width(static_cast<unsigned>(n - 1))); }
+
+class stream {
+ public:
+  stream(const prepared_scene& ps, const buffer_layout& b, const scissor& area)
+      : ps_(ps), b_(b), area_(area), frame_{0, 0, ps.width, ps.height} {}
+
+  void set(std::uint8_t a, std::uint64_t v) { pending_.emplace_back(a, v); }
+  void flush() {
+    if (!pending_.empty()) out.ad(pending_);
+    pending_.clear();
+  }
+
+  // FRAME_1 (buffer k of the layout), ALPHA_1, COLCLAMP of a pass.
+  void target(std::uint32_t fbp, const pass_regs& p, gs::frame_psm psm = gs::frame_psm::PSMCT32) {
+    set(address("FRAME_1"), gs::encode(gs::frame_reg{fixed::uint<9>::from_wrapped(fbp), fixed::uint<6>::from_wrapped(b_.fbw), psm, p.FBMSK}));
+    set(address("ALPHA_1"), gs::encode(p.ALPHA));
+    set(address("COLCLAMP"), gs::encode(gs::colclamp_reg{p.CLAMP}));
+  }
+  void depth(gs::ztst t, bool zmsk) {
+    gs::test_reg test;
+    test.ZTE = true;
+    test.ZTST = t;
+    set(address("TEST_1"), gs::encode(test));
+    set(address("ZBUF_1"), zbuf(3 * b_.pages, zmsk));
+  }
+  void clip(const scissor& r) { set(address("SCISSOR_1"), scissor_reg(r)); }
+  // TEX0_1 (with the pass's TFX / TCC), TEX1_1, CLAMP_1.
+  // cbp: the palette of a PSMT8 / PSMT8H texture, loaded (CLD = 1) unless `load` is false.
+  void texture(const pass_regs& p, gs::mem::buffer at, int w, int h, std::optional<std::uint32_t> cbp, bool clamp, bool linear,
+               const gs::mem::clamp_reg* region = nullptr, bool load = true) {
+    gs::tex0_reg t;
+    t.TBP0 = at.BP;
+    t.TBW = at.BW;
+    t.PSM = static_cast<gs::tex_psm>(at.PSM);
+    t.TW = size_log2(w);
+    t.TH = size_log2(h);
+    t.TCC = p.TCC;
+    t.TFX = p.TFX;
+    if (cbp) {
+      t.CBP = fixed::uint<14>::from_wrapped(*cbp);
+      t.CLD = gs::u3::from_wrapped(load ? 1 : 0);
+    }
+    set(address("TEX0_1"), gs::encode(t));
+    set(address("TEX1_1"), tex1(linear));
+    gs::mem::clamp_reg c;
+    if (clamp) c.WMS = c.WMT = gs::mem::wrap_mode::CLAMP;
+    set(address("CLAMP_1"), gs::mem::encode(region != nullptr ? *region : c));
+  }
+  void texflush() { set(address("TEXFLUSH"), 0); }
+
+  // Every prepared triangle, PACKED {RGBAQ, UV, XYZ2} per vertex, PRE = 1.
+  template <class Colour, class UV>
+  void triangles(const pass_regs& p, bool gouraud, Colour&& colour, UV&& uv) {
+    flush();
+    const gs::prim_reg prim{gs::prim_type::TRIANGLE, gouraud, p.TME, false, p.ABE, false, true, false, false};
+    static constexpr unsigned regs[] = {pk::desc::RGBAQ, pk::desc::UV, pk::desc::XYZ2};
+    std::vector<pk::qword> data;
+    auto send = [&] {
+      if (!data.empty()) out.packed(static_cast<std::uint32_t>(gs::encode(prim)), regs, data);
+      data.clear();
+    };
+    for (const prepared_triangle& t : ps_.triangles) {
+      for (int k = 0; k < 3; ++k) {
+        const gs::rgba8 c = colour(t, k);
+        const auto [u, v] = uv(t, k);
+        const xy124 xy = t.setup.v[static_cast<std::size_t>(k)];
+        data.push_back(pk::packed_rgba(c.r.value(), c.g.value(), c.b.value(), c.a.value()));
+        data.push_back(pk::packed_uv(static_cast<std::uint32_t>(u), static_cast<std::uint32_t>(v)));
+        data.push_back(pk::packed_xyz2(static_cast<std::uint16_t>(xy.x + 16 * xy_offset_pixels),
+                                       static_cast<std::uint16_t>(xy.y + 16 * xy_offset_pixels),
+                                       static_cast<std::uint32_t>(t.z24[static_cast<std::size_t>(k)]), false));
+      }
+      ++triangles_written;
+      if (data.size() >= 3 * 3 * 10000) send();  // NLOOP = 3 per triangle, well under 32767
+    }
+    send();
+  }
+
+  // Sprites of one flat colour, each [x0, x1) × [y0, y1) drawn 1:1 from texel (u0, v0).
+  struct rect {
+    int x0, y0, x1, y1, u0, v0;
+  };
+  void sprites(const pass_regs& p, gs::rgba8 colour, const std::vector<rect>& rs) {
+    if (rs.empty()) return;
+    set(address("RGBAQ"), rgbaq(colour));
+    flush();
+    const gs::prim_reg prim{gs::prim_type::SPRITE, false, p.TME, false, p.ABE, false, true, false, false};
+    static constexpr unsigned regs[] = {pk::desc::UV, pk::desc::XYZ2, pk::desc::UV, pk::desc::XYZ2};
+    std::vector<pk::qword> data;
+    auto corner = [&](int x, int y, int u, int v) {
+      data.push_back(pk::packed_uv(static_cast<std::uint32_t>(16 * u), static_cast<std::uint32_t>(16 * v)));
+      data.push_back(pk::packed_xyz2(static_cast<std::uint16_t>(16 * (x + xy_offset_pixels)),
+                                     static_cast<std::uint16_t>(16 * (y + xy_offset_pixels)), 0, false));
+    };
+    for (const rect& r : rs) {
+      corner(r.x0, r.y0, r.u0, r.v0);
+      corner(r.x1, r.y1, r.u0 + (r.x1 - r.x0), r.v0 + (r.y1 - r.y0));
+    }
+    out.packed(static_cast<std::uint32_t>(gs::encode(prim)), regs, data);
+    sprites_written += rs.size();
+  }
+  // One sprite over the sprite area (nothing when it is empty), texel (x, y) at pixel (x, y).
+  void area_sprite(const pass_regs& p, gs::rgba8 colour) {
+    if (area_.x0 < area_.x1 && area_.y0 < area_.y1) sprites(p, colour, {{area_.x0, area_.y0, area_.x1, area_.y1, area_.x0, area_.y0}});
+  }
+  void frame_sprite(const pass_regs& p, gs::rgba8 colour) {
+    sprites(p, colour, {{0, 0, ps_.width, ps_.height, 0, 0}});
+  }
+
+  // Byte `channel` of every pixel of buffer src_fbp through palette cbp into the current target:
+  // gs_memory's channel-fetch sprites per page of the sprite area (as render.cpp's channel_pass).
+  void channel_pass(const pass_regs& p, gs::rgba8 colour, std::uint32_t cbp, unsigned channel, std::uint32_t src_fbp) {
+    const gs::mem::channel_fetch f = gs::mem::channel_fetch_sprites(channel);
+    const scissor& a = area_;
+    bool first = true;
+    for (int py = a.y0 / 32; py * 32 < a.y1; ++py)
+      for (int px = a.x0 / 64; px * 64 < a.x1; ++px) {
+        const std::uint32_t page = src_fbp + static_cast<std::uint32_t>(px) + static_cast<std::uint32_t>(py) * b_.fbw;
+        const gs::mem::buffer tex{fixed::uint<14>::from_wrapped(32 * page), fixed::uint<6>::from_wrapped(2 * b_.fbw), gs::mem::psm::PSMT8};
+        texture(p, tex, 128, 64, cbp, false, false, &f.CLAMP, first);  // the CLUT loaded once per pass
+        first = false;
+        std::vector<rect> rs;
+        for (const gs::mem::fetch_sprite& sp : f.sprites) {
+          const int x0 = px * 64 + static_cast<int>(sp.x0), y0 = py * 32 + static_cast<int>(sp.y0);
+          rs.push_back({x0, y0, x0 + static_cast<int>(sp.x1 - sp.x0), y0 + static_cast<int>(sp.y1 - sp.y0), sp.u0, sp.v0});
+        }
+        sprites(p, colour, rs);
+      }
+  }
+
+  const scissor& area() const { return area_; }
+  const scissor& frame() const { return frame_; }
+
+  pk::packet_builder out;
+  std::size_t triangles_written = 0, sprites_written = 0;
+
+ private:
+  const prepared_scene& ps_;
+  buffer_layout b_;
+  scissor area_, frame_;
+  std::vector<std::pair<std::uint8_t, std::uint64_t>> pending_;
+};
+
+}  // namespace
+
+frame_packets build_frame_packets(const scene& s, const prepared_scene& ps, method m, const render_options& o) {
+  if (o.dpb_clear != dpb_clear_mode::explicit_clear)
+    throw std::invalid_argument("frame packets: --dpb-clear " + std::string(name(o.dpb_clear)) + " is not written yet (explicit only)");
+  if (ps.width > 1023 || ps.height > 1023)
+    throw std::invalid_argument("frame packets: " + std::to_string(ps.width) + "x" + std::to_string(ps.height) +
+                                ": a sprite's UV (10.4) reaches 1023 texels, so frames are at most 1023x1023");
+  frame_packets fp;
+  fp.buffers = buffer_layout_for(ps.width, ps.height);
+  const buffer_layout& b = fp.buffers;
+  if (4 * b.pages > gs::mem::memory_blocks / 32)
+    throw std::invalid_argument("frame packets: four " + std::to_string(ps.width) + "x" + std::to_string(ps.height) +
+                                " PSMCT32 buffers do not fit in the GS's 4 MiB");
+  fp.z = {fixed::uint<14>::from_wrapped(32 * b.fbp(3)), fixed::uint<6>::from_wrapped(b.fbw), gs::mem::psm::PSMZ24};
+  const gs_inputs in = place_inputs(make_inputs(s, m, o), b.first_texture_block());
+  const scissor area = detail::band_renderer::drawn_area(ps, {0, 0, ps.width, ps.height});
+  stream g(ps, b, area);
+  const std::uint32_t DPB = b.fbp(0), LAB = b.fbp(1), DIFF = b.fbp(2), OUT = b.fbp(3);
+  auto buffer = [&](std::uint32_t fbp) {
+    return gs::mem::buffer{fixed::uint<14>::from_wrapped(32 * fbp), fixed::uint<6>::from_wrapped(b.fbw), gs::mem::psm::PSMCT32};
+  };
+
+  // 1. Environment.
+  g.set(address("PRMODECONT"), 1);
+  g.set(address("XYOFFSET_1"), xyoffset(16 * xy_offset_pixels, 16 * xy_offset_pixels));
+  g.clip(g.frame());
+  g.set(address("DTHE"), gs::encode(gs::dthe_reg{false}));
+  g.set(address("PABE"), gs::encode(gs::pabe_reg{false}));
+  g.set(address("FBA_1"), gs::encode(gs::fba_reg{false}));
+  // 2. Uploads.
+  g.flush();
+  add_uploads(g.out, in);
+  g.texflush();
+  // 3. Clears over the frame.
+  g.depth(gs::ztst::ALWAYS, true);
+  g.target(DPB, step1_ambient);
+  g.frame_sprite(step1_ambient, gs::rgba8::from_u32(clear_dpb));
+  g.target(LAB, step1_ambient);
+  g.frame_sprite(step1_ambient, gs::rgba8{});
+  g.depth(gs::ztst::ALWAYS, false);
+  pass_regs z_only = step1_ambient;
+  z_only.FBMSK = 0xFFFFFFFFu;
+  g.target(OUT, z_only);
+  g.frame_sprite(z_only, gs::rgba8{});
+
+  // 4. Step 1: Z and ambient.
+  const auto nm_uv = [](const prepared_triangle& t, int k) { return normal_map_uv(t, k); };
+  const gs::rgba8 ambient = rgb(s.ambient[0], s.ambient[1], s.ambient[2], 0x80);
+  g.depth(gs::ztst::GEQUAL, false);
+  g.target(LAB, step1_ambient);
+  g.triangles(step1_ambient, false, [&](const prepared_triangle&, int) { return ambient; }, nm_uv);
+
+  const bool linear = o.bilinear;
+  const auto& nm = *in.nm;
+  auto nm_texture = [&](const pass_regs& p, int palette) {
+    g.texture(p, in.nm_at, nm.width, nm.height, in.cbp[static_cast<std::size_t>(palette)], false, linear);
+  };
+  auto white_vertex = [](const prepared_triangle&, int) { return white; };
+  enum { pos, neg, axis_x, axis_y, axis_z, ilp, grey, alpha_index };
+  for (std::size_t l = 0; l < s.lights.size(); ++l) {
+    const std::vector<light_vertex>& lv = ps.lights[l];
+    auto at = [&](const prepared_triangle& t, int k) -> const light_vertex& { return lv[t.vertex[static_cast<std::size_t>(k)]]; };
+    // 2.1: the DPB cleared over the sprite area.
+    g.clip(area);
+    g.depth(gs::ztst::ALWAYS, true);
+    g.target(DPB, step1_ambient);
+    g.area_sprite(step1_ambient, gs::rgba8::from_u32(clear_dpb));
+    g.clip(g.frame());
+    g.depth(gs::ztst::GEQUAL, true);
+    auto draw = [&](const pass_regs& p, auto&& colour, auto&& uv) {
+      g.target(DPB, p);
+      g.triangles(p, true, colour, uv);
+    };
+    switch (m) {
+      case method::two_pass: {
+        auto c = [&](const prepared_triangle& t, int k) { return two_pass_colour(at(t, k), o.s); };
+        nm_texture(two_pass_positive, pos);
+        draw(two_pass_positive, c, nm_uv);
+        nm_texture(two_pass_negative, neg);
+        draw(two_pass_negative, c, nm_uv);
+        // 2.4a: the DPB read as PSMT8H through the grey CLUT, 1:1.
+        g.clip(area);
+        g.depth(gs::ztst::ALWAYS, true);
+        g.texflush();
+        gs::mem::buffer t8h = buffer(DPB);
+        t8h.PSM = gs::mem::psm::PSMT8H;
+        g.texture(two_pass_add_alpha, t8h, ps.width, ps.height, in.cbp[grey], false, false);
+        g.target(DPB, two_pass_add_alpha);
+        g.area_sprite(two_pass_add_alpha, white);
+        break;
+      }
+      case method::four_pass: {
+        g.texture(four_pass_sphere, in.sphere_at, 64, 64, std::nullopt, true, false);
+        draw(four_pass_sphere, [&](const prepared_triangle& t, int k) { return four_pass_sphere_colour(at(t, k)); },
+             [&](const prepared_triangle& t, int k) { return sphere_uv(at(t, k)); });
+        const pass_regs* axis[3] = {&four_pass_x, &four_pass_y, &four_pass_z};
+        for (int a = 0; a < 3; ++a) {
+          nm_texture(*axis[a], axis_x + a);
+          draw(*axis[a], white_vertex, nm_uv);
+        }
+        break;
+      }
+      case method::baseline: {
+        auto side = [&](bool negative) {
+          return [&, negative](const prepared_triangle& t, int k) { return baseline_colour(at(t, k), negative); };
+        };
+        nm_texture(baseline_add, pos);
+        draw(baseline_add, side(false), nm_uv);  // NM_pos·TL_pos
+        nm_texture(baseline_add, neg);
+        draw(baseline_add, side(true), nm_uv);  // NM_neg·TL_neg
+        nm_texture(baseline_subtract, neg);
+        draw(baseline_subtract, side(false), nm_uv);  // −NM_neg·TL_pos
+        nm_texture(baseline_subtract, pos);
+        draw(baseline_subtract, side(true), nm_uv);  // −NM_pos·TL_neg
+        break;
+      }
+    }
+    // 2.4: R += G, R += B; 2.5, 2.6: ILP[sum] × light colour added into the LAB.
+    g.clip(area);
+    g.depth(gs::ztst::ALWAYS, true);
+    g.target(DPB, post_add_into_red);
+    for (unsigned c : {1u, 2u}) {
+      g.texflush();
+      g.channel_pass(post_add_into_red, white, in.cbp[grey], c, DPB);
+    }
+    const auto& lc = s.lights[l].colour;
+    g.texflush();
+    g.target(LAB, ilp_into_lab);
+    g.channel_pass(ilp_into_lab, rgb(lc[0], lc[1], lc[2], 0x80), in.cbp[ilp], 0, DPB);
+  }
+
+  // Step 3: the diffuse layer.
+  g.clip(area);
+  g.depth(gs::ztst::ALWAYS, true);
+  g.target(DIFF, step1_ambient);
+  g.area_sprite(step1_ambient, gs::rgba8{});
+  g.clip(g.frame());
+  g.depth(gs::ztst::GEQUAL, true);
+  g.texture(diffuse_layer, in.diffuse_at, in.diffuse->width, in.diffuse->height, std::nullopt, false, linear);
+  g.target(DIFF, diffuse_layer);
+  g.triangles(diffuse_layer, true, white_vertex, nm_uv);
+
+  // Step 4: the output cleared over the frame (the Z buffer shared its pages: no Z is read from
+  // here on), the LAB copied into it; per channel the LAB byte moved into the output's alpha, then
+  // diffuse × alpha into that channel.
+  g.depth(gs::ztst::ALWAYS, true);
+  g.target(OUT, step1_ambient);
+  g.frame_sprite(step1_ambient, gs::rgba8{});
+  g.clip(area);
+  g.texflush();
+  g.texture(copy_word, buffer(LAB), ps.width, ps.height, std::nullopt, false, false);
+  g.target(OUT, copy_word);
+  g.area_sprite(copy_word, white);
+  const pass_regs* multiply[3] = {&multiply_red, &multiply_green, &multiply_blue};
+  for (unsigned c = 0; c < 3; ++c) {
+    g.texflush();
+    g.target(OUT, move_into_alpha);
+    g.channel_pass(move_into_alpha, white, in.cbp[alpha_index], c, LAB);
+    g.texflush();
+    g.texture(*multiply[c], buffer(DIFF), ps.width, ps.height, std::nullopt, false, false);
+    g.target(OUT, *multiply[c]);
+    g.area_sprite(*multiply[c], white);
+  }
+  g.flush();
+
+  fp.gif = g.out.bytes();
+  fp.triangles = g.triangles_written;
+  fp.sprites = g.sprites_written;
+  fp.PMODE = pmode_circuit1();
+  fp.DISPFB1 = dispfb(OUT, b.fbw);
+  fp.DISPLAY1 = display(ps.width, ps.height);
+  return fp;
+}
+
+gs::dump::gs_dump frame_dump(const frame_packets& fp) {
+  gs::dump::gs_dump d;
+  d.new_layout = true;
+  d.state_version = gs::dump::state_version_written;
+  d.serial = "gsdot3";
+  d.state = gs::dump::make_state_v8();
+  auto put = [&](std::uint32_t offset, std::uint64_t v) {
+    for (std::uint32_t b = 0; b < 8; ++b) d.privileged[offset + b] = static_cast<std::uint8_t>(v >> (8 * b));
+  };
+  put(PMODE_offset, fp.PMODE);
+  put(DISPFB1_offset, fp.DISPFB1);
+  put(DISPLAY1_offset, fp.DISPLAY1);
+  gs::dump::packet transfer;
+  transfer.type = gs::dump::packet_type::transfer;
+  transfer.path = 2;  // PATH3
+  transfer.data = fp.gif;
+  d.packets.push_back(std::move(transfer));
+  gs::dump::packet regs;
+  regs.type = gs::dump::packet_type::registers;
+  regs.data = d.privileged;
+  d.packets.push_back(std::move(regs));
+  gs::dump::packet vsync;
+  vsync.type = gs::dump::packet_type::vsync;
+  d.packets.push_back(std::move(vsync));
+  return d;
+}
+
+}  // namespace gsdot3::pipeline

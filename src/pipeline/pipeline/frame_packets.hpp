@@ -1,0 +1,64 @@
+// pipeline/frame_packets.hpp — a method's whole frame as the GIF packet stream the GS receives
+// (issue 15): the environment, the texture and palette uploads, and every pass of render.cpp with
+// pass_table.hpp's register sets and vertex values, over the memory path's buffers. `gsdot3 dump`
+// writes it as a PCSX2 GS dump; tests/pipeline replays it and compares with the renderer.
+//
+// The stream (context 1 throughout, PRMODECONT.AC = 1, XYOFFSET_1 = 2048.0 in both axes):
+// 1. environment: PRMODECONT, XYOFFSET_1, SCISSOR_1 (the frame), DTHE = 0, PABE = 0, FBA_1 = 0;
+// 2. uploads (gs_inputs.hpp: BITBLTBUF, TRXPOS, TRXREG, TRXDIR + IMAGE), then TEXFLUSH;
+// 3. clears, as flat sprites: the DPB to 0x00808080 and the LAB to 0 over the frame, the Z buffer
+//    to 0 (FBMSK = all ones, ZTST = ALWAYS, ZMSK = 0);
+// 4. step 1 (Z and ambient: TRIANGLE, ZTST = GEQUAL, Z written), per light steps 2.1-2.6, step 3,
+//    step 4 (after a clear of the output). Each pass writes FRAME_1, ALPHA_1, COLCLAMP, TEST_1,
+//    ZBUF_1 and its texture's TEX0_1, TEX1_1, CLAMP_1. Triangle passes: PACKED {RGBAQ, UV, XYZ2}
+//    per vertex with PRE = 1 (PRIM.IIP = 1 for the Gouraud passes, FST = 1), ZTST = GEQUAL with
+//    ZMSK = 1 after step 1. Sprite passes: the flat colour by A+D RGBAQ, PACKED {UV, XYZ2, UV, XYZ2}
+//    per sprite, drawn 1:1 (UV = the texel at the top-left pixel, 12.4) with SCISSOR_1 = the
+//    renderer's sprite area (the drawn triangles' bounding rectangle) and ZTST = ALWAYS, ZMSK = 1.
+//    A texture read from a buffer drawn before is preceded by TEXFLUSH. The post filter, the ILP
+//    read and step 4's channel move are gs_memory's channel-fetch sprites per page (TEX0_1 PSMT8 at
+//    the page, TBW = 2·FBW, TW = 7, TH = 6; CLAMP_1 REGION_REPEAT); step 4's copy of the LAB into
+//    the output is a DECAL sprite (the renderer copies the words directly: the same words).
+// Memory: the DPB, LAB, diffuse layer and output at FBP 0, P, 2P, 3P (render.cpp), the textures
+// after them (gs_inputs.hpp); the Z buffer (PSMZ24) shares the output buffer's pages, which hold no
+// colour until step 4: step 4 clears the output over the frame first and draws no Z-tested primitive.
+// Not written: the z-trick DPB clears (render_options::dpb_clear other than explicit); frames wider
+// or taller than 1023 pixels (a sprite's UV is 10.4: at most 1023.9375).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "gs_packets/dump.hpp"
+#include "pipeline/gs_inputs.hpp"
+#include "pipeline/prepare.hpp"
+#include "pipeline/render.hpp"
+#include "pipeline/scene.hpp"
+
+namespace gsdot3::pipeline {
+
+struct frame_packets {
+  std::vector<std::uint8_t> gif;        // the stream (GIF PATH3), little-endian qwords
+  buffer_layout buffers;
+  gs::mem::buffer z;                    // ZBUF_1: the Z buffer (PSMZ24)
+  // Privileged registers so the displayed frame is the output buffer: PMODE (circuit 1, ALP = 0xFF),
+  // DISPFB1 (FBP, FBW, PSMCT32), DISPLAY1 (DW, DH from the frame size, MAGH so DW + 1 <= 2560).
+  std::uint64_t PMODE = 0, DISPFB1 = 0, DISPLAY1 = 0;
+  std::size_t triangles = 0, sprites = 0;  // primitives written
+};
+
+// Throws std::invalid_argument for what is not written (above) or does not fit in the 4 MiB.
+frame_packets build_frame_packets(const scene& s, const prepared_scene& ps, method m, const render_options& o);
+
+// The privileged-register block of a dump (8 KiB, the GS's 0x12000000..0x12001FFF) with PMODE at
+// 0x0000, DISPFB1 at 0x0070, DISPLAY1 at 0x0080 (GS User's Manual register map; the same offsets in
+// ps2sdk and Linux's arch/mips/include/asm/mach-ps2/gs-registers.h, read with the search tool).
+inline constexpr std::uint32_t PMODE_offset = 0x0000, DISPFB1_offset = 0x0070, DISPLAY1_offset = 0x0080;
+
+// The frame as a PCSX2 GS dump (new layout, state version 8: gs_packets/state.hpp): serial
+// "gsdot3", no screenshot, a zeroed state blob (memory 0, PRMODECONT.AC = 1, Q = 1.0), the
+// privileged registers above; packets: the stream as one PATH3 transfer (path index 2), then a
+// registers packet and a vsync (field 0), as PCSX2's GSDumpBase::VSync writes them.
+gs::dump::gs_dump frame_dump(const frame_packets& fp);
+
+}  // namespace gsdot3::pipeline

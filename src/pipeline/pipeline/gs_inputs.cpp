@@ -1,0 +1,137 @@
+#include "pipeline/gs_inputs.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <utility>
+
+#include "gs_memory/clut_load.hpp"
+#include "gs_memory/memory_registers.hpp"
+#include "gs_packets/decoder.hpp"
+#include "gs_packets/gs_registers.hpp"
+#include "gs_packets/interpreter.hpp"
+#include "pipeline/encoders.hpp"
+
+namespace gsdot3::pipeline {
+
+namespace {
+
+std::vector<std::uint8_t> bytes_of(const std::vector<std::uint32_t>& words) {
+  std::vector<std::uint8_t> b(words.size() * 4);
+  for (std::size_t i = 0; i < words.size(); ++i)
+    for (std::size_t k = 0; k < 4; ++k) b[4 * i + k] = static_cast<std::uint8_t>(words[i] >> (8 * k));
+  return b;
+}
+
+// Host -> local transfer of a w × h image packed as `data` into buffer b.
+void transfer(gs::packets::packet_builder& out, const gs::mem::buffer& b, int w, int h, std::span<const std::uint8_t> data) {
+  namespace reg = gs::packets::reg;
+  gs::mem::bitbltbuf_reg blt;
+  blt.DBP = b.BP;
+  blt.DBW = b.BW;
+  blt.DPSM = b.PSM;
+  const gs::mem::trxreg_reg size{fixed::uint<12>::from_wrapped(w), fixed::uint<12>::from_wrapped(h)};
+  const std::pair<std::uint8_t, std::uint64_t> writes[] = {{reg::BITBLTBUF, gs::mem::encode(blt)},
+                                                          {reg::TRXPOS, gs::mem::encode(gs::mem::trxpos_reg{})},
+                                                          {reg::TRXREG, gs::mem::encode(size)},
+                                                          {reg::TRXDIR, gs::mem::encode(gs::mem::trxdir_reg{})}};
+  out.ad(writes);
+  out.image(data);
+}
+
+gs::clut_buffer index_in_alpha() {
+  gs::clut_buffer p{};
+  for (int i = 0; i < 256; ++i) {
+    const auto v = gs::u8::from_wrapped(i);
+    p[static_cast<std::size_t>(i)] = {v, v, v, v};
+  }
+  return p;
+}
+
+}  // namespace
+
+std::array<gs::clut_buffer*, 8> palettes(gs_inputs& in) {
+  return {&in.pos, &in.neg, &in.axis[0], &in.axis[1], &in.axis[2], &in.ilp, &in.grey, &in.alpha_index};
+}
+std::array<const gs::clut_buffer*, 8> palettes(const gs_inputs& in) {
+  return {&in.pos, &in.neg, &in.axis[0], &in.axis[1], &in.axis[2], &in.ilp, &in.grey, &in.alpha_index};
+}
+
+gs_inputs make_inputs(const scene& s, method m, const render_options& o) {
+  gs_inputs in;
+  in.nm = &s.normals;
+  in.diffuse = &s.diffuse;
+  in.ilp = intensity_palette(o.specular_power);
+  in.grey = identity_palette();
+  in.alpha_index = index_in_alpha();
+  switch (m) {
+    case method::two_pass:
+      in.pos = two_pass_palette(s.normals.palette, false);
+      in.neg = two_pass_palette(s.normals.palette, true);
+      break;
+    case method::four_pass:
+      for (int a = 0; a < 3; ++a) in.axis[a] = reordered_palette(s.normals.palette, a);
+      in.sphere = sphere_map(64, 64);
+      break;
+    case method::baseline:
+      in.pos = signed_side_palette(s.normals.palette, false);
+      in.neg = signed_side_palette(s.normals.palette, true);
+      break;
+  }
+  return in;
+}
+
+gs_inputs place_inputs(const gs_inputs& direct, std::uint32_t first) {
+  gs_inputs in = direct;
+  std::uint32_t next = first;
+  auto place = [&](int w, int h, gs::mem::psm p) {
+    const gs::mem::extent pg = gs::mem::page_size(gs::mem::layout_of(p));
+    auto bw = static_cast<std::uint32_t>((w + 63) / 64);
+    if (pg.w == 128) bw = std::max(2u, bw + bw % 2);  // a PSMT8 page is 128 wide: an even TBW
+    const std::uint32_t pages = bw * 64 / pg.w * ((static_cast<std::uint32_t>(h) + pg.h - 1) / pg.h);
+    const gs::mem::buffer b{fixed::uint<14>::from_wrapped(next), fixed::uint<6>::from_wrapped(bw), p};
+    next += 32 * pages;
+    if (next > gs::mem::memory_blocks) throw std::invalid_argument("memory path: the textures do not fit in the GS's 4 MiB");
+    return b;
+  };
+  in.nm_at = place(direct.nm->width, direct.nm->height, gs::mem::psm::PSMT8);
+  if (!direct.sphere.empty()) in.sphere_at = place(64, 64, gs::mem::psm::PSMCT32);
+  in.diffuse_at = place(direct.diffuse->width, direct.diffuse->height, gs::mem::psm::PSMCT32);
+  const gs::mem::buffer page = place(64, 32, gs::mem::psm::PSMCT32);  // one page: 8 CLUTs of 4 blocks
+  for (std::size_t k = 0; k < in.cbp.size(); ++k) in.cbp[k] = static_cast<std::uint32_t>(page.BP.value()) + 4 * static_cast<std::uint32_t>(k);
+  return in;
+}
+
+void add_uploads(gs::packets::packet_builder& b, const gs_inputs& in) {
+  transfer(b, in.nm_at, in.nm->width, in.nm->height, in.nm->index);
+  if (!in.sphere.empty()) transfer(b, in.sphere_at, 64, 64, bytes_of(in.sphere));
+  transfer(b, in.diffuse_at, in.diffuse->width, in.diffuse->height, bytes_of(in.diffuse->texels));
+  const auto all = palettes(in);
+  for (std::size_t k = 0; k < all.size(); ++k) {
+    std::vector<std::uint32_t> image(256);
+    for (unsigned p = 0; p < 256; ++p) image[p] = (*all[k])[gs::csm1_position(gs::u8::from_wrapped(p))].to_u32();
+    const gs::mem::buffer at{fixed::uint<14>::from_wrapped(in.cbp[k]), fixed::uint<6>::from_wrapped(1), gs::mem::psm::PSMCT32};
+    transfer(b, at, 16, 16, bytes_of(image));
+  }
+}
+
+gs_inputs upload_inputs(gs::mem::local_memory& m, const gs_inputs& direct, std::uint32_t first) {
+  gs_inputs in = place_inputs(direct, first);
+  gs::packets::packet_builder b;
+  add_uploads(b, in);
+  const std::vector<std::uint8_t> bytes = b.bytes();
+  gs::packets::interpreter gs(m);
+  for (const gs::packets::gif_event& e : gs::packets::decode_gif(bytes)) gs.apply(e, 16 * std::uint64_t{e.offset});
+  if (!gs.unmodelled_features().empty()) throw std::logic_error("memory path upload: " + gs.unmodelled_features().front().what);
+  in.memory = &m;
+  const auto all = palettes(in);
+  for (std::size_t k = 0; k < all.size(); ++k) {
+    gs::tex0_reg t;
+    t.PSM = gs::tex_psm::PSMT8;
+    t.CBP = fixed::uint<14>::from_wrapped(in.cbp[k]);
+    t.CLD = gs::u3::from_wrapped(1);
+    *all[k] = gs::mem::load_clut(m, t, {}).buffer;
+  }
+  return in;
+}
+
+}  // namespace gsdot3::pipeline

@@ -1,0 +1,65 @@
+// pipeline/gs_inputs.hpp — a method's textures and palettes (built once per frame, the VU1 / tool
+// side) and, for the memory path and the packet stream, where they live in GS local memory and the
+// host -> local transfers that put them there. The renderer's memory path runs these transfers
+// through the packet interpreter (gs_packets), the dump writer sends the same packets: one upload.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "gs_arith/clut.hpp"
+#include "gs_memory/address.hpp"
+#include "gs_memory/local_memory.hpp"
+#include "gs_packets/builder.hpp"
+#include "pipeline/render.hpp"
+#include "pipeline/scene.hpp"
+
+namespace gsdot3::pipeline {
+
+// The memory path's frame buffers: PSMCT32, FBW = ceil(width / 64), P pages each, the DPB, LAB,
+// diffuse layer and output at FBP 0, P, 2P, 3P; the textures start at block 4·32·P.
+struct buffer_layout {
+  std::uint32_t fbw = 0, pages = 0;
+  // Buffer k at FBP k·P. The packet stream (frame_packets.cpp): 0 DPB, 1 LAB, 2 diffuse, 3 output (Z on
+  // the output's pages); the renderer's memory path (render.cpp): 0 DPB and diffuse, 1 LAB, 2 output, 3 Z.
+  std::uint32_t fbp(int k) const noexcept { return static_cast<std::uint32_t>(k) * pages; }
+  std::uint32_t first_texture_block() const noexcept { return 4 * 32 * pages; }
+};
+constexpr buffer_layout buffer_layout_for(int width, int height) noexcept {
+  const auto fbw = static_cast<std::uint32_t>((width + 63) / 64);
+  return {fbw, fbw * static_cast<std::uint32_t>((height + 31) / 32)};
+}
+
+struct gs_inputs {
+  const normal_map* nm = nullptr;
+  // alpha_index: the index in every channel (the memory path's step 4 moves a LAB byte into alpha).
+  gs::clut_buffer pos, neg, axis[3], ilp, grey, alpha_index;
+  std::vector<std::uint32_t> sphere;  // 64×64, four-pass only
+  const texture32* diffuse = nullptr;
+  // Placed (place_inputs): the textures' TBP0 / TBW / PSM and each palette's CBP (palettes() order).
+  gs::mem::buffer nm_at, sphere_at, diffuse_at;
+  std::array<std::uint32_t, 8> cbp{};
+  // Uploaded (upload_inputs): the memory the texels are read from; the CLUTs above are then the
+  // ones TEX0.CLD = 1 loaded back from it.
+  const gs::mem::local_memory* memory = nullptr;
+};
+
+// The eight palettes in upload order: pos, neg, axis x, y, z, ilp, grey, alpha_index.
+std::array<gs::clut_buffer*, 8> palettes(gs_inputs& in);
+std::array<const gs::clut_buffer*, 8> palettes(const gs_inputs& in);
+
+gs_inputs make_inputs(const scene& s, method m, const render_options& o);
+// Places the textures from block `first` on: the normal map (PSMT8, an even TBW), the sphere map
+// and the diffuse texture (PSMCT32), then one PSMCT32 page holding the eight palettes as 16×16 CSM1
+// images of 4 blocks each. Throws std::invalid_argument when they pass the end of the 4 MiB.
+gs_inputs place_inputs(const gs_inputs& direct, std::uint32_t first);
+// The transfers of a placed input set: per image BITBLTBUF (DBP, DBW, DPSM), TRXPOS = 0, TRXREG
+// (RRW, RRH), TRXDIR = 0 as A+D writes, then the pixels as IMAGE data; palette entry i at
+// gs::csm1_position(i) of its image.
+void add_uploads(gs::packets::packet_builder& b, const gs_inputs& placed);
+// place_inputs, add_uploads interpreted into m (gs::packets::interpreter), then every palette loaded
+// back from m by TEX0 (PSMT8, CBP, CLD = 1) through gs_memory's load_clut.
+gs_inputs upload_inputs(gs::mem::local_memory& m, const gs_inputs& direct, std::uint32_t first);
+
+}  // namespace gsdot3::pipeline
