@@ -188,14 +188,16 @@ std::string check_primitive(const draw_registers& r, const clut_unit& clut, std:
 }
 
 std::uint64_t draw_primitive(mem::local_memory& m, const draw_registers& r, const clut_unit& clut,
-                             std::span<const vertex> v, const model_options& o) {
+                             std::span<const vertex> v, const model_options& o,
+                             std::optional<mem::texture_page_buffer>& texture) {
   decoded d;
   if (!check_primitive(r, clut, v).empty()) return 0;
   decode(r, v, d);
   const prim_reg& p = d.regs.PRIM;
   const tex0_reg& tex = d.regs.TEX0_1;
   const mem::buffer tb{tex.TBP0, tex.TBW, tex.PSM};
-  mem::texture_page_buffer cache(o.tex_buffer, m, 0, o.tex_buffer == texture_buffer::draw_snapshot ? mem::memory_bytes : 0);
+  if (!texture) texture.emplace(o.tex_buffer, m, 0, o.tex_buffer == texture_buffer::draw_snapshot ? mem::memory_bytes : 0);
+  mem::texture_page_buffer& cache = *texture;
   auto fetch = [&](std::int32_t u, std::int32_t w) {
     const mem::texel_coord c = mem::wrap(d.clamp, tex.TW, tex.TH, u, w);
     const mem::location at = mem::locate(tb, c.u, c.v);

@@ -16,6 +16,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 
@@ -23,6 +24,7 @@
 #include "gs_arith/options.hpp"
 #include "gs_memory/clut_load.hpp"
 #include "gs_memory/local_memory.hpp"
+#include "gs_memory/texture_buffer.hpp"
 
 namespace gs::packets {
 
@@ -62,8 +64,12 @@ struct clut_unit {
 std::string check_primitive(const draw_registers& r, const clut_unit& clut, std::span<const vertex> v);
 
 // Draws the primitive (2 vertices for SPRITE, 3 for the triangle types) when check_primitive accepts
-// it; returns the pixels that went through gs::pixel_pipeline.
+// it; returns the pixels that went through gs::pixel_pipeline. Texels are read through `texture`, the
+// texture page buffer (model option texture_buffer), made here when empty: the caller keeps it for a
+// run of primitives with one drawing state and empties it at TEXFLUSH or a state change, as the
+// renderer (one buffer per channel-fetch page), the probe's prediction and the section 3.4 proof do.
 std::uint64_t draw_primitive(mem::local_memory& m, const draw_registers& r, const clut_unit& clut,
-                             std::span<const vertex> v, const model_options& o);
+                             std::span<const vertex> v, const model_options& o,
+                             std::optional<mem::texture_page_buffer>& texture);
 
 }  // namespace gs::packets

@@ -44,7 +44,7 @@ constexpr std::optional<std::uint8_t> gs_register_address(std::string_view name)
 namespace reg {
 inline constexpr std::uint8_t PRIM = 0x00, RGBAQ = 0x01, ST = 0x02, UV = 0x03, XYZF2 = 0x04, XYZ2 = 0x05,
                               FOG = 0x0A, XYZF3 = 0x0C, XYZ3 = 0x0D, BITBLTBUF = 0x50, TRXPOS = 0x51,
-                              TRXREG = 0x52, TRXDIR = 0x53;
+                              TRXREG = 0x52, TRXDIR = 0x53, TEXFLUSH = 0x3F;
 }  // namespace reg
 
 }  // namespace gs::packets

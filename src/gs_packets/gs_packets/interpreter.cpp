@@ -93,7 +93,7 @@ void interpreter::vertex_kick(bool draw, bool with_fog, std::uint64_t offset) {
       if (!opt_.skip_unmodelled) throw unmodelled_error(u);
       ++skipped_;
     } else {
-      pixels_ += draw_primitive(mem_, r, clut_, vs, opt_.model);
+      pixels_ += draw_primitive(mem_, r, clut_, vs, opt_.model, texture_);
       ++drawn_;
     }
   }
@@ -180,6 +180,10 @@ void interpreter::apply(const gif_event& e, std::uint64_t offset) {
     const unsigned c = e.address - TEX2_1;
     regs_[TEX0_1 + c] = (regs_[TEX0_1 + c] & ~tex2_mask) | (e.value & tex2_mask);
   }
+  const bool vertex_register = e.address == reg::RGBAQ || e.address == reg::ST || e.address == reg::UV ||
+                               e.address == reg::FOG || e.address == reg::XYZ2 || e.address == reg::XYZF2 ||
+                               e.address == reg::XYZ3 || e.address == reg::XYZF3;
+  if (e.address == reg::TEXFLUSH || (!vertex_register && regs_[e.address] != e.value)) texture_.reset();
   regs_[e.address] = e.value;
   switch (e.address) {
     case reg::TRXDIR: start_transfer(offset); break;

@@ -20,6 +20,7 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <stdexcept>
 #include <cstdint>
 #include <string>
@@ -96,6 +97,9 @@ class interpreter {
   std::array<vertex, 3> queue_{};
   unsigned queued_ = 0;
   clut_unit clut_;
+  // The texture page buffer of the current run of primitives (draw_primitive): emptied by TEXFLUSH
+  // and by any write that changes a register other than the vertex registers.
+  std::optional<mem::texture_page_buffer> texture_;
   std::vector<std::uint8_t> privileged_ = std::vector<std::uint8_t>(8192, 0);
   std::uint64_t drawn_ = 0, skipped_ = 0, pixels_ = 0;
   completed_transfer current_{};

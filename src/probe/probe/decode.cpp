@@ -77,7 +77,7 @@ verdict judge(std::string name, bool is_check, const std::vector<const patch*>& 
 
 }  // namespace
 
-rgb_frame model_rgb_frame() { return as_rgb(model_frame({})); }
+rgb_frame model_rgb_frame(const gs::model_options& o) { return as_rgb(model_frame(o)); }
 
 std::vector<verdict> decode(const rgb_frame& shot) {
   const design& des = probe_design();

@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "gs_arith/options.hpp"
+
 namespace gsdot3::probe {
 
 // frame_width × frame_height pixels as 0xRRGGBB, rows top first.
@@ -29,8 +31,8 @@ std::vector<verdict> decode(const rgb_frame& shot);
 // "NAME: VALUE" / "NAME: none matches" + details / "NAME: not probed (...)", one verdict per line.
 std::string format_verdicts(const std::vector<verdict>& v);
 
-// The model's frame under the default options as RGB (what a screenshot of a console that behaves
-// like every default shows).
-rgb_frame model_rgb_frame();
+// The model's frame under options o (by default every option's default) as RGB: what a screenshot of
+// a console that behaves like those options shows.
+rgb_frame model_rgb_frame(const gs::model_options& o = {});
 
 }  // namespace gsdot3::probe
