@@ -116,6 +116,7 @@ struct gs_inputs {
   // from memory by TEX0.CLD).
   const gs::mem::local_memory* memory = nullptr;
   gs::mem::buffer nm_at, sphere_at, diffuse_at;
+  std::shared_ptr<const gs::mem::texel_addresses> nm_texels, sphere_texels, diffuse_texels;  // their addresses
 };
 
 // Host -> local transfer of a w × h image packed as `data` into buffer b (BITBLTBUF, TRXPOS = 0,
@@ -151,13 +152,19 @@ gs_inputs upload_inputs(gs::mem::local_memory& m, const gs_inputs& direct, std::
     if (next > gs::mem::memory_blocks) throw std::invalid_argument("memory path: the textures do not fit in the GS's 4 MiB");
     return b;
   };
+  auto addresses = [](const gs::mem::buffer& b, int w, int h) {
+    return std::make_shared<const gs::mem::texel_addresses>(b.PSM, b.BW.value(), static_cast<std::uint32_t>(w), static_cast<std::uint32_t>(h));
+  };
   in.nm_at = place(direct.nm->width, direct.nm->height, gs::mem::psm::PSMT8);
+  in.nm_texels = addresses(in.nm_at, direct.nm->width, direct.nm->height);
   upload(m, in.nm_at, direct.nm->width, direct.nm->height, direct.nm->index);
   if (!direct.sphere.empty()) {
     in.sphere_at = place(64, 64, gs::mem::psm::PSMCT32);
+    in.sphere_texels = addresses(in.sphere_at, 64, 64);
     upload(m, in.sphere_at, 64, 64, bytes_of(direct.sphere));
   }
   in.diffuse_at = place(direct.diffuse->width, direct.diffuse->height, gs::mem::psm::PSMCT32);
+  in.diffuse_texels = addresses(in.diffuse_at, direct.diffuse->width, direct.diffuse->height);
   upload(m, in.diffuse_at, direct.diffuse->width, direct.diffuse->height, bytes_of(direct.diffuse->texels));
   const gs::mem::buffer palettes = place(64, 32, gs::mem::psm::PSMCT32);  // one page: 8 CLUTs of 4 blocks
   std::uint32_t cbp = static_cast<std::uint32_t>(palettes.BP.value());
@@ -210,6 +217,7 @@ struct frame_buffers {
   z_view zb;
   FB lab, dpb, diff, out;
   gs::mem::local_memory* memory = nullptr;  // the memory path's local memory, else null
+  const gs::mem::texel_addresses* page_as_t8 = nullptr;  // the memory path: a page of the DPB / LAB as PSMT8 (BP 0)
   dpb_clear_mode clear = dpb_clear_mode::explicit_clear;
 };
 
@@ -282,7 +290,7 @@ void channel_pass(band_renderer& r, const frame_buffers<memory_view>& fb, gs::rg
                                                                  f.CLAMP.MINU, f.CLAMP.MAXU);
                               const auto v = gs::mem::wrap_texel(f.CLAMP.WMT, sp.v0 + (y - y0), fixed::u4::literal(6),
                                                                  f.CLAMP.MINV, f.CLAMP.MAXV);
-                              const std::uint8_t index = texels.fetch(gs::mem::locate(tex, u, v).byte);
+                              const std::uint8_t index = texels.fetch(fb.page_as_t8->byte(u, v, tex.BP.value()));
                               if (z_clear) {  // ZBUF = the DPB (PSMZ24), Z = 0x00808080, ZTST = ALWAYS
                                 const auto zx = static_cast<std::uint32_t>(x), zy = static_cast<std::uint32_t>(y);
                                 const gs::depth_result d = gs::depth_test(depth_always, z_written, clear_dpb, mem.read_pixel(zbuf, zx, zy));
@@ -341,7 +349,7 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
 
   const gs::bilinear_mode filter = o.bilinear ? o.model.bilinear : gs::bilinear_mode::nearest;
   auto nm_texture = [&](const gs::clut_buffer& clut) {
-    return texture_ref{in.nm->width, in.nm->height, in.nm->index.data(), &clut, nullptr, false, filter, in.memory, in.nm_at};
+    return texture_ref{in.nm->width, in.nm->height, in.nm->index.data(), &clut, nullptr, false, filter, in.memory, in.nm_at, in.nm_texels.get()};
   };
   const gs::rgba8 white = rgb(0x80, 0x80, 0x80, 0x80);
   auto flat_white = [&](std::uint32_t) { return white; };
@@ -396,7 +404,8 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
               return std::array<std::int32_t, 2>{static_cast<std::int32_t>(std::lround(c.s * 64 * 16)),
                                                  static_cast<std::int32_t>(std::lround(c.t * 64 * 16))};
             });
-        const texture_ref sphere{64, 64, nullptr, nullptr, in.sphere.data(), true, gs::bilinear_mode::nearest, in.memory, in.sphere_at};
+        const texture_ref sphere{64, 64, nullptr, nullptr, in.sphere.data(), true, gs::bilinear_mode::nearest, in.memory, in.sphere_at,
+                                 in.sphere_texels.get()};
         r.draw<four_pass_sphere>(&sphere, pass1, fb.dpb);
         note("2.3 sphere map · fade (HIGHLIGHT)", li, "DPB", fb.dpb);
         const auto attr = attributes(ps, flat_white, normal_map_uv);
@@ -454,7 +463,7 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
   // Step 3: the unlit diffuse layer.
   r.fill(fb.diff, 0, false);
   const texture_ref diffuse{in.diffuse->width, in.diffuse->height, nullptr, nullptr, in.diffuse->texels.data(), false, filter,
-                            in.memory, in.diffuse_at};
+                            in.memory, in.diffuse_at, in.diffuse_texels.get()};
   r.draw<diffuse_layer>(&diffuse, attributes(ps, flat_white, normal_map_uv), fb.diff);
   note("3 diffuse layer", -1, "diffuse", fb.diff);
 
@@ -549,6 +558,13 @@ frame render(const scene& s, const prepared_scene& ps, method m, const render_op
     fb.zb.in_memory = true;
     fb.dpb.z = o.dpb_clear == dpb_clear_mode::z_trick;
     fb.lab.z = o.dpb_clear == dpb_clear_mode::z_trick_psmz32;
+    // The inner loops' addresses tabulated over whole pages (gs_memory/fast_address.hpp).
+    const gs::mem::texel_addresses page_as_t8(gs::mem::psm::PSMT8, 2 * fbw, 128, 64);  // channel_pass's TBW
+    fb.page_as_t8 = &page_as_t8;
+    std::vector<gs::mem::row_column_address> addresses;
+    addresses.reserve(5);
+    for (memory_view* v : {&fb.dpb, &fb.lab, &fb.diff, &fb.out, &fb.zb.memory})
+      v->address = &addresses.emplace_back(v->layout(), v->bp, v->bw, 64 * fbw, 32 * static_cast<std::uint32_t>((ps.height + 31) / 32));
     render_options one = o;
     if (o.dpb_clear != dpb_clear_mode::explicit_clear) one.threads = 1;  // draw order is the model's
     render_bands(s, ps, m, one, upload_inputs(memory, in, 4 * 32 * pages), fb, result);
