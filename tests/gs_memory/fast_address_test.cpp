@@ -2,7 +2,8 @@
 // are built from, on every coordinate they claim: row + column for the 32- and 16-bit layouts over
 // a sweep of widths and base pointers (and a whole 2048-row buffer as wide as the renderer's
 // 512-pixel frames), the counterexample that PSMT8/PSMT4 are not sums, and the texel tables'
-// addresses and reads against locate / read_pixel for every texel of the textures the methods use.
+// addresses and reads against locate / read_pixel for every texel of the textures the methods use;
+// local_memory's word-wise read / write against the byte-by-byte little-endian reading.
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -11,6 +12,7 @@
 #include <stdexcept>
 
 #include "formats.hpp"
+#include "gs_memory/address.hpp"
 #include "gs_memory/fast_address.hpp"
 #include "gs_memory/local_memory.hpp"
 #include "gs_memory/swizzle_tables.hpp"
@@ -88,6 +90,41 @@ TEST(FastAddress, TexelTablesAreLocateAndReadPixelForEveryTexel) {
   EXPECT_THROW(texel_addresses(psm::PSMT4, 2, 128, 128), std::invalid_argument);
   EXPECT_THROW(texel_addresses(psm::PSMCT16, 1, 64, 64), std::invalid_argument);
   std::printf("checked %llu (texture, BP, u, v) texels\n", static_cast<unsigned long long>(checked));
+}
+
+
+// The byte-by-byte reference: the value's bits little-endian from at.byte, starting at bit at.bit.
+std::uint32_t read_bytes(const local_memory& m, const location& at) {
+  std::uint64_t v = 0;
+  for (unsigned i = 0; i < (at.bit + at.bits + 7) / 8; ++i) v |= std::uint64_t{m.byte(at.byte + i)} << (8 * i);
+  return static_cast<std::uint32_t>((v >> at.bit) & ((std::uint64_t{1} << at.bits) - 1));
+}
+
+// Every location of two pages (BP 32, BW 2 and 4) of every format: the location lies in one word,
+// read = the byte-wise reading of random memory, and write sets exactly those bits (the other bytes
+// and bits of the memory are as before, read back byte by byte).
+TEST(FastAddress, WordWiseReadAndWriteAreTheByteWiseReading) {
+  local_memory m;
+  std::mt19937 rng(3);
+  for (std::uint32_t i = 0; i < memory_bytes / 4; ++i) m.words()[i] = static_cast<std::uint32_t>(rng());
+  std::uint64_t checked = 0;
+  for (const psm p : test::all_psms) {
+    const extent pg = page_size(layout_of(p));
+    const buffer b{fixed::uint<14>::literal(32), fixed::uint<6>::from_wrapped(pg.w / 32), p};
+    for (std::uint32_t y = 0; y < pg.h; ++y)
+      for (std::uint32_t x = 0; x < 2 * pg.w; ++x) {
+        const location at = locate(b, x, y);
+        ASSERT_LE(8 * (at.byte % 4) + at.bit + at.bits, 32u) << "PSM " << static_cast<int>(p) << " (" << x << ", " << y << ")";
+        ASSERT_EQ(m.read(at), read_bytes(m, at)) << "PSM " << static_cast<int>(p) << " (" << x << ", " << y << ")";
+        const std::uint32_t word = at.byte / 4, before = m.words()[word], v = static_cast<std::uint32_t>(rng());
+        m.write(at, v);
+        const std::uint64_t mask = ((std::uint64_t{1} << at.bits) - 1) << (8 * (at.byte % 4) + at.bit);
+        ASSERT_EQ(read_bytes(m, at), v & ((std::uint64_t{1} << at.bits) - 1));
+        ASSERT_EQ(m.words()[word] & ~mask, before & ~mask) << "PSM " << static_cast<int>(p) << " (" << x << ", " << y << ")";
+        ++checked;
+      }
+  }
+  std::printf("checked %llu (format, x, y) locations\n", static_cast<unsigned long long>(checked));
 }
 
 }  // namespace
