@@ -139,7 +139,9 @@ std::vector<std::uint8_t> bytes_of(const std::vector<std::uint32_t>& words) {
 // The memory path's uploads from block `first` on: the normal map (PSMT8), the sphere map and the
 // diffuse texture (PSMCT32) by transfers; each palette as its 16×16 CSM1 image (entry i at
 // gs::csm1_position(i)), then loaded back into the CLUT buffer by TEX0 with CLD = 1.
-gs_inputs upload_inputs(gs::mem::local_memory& m, const gs_inputs& direct, std::uint32_t first) {
+// With `parallel` the normal map's upload and the textures' address tables run on a second thread
+// (the normal map's pages are its own, the tables read no memory), the rest on this one.
+gs_inputs upload_inputs(gs::mem::local_memory& m, const gs_inputs& direct, std::uint32_t first, bool parallel) {
   gs_inputs in = direct;
   in.memory = &m;
   std::uint32_t next = first;
@@ -157,17 +159,20 @@ gs_inputs upload_inputs(gs::mem::local_memory& m, const gs_inputs& direct, std::
     return std::make_shared<const gs::mem::texel_addresses>(b.PSM, b.BW.value(), static_cast<std::uint32_t>(w), static_cast<std::uint32_t>(h));
   };
   in.nm_at = place(direct.nm->width, direct.nm->height, gs::mem::psm::PSMT8);
-  in.nm_texels = addresses(in.nm_at, direct.nm->width, direct.nm->height);
-  upload(m, in.nm_at, direct.nm->width, direct.nm->height, direct.nm->index);
-  if (!direct.sphere.empty()) {
-    in.sphere_at = place(64, 64, gs::mem::psm::PSMCT32);
-    in.sphere_texels = addresses(in.sphere_at, 64, 64);
-    upload(m, in.sphere_at, 64, 64, bytes_of(direct.sphere));
-  }
+  if (!direct.sphere.empty()) in.sphere_at = place(64, 64, gs::mem::psm::PSMCT32);
   in.diffuse_at = place(direct.diffuse->width, direct.diffuse->height, gs::mem::psm::PSMCT32);
-  in.diffuse_texels = addresses(in.diffuse_at, direct.diffuse->width, direct.diffuse->height);
-  upload(m, in.diffuse_at, direct.diffuse->width, direct.diffuse->height, bytes_of(direct.diffuse->texels));
+  auto normal_map_and_tables = [&] {
+    upload(m, in.nm_at, direct.nm->width, direct.nm->height, direct.nm->index);
+    in.nm_texels = addresses(in.nm_at, direct.nm->width, direct.nm->height);
+    if (!direct.sphere.empty()) in.sphere_texels = addresses(in.sphere_at, 64, 64);
+    in.diffuse_texels = addresses(in.diffuse_at, direct.diffuse->width, direct.diffuse->height);
+  };
   const gs::mem::buffer palettes = place(64, 32, gs::mem::psm::PSMCT32);  // one page: 8 CLUTs of 4 blocks
+  std::jthread helper;  // joins when it goes out of scope, also when an upload below throws
+  if (parallel) helper = std::jthread(normal_map_and_tables);
+  else normal_map_and_tables();
+  if (!direct.sphere.empty()) upload(m, in.sphere_at, 64, 64, bytes_of(direct.sphere));
+  upload(m, in.diffuse_at, direct.diffuse->width, direct.diffuse->height, bytes_of(direct.diffuse->texels));
   std::uint32_t cbp = static_cast<std::uint32_t>(palettes.BP.value());
   auto clut = [&](gs::clut_buffer& entries) {
     std::vector<std::uint32_t> image(256);
@@ -182,6 +187,7 @@ gs_inputs upload_inputs(gs::mem::local_memory& m, const gs_inputs& direct, std::
     cbp += 4;
   };
   for (gs::clut_buffer* c : {&in.pos, &in.neg, &in.axis[0], &in.axis[1], &in.axis[2], &in.ilp, &in.grey}) clut(*c);
+  if (helper.joinable()) helper.join();  // before `in` is returned with the helper's tables
   return in;
 }
 
@@ -585,7 +591,7 @@ frame render(const scene& s, const prepared_scene& ps, method m, const render_op
       v->address = &addresses.emplace_back(v->layout(), v->bp, v->bw, 64 * fbw, 32 * static_cast<std::uint32_t>((ps.height + 31) / 32));
     render_options one = o;
     if (o.dpb_clear != dpb_clear_mode::explicit_clear) one.threads = 1;  // draw order is the model's
-    render_bands(s, ps, m, one, upload_inputs(memory, in, 4 * 32 * pages), fb, result);
+    render_bands(s, ps, m, one, upload_inputs(memory, in, 4 * 32 * pages, one.threads > 1), fb, result);
   } else {
     std::vector<std::uint32_t> rows(4 * n, 0);  // value level: DPB, LAB, diffuse, output, frame-sized each
     frame_buffers<row_view> fb;
