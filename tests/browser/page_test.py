@@ -364,6 +364,7 @@ def main():
         expected_images = sum(1 + 2 * report["scene"]["lights"] for _ in names) + 1 + report["scene"]["lights"] + 2
         expected_images += 1 if page.get("side_by_side") else 0
         expected_images += len(report.get("memory", {}).get("pictures", []))  # the GS local-memory section
+        expected_images += len(report.get("memory", {}).get("dpb_pictures", {}).get("files", []))  # the rendered DPB
         if imgs["failed"] or imgs["loaded"] != imgs["total"] or imgs["total"] != expected_images:
             fail(f"images: {imgs}, expected {expected_images} loaded")
         if not sc["pixels"].startswith(f"loaded {n} "):
@@ -384,6 +385,14 @@ def main():
                     fail(f"picker step {k}: {key} = {step.get(key)}, expected {v}")
             if not os.path.exists(os.path.join(report_dir, step["src_a"])):
                 fail(f"picker shows {step['src_a']}, which the report did not write")
+        # The memory section's table: every step of section 3.1 at register level on the memory path.
+        steps = report.get("memory", {}).get("steps", [])
+        if [st["step"] for st in steps] != ["1", "2.1", "2.2", "2.3", "2.4", "2.5", "2.6", "3", "4"]:
+            fail(f"memory steps: {[st['step'] for st in steps]}")
+        for st in steps:
+            shown = dom.cells.get("memory-step-" + st["step"])
+            if shown != [st["memory_path"]] or not st["memory_path"].startswith("register level"):
+                fail(f"memory step {st['step']}: page shows {shown}, report.json says {st['memory_path']!r}")
         want, floats = expected_cells(report, page["passes"], cols, page["palette"], r)
         for key, v in want.items():
             if dom.cells.get(key) != [v]:

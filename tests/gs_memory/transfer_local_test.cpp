@@ -20,16 +20,7 @@ fixed::uint<N> u(std::uint32_t v) {
 }
 std::uint32_t value_mask(psm p) { return value_bits(p) == 32 ? 0xFFFFFFFFu : (1u << value_bits(p)) - 1; }
 
-// The host bytes of pixel i, unpacked by hand (4-bit: low nibble first; 24-bit: 3 bytes).
-std::uint32_t unpack(const std::vector<std::uint8_t>& d, unsigned bits, std::size_t i) {
-  switch (bits) {
-    case 4: return i % 2 == 0 ? d[i / 2] & 0xFu : d[i / 2] >> 4;
-    case 8: return d[i];
-    case 16: return d[2 * i] | d[2 * i + 1] << 8;
-    case 24: return d[3 * i] | d[3 * i + 1] << 8 | d[3 * i + 2] << 16;
-    default: return d[4 * i] | d[4 * i + 1] << 8 | d[4 * i + 2] << 16 | static_cast<std::uint32_t>(d[4 * i + 3]) << 24;
-  }
-}
+using test::unpack;
 
 TEST(GsMemoryTransfer, LocalToHostReturnsThePixelsPacked) {
   std::mt19937 rng(21);

@@ -9,6 +9,7 @@
 #include <random>
 
 #include "pipeline/default_scene.hpp"
+#include "pipeline/memory_picture.hpp"
 #include "pipeline/render.hpp"
 
 namespace gsdot3::pipeline {
@@ -73,6 +74,16 @@ TEST_P(MemoryPath, EqualsTheValueLevelFrameOnRandomScenes) {
     o.threads = threads(rng);
     EXPECT_GT(expect_same(s, ps, GetParam(), o, "trial " + std::to_string(trial)), 200) << "trial " << trial
                                                                                        << ": the head should be in view";
+    // Section 3.4's z-trick (the DPB drawn in PSMZ32, cleared by the ILP pass's Z writes) on the
+    // memory path gives the value-level frame too (every texture_buffer model: each Z write lands on
+    // the word just read).
+    render_options z = o;
+    z.memory_path = true;
+    z.dpb_clear = dpb_clear_mode::z_trick;
+    z.model.tex_buffer = trial % 2 == 0 ? gs::texture_buffer::per_fragment : gs::texture_buffer::quarter_page;
+    o.memory_path = false;
+    const frame a = render(s, ps, GetParam(), o), b = render(s, ps, GetParam(), z);
+    EXPECT_TRUE(a.colour == b.colour && a.dot == b.dot) << "trial " << trial << ": z-trick on the memory path";
   }
 }
 
@@ -108,6 +119,60 @@ TEST_P(MemoryPath, ZBufferClearOfTheDpbEqualsExplicitClears) {
       EXPECT_EQ(f.colour == expl.colour && f.dot == expl.dot, expect_equal)
           << name(mode) << ", texture_buffer " << gs::option_value(o.model, "texture_buffer");
     }
+}
+
+}  // namespace
+}  // namespace gsdot3::pipeline
+
+namespace gsdot3::pipeline {
+namespace {
+
+// The report's DPB pictures: the display is the PSMCT32 words' RGB; the PSMT8 view follows the
+// facts digest's channel-fetch formula (gs-memory-facts.md, "Reading a PSMCT32 buffer as PSMT8"):
+// texel (u, v) of a page is byte c of pixel (x, y) with x = ((u & ~15) >> 1) | (u & 7), x ^= 4 when
+// bit 2 of v differs from bit 1, y = ((v & ~3) >> 1) | (v & 1), c = v & 2 ? (u & 8 ? A : G) : (u & 8 ? B : R).
+TEST(MemoryPicture, DpbPicturesFollowTheChannelFetchFormula) {
+  const int w = 128, h = 64;  // 2 × 2 pages
+  std::vector<pass_record> trace(2);
+  trace[0] = {"2.3 x", 0, "DPB", std::vector<std::uint32_t>(w * h), {}, {}, {}};
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      trace[0].word[static_cast<std::size_t>(y * w + x)] = static_cast<std::uint32_t>(x) | static_cast<std::uint32_t>(y) << 8 |
+                                                           0x40u << 16 | static_cast<std::uint32_t>(x ^ y) << 24;
+  trace[1] = {"2.4 R += G", 0, "DPB", {}, {}, {}, {}};
+  const dpb_pictures p = post_filter_dpb_pictures(trace, w, h, false);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y * w + x) * 3;
+      ASSERT_EQ(p.display.data[i], x);
+      ASSERT_EQ(p.display.data[i + 1], y);
+      ASSERT_EQ(p.display.data[i + 2], 0x40);
+    }
+  ASSERT_EQ(p.as_psmt8.width, 2 * w);
+  for (int v = 0; v < 2 * h; ++v)
+    for (int u = 0; u < 2 * w; ++u) {
+      const int pu = u % 128, pv = v % 64;  // within the PSMT8 page; the page is PSMCT32 page (u / 128, v / 64)
+      int x = ((pu & ~15) >> 1) | (pu & 7);
+      if (((pv >> 2) & 1) != ((pv >> 1) & 1)) x ^= 4;
+      const int y = ((pv & ~3) >> 1) | (pv & 1);
+      const std::uint32_t word = trace[0].word[static_cast<std::size_t>((v / 64 * 32 + y) * w + u / 128 * 64 + x)];
+      const int c = (pv & 2) ? ((pu & 8) ? 3 : 1) : ((pu & 8) ? 2 : 0);
+      ASSERT_EQ(p.as_psmt8.data[static_cast<std::size_t>(v * 2 * w + u)], (word >> (8 * c)) & 0xFF) << "texel (" << u << ", " << v << ")";
+    }
+  EXPECT_THROW(post_filter_dpb_pictures({trace[1]}, w, h, false), std::invalid_argument);
+}
+
+// The memory path's buffers (three 32-bit colour buffers and the Z buffer, each FBW·rows pages)
+// must fit in the 512 pages of the 4 MiB: 512×448 does (4 × 112), 640×512 does not (4 × 160).
+TEST(MemoryPath, FourBuffersMustFitTheFourMebibytes) {
+  scene s = default_scene(64);
+  const prepared_scene ok = prepare(s);
+  render_options o;
+  o.memory_path = true;
+  EXPECT_NO_THROW(render(s, ok, method::two_pass, o));
+  s.width = 640;
+  s.height = 512;
+  EXPECT_THROW(render(s, prepare(s), method::two_pass, o), std::invalid_argument);
 }
 
 }  // namespace

@@ -120,4 +120,15 @@ std::uint64_t encode(const clamp_reg& r) {
          bits(r.MAXV) << 34;
 }
 
+texclut_reg decode_texclut(std::uint64_t v) {
+  fields f("TEXCLUT", v);
+  texclut_reg r;
+  r.CBW = f.uint<6>(0);
+  r.COU = f.uint<6>(6);
+  r.COV = f.uint<10>(12);
+  f.done();
+  return r;
+}
+std::uint64_t encode(const texclut_reg& r) { return bits(r.CBW) | bits(r.COU) << 6 | bits(r.COV) << 12; }
+
 }  // namespace gs::mem

@@ -8,6 +8,7 @@
 //   TRXREG    RRW:12 _:20 RRH:12 _:20
 //   TRXDIR    XDIR:2 _:62           (0 host->local, 1 local->host, 2 local->local, 3 off)
 //   CLAMP_1   WMS:2 WMT:2 MINU:10 MAXU:10 MINV:10 MAXV:10 _:20
+//   TEXCLUT   CBW:6 COU:6 COV:10 _:42 (CSM2's CLUT position: width in 64 pixels, x in 16 pixels, y)
 // Decoding is strict as gs_arith/registers.hpp's: a set padding bit or an unknown PSM throws
 // gs::register_error naming the register and field. encode() is the exact inverse.
 #pragma once
@@ -55,16 +56,24 @@ struct clamp_reg {
   friend constexpr bool operator==(const clamp_reg&, const clamp_reg&) = default;
 };
 
+struct texclut_reg {
+  fixed::uint<6> CBW{}, COU{};
+  fixed::uint<10> COV{};
+  friend constexpr bool operator==(const texclut_reg&, const texclut_reg&) = default;
+};
+
 bitbltbuf_reg decode_bitbltbuf(std::uint64_t v);
 trxpos_reg decode_trxpos(std::uint64_t v);
 trxreg_reg decode_trxreg(std::uint64_t v);
 trxdir_reg decode_trxdir(std::uint64_t v);
 clamp_reg decode_clamp(std::uint64_t v);
+texclut_reg decode_texclut(std::uint64_t v);
 
 std::uint64_t encode(const bitbltbuf_reg& r);
 std::uint64_t encode(const trxpos_reg& r);
 std::uint64_t encode(const trxreg_reg& r);
 std::uint64_t encode(const trxdir_reg& r);
 std::uint64_t encode(const clamp_reg& r);
+std::uint64_t encode(const texclut_reg& r);
 
 }  // namespace gs::mem

@@ -21,8 +21,9 @@
 
 namespace gsdot3::pipeline::detail {
 
-// Step 1's register set: TME = 0, ABE = 0, COLCLAMP = 1.
+// Step 1's register set: TME = 0, ABE = 0, COLCLAMP = 1; the memory path's clears use the same.
 inline constexpr pass_regs step1_ambient{};
+inline constexpr pass_regs clear_sprite{};
 
 // The depth test of the methods (section 3.1): TEST_1.ZTE = 1, ZTST = GEQUAL (larger Z is nearer);
 // ZBUF_1.PSM = PSMZ24 (the prepared Z planes are 24-bit, 0..0xFFFFFF, so Z24 holds them exactly and
@@ -178,15 +179,17 @@ class band_renderer {
     });
   }
 
-  // Fills the band (`whole`) or only the sprite area (where any pass can write) with v.
+  // Fills the band (`whole`) or only the sprite area (where any pass can write) with v: on the value
+  // path directly, on the memory path as the GS clears, a flat sprite (TME = 0, ABE = 0, RGBAQ = v).
   template <class FB>
   void fill(const FB& fb, std::uint32_t v, bool whole = true) {
     const scissor& a = whole ? band_ : sprite_area_;
-    for (int y = a.y0; y < a.y1; ++y)
-      if (a.x0 < a.x1) {
-        if constexpr (std::is_same_v<FB, row_view>) std::fill(&fb(a.x0, y), &fb(a.x0, y) + (a.x1 - a.x0), v);
-        else for (int x = a.x0; x < a.x1; ++x) fb(x, y) = v;
-      }
+    if constexpr (std::is_same_v<FB, row_view>) {
+      for (int y = a.y0; y < a.y1; ++y)
+        if (a.x0 < a.x1) std::fill(&fb(a.x0, y), &fb(a.x0, y) + (a.x1 - a.x0), v);
+    } else {
+      sprite_rect<clear_sprite>(gs::rgba8::from_u32(v), a, [](int, int) { return gs::rgba8{}; }, fb, &a);
+    }
   }
 
   std::size_t index(int x, int y) const { return static_cast<std::size_t>(y) * static_cast<std::size_t>(ps_.width) + static_cast<std::size_t>(x); }

@@ -10,6 +10,7 @@
 
 #include "pipeline/files.hpp"
 #include "pipeline/memory_picture.hpp"
+#include "pipeline/memory_steps.hpp"
 #include "pipeline/report_page.hpp"
 
 namespace gsdot3::pipeline {
@@ -270,6 +271,22 @@ report_summary write_report(const scene& s, const report_request& r) {
   j["options"]["memory_path"] = r.options.memory_path;
   j["options"]["dpb_clear"] = std::string(name(r.options.dpb_clear));
   j["memory"]["pictures"] = {"memory-psmct32-as-psmt8.png", "memory-psmct32-as-psmz32.png"};
+  for (const memory_step& st : memory_steps)
+    j["memory"]["steps"].push_back({{"step", st.step}, {"does", st.does}, {"memory_path", st.memory_path}, {"value_path", st.value_path}});
+  if (4 * ((w + 63) / 64) * ((h + 31) / 32) <= 512) {
+    // The first method's frame rendered again on the memory path with a trace: its DPB as the post
+    // filter of light 0 reads it, displayed as PSMCT32 and read as PSMT8.
+    render_options traced = r.options;
+    traced.memory_path = true;
+    std::vector<pass_record> trace;
+    traced.trace = &trace;
+    render(s, front, sum.methods.front().m, traced);
+    const dpb_pictures dpb = post_filter_dpb_pictures(trace, w, h, traced.dpb_clear == dpb_clear_mode::z_trick);
+    write_png(r.out_dir / "memory-dpb-psmct32.png", dpb.display);
+    write_png(r.out_dir / "memory-dpb-as-psmt8.png", dpb.as_psmt8);
+    j["memory"]["dpb_pictures"] = {{"method", std::string(name(sum.methods.front().m))},
+                                   {"files", {"memory-dpb-psmct32.png", "memory-dpb-as-psmt8.png"}}};
+  }
   if (4 * ((w + 63) / 64) * ((h + 31) / 32) <= 512) {
     render_options other = r.options;
     other.memory_path = !r.options.memory_path;
