@@ -30,20 +30,20 @@ class local_memory {
   }
 
   // The value at a location (up to 32 bits, little-endian from at.byte, starting at bit at.bit).
+  // Every location locate() gives lies inside one 32-bit word (a unit of 4, 8, 16 or 32 bits starts
+  // at a multiple of its size, and the upper formats' bits 24-31 / 24-27 / 28-31 are inside the word),
+  // so read and write work on that word: bits 8·(byte % 4) + bit .. of word byte / 4.
+  // tests/gs_memory/unit_test.cpp checks both against the byte-by-byte little-endian reading on every
+  // location of a page of every format.
   constexpr std::uint32_t read(const location& at) const noexcept {
-    std::uint64_t v = 0;
-    const unsigned n = (at.bit + at.bits + 7) / 8;
-    for (unsigned i = 0; i < n; ++i) v |= std::uint64_t{byte(at.byte + i)} << (8 * i);
-    return static_cast<std::uint32_t>((v >> at.bit) & ((std::uint64_t{1} << at.bits) - 1));
+    const unsigned shift = 8 * (at.byte % 4) + at.bit;
+    return static_cast<std::uint32_t>((std::uint64_t{words_[at.byte % memory_bytes / 4]} >> shift) & ((std::uint64_t{1} << at.bits) - 1));
   }
   constexpr void write(const location& at, std::uint32_t value) noexcept {
-    const unsigned n = (at.bit + at.bits + 7) / 8;
-    const std::uint64_t mask = ((std::uint64_t{1} << at.bits) - 1) << at.bit;
-    const std::uint64_t bits = (std::uint64_t{value} << at.bit) & mask;
-    for (unsigned i = 0; i < n; ++i) {
-      const auto keep = static_cast<std::uint8_t>(byte(at.byte + i) & ~(mask >> (8 * i)));
-      set_byte(at.byte + i, static_cast<std::uint8_t>(keep | (bits >> (8 * i))));
-    }
+    const unsigned shift = 8 * (at.byte % 4) + at.bit;
+    const auto mask = static_cast<std::uint32_t>(((std::uint64_t{1} << at.bits) - 1) << shift);
+    std::uint32_t& w = words_[at.byte % memory_bytes / 4];
+    w = (w & ~mask) | ((value << shift) & mask);
   }
 
   constexpr std::uint32_t read_pixel(const buffer& b, std::uint32_t x, std::uint32_t y) const noexcept {

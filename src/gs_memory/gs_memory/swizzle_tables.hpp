@@ -119,13 +119,29 @@ constexpr std::uint32_t unit_in_block(layout l, std::uint32_t x, std::uint32_t y
 
 // The unit address (in units of unit_bits, from the start of memory) of pixel (x, y) of a buffer at
 // BP (blocks) BW (64-pixel units) wide: PCSX2's `BlockNumber*` then the column table.
+template <layout L>
+constexpr std::uint32_t unit_address_of(std::uint32_t bp, std::uint32_t bw, std::uint32_t x, std::uint32_t y) noexcept {
+  constexpr extent pg = page_size(L);
+  const std::uint32_t block = (bp + (y / pg.h) * pages_per_row(L, bw) * 32 + (x / pg.w) * 32 +
+                               block_in_page(L, x % pg.w, y % pg.h)) % memory_blocks;
+  constexpr std::uint32_t units_per_block = block_bytes * 8 / unit_bits(L);
+  return block * units_per_block + unit_in_block(L, x % pg.w, y % pg.h);
+}
+// The same for a layout known at run time: one instance per layout, so that every page, block and
+// column size is a constant of its instance (powers of two: shifts and masks, not divisions).
 constexpr std::uint32_t unit_address(layout l, std::uint32_t bp, std::uint32_t bw, std::uint32_t x,
                                      std::uint32_t y) noexcept {
-  const extent pg = page_size(l);
-  const std::uint32_t block = (bp + (y / pg.h) * pages_per_row(l, bw) * 32 + (x / pg.w) * 32 +
-                               block_in_page(l, x % pg.w, y % pg.h)) % memory_blocks;
-  const std::uint32_t units_per_block = block_bytes * 8 / unit_bits(l);
-  return block * units_per_block + unit_in_block(l, x % pg.w, y % pg.h);
+  switch (l) {
+    case layout::ct32: return unit_address_of<layout::ct32>(bp, bw, x, y);
+    case layout::z32: return unit_address_of<layout::z32>(bp, bw, x, y);
+    case layout::ct16: return unit_address_of<layout::ct16>(bp, bw, x, y);
+    case layout::ct16s: return unit_address_of<layout::ct16s>(bp, bw, x, y);
+    case layout::z16: return unit_address_of<layout::z16>(bp, bw, x, y);
+    case layout::z16s: return unit_address_of<layout::z16s>(bp, bw, x, y);
+    case layout::t8: return unit_address_of<layout::t8>(bp, bw, x, y);
+    case layout::t4: return unit_address_of<layout::t4>(bp, bw, x, y);
+  }
+  return 0;
 }
 
 }  // namespace gs::mem::tables

@@ -14,6 +14,7 @@
 #include "gs_arith/attribute_setup.hpp"
 #include "gs_arith/depth_test.hpp"
 #include "gs_arith/gouraud.hpp"
+#include "gs_memory/fast_address.hpp"
 #include "gs_memory/swizzle_tables.hpp"
 #include "pipeline/gs_pass.hpp"
 #include "pipeline/pass_table.hpp"
@@ -45,13 +46,17 @@ struct row_view {
     return words[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)];
   }
 };
+// With `address` set (gs_memory's row_column_address of the same layout, equal to unit_address on
+// every pixel: tests/gs_memory/fast_address_test.cpp) the address is looked up, else computed.
 struct memory_view {
   std::uint32_t* words = nullptr;
   std::uint32_t bp = 0, bw = 0;  // blocks, 64-pixel units
   bool z = false;                // the buffer is drawn in PSMZ32 (section 3.4's z-trick modes)
+  const gs::mem::row_column_address* address = nullptr;
+  constexpr gs::mem::layout layout() const noexcept { return z ? gs::mem::layout::z32 : gs::mem::layout::ct32; }
   std::uint32_t& operator()(int x, int y) const noexcept {
-    return words[gs::mem::tables::unit_address(z ? gs::mem::layout::z32 : gs::mem::layout::ct32, bp, bw,
-                                               static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y))];
+    const auto ux = static_cast<std::uint32_t>(x), uy = static_cast<std::uint32_t>(y);
+    return words[address ? address->unit(ux, uy) : gs::mem::tables::unit_address(layout(), bp, bw, ux, uy)];
   }
 };
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <thread>
 #include <utility>
 
 #include "gs_memory/clut_load.hpp"
@@ -114,8 +115,19 @@ void add_uploads(gs::packets::packet_builder& b, const gs_inputs& in) {
   }
 }
 
-gs_inputs upload_inputs(gs::mem::local_memory& m, const gs_inputs& direct, std::uint32_t first) {
+gs_inputs upload_inputs(gs::mem::local_memory& m, const gs_inputs& direct, std::uint32_t first, bool parallel) {
   gs_inputs in = place_inputs(direct, first);
+  auto tables = [&in, &direct] {
+    auto addresses = [](const gs::mem::buffer& b, int w, int h) {
+      return std::make_shared<const gs::mem::texel_addresses>(b.PSM, b.BW.value(), static_cast<std::uint32_t>(w), static_cast<std::uint32_t>(h));
+    };
+    in.nm_texels = addresses(in.nm_at, direct.nm->width, direct.nm->height);
+    if (!direct.sphere.empty()) in.sphere_texels = addresses(in.sphere_at, 64, 64);
+    in.diffuse_texels = addresses(in.diffuse_at, direct.diffuse->width, direct.diffuse->height);
+  };
+  std::jthread helper;  // joins when it goes out of scope, also when an upload below throws
+  if (parallel) helper = std::jthread(tables);
+  else tables();
   gs::packets::packet_builder b;
   add_uploads(b, in);
   const std::vector<std::uint8_t> bytes = b.bytes();
@@ -131,6 +143,7 @@ gs_inputs upload_inputs(gs::mem::local_memory& m, const gs_inputs& direct, std::
     t.CLD = gs::u3::from_wrapped(1);
     *all[k] = gs::mem::load_clut(m, t, {}).buffer;
   }
+  if (helper.joinable()) helper.join();  // before `in` is returned with the helper's tables
   return in;
 }
 

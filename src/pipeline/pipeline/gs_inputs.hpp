@@ -6,10 +6,12 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "gs_arith/clut.hpp"
 #include "gs_memory/address.hpp"
+#include "gs_memory/fast_address.hpp"
 #include "gs_memory/local_memory.hpp"
 #include "gs_packets/builder.hpp"
 #include "pipeline/render.hpp"
@@ -43,6 +45,8 @@ struct gs_inputs {
   // Uploaded (upload_inputs): the memory the texels are read from; the CLUTs above are then the
   // ones TEX0.CLD = 1 loaded back from it.
   const gs::mem::local_memory* memory = nullptr;
+  // and the byte address of every texel of the three textures (gs_memory/fast_address.hpp).
+  std::shared_ptr<const gs::mem::texel_addresses> nm_texels, sphere_texels, diffuse_texels;
 };
 
 // The eight palettes in upload order: pos, neg, axis x, y, z, ilp, grey, alpha_index.
@@ -59,7 +63,8 @@ gs_inputs place_inputs(const gs_inputs& direct, std::uint32_t first);
 // gs::csm1_position(i) of its image.
 void add_uploads(gs::packets::packet_builder& b, const gs_inputs& placed);
 // place_inputs, add_uploads interpreted into m (gs::packets::interpreter), then every palette loaded
-// back from m by TEX0 (PSMT8, CBP, CLD = 1) through gs_memory's load_clut.
-gs_inputs upload_inputs(gs::mem::local_memory& m, const gs_inputs& direct, std::uint32_t first);
+// back from m by TEX0 (PSMT8, CBP, CLD = 1) through gs_memory's load_clut; the textures' texel
+// address tables are built meanwhile on a second thread when `parallel` (they read no memory).
+gs_inputs upload_inputs(gs::mem::local_memory& m, const gs_inputs& direct, std::uint32_t first, bool parallel = false);
 
 }  // namespace gsdot3::pipeline

@@ -17,6 +17,7 @@
 #include "gs_arith/options.hpp"
 #include "gs_arith/pixel_pipeline.hpp"
 #include "gs_arith/registers.hpp"
+#include "gs_memory/fast_address.hpp"
 #include "gs_memory/local_memory.hpp"
 
 namespace gsdot3::pipeline {
@@ -63,9 +64,11 @@ struct texture_ref {
   bool clamp = false;
   gs::bilinear_mode filter = gs::bilinear_mode::nearest;
   // The memory path: the texels read from the modelled local memory at `at` (TBP0, TBW, PSM)
-  // instead of the arrays above (index / texels then only give the kind: CLUT or 32-bit).
+  // instead of the arrays above (index / texels then only give the kind: CLUT or 32-bit), through
+  // the texture's tabulated addresses (gs_memory/fast_address.hpp: read = read_pixel on every texel).
   const gs::mem::local_memory* memory = nullptr;
   gs::mem::buffer at{};
+  const gs::mem::texel_addresses* texel_at = nullptr;
 
   gs::rgba8 fetch(std::int32_t u, std::int32_t v) const noexcept {
     if (clamp) {
@@ -76,7 +79,7 @@ struct texture_ref {
       v &= height - 1;
     }
     if (memory != nullptr) {
-      const std::uint32_t t = memory->read_pixel(at, static_cast<std::uint32_t>(u), static_cast<std::uint32_t>(v));
+      const std::uint32_t t = texel_at->read(*memory, static_cast<std::uint32_t>(u), static_cast<std::uint32_t>(v), at.BP.value());
       return clut != nullptr ? gs::clut_t8(*clut, gs::u8::from_wrapped(t)) : gs::rgba8::from_u32(t);
     }
     const std::size_t i = static_cast<std::size_t>(v) * static_cast<std::size_t>(width) + static_cast<std::size_t>(u);

@@ -16,7 +16,8 @@
 //   textures from 4P on: at 512×448 that is 4 × 112 of the 512 pages, none overlapping. The post
 //   filter, the ILP read and step 4's channel move are gs_memory's channel-fetch sprites (the DPB /
 //   LAB read as a PSMT8 texture, TBW = 2·FBW, TBP0 per page, CLAMP_1 REGION_REPEAT), each texel
-//   through the PSMT8 address function; the two-pass alpha pass reads the DPB as PSMT8H. The copy of
+//   through the PSMT8 address function (tabulated: gs_memory/fast_address.hpp, as are the frame
+//   buffers' and textures' addresses); the two-pass alpha pass reads the DPB as PSMT8H. The copy of
 //   the LAB into the output before step 4 is a local -> local transfer (TRXDIR = 2, copy_lab): the
 //   GS's own copy, no pixel arithmetic, and with SPSM = PSMZ32 it is also the paper's "unswizzle the
 //   LAB" of the z-trick-psmz32 mode. The normal map (PSMT8), the sphere map and the diffuse texture
@@ -81,6 +82,7 @@ struct frame_buffers {
   z_view zb;
   FB lab, dpb, diff, out;
   gs::mem::local_memory* memory = nullptr;  // the memory path's local memory, else null
+  const gs::mem::texel_addresses* page_as_t8 = nullptr;  // the memory path: a page of the DPB / LAB as PSMT8 (BP 0)
   dpb_clear_mode clear = dpb_clear_mode::explicit_clear;
 };
 
@@ -128,6 +130,24 @@ void channel_pass(band_renderer& r, const frame_buffers<memory_view>& fb, gs::rg
   // With the Z clear the ILP sprites cover every page the area touches (the paper's per-page
   // primitives, section 3.3), so that the Z writes clear whole pages.
   const scissor pages{a.x0 & ~63, a.y0 & ~31, (a.x1 + 63) & ~63, (a.y1 + 31) & ~31};
+  // The byte of the page (at TBP0 = 0) each sprite pixel fetches, through CLAMP_1 and the PSMT8
+  // address: sprite k's pixel (dx, dy) at 16·k + 8·dy + dx. The sprites and their texels are the
+  // same on every page, which only moves TBP0 (texel_addresses::byte adds it).
+  static_assert([] {
+    for (const gs::mem::channel_fetch& c : layout)
+      for (const gs::mem::fetch_sprite& sp : c.sprites)
+        if (sp.x1 - sp.x0 != 8 || sp.y1 - sp.y0 != 2) return false;
+    return true;
+  }());
+  std::array<std::uint32_t, 16 * 128> fetched{};
+  for (std::size_t k = 0; k < f.sprites.size(); ++k)
+    for (std::int32_t dy = 0; dy < 2; ++dy)
+      for (std::int32_t dx = 0; dx < 8; ++dx) {
+        const gs::mem::fetch_sprite& sp = f.sprites[k];
+        const auto u = gs::mem::wrap_texel(f.CLAMP.WMS, sp.u0 + dx, fixed::u4::literal(7), f.CLAMP.MINU, f.CLAMP.MAXU);
+        const auto v = gs::mem::wrap_texel(f.CLAMP.WMT, sp.v0 + dy, fixed::u4::literal(6), f.CLAMP.MINV, f.CLAMP.MAXV);
+        fetched[16 * k + static_cast<std::size_t>(8 * dy + dx)] = fb.page_as_t8->byte(u, v, 0);
+      }
   for (int py = a.y0 / 32; py * 32 < a.y1; ++py)
     for (int px = a.x0 / 64; px * 64 < a.x1; ++px) {
       const std::uint32_t page = static_cast<std::uint32_t>(px) + static_cast<std::uint32_t>(py) * src.bw;
@@ -135,18 +155,17 @@ void channel_pass(band_renderer& r, const frame_buffers<memory_view>& fb, gs::rg
                                 gs::mem::psm::PSMT8};
       gs::mem::texture_page_buffer texels(buffered ? tb : gs::texture_buffer::per_fragment, mem, (src.bp + 32 * page) * 256,
                                           gs::mem::page_bytes);
-      for (const gs::mem::fetch_sprite& sp : f.sprites) {
+      for (std::size_t k = 0; k < f.sprites.size(); ++k) {
+        const gs::mem::fetch_sprite& sp = f.sprites[k];
+        const std::uint32_t* sprite_texels = &fetched[16 * k];
         const int mx = px * 64 + static_cast<int>(sp.x0), my = py * 32 + static_cast<int>(sp.y0);  // PSMCT32 pixel fetched
         const std::array<int, 2> drawn = src.z ? zsigma(mx, my) : std::array<int, 2>{mx, my};   // where it is drawn
         const int x0 = drawn[0], y0 = drawn[1];  // plain ints: clang 14 cannot capture structured bindings
         const int w = static_cast<int>(sp.x1 - sp.x0), h = static_cast<int>(sp.y1 - sp.y0);
         r.sprite_rect<Pass>(colour, {x0, y0, x0 + w, y0 + h},
                             [&](int x, int y) {
-                              const auto u = gs::mem::wrap_texel(f.CLAMP.WMS, sp.u0 + (x - x0), fixed::u4::literal(7),
-                                                                 f.CLAMP.MINU, f.CLAMP.MAXU);
-                              const auto v = gs::mem::wrap_texel(f.CLAMP.WMT, sp.v0 + (y - y0), fixed::u4::literal(6),
-                                                                 f.CLAMP.MINV, f.CLAMP.MAXV);
-                              const std::uint8_t index = texels.fetch(gs::mem::locate(tex, u, v).byte);
+                              const std::uint32_t at = sprite_texels[8 * (y - y0) + (x - x0)] + tex.BP.value() * gs::mem::block_bytes;
+                              const std::uint8_t index = texels.fetch(at % gs::mem::memory_bytes);
                               if (z_clear) {  // ZBUF = the DPB (PSMZ24), Z = 0x00808080, ZTST = ALWAYS
                                 const auto zx = static_cast<std::uint32_t>(x), zy = static_cast<std::uint32_t>(y);
                                 const gs::depth_result d = gs::depth_test(depth_always, z_written, clear_dpb, mem.read_pixel(zbuf, zx, zy));
@@ -205,7 +224,7 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
 
   const gs::bilinear_mode filter = o.bilinear ? o.model.bilinear : gs::bilinear_mode::nearest;
   auto nm_texture = [&](const gs::clut_buffer& clut) {
-    return texture_ref{in.nm->width, in.nm->height, in.nm->index.data(), &clut, nullptr, false, filter, in.memory, in.nm_at};
+    return texture_ref{in.nm->width, in.nm->height, in.nm->index.data(), &clut, nullptr, false, filter, in.memory, in.nm_at, in.nm_texels.get()};
   };
   auto flat_white = [&](std::uint32_t) { return white; };
 
@@ -251,7 +270,8 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
         const auto pass1 = attributes(
             ps, [&](std::uint32_t v) { return four_pass_sphere_colour(lv[v]); },
             [&](const prepared_triangle& t, int k) { return sphere_uv(lv[t.vertex[static_cast<std::size_t>(k)]]); });
-        const texture_ref sphere{64, 64, nullptr, nullptr, in.sphere.data(), true, gs::bilinear_mode::nearest, in.memory, in.sphere_at};
+        const texture_ref sphere{64, 64, nullptr, nullptr, in.sphere.data(), true, gs::bilinear_mode::nearest, in.memory, in.sphere_at,
+                                 in.sphere_texels.get()};
         r.draw<four_pass_sphere>(&sphere, pass1, fb.dpb);
         note("2.3 sphere map · fade (HIGHLIGHT)", li, "DPB", fb.dpb);
         const auto attr = attributes(ps, flat_white, normal_map_uv);
@@ -302,7 +322,7 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
   // Step 3: the unlit diffuse layer.
   r.fill(fb.diff, 0, false);
   const texture_ref diffuse{in.diffuse->width, in.diffuse->height, nullptr, nullptr, in.diffuse->texels.data(), false, filter,
-                            in.memory, in.diffuse_at};
+                            in.memory, in.diffuse_at, in.diffuse_texels.get()};
   r.draw<diffuse_layer>(&diffuse, attributes(ps, flat_white, normal_map_uv), fb.diff);
   note("3 diffuse layer", -1, "diffuse", fb.diff);
 
@@ -396,9 +416,16 @@ frame render(const scene& s, const prepared_scene& ps, method m, const render_op
     fb.zb.in_memory = true;
     fb.dpb.z = o.dpb_clear == dpb_clear_mode::z_trick;
     fb.lab.z = o.dpb_clear == dpb_clear_mode::z_trick_psmz32;
+    // The inner loops' addresses tabulated over whole pages (gs_memory/fast_address.hpp).
+    const gs::mem::texel_addresses page_as_t8(gs::mem::psm::PSMT8, 2 * fbw, 128, 64);  // channel_pass's TBW
+    fb.page_as_t8 = &page_as_t8;
+    std::vector<gs::mem::row_column_address> addresses;
+    addresses.reserve(5);
+    for (memory_view* v : {&fb.dpb, &fb.lab, &fb.diff, &fb.out, &fb.zb.memory})
+      v->address = &addresses.emplace_back(v->layout(), v->bp, v->bw, 64 * fbw, 32 * static_cast<std::uint32_t>((ps.height + 31) / 32));
     render_options one = o;
     if (o.dpb_clear != dpb_clear_mode::explicit_clear) one.threads = 1;  // draw order is the model's
-    render_bands(s, ps, m, one, upload_inputs(memory, in, layout.first_texture_block()), fb, result);
+    render_bands(s, ps, m, one, upload_inputs(memory, in, layout.first_texture_block(), one.threads > 1), fb, result);
   } else {
     std::vector<std::uint32_t> rows(4 * n, 0);  // value level: DPB, LAB, diffuse, output, frame-sized each
     frame_buffers<row_view> fb;
