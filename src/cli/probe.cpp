@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "output_file.hpp"
 #include "gs_packets/dump.hpp"
 #include "pipeline/files.hpp"
 #include "pipeline/image_io.hpp"
@@ -107,24 +108,12 @@ pr::rgb_frame read_screenshot(const std::string& file) {
   return f;
 }
 
-void write_text_atomically(const std::string& file, const std::string& text) {
-  const std::string tmp = file + ".tmp";
-  {
-    std::ofstream f(tmp, std::ios::binary);
-    f << text;
-    if (!f.flush()) throw usage_error("--out: cannot write '" + tmp + "'");
-  }
-  std::error_code ec;
-  std::filesystem::rename(tmp, file, ec);
-  if (ec) throw usage_error("--out: cannot rename to '" + file + "': " + ec.message());
-}
-
 int run_decode(const decode_args& a) {
   const pr::rgb_frame shot = read_screenshot(a.shot);
   const std::vector<pr::verdict> v = pr::decode(shot);
   std::cout << pr::format_verdicts(v);
   if (!a.out.empty()) {
-    write_text_atomically(a.out, pr::write_recording(shot, v));
+    write_output(a.out, pr::write_recording(shot, v), "--out");
     std::cerr << "gsdot3 probe decode: wrote the recording " << a.out << " (check it with gsdot3 vectors ver)\n";
   }
   for (const pr::verdict& x : v)

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "output_file.hpp"
 #include "gs_arith/options.hpp"
 #include "gs_arith/profiles.hpp"
 #include "proofs/claim.hpp"
@@ -39,15 +40,7 @@ void emit(const std::string& text, const std::string& output) {
     std::cout << text;
     return;
   }
-  const std::string tmp = output + ".tmp";
-  {
-    std::ofstream f(tmp, std::ios::binary);
-    f << text;
-    if (!f.flush()) throw usage_error("--output: cannot write '" + tmp + "'");
-  }
-  std::error_code ec;
-  std::filesystem::rename(tmp, output, ec);
-  if (ec) throw usage_error("--output: cannot rename to '" + output + "': " + ec.message());
+  write_output(output, text, "--output");
 }
 
 std::string ledger_as(const std::vector<proofs::claim_result>& results, const prove_args& a) {

@@ -14,6 +14,7 @@
 #include <glm/geometric.hpp>
 
 #include "commands.hpp"
+#include "output_file.hpp"
 #include "pipeline/files.hpp"
 #include "pipeline/normal_map.hpp"
 #include "powervr/texture.hpp"
@@ -54,17 +55,6 @@ input_normals read_input(const pvr_bump_args& a) {
   return n;
 }
 
-void write_atomically(const std::filesystem::path& file, const std::vector<std::uint8_t>& bytes) {
-  const std::filesystem::path tmp = file.string() + ".tmp";
-  {
-    std::ofstream f(tmp, std::ios::binary);
-    if (!f) throw usage_error(file.string() + ": cannot write");
-    f.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
-    if (!f.flush()) throw usage_error(file.string() + ": write failed");
-  }
-  std::filesystem::rename(tmp, file);
-}
-
 void run_pvr_bump(const pvr_bump_args& a) {
   if (a.strength <= 0.0f || !std::isfinite(a.strength)) throw usage_error("--strength must be a positive number");
   const auto rounding = a.rounding == "nearest" ? pvr::texel_rounding::nearest : pvr::texel_rounding::kallistios;
@@ -80,7 +70,7 @@ void run_pvr_bump(const pvr_bump_args& a) {
     const glm::dvec3 d = pvr::decode_normal(t, rounding == pvr::texel_rounding::kallistios ? pvr::azimuth_scale::flycast_255 : scale);
     for (int c = 0; c < 3; ++c) preview.data.push_back(static_cast<std::uint8_t>(std::lround(d[c] * 127.5 + 127.5)));
   }
-  write_atomically(a.out, raw);
+  write_output(a.out, std::string_view(reinterpret_cast<const char*>(raw.data()), raw.size()), "--out");
   const std::string pv = a.preview.empty() ? a.out + ".preview.png" : a.preview;
   try {
     pipeline::write_png(pv, preview);

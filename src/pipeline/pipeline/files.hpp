@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <string_view>
 #include <vector>
 
 #include "pipeline/scene.hpp"
@@ -21,6 +22,10 @@ struct image {
   std::vector<std::uint8_t> data;
 };
 void write_png(const std::filesystem::path& file, const image& img);
+
+// Writes `bytes` to FILE.tmp and renames it to FILE, so a reader never sees half a file; throws
+// std::runtime_error "FILE: why" (the temporary is removed) when either step fails.
+void write_file_atomically(const std::filesystem::path& file, std::string_view bytes);
 
 // The texels of an 8-bit PNG texture (power-of-two sides 8..1024, as the loaders above check): RGB
 // (alpha stripped), or grey when `grey` is set and the file is grey. Used by `gsdot3 pvr-bump`.

@@ -118,17 +118,6 @@ nlohmann::json to_json(const error_stats& s) {
           {"within_1", s.within_1}, {"wrap_errors", s.wraps}};
 }
 
-void write_text(const std::filesystem::path& file, const std::string& text) {
-  const std::filesystem::path tmp = file.string() + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary);
-    out << text;
-    out.flush();
-    if (!out) throw std::runtime_error(tmp.string() + ": cannot write");
-  }
-  std::filesystem::rename(tmp, file);
-}
-
 }  // namespace
 
 error_stats compare(const std::vector<std::vector<std::uint8_t>>& dot, const std::vector<std::vector<float>>& ref) {
@@ -297,7 +286,7 @@ report_summary write_report(const scene& s, const report_request& r) {
           f.colour == frames[k].colour && f.dot == frames[k].dot;
     }
   }
-  write_text(sum.json, j.dump(2) + "\n");
+  write_file_atomically(sum.json, j.dump(2) + "\n");
   if (r.write_html) {
     say("writing the page and the inspector's per-pixel data");
     page.report_json = j.dump(2);

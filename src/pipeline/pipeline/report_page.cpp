@@ -15,6 +15,7 @@
 #include <zlib.h>
 
 #include "gs_arith/bilinear.hpp"
+#include "pipeline/files.hpp"
 #include "pipeline/pixel_walk.hpp"
 #include "proofs/claim.hpp"
 
@@ -161,17 +162,6 @@ class columns {
   nlohmann::json meta_ = nlohmann::json::array();
 };
 
-void write_atomically(const std::filesystem::path& file, const std::string& text) {
-  const std::filesystem::path tmp = file.string() + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary);
-    out << text;
-    out.flush();
-    if (!out) throw std::runtime_error(tmp.string() + ": cannot write");
-  }
-  std::filesystem::rename(tmp, file);
-}
-
 // JSON text safe inside <script>: "</" cannot end the element.
 std::string script_json(const std::string& json) {
   std::string out;
@@ -288,7 +278,7 @@ page_files write_report_page(const std::filesystem::path& dir, const page_inputs
     nlohmann::json passes;
     const columns c = pixel_columns(in, passes);
     page["passes"] = passes;
-    write_atomically(files.pixels, c.script());
+    write_file_atomically(files.pixels, c.script());
     files.pixels_bytes = fs::file_size(files.pixels);
     page["pixels_file"] = files.pixels.filename().string();
   }
@@ -300,7 +290,7 @@ page_files write_report_page(const std::filesystem::path& dir, const page_inputs
   };
   put("/*GSDOT3_REPORT_JSON*/", script_json(in.report_json));
   put("/*GSDOT3_PAGE_JSON*/", script_json(page.dump()));
-  write_atomically(files.html, html);
+  write_file_atomically(files.html, html);
   files.html_bytes = fs::file_size(files.html);
   return files;
 }
