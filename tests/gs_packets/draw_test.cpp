@@ -364,6 +364,11 @@ TEST(Draw, UnmodelledFeaturesAreNamedAndSkipped) {
       {{{TEX0_1, std::uint64_t{4} << 26 | std::uint64_t{4} << 30}, {TEX1_1, 1 | 1 << 2 | 2 << 6 | std::uint64_t{16} << 32},
         {PRIM, SPRITE | TME | FST}, {XYZ2, xyz(0, 0)}, {XYZ2, xyz(32, 32)}},
        "SPRITE: context 1 mip-mapping (TEX1.MMIN = 2, MXL = 1)"},
+      // ST/Q texturing (FST = 0) with Q = 0.0 (RGBAQ bits 32-63) and S = T = 1.0: S/Q is not a number the
+      // model can sample at (the fuzzer's regression-stq-nan); TEX1.LCM = 1 so the LOD needs no Q.
+      {{{TEX0_1, std::uint64_t{4} << 26 | std::uint64_t{4} << 30}, {TEX1_1, 1}, {PRIM, SPRITE | TME}, {RGBAQ, 0x80808080},
+        {0x02, 0x3F800000 | std::uint64_t{0x3F800000} << 32}, {XYZ2, xyz(0, 0)}, {XYZ2, xyz(32, 32)}},
+       "SPRITE: PRIM.FST = 0 with S/Q or T/Q not a finite number (Q = 0, or a NaN / infinite S, T or Q)"},
   };
   for (const named& c : cases) {
     mem::local_memory m;

@@ -130,8 +130,14 @@ std::string decode(const draw_registers& r, std::span<const vertex> v, decoded& 
   if (d.scanmsk == 1) return "SCANMSK.MSK = 1 (reserved)";
   if (!p.TME) return {};
   if (!p.FST)
-    for (const vertex& x : v)
+    for (const vertex& x : v) {
       if (x.Q != v[0].Q) return "PRIM.FST = 0 with differing Q (perspective-correct ST/Q texturing)";
+      // S/Q and T/Q must be numbers: the GS's own float unit has no NaN or infinity (a NaN, an
+      // infinite S, T or Q, or Q = 0 would need that unit's rules, which the model lacks).
+      const double q = as_float(x.Q), s = as_float(x.S), t = as_float(x.T);
+      if (!std::isfinite(s / q) || !std::isfinite(t / q))
+        return "PRIM.FST = 0 with S/Q or T/Q not a finite number (Q = 0, or a NaN / infinite S, T or Q)";
+    }
   if (const auto e = texture_filter(r, d, v, d.linear); !e.empty()) return ctx + e;
   return {};
 }
@@ -168,6 +174,7 @@ rgba8 texel_colour(const decoded& d, const clut_buffer& clut, std::uint32_t t) {
 // 12.4 texel coordinates of a vertex: UV with FST = 1, else S/Q·2^TW and T/Q·2^TH (one Q per primitive,
 // so this is exact affine texturing; the conversion floors, a model choice).
 std::array<std::int32_t, 2> texel_position(const decoded& d, const vertex& x) {
+  if (!d.regs.PRIM.TME) return {0, 0};  // no texture: the coordinates are not used (nor checked)
   if (d.regs.PRIM.FST) return {x.U & 0x3FFF, x.V & 0x3FFF};
   const double q = as_float(x.Q);
   auto fix = [&](std::uint32_t st, unsigned size_log2) {
