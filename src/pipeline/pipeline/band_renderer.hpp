@@ -23,15 +23,6 @@
 
 namespace gsdot3::pipeline::detail {
 
-// The depth test of the methods (section 3.1): TEST_1.ZTE = 1, ZTST = GEQUAL (larger Z is nearer);
-// ZBUF_1.PSM = PSMZ24 (the prepared Z planes are 24-bit, 0..0xFFFFFF, so Z24 holds them exactly and
-// the clamp never acts; the layout is PSMZ32's), ZMSK = 0 in step 1 (Z written), 1 in every later pass.
-// The Z clear before step 1 is a sprite with Z = 0 and ZTST = ALWAYS.
-inline constexpr gs::test_reg depth_gequal{false, gs::atst::NEVER, {}, gs::afail::KEEP, false, false, true, gs::ztst::GEQUAL};
-inline constexpr gs::test_reg depth_always{false, gs::atst::NEVER, {}, gs::afail::KEEP, false, false, true, gs::ztst::ALWAYS};
-inline constexpr gs::zbuf_reg z_written{{}, gs::zbuf_psm::PSMZ24, false};
-inline constexpr gs::zbuf_reg z_masked{{}, gs::zbuf_psm::PSMZ24, true};
-
 // Per-triangle attributes of one pass: the Gouraud plane and the UV planes (gs::setup_attributes).
 using tri_attr = gs::triangle_attributes;
 
@@ -93,7 +84,7 @@ class band_renderer {
     fill(lab, 0);
     for (int y = band_.y0; y < band_.y1; ++y)
       for (int x = band_.x0; x < band_.x1; ++x) {
-        const gs::depth_result d = gs::depth_test(depth_always, z_written, 0, z_.read(x, y));
+        const gs::depth_result d = gs::depth_test(passes::depth_always, passes::z_written, 0, z_.read(x, y));
         if (d.write_z) z_.write(x, y, d.z);
         visible_[index(x, y)] = -1;
       }
@@ -103,7 +94,7 @@ class band_renderer {
       const prepared_triangle& tri = ps_.triangles[t];
       rasterise_triangle(tri.setup, band_, [&](int x, int y) {
         const std::size_t i = index(x, y);
-        const gs::depth_result d = gs::depth_test(depth_gequal, z_written, static_cast<std::uint32_t>(tri.z.at(x, y)), z_.read(x, y));
+        const gs::depth_result d = gs::depth_test(passes::depth_gequal, passes::z_written, static_cast<std::uint32_t>(tri.z.at(x, y)), z_.read(x, y));
         if (!d.pass) return;
         if (d.write_z) z_.write(x, y, d.z);
         visible_[i] = static_cast<std::int32_t>(t);
@@ -217,7 +208,7 @@ class band_renderer {
  private:
   // The depth test of every pass after step 1 (GEQUAL, ZMSK = 1: Z is only read).
   bool passes_later_depth_test(const prepared_triangle& tri, int x, int y) const noexcept {
-    return gs::depth_test(depth_gequal, z_masked, static_cast<std::uint32_t>(tri.z.at(x, y)), z_.read(x, y)).pass;
+    return gs::depth_test(passes::depth_gequal, passes::z_masked, static_cast<std::uint32_t>(tri.z.at(x, y)), z_.read(x, y)).pass;
   }
 
   const prepared_scene& ps_;

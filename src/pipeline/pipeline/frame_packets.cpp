@@ -36,7 +36,9 @@ constexpr std::uint64_t scissor_reg(const scissor& r) {
   return static_cast<std::uint64_t>(r.x0) | (static_cast<std::uint64_t>(r.x1 - 1) << 16) |
          (static_cast<std::uint64_t>(r.y0) << 32) | (static_cast<std::uint64_t>(r.y1 - 1) << 48);
 }
-constexpr std::uint64_t zbuf(std::uint32_t zbp, bool zmsk) { return zbp | (std::uint64_t{0x31 & 0xF} << 24) | (std::uint64_t{zmsk} << 32); }
+constexpr std::uint64_t zbuf(std::uint32_t zbp, const gs::zbuf_reg& z) {
+  return zbp | (std::uint64_t{static_cast<std::uint8_t>(z.PSM)} << 24) | (std::uint64_t{z.ZMSK} << 32);
+}
 // LCM = 1 (LOD = K = 0: the base level), MXL = 0, MMAG = MMIN = the filter.
 constexpr std::uint64_t tex1(bool linear) { return 1u | (std::uint64_t{linear} << 5) | (std::uint64_t{linear} << 6); }
 
@@ -73,12 +75,10 @@ class stream {
     set(address("ALPHA_1"), gs::encode(p.ALPHA));
     set(address("COLCLAMP"), gs::encode(gs::colclamp_reg{p.CLAMP}));
   }
-  void depth(gs::ztst t, bool zmsk) {
-    gs::test_reg test;
-    test.ZTE = true;
-    test.ZTST = t;
+  // TEST_1 and ZBUF_1 of a pass (pass_table.hpp's depth settings), the Z buffer at ZBP = 3P.
+  void depth(const gs::test_reg& test, const gs::zbuf_reg& z) {
     set(address("TEST_1"), gs::encode(test));
-    set(address("ZBUF_1"), zbuf(3 * b_.pages, zmsk));
+    set(address("ZBUF_1"), zbuf(3 * b_.pages, z));
   }
   void clip(const scissor& r) { set(address("SCISSOR_1"), scissor_reg(r)); }
   // TEX0_1 (with the pass's TFX / TCC), TEX1_1, CLAMP_1.
@@ -233,12 +233,12 @@ frame_packets build_frame_packets(const scene& s, const prepared_scene& ps, meth
   add_uploads(g.out, in);
   g.texflush();
   // 3. Clears over the frame.
-  g.depth(gs::ztst::ALWAYS, true);
+  g.depth(depth_always, z_masked);
   g.target(DPB, step1_ambient);
   g.frame_sprite(step1_ambient, gs::rgba8::from_u32(clear_dpb));
   g.target(LAB, step1_ambient);
   g.frame_sprite(step1_ambient, gs::rgba8{});
-  g.depth(gs::ztst::ALWAYS, false);
+  g.depth(depth_always, z_written);
   pass_regs z_only = step1_ambient;
   z_only.FBMSK = 0xFFFFFFFFu;
   g.target(OUT, z_only);
@@ -247,7 +247,7 @@ frame_packets build_frame_packets(const scene& s, const prepared_scene& ps, meth
   // 4. Step 1: Z and ambient.
   const auto nm_uv = [](const prepared_triangle& t, int k) { return normal_map_uv(t, k); };
   const gs::rgba8 ambient = rgb(s.ambient[0], s.ambient[1], s.ambient[2], 0x80);
-  g.depth(gs::ztst::GEQUAL, false);
+  g.depth(depth_gequal, z_written);
   g.target(LAB, step1_ambient);
   g.triangles(step1_ambient, false, [&](const prepared_triangle&, int) { return ambient; }, nm_uv);
 
@@ -263,11 +263,11 @@ frame_packets build_frame_packets(const scene& s, const prepared_scene& ps, meth
     auto at = [&](const prepared_triangle& t, int k) -> const light_vertex& { return lv[t.vertex[static_cast<std::size_t>(k)]]; };
     // 2.1: the DPB cleared over the sprite area.
     g.clip(area);
-    g.depth(gs::ztst::ALWAYS, true);
+    g.depth(depth_always, z_masked);
     g.target(DPB, step1_ambient);
     g.area_sprite(step1_ambient, gs::rgba8::from_u32(clear_dpb));
     g.clip(g.frame());
-    g.depth(gs::ztst::GEQUAL, true);
+    g.depth(depth_gequal, z_masked);
     auto draw = [&](const pass_regs& p, auto&& colour, auto&& uv) {
       g.target(DPB, p);
       g.triangles(p, true, colour, uv);
@@ -281,7 +281,7 @@ frame_packets build_frame_packets(const scene& s, const prepared_scene& ps, meth
         draw(two_pass_negative, c, nm_uv);
         // 2.4a: the DPB read as PSMT8H through the grey CLUT, 1:1.
         g.clip(area);
-        g.depth(gs::ztst::ALWAYS, true);
+        g.depth(depth_always, z_masked);
         g.texflush();
         gs::mem::buffer t8h = buffer(DPB);
         t8h.PSM = gs::mem::psm::PSMT8H;
@@ -318,7 +318,7 @@ frame_packets build_frame_packets(const scene& s, const prepared_scene& ps, meth
     }
     // 2.4: R += G, R += B; 2.5, 2.6: ILP[sum] × light colour added into the LAB.
     g.clip(area);
-    g.depth(gs::ztst::ALWAYS, true);
+    g.depth(depth_always, z_masked);
     g.target(DPB, post_add_into_red);
     for (unsigned c : {1u, 2u}) {
       g.texflush();
@@ -332,11 +332,11 @@ frame_packets build_frame_packets(const scene& s, const prepared_scene& ps, meth
 
   // Step 3: the diffuse layer.
   g.clip(area);
-  g.depth(gs::ztst::ALWAYS, true);
+  g.depth(depth_always, z_masked);
   g.target(DIFF, step1_ambient);
   g.area_sprite(step1_ambient, gs::rgba8{});
   g.clip(g.frame());
-  g.depth(gs::ztst::GEQUAL, true);
+  g.depth(depth_gequal, z_masked);
   g.texture(diffuse_layer, in.diffuse_at, in.diffuse->width, in.diffuse->height, std::nullopt, false, linear);
   g.target(DIFF, diffuse_layer);
   g.triangles(diffuse_layer, true, white_vertex, nm_uv);
@@ -344,7 +344,7 @@ frame_packets build_frame_packets(const scene& s, const prepared_scene& ps, meth
   // Step 4: the output cleared over the frame (the Z buffer shared its pages: no Z is read from
   // here on), the LAB copied into it; per channel the LAB byte moved into the output's alpha, then
   // diffuse × alpha into that channel.
-  g.depth(gs::ztst::ALWAYS, true);
+  g.depth(depth_always, z_masked);
   g.target(OUT, step1_ambient);
   g.frame_sprite(step1_ambient, gs::rgba8{});
   g.clip(area);

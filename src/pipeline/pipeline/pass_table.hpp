@@ -11,6 +11,7 @@
 #include <cstdint>
 
 #include "gs_arith/colour.hpp"
+#include "gs_arith/depth_test.hpp"
 #include "pipeline/encoders.hpp"
 #include "pipeline/gs_pass.hpp"
 #include "pipeline/prepare.hpp"
@@ -19,6 +20,16 @@ namespace gsdot3::pipeline::passes {
 
 using gs::blend_alpha;
 using gs::blend_colour;
+
+// The depth test of the methods (section 3.1): TEST_1.ZTE = 1, ZTST = GEQUAL (larger Z is nearer);
+// ZBUF_1.PSM = PSMZ24 (the prepared Z planes are 24-bit, 0..0xFFFFFF, so Z24 holds them exactly and
+// the clamp never acts; the layout is PSMZ32's), ZMSK = 0 in step 1 (Z written), 1 in every later pass.
+// The Z clear before step 1 is a sprite with Z = 0 and ZTST = ALWAYS. frame_packets.cpp writes
+// these as TEST_1 and ZBUF_1.
+inline constexpr gs::test_reg depth_gequal{false, gs::atst::NEVER, {}, gs::afail::KEEP, false, false, true, gs::ztst::GEQUAL};
+inline constexpr gs::test_reg depth_always{false, gs::atst::NEVER, {}, gs::afail::KEEP, false, false, true, gs::ztst::ALWAYS};
+inline constexpr gs::zbuf_reg z_written{{}, gs::zbuf_psm::PSMZ24, false};
+inline constexpr gs::zbuf_reg z_masked{{}, gs::zbuf_psm::PSMZ24, true};
 
 inline constexpr std::uint32_t clear_dpb = 0x00808080u;        // step 2.1
 inline constexpr std::uint32_t keep_alpha = 0xFF000000u;       // FBMSK: write RGB only

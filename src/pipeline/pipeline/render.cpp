@@ -168,7 +168,7 @@ void channel_pass(band_renderer& r, const frame_buffers<memory_view>& fb, gs::rg
                               const std::uint8_t index = texels.fetch(at % gs::mem::memory_bytes);
                               if (z_clear) {  // ZBUF = the DPB (PSMZ24), Z = 0x00808080, ZTST = ALWAYS
                                 const auto zx = static_cast<std::uint32_t>(x), zy = static_cast<std::uint32_t>(y);
-                                const gs::depth_result d = gs::depth_test(depth_always, z_written, clear_dpb, mem.read_pixel(zbuf, zx, zy));
+                                const gs::depth_result d = gs::depth_test(passes::depth_always, passes::z_written, clear_dpb, mem.read_pixel(zbuf, zx, zy));
                                 if (d.write_z) mem.write_pixel(zbuf, zx, zy, d.z);
                               }
                               return gs::clut_t8(clut, gs::u8::from_wrapped(index));
