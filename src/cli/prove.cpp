@@ -158,8 +158,14 @@ void add_prove_command(CLI::App& app, context& ctx) {
                   "partial ledger (needs one --claim and --json; combine the N parts with `prove merge`)");
   cmd->add_option("-o,--output", args->output, "Write the ledger to FILE (atomically) instead of stdout");
   cmd->add_flag("--brute-force", args->brute_force,
-                "Claims with a direct enumeration beside their reduction run it instead (two-pass.max-s.interpolated: "
-                "2^24 full-size lattice triangle cases; split it with --shard)");
+                "Claims with a direct enumeration beside their reduction run it instead. two-pass.max-s.interpolated: "
+                "the bound's per-channel statements (proofs/triangle_brute_force.hpp), for every channel c and both wrap "
+                "sides sigma, exact against the rational plane P_c; a channel is aligned on an axis where sigma times its "
+                "exact gradient is < 0, p = r + (a, b) from the reference pixel r: (A) sigma*L_c(p) < sigma*P_c(p) + W where the channel is aligned on at most one axis, (B) < "
+                "sigma*P_c(p) + 1 + a + b and (C) < sigma*P_c(w) + W where it is aligned on both, and the bound's point w "
+                "in the closed triangle; at every pixel centre of 2^24 cases (8x8-lattice triangles of the full 2048^2 "
+                "window x ordered triples of 4 lights of L_122) in 65536 chunks: a cluster run, split it with --shard "
+                "(its cases do not depend on the model options: add --no-variants to check them once)");
   auto* merge = cmd->add_subcommand("merge", "Combine the partial ledgers of `prove --claim ID --shard K/N --json` (K = 0..N-1) into the ledger of the unsplit run");
   merge->add_option("parts", args->parts, "Partial ledger files, one per shard, any order")->check(CLI::ExistingFile);
   merge->allow_extras();  // the second and later PARTS (every option takes one value, main.cpp)

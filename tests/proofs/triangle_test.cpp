@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <limits>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "pipeline/band_renderer.hpp"
@@ -17,6 +18,7 @@
 #include "pipeline/raster.hpp"
 #include "proofs/domains.hpp"
 #include "proofs/two_pass.hpp"
+#include "proofs/triangle_brute_force.hpp"
 #include "proofs/two_pass_triangle.hpp"
 #include "reference.hpp"
 
@@ -170,80 +172,121 @@ TEST(Triangle, ErrorBoundHoldsOnRandomFullSizeTriangles) {
 }
 
 namespace {
-// The channel statements behind (i) and (ii) of two_pass_triangle.hpp, for both wrap-side signs σ
-// of every channel, in exact integers (×|det|, or ×den for the plane point w = X + (num/den)·(Y − X)):
-//   not aligned on both axes:  σ·(L_c − P_c(p)) < W;
-//   aligned on both:           σ·L_c < σ·P_c(w) + W, with w built here from the geometry alone (the
-//                              least t of {0, 1, t0, t1} with w <= p, else w = p and then also
-//                              a + b < max(a_Y, b_X)).
-// Summing them with weights |n_c| gives (i) and (ii) for every normal. Returns the pixels checked.
+// The channel statements behind (i)–(iii) of two_pass_triangle.hpp, for both wrap-side signs σ of
+// every channel, in exact integers (×|det|, or ×den for the plane point w = X + (num/den)·(Y − X),
+// tt::point_w: the one construction of w, shared with the brute force):
+//   (A) not aligned on both axes:  σ·(L_c − P_c(p)) < W;
+//   (B) aligned on both:           σ·(L_c − P_c(p)) < 1 + a + b;
+//   (C) aligned on both:           σ·L_c < σ·P_c(w) + W (w = p: then also a + b < max(a_Y, b_X)),
+// and w in the closed triangle. Summing them with weights |n_c| gives (i)–(iii) for every normal.
+// Written apart from proofs/triangle_brute_force.cpp (the pixel set by edge functions or the
+// pipeline's rasteriser, the light by tt::pixel_light per pixel, P_c(w) as the convex combination
+// of two vertex values, the statements spelled out), so the brute force is checked against it.
+enum class pixel_set { covered, closed_triangle };
 struct statement_count {
-  long pixels = 0, both_aligned = 0, on_segment = 0, at_pixel = 0;
+  long pixels = 0, both_aligned = 0, on_segment = 0, at_pixel = 0, w_outside = 0, beyond_window = 0;
+  std::array<long, 3> checked{}, violations{};  // A, B, C; violations: pixels breaking it
+  std::array<std::int64_t, 3> max_ppm{INT64_MIN, INT64_MIN, INT64_MIN};
+  std::array<std::uint64_t, 3> first_violation{UINT64_MAX, UINT64_MAX, UINT64_MAX};  // case·2^22 + py·2^11 + px
 };
-void check_statements(const std::array<int, 6>& xy16, const std::array<p::ivec3, 3>& lights, int W, statement_count& n) {
+
+// Twice the signed area of (u, v, q), all in 1/16 pixel (×scale for q).
+std::int64_t edge_fn(std::int64_t ux, std::int64_t uy, std::int64_t vx, std::int64_t vy, std::int64_t qx, std::int64_t qy, std::int64_t scale) {
+  return (vx - ux) * (qy - uy * scale) - (vy - uy) * (qx - ux * scale);
+}
+bool closed_inside(const std::array<int, 6>& v, std::int64_t qx, std::int64_t qy, std::int64_t scale, std::int64_t det) {
+  for (std::size_t k = 0; k < 3; ++k) {
+    const std::size_t j = (k + 1) % 3;
+    const std::int64_t e = edge_fn(v[2 * k], v[2 * k + 1], v[2 * j], v[2 * j + 1], qx, qy, scale);
+    if ((det > 0 && e < 0) || (det < 0 && e > 0)) return false;
+  }
+  return true;
+}
+
+void check_statements(const std::array<int, 6>& xy16, const std::array<p::ivec3, 3>& lights, int W, statement_count& n,
+                      pixel_set which = pixel_set::covered, std::uint64_t index = 0) {
   const tt::triangle_case c{100, 0, 0, lights, xy16, 0, 0};
   const auto setup = pl::setup_triangle({pl::xy124{xy16[0], xy16[1]}, pl::xy124{xy16[2], xy16[3]}, pl::xy124{xy16[4], xy16[5]}});
   if (setup.area2 == 0) return;
-  const int rx = (std::min({xy16[0], xy16[2], xy16[4]}) + 15) >> 4, ry = (std::min({xy16[1], xy16[3], xy16[5]}) + 15) >> 4;
+  const auto edge = tt::lag_edge_of(xy16);
+  const int rx = edge.rx, ry = edge.ry;
+  ASSERT_EQ(rx, (std::min({xy16[0], xy16[2], xy16[4]}) + 15) >> 4);
+  ASSERT_EQ(ry, (std::min({xy16[1], xy16[3], xy16[5]}) + 15) >> 4);
   const std::int64_t ax = xy16[2] - xy16[0], ay = xy16[3] - xy16[1], bx = xy16[4] - xy16[0], by = xy16[5] - xy16[1];
   const std::int64_t det = ax * by - bx * ay, ad = det < 0 ? -det : det, sd = det < 0 ? -1 : 1;
-  // X: a vertex of least x, Y: of least y; offsets from r in 1/16 pixel.
-  std::size_t X = 0, Y = 0;
-  for (std::size_t k = 1; k < 3; ++k) {
-    if (xy16[2 * k] < xy16[2 * X]) X = k;
-    if (xy16[2 * k + 1] < xy16[2 * Y + 1]) Y = k;
-  }
-  const std::int64_t xi = xy16[2 * X] - 16 * rx, bX = xy16[2 * X + 1] - 16 * ry, aY = xy16[2 * Y] - 16 * rx, eta = xy16[2 * Y + 1] - 16 * ry;
+  const std::size_t X = edge.X, Y = edge.Y;
   auto vertex_value = [&](std::size_t k, std::size_t ch) { return std::int64_t{128} * (128 + lights[k][ch]); };
-  pl::rasterise_triangle(setup, pl::scissor{0, 0, 2048, 2048}, [&](int x, int y) {
+  auto at_pixel = [&](int x, int y) {
     tt::triangle_case k = c;
     k.px = x, k.py = y;
     const auto cf = tt::pixel_light(k);
     const std::int64_t L[3] = {cf.r.value(), cf.g.value(), cf.b.value()};
     const std::int64_t a = x - rx, b = y - ry, qx = 16 * x - xy16[0], qy = 16 * y - xy16[1];
-    ASSERT_TRUE(a >= 0 && b >= 0 && a <= W - 1 && b <= W - 1);
-    // w = X + (num/den)·(Y − X) <= p in both coordinates (×16): the candidates t = 0, 1, t1, t0.
-    std::int64_t num = -1, den = 1;
-    const std::int64_t cand[4][2] = {{0, 1}, {1, 1}, {16 * a - xi, aY - xi}, {bX - 16 * b, bX - eta}};
-    for (const auto& t : cand) {
-      if (t[1] <= 0 || t[0] < 0 || t[0] > t[1]) continue;
-      const bool below_x = 16 * rx * t[1] + xi * (t[1] - t[0]) + aY * t[0] <= 16 * x * t[1];
-      const bool below_y = 16 * ry * t[1] + bX * (t[1] - t[0]) + eta * t[0] <= 16 * y * t[1];
-      if (below_x && below_y && (num < 0 || t[0] * den < num * t[1])) num = t[0], den = t[1];
+    ASSERT_TRUE(a >= 0 && b >= 0);
+    n.beyond_window += a > W - 1 || b > W - 1;  // the premise a, b <= W − 1 (a shrunk W breaks it on purpose)
+    const tt::plane_point w = tt::point_w(edge, x, y);
+    if (!w.at_pixel()) {
+      const std::int64_t wx = xy16[2 * X] * (w.den - w.num) + xy16[2 * Y] * w.num, wy = xy16[2 * X + 1] * (w.den - w.num) + xy16[2 * Y + 1] * w.num;
+      n.w_outside += !closed_inside(xy16, wx, wy, w.den, det);
     }
+    const std::uint64_t at = index << 22 | static_cast<std::uint64_t>(y) << 11 | static_cast<std::uint64_t>(x);
+    bool broken[3] = {};
+    auto check = [&](std::size_t s, std::int64_t left, std::int64_t allowance) {
+      ++n.checked[s];
+      broken[s] = broken[s] || left >= allowance;
+      n.max_ppm[s] = std::max(n.max_ppm[s], static_cast<std::int64_t>(std::floor(static_cast<long double>(left) * 1000000 / allowance)));
+    };
     for (std::size_t ch = 0; ch < 3; ++ch) {
       const std::int64_t d1 = lights[1][ch] - lights[0][ch], d2 = lights[2][ch] - lights[0][ch];
       const std::int64_t gx = (d1 * by - d2 * ay) * sd, gy = (d2 * ax - d1 * bx) * sd;  // signs of the exact gradient
       const std::int64_t Pdet = 128 * ((128 + lights[0][ch]) * det + d1 * (by * qx - bx * qy) + d2 * (ax * qy - ay * qx)) * sd;
       for (int sigma : {1, -1}) {
         if (!(sigma * gx < 0 && sigma * gy < 0)) {
-          EXPECT_LT(sigma * (L[ch] * ad - Pdet), W * ad) << x << " " << y << " ch " << ch;
+          check(0, sigma * (L[ch] * ad - Pdet), W * ad);
           continue;
         }
         ++n.both_aligned;
-        if (num >= 0) {
+        check(1, sigma * (L[ch] * ad - Pdet), (1 + a + b) * ad);
+        if (!w.at_pixel()) {
           ++n.on_segment;
-          const std::int64_t Pw = (den - num) * vertex_value(X, ch) + num * vertex_value(Y, ch);  // P_c(w)·den
-          EXPECT_LT(sigma * L[ch] * den, sigma * Pw + W * den) << x << " " << y << " ch " << ch;
+          const std::int64_t Pw = (w.den - w.num) * vertex_value(X, ch) + w.num * vertex_value(Y, ch);  // P_c(w)·den
+          check(2, sigma * L[ch] * w.den - sigma * Pw, W * w.den);
         } else {
           ++n.at_pixel;
-          EXPECT_LT(16 * (a + b), std::max({aY, bX, std::int64_t{0}})) << x << " " << y;
-          EXPECT_LT(sigma * (L[ch] * ad - Pdet), W * ad) << x << " " << y << " ch " << ch;
+          EXPECT_LT(16 * (a + b), std::max({edge.aY, edge.bX, std::int64_t{0}})) << x << " " << y;
+          check(2, sigma * (L[ch] * ad - Pdet), W * ad);
         }
       }
     }
+    for (std::size_t s = 0; s < 3; ++s)
+      if (broken[s]) {
+        if (n.violations[s]++ == 0) n.first_violation[s] = at;
+      }
     ++n.pixels;
-  });
+  };
+  if (which == pixel_set::covered) {
+    pl::rasterise_triangle(setup, pl::scissor{0, 0, 2048, 2048}, at_pixel);
+    return;
+  }
+  const int x1 = std::max({xy16[0], xy16[2], xy16[4]}) / 16, y1 = std::max({xy16[1], xy16[3], xy16[5]}) / 16;
+  for (int y = 0; y <= y1; ++y)
+    for (int x = 0; x <= x1; ++x)
+      if (closed_inside(xy16, 16 * x, 16 * y, 1, det)) at_pixel(x, y);
 }
-}  // namespace
 
-TEST(Triangle, ChannelStatementsHoldOnEveryLatticeTriangleOfASmallWindow) {
-  // The 5 × 5 lattice of the test above (coordinates <= 95/16 pixel: W = 7), every ordered triple,
-  // the lights of L_12 by the same rotation and by a second one that keeps them near each other (small
-  // gradients, whose fractions are all of the step: where two-axis lag is largest).
+void expect_hold(const statement_count& n) {
+  for (std::size_t s = 0; s < 3; ++s) EXPECT_EQ(n.violations[s], 0) << "statement " << "ABC"[s];
+  EXPECT_EQ(n.w_outside, 0);
+  EXPECT_EQ(n.beyond_window, 0);
+}
+
+// The lattice cases of the small window: every ordered triple of distinct points of small_lattice(),
+// each with the lights of L_12 by a fixed rotation and by a second one that keeps them near each
+// other (small gradients, whose fractions are all of the step: where two-axis lag is largest).
+template <class F>
+void for_each_window_case(F&& f) {
   const auto lights = p::packed_lights(12);
   const auto pts = small_lattice();
-  statement_count n;
   long k = 0;
   for (std::size_t a = 0; a < pts.size(); ++a)
     for (std::size_t b = 0; b < pts.size(); ++b)
@@ -251,14 +294,65 @@ TEST(Triangle, ChannelStatementsHoldOnEveryLatticeTriangleOfASmallWindow) {
         if (a == b || b == c || a == c) continue;
         ++k;
         const std::size_t base = static_cast<std::size_t>(k * 7919) % lights.size();
-        check_statements({pts[a][0], pts[a][1], pts[b][0], pts[b][1], pts[c][0], pts[c][1]},
-                         {lights[(k * 7919) % lights.size()], lights[(k * 104729) % lights.size()], lights[(k * 1299709) % lights.size()]}, 7, n);
-        check_statements({pts[a][0], pts[a][1], pts[b][0], pts[b][1], pts[c][0], pts[c][1]},
-                         {lights[base], lights[(base + 1 + k % 3) % lights.size()], lights[(base + 2 + k % 5) % lights.size()]}, 7, n);
+        const std::array<int, 6> xy{pts[a][0], pts[a][1], pts[b][0], pts[b][1], pts[c][0], pts[c][1]};
+        f(xy, std::array<p::ivec3, 3>{lights[(k * 7919) % lights.size()], lights[(k * 104729) % lights.size()], lights[(k * 1299709) % lights.size()]});
+        f(xy, std::array<p::ivec3, 3>{lights[base], lights[(base + 1 + k % 3) % lights.size()], lights[(base + 2 + k % 5) % lights.size()]});
       }
+}
+}  // namespace
+
+TEST(Triangle, ChannelStatementsHoldOnEveryLatticeTriangleOfASmallWindow) {
+  // The 5 × 5 lattice of the test above (coordinates <= 95/16 pixel: W = 7), every pixel the rasteriser covers.
+  statement_count n;
+  for_each_window_case([&](const std::array<int, 6>& xy, const std::array<p::ivec3, 3>& l) { check_statements(xy, l, 7, n); });
+  expect_hold(n);
   EXPECT_GT(n.pixels, 20000);
   EXPECT_GT(n.on_segment, 1000);  // both branches of (i) are exercised
   EXPECT_GT(n.at_pixel, 100);
+}
+
+TEST(Triangle, BruteForceAgreesWithTheWindowEnumerationOnEveryLatticeTriangleOfASmallWindow) {
+  // tt::check_case (the --brute-force loop) against check_statements over the closed triangles of the
+  // same cases: the same pixels, instances, violations, first witnesses and largest ratios. W = 7 is
+  // the window (every statement holds); W = 3 is not (a, b reach 5), so (A) and (C) must fail the same way.
+  for (int W : {7, 3}) {
+    statement_count n;
+    tt::brute_force_acc acc;
+    std::uint64_t index = 0;
+    for_each_window_case([&](const std::array<int, 6>& xy, const std::array<p::ivec3, 3>& l) {
+      check_statements(xy, l, W, n, pixel_set::closed_triangle, index);
+      tt::check_case(tt::triangle_case{0, 0, 0, l, xy, 0, 0}, index, W, acc);
+      ++index;
+    });
+    EXPECT_EQ(static_cast<long>(acc.pixels), n.pixels) << "W " << W;
+    EXPECT_EQ(static_cast<long>(acc.w_outside.count), n.w_outside);
+    for (std::size_t s = 0; s < 3; ++s) {
+      const auto& st = acc.statement[s];
+      EXPECT_EQ(tt::channel_statements()[s].name, std::string(1, "ABC"[s]));
+      EXPECT_EQ(static_cast<long>(st.checked), n.checked[s]) << "W " << W << " statement " << s;
+      EXPECT_EQ(static_cast<long>(st.violations.count), n.violations[s]) << "W " << W << " statement " << s;
+      EXPECT_NEAR(static_cast<double>(st.ratio_ppm.max), static_cast<double>(n.max_ppm[s]), 1.0) << "W " << W << " statement " << s;
+      if (n.violations[s] > 0) {
+        EXPECT_EQ(st.violations.first[0], n.first_violation[s]) << "W " << W << " statement " << s;
+      }
+    }
+    if (W == 7) {
+      expect_hold(n);
+      EXPECT_GT(n.pixels, 20000);
+    } else {
+      EXPECT_GT(n.violations[0], 0);  // the comparison covers a failing run
+      EXPECT_GT(n.violations[2], 0);
+      EXPECT_EQ(n.violations[1], 0);  // (B)'s allowance does not involve W
+      // a witness names its failure
+      const std::uint64_t at = acc.statement[0].violations.first[0];
+      std::uint64_t k = 0;
+      for_each_window_case([&](const std::array<int, 6>& xy, const std::array<p::ivec3, 3>& l) {
+        if (k++ != at >> 22) return;
+        const std::string what = tt::failures_at(tt::triangle_case{0, 0, 0, l, xy, static_cast<int>(at & 2047), static_cast<int>(at >> 11 & 2047)}, W);
+        EXPECT_NE(what.find("(A)"), std::string::npos) << what;
+      });
+    }
+  }
 }
 
 TEST(Triangle, ChannelStatementsHoldOnRandomFullSizeTriangles) {
@@ -276,6 +370,7 @@ TEST(Triangle, ChannelStatementsHoldOnRandomFullSizeTriangles) {
     const std::size_t j = static_cast<std::size_t>(light(rng));
     check_statements({x0, y0, x1, y1, x2, y2}, {l0, lights[j], lights[(j + 1 + static_cast<std::size_t>(near(rng))) % lights.size()]}, 2048, n);
   }
+  expect_hold(n);
   EXPECT_GT(n.pixels, 1000);
 }
 

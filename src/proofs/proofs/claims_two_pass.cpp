@@ -9,6 +9,7 @@
 #include "proofs/methods.hpp"
 #include "proofs/two_pass.hpp"
 #include "proofs/two_pass_triangle.hpp"
+#include "proofs/triangle_brute_force.hpp"
 
 namespace gsdot3::proofs::claims {
 
@@ -143,23 +144,42 @@ std::string describe_certificate(const triangle_case& c, const gs::model_options
          ", " + describe_light(c.light[1]) + ", " + describe_light(c.light[2]) + buf + hexdec(r.dot);
 }
 
-// --brute-force (two_pass::triangle::brute_force): the lemma of the bound at full size. The light
-// does not depend on the model options (the Gouraud unit has none; truncate_to_8 is applied after,
-// in the multiply, and adds its 128 units to the bound), so every variant re-checks the same cases.
+// --brute-force (two_pass::triangle::brute_force, proofs/triangle_brute_force.hpp): the bound's
+// per-channel statements at full size. The light does not depend on the model options (the Gouraud
+// unit has none; truncate_to_8 is applied after, in the multiply, and adds its 128 units to the
+// bound), so every variant re-checks the same cases (--no-variants runs them once).
 outcome interpolated_brute_force(const gs::model_options&, const sweep_config& cfg) {
-  const auto r = two_pass::triangle::brute_force(cfg);
-  outcome out = verdict_of(r.violations, two_pass::triangle::brute_force_cases, [](std::uint64_t i) {
-    const auto c = two_pass::triangle::brute_force_case(i);
-    return "case " + std::to_string(i) + ": vertices (" + std::to_string(c.xy16[0]) + ", " + std::to_string(c.xy16[1]) + "), (" +
-           std::to_string(c.xy16[2]) + ", " + std::to_string(c.xy16[3]) + "), (" + std::to_string(c.xy16[4]) + ", " +
-           std::to_string(c.xy16[5]) + ") with " + describe_light(c.light[0]) + ", " + describe_light(c.light[1]) + ", " +
-           describe_light(c.light[2]) + " breaks |E| < 1 + a + b";
-  });
-  out.figures = {fig("pixels", static_cast<std::int64_t>(r.pixels)),
-                 fig("max_error_units", r.error_units.empty() ? 0 : r.error_units.max),
-                 fig("max_error_over_bound_ppm", r.ratio_ppm.empty() ? 0 : r.ratio_ppm.max)};
-  out.note = "brute force of the bound's lemma |L_c − P_c(pixel)| < 1 + a + b on lattice triangles of the full window × "
-             "4 lights of L_122 (every pixel centre in each closed triangle)";
+  namespace tt = two_pass::triangle;
+  const auto r = tt::brute_force(cfg);
+  const auto statements = tt::channel_statements();
+  outcome out;
+  out.domain_size = tt::brute_force_cases;
+  out.figures = {fig("pixels", static_cast<std::int64_t>(r.pixels))};
+  auto describe = [](std::uint64_t at, const std::string& what) {
+    auto c = tt::brute_force_case(at >> tt::pixel_index_bits);
+    c.px = static_cast<int>(at & 2047), c.py = static_cast<int>(at >> 11 & 2047);
+    const std::string failures = tt::failures_at(c, tt::window_pixels);
+    return what + ": case " + std::to_string(at >> tt::pixel_index_bits) + ", vertices 12.4 (" + hexdec(c.xy16[0], 16) + ", " +
+           hexdec(c.xy16[1], 16) + "), (" + hexdec(c.xy16[2], 16) + ", " + hexdec(c.xy16[3], 16) + "), (" + hexdec(c.xy16[4], 16) + ", " +
+           hexdec(c.xy16[5], 16) + ") with " + describe_light(c.light[0]) + ", " + describe_light(c.light[1]) + ", " +
+           describe_light(c.light[2]) + ", pixel (" + std::to_string(c.px) + ", " + std::to_string(c.py) + ") => " + failures;
+  };
+  for (std::size_t k = 0; k < tt::statement_count; ++k) {
+    const auto& acc = r.statement[k];
+    const std::string name(statements[k].name);
+    out.counterexamples += acc.violations.count;
+    out.figures.push_back(fig(name + "_checked", static_cast<std::int64_t>(acc.checked)));
+    out.figures.push_back(fig(name + "_violations", static_cast<std::int64_t>(acc.violations.count)));
+    out.figures.push_back(fig(name + "_max_left_over_allowance_ppm", acc.ratio_ppm.empty() ? 0 : acc.ratio_ppm.max));
+    for (auto at : acc.violations.first) out.witnesses.push_back(describe(at, "(" + name + ") " + std::string(statements[k].text)));
+  }
+  out.counterexamples += r.w_outside.count;
+  out.figures.push_back(fig("w_outside_triangle", static_cast<std::int64_t>(r.w_outside.count)));
+  for (auto at : r.w_outside.first) out.witnesses.push_back(describe(at, "w outside the closed triangle"));
+  out.result = out.counterexamples == 0 ? verdict::proven : verdict::refuted;
+  out.note = "brute force of the bound's per-channel statements (A) sigma*L_c(p) < sigma*P_c(p) + W, (B) < sigma*P_c(p) + 1 + a + b, "
+             "(C) < sigma*P_c(w) + W, and w in the closed triangle, for both wrap sides, against the exact rational plane, on "
+             "lattice triangles of the full window x 4 lights of L_122 (every pixel centre in each closed triangle)";
   return out;
 }
 }  // namespace

@@ -41,14 +41,10 @@ constexpr int ceil_124(int v) noexcept { return static_cast<int>((static_cast<st
 
 gs::fragment_colour pixel_light(const triangle_case& c) noexcept {
   std::array<gs::gouraud_vertex, 3> v{};
-  int x_ref = 1 << 16, y_ref = 1 << 16;
-  for (std::size_t k = 0; k < 3; ++k) {
-    const int x = c.xy16[2 * k], y = c.xy16[2 * k + 1];
-    v[k] = {x + xy_offset_pixels * 16, y + xy_offset_pixels * 16, light_colour(c.light[k])};
-    x_ref = std::min(x_ref, ceil_124(x));
-    y_ref = std::min(y_ref, ceil_124(y));
-  }
-  const auto plane = gs::gouraud_triangle(v[0], v[1], v[2], x_ref + xy_offset_pixels, y_ref + xy_offset_pixels);
+  for (std::size_t k = 0; k < 3; ++k)
+    v[k] = {c.xy16[2 * k] + xy_offset_pixels * 16, c.xy16[2 * k + 1] + xy_offset_pixels * 16, light_colour(c.light[k])};
+  const auto r = reference_pixel(c.xy16);
+  const auto plane = gs::gouraud_triangle(v[0], v[1], v[2], r[0] + xy_offset_pixels, r[1] + xy_offset_pixels);
   if (!plane) return gs::fragment_colour::flat(light_colour(c.light[2]));  // zero area: covers nothing
   return gs::gouraud_at(*plane, c.px + xy_offset_pixels, c.py + xy_offset_pixels);
 }
@@ -148,67 +144,36 @@ int bound_safe_s(const gs::model_options& o) {
   return least;
 }
 
-triangle_case brute_force_case(std::uint64_t index) {
-  static const std::vector<ivec3> lights = [] {
-    const auto all = packed_lights(122);
-    return std::vector<ivec3>{all[0], all[all.size() / 4], all[all.size() / 2], all[3 * all.size() / 4]};
-  }();
-  triangle_case c{0, 0, 0, {}, {}, 0, 0};
-  const std::uint64_t light_part = index & 63, tri = index >> 6;
-  for (std::size_t k = 0; k < 3; ++k) {
-    const std::uint64_t point = (tri >> (6 * k)) & 63;
-    const int i = static_cast<int>(point & 7), j = static_cast<int>(point >> 3);
-    c.xy16[2 * k] = std::min(4096 * i + 5 * i + 3 * j, (window_pixels - 1) * 16);
-    c.xy16[2 * k + 1] = std::min(4096 * j + 7 * j + 2 * i, (window_pixels - 1) * 16);
-    c.light[k] = lights[(light_part >> (2 * k)) & 3];
-  }
-  return c;
+std::array<int, 2> reference_pixel(const std::array<int, 6>& xy16) noexcept {
+  return {ceil_124(std::min({xy16[0], xy16[2], xy16[4]})), ceil_124(std::min({xy16[1], xy16[3], xy16[5]}))};
 }
 
-brute_force_acc brute_force(const sweep_config& cfg) {
-  return sweep<brute_force_acc>(
-      brute_force_cases, cfg,
-      [](brute_force_acc& acc, std::uint64_t begin, std::uint64_t end) {
-        for (std::uint64_t i = begin; i < end; ++i) {
-          const triangle_case c = brute_force_case(i);
-          const std::int64_t x0 = c.xy16[0], y0 = c.xy16[1];
-          const std::int64_t ax = c.xy16[2] - x0, ay = c.xy16[3] - y0, bx = c.xy16[4] - x0, by = c.xy16[5] - y0;
-          const std::int64_t det = ax * by - bx * ay;
-          if (det == 0) continue;
-          const std::int64_t sign = det > 0 ? 1 : -1, adet = det * sign;
-          const int xmin = ceil_124(std::min({c.xy16[0], c.xy16[2], c.xy16[4]})), ymin = ceil_124(std::min({c.xy16[1], c.xy16[3], c.xy16[5]}));
-          const int xmax = std::max({c.xy16[0], c.xy16[2], c.xy16[4]}) >> 4, ymax = std::max({c.xy16[1], c.xy16[3], c.xy16[5]}) >> 4;
-          // the plane once (pixel_light's set-up, read per pixel)
-          std::array<gs::gouraud_vertex, 3> v{};
-          for (std::size_t k = 0; k < 3; ++k)
-            v[k] = {c.xy16[2 * k] + xy_offset_pixels * 16, c.xy16[2 * k + 1] + xy_offset_pixels * 16, light_colour(c.light[k])};
-          const auto plane = gs::gouraud_triangle(v[0], v[1], v[2], xmin + xy_offset_pixels, ymin + xy_offset_pixels);
-          std::int64_t c0[3], d1[3], d2[3];
-          for (std::size_t ch = 0; ch < 3; ++ch)
-            c0[ch] = 128 + c.light[0][ch], d1[ch] = c.light[1][ch] - c.light[0][ch], d2[ch] = c.light[2][ch] - c.light[0][ch];
-          bool bad = false;
-          for (int y = ymin; y <= ymax; ++y)
-            for (int x = xmin; x <= xmax; ++x) {
-              const std::int64_t qx = 16 * x - x0, qy = 16 * y - y0;
-              // barycentric numerators (×det): inside the closed triangle iff all have det's sign
-              const std::int64_t u = (by * qx - bx * qy) * sign, w = (ax * qy - ay * qx) * sign;
-              if (u < 0 || w < 0 || u + w > adet) continue;
-              ++acc.pixels;
-              const auto f = gs::gouraud_at(*plane, x + xy_offset_pixels, y + xy_offset_pixels);
-              const int L[3] = {f.r.value(), f.g.value(), f.b.value()};
-              const std::int64_t bound = 1 + (x - xmin) + (y - ymin);
-              for (std::size_t ch = 0; ch < 3; ++ch) {
-                const std::int64_t Pdet = 128 * (c0[ch] * adet + d1[ch] * u + d2[ch] * w);  // P_c·|det|
-                const std::int64_t diff = std::abs(L[ch] * adet - Pdet);
-                if (diff >= bound * adet) bad = true;
-                acc.error_units.add(diff / adet, i);
-                acc.ratio_ppm.add(static_cast<std::int64_t>(static_cast<double>(diff) / static_cast<double>(bound * adet) * 1e6), i);
-              }
-            }
-          if (bad) acc.violations.add(i);
-        }
-      },
-      std::uint64_t{1} << 16);
+lag_edge lag_edge_of(const std::array<int, 6>& xy16) noexcept {
+  lag_edge e;
+  for (std::size_t k = 1; k < 3; ++k) {
+    if (xy16[2 * k] < xy16[2 * e.X]) e.X = k;
+    if (xy16[2 * k + 1] < xy16[2 * e.Y + 1]) e.Y = k;
+  }
+  const auto r = reference_pixel(xy16);
+  e.rx = r[0], e.ry = r[1];
+  e.xi = xy16[2 * e.X] - 16 * e.rx, e.bX = xy16[2 * e.X + 1] - 16 * e.ry;
+  e.aY = xy16[2 * e.Y] - 16 * e.rx, e.eta = xy16[2 * e.Y + 1] - 16 * e.ry;
+  return e;
+}
+
+plane_point point_w(const lag_edge& e, int px, int py) noexcept {
+  // w(t)·16 − 16·r = (ξ + t·(a_Y − ξ), b_X + t·(η − b_X)): x grows with t, y falls; t = num/den,
+  // the comparisons multiplied through by den > 0.
+  const std::int64_t a16 = 16 * std::int64_t{px - e.rx}, b16 = 16 * std::int64_t{py - e.ry};
+  const std::int64_t cand[4][2] = {{0, 1}, {1, 1}, {a16 - e.xi, e.aY - e.xi}, {e.bX - b16, e.bX - e.eta}};
+  plane_point w;
+  for (const auto& t : cand) {
+    if (t[1] <= 0 || t[0] < 0 || t[0] > t[1]) continue;
+    const bool below_x = e.xi * (t[1] - t[0]) + e.aY * t[0] <= a16 * t[1];
+    const bool below_y = e.bX * (t[1] - t[0]) + e.eta * t[0] <= b16 * t[1];
+    if (below_x && below_y && (w.at_pixel() || t[0] * w.den < w.num * t[1])) w = {t[0], t[1]};
+  }
+  return w;
 }
 
 }  // namespace gsdot3::proofs::two_pass::triangle

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <span>
 
@@ -122,24 +123,26 @@ bool cannot_wrap(const paper::packed_normal& p, int e, int s, const gs::model_op
 // The largest s such that no normal can wrap for any s' <= s by that bound (0 if none).
 int bound_safe_s(const gs::model_options& o);
 
-// --brute-force: the bound's one lemma, |L_c − P_c(pixel)| < 1 + a + b, checked directly at full
-// size against the exact rational plane, on every triangle whose vertices lie on an 8 × 8 lattice
-// spanning the window (step 256 pixels plus a 12.4 fraction that differs per point, every ordered
-// triple, 2^18) × every ordered triple of 4 lights of L_122 (2^6), every pixel centre in the closed
-// triangle (a superset of the covered pixels). 2^24 cases of ~10^5 pixels each: a run for a
-// cluster, split with --shard (65 536 chunks).
-struct brute_force_acc {
-  tally violations;           // cases with a pixel breaking the lemma
-  extremes ratio_ppm;         // max over pixels of |E_c| / (1 + a + b), in millionths
-  extremes error_units;       // max |E_c| (8.7 units, rounded down)
-  std::uint64_t pixels = 0;
-  void merge(const brute_force_acc& later) {
-    violations.merge(later.violations), ratio_ppm.merge(later.ratio_ppm), error_units.merge(later.error_units);
-    pixels += later.pixels;
-  }
+// The reference pixel r of pixel_light: the ceiling of the least vertex x and of the least y.
+std::array<int, 2> reference_pixel(const std::array<int, 6>& xy16) noexcept;
+
+// The point w of (i), built from the geometry alone (the same w for every channel; --brute-force
+// checks (A)–(C) with it at full size, proofs/triangle_brute_force.hpp). lag_edge: the edge from X, the first vertex of
+// least x, to Y, the first vertex of least y, as offsets from r in 1/16 pixel: X = 16·r + (ξ, b_X),
+// Y = 16·r + (a_Y, η), −16 < ξ, η <= 0.
+struct lag_edge {
+  std::size_t X = 0, Y = 0;
+  int rx = 0, ry = 0;
+  std::int64_t xi = 0, bX = 0, aY = 0, eta = 0;
 };
-inline constexpr std::uint64_t brute_force_cases = std::uint64_t{1} << 24;
-triangle_case brute_force_case(std::uint64_t index);  // s, iX, iY unused (0)
-brute_force_acc brute_force(const sweep_config& cfg);
+lag_edge lag_edge_of(const std::array<int, 6>& xy16) noexcept;
+// w = X + (num/den)·(Y − X) with t = num/den the least of 0, 1, t1 = (16a − ξ)/(a_Y − ξ) and
+// t0 = (b_X − 16b)/(b_X − η) in [0, 1] for which w <= p = r + (a, b) in both coordinates; num < 0
+// when no point of the edge is <= p, and then w = p (and 16·(a + b) < max(a_Y, b_X)). 0 < den <= 2^15 + 16.
+struct plane_point {
+  std::int64_t num = -1, den = 1;
+  bool at_pixel() const noexcept { return num < 0; }
+};
+plane_point point_w(const lag_edge& e, int px, int py) noexcept;
 
 }  // namespace gsdot3::proofs::two_pass::triangle
