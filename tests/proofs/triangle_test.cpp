@@ -1,8 +1,10 @@
 // two-pass.max-s.interpolated on whole triangles: every certificate replayed through the pipeline's
 // rasteriser, its attribute set-up and gs::pixel_pipeline with the pipeline's two-pass registers,
 // the wrap checked against a plain-int value; and the error bound of two_pass::triangle
-// (|E_c| < 1 + a + b 8.7 units) checked against the exact rational plane by brute force over every
-// triangle on a coarse vertex lattice of a small window, and on random full-size triangles.
+// (|E_c| < 1 + a + b 8.7 units) and its per-channel statements (A)–(C) checked against the exact
+// rational plane by brute force over every triangle on a coarse vertex lattice of a small window,
+// and on random full-size triangles; the --brute-force loop (proofs/triangle_brute_force) checked
+// against that window enumeration.
 #include <gtest/gtest.h>
 
 #include <algorithm>
