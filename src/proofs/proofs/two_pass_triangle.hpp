@@ -127,9 +127,9 @@ int bound_safe_s(const gs::model_options& o);
 std::array<int, 2> reference_pixel(const std::array<int, 6>& xy16) noexcept;
 
 // The point w of (i), built from the geometry alone (the same w for every channel; --brute-force
-// checks (A)–(C) with it at full size, proofs/triangle_brute_force.hpp). lag_edge: the edge from X, the first vertex of
-// least x, to Y, the first vertex of least y, as offsets from r in 1/16 pixel: X = 16·r + (ξ, b_X),
-// Y = 16·r + (a_Y, η), −16 < ξ, η <= 0.
+// checks (A)–(C) with it at full size, proofs/triangle_brute_force.hpp). lag_edge: the edge from
+// X, the first vertex of least x, to Y, the first vertex of least y, as offsets from r in 1/16
+// pixel: X = 16·r + (ξ, b_X), Y = 16·r + (a_Y, η), −16 < ξ, η <= 0.
 struct lag_edge {
   std::size_t X = 0, Y = 0;
   int rx = 0, ry = 0;
@@ -138,7 +138,8 @@ struct lag_edge {
 lag_edge lag_edge_of(const std::array<int, 6>& xy16) noexcept;
 // w = X + (num/den)·(Y − X) with t = num/den the least of 0, 1, t1 = (16a − ξ)/(a_Y − ξ) and
 // t0 = (b_X − 16b)/(b_X − η) in [0, 1] for which w <= p = r + (a, b) in both coordinates; num < 0
-// when no point of the edge is <= p, and then w = p (and 16·(a + b) < max(a_Y, b_X)). 0 < den <= 2^15 + 16.
+// when no point of the edge is <= p, and then w = p (and 16·(a + b) < max(a_Y, b_X)).
+// 0 < den <= 2^15 + 16.
 struct plane_point {
   std::int64_t num = -1, den = 1;
   bool at_pixel() const noexcept { return num < 0; }
