@@ -171,7 +171,7 @@ outcome interpolated_brute_force(const gs::model_options&, const sweep_config& c
     out.figures.push_back(fig(name + "_checked", static_cast<std::int64_t>(acc.checked)));
     out.figures.push_back(fig(name + "_violations", static_cast<std::int64_t>(acc.violations.count)));
     out.figures.push_back(fig(name + "_max_left_over_allowance_ppm", acc.ratio_ppm.empty() ? 0 : acc.ratio_ppm.max));
-    for (auto at : acc.violations.first) out.witnesses.push_back(describe(at, "(" + name + ") " + std::string(statements[k].text)));
+    for (auto at : acc.violations.first) out.witnesses.push_back(describe(at, "statement " + name));
   }
   out.counterexamples += r.w_outside.count;
   out.figures.push_back(fig("w_outside_triangle", static_cast<std::int64_t>(r.w_outside.count)));

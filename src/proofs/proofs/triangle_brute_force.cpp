@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <optional>
 #include <utility>
 
@@ -73,7 +74,7 @@ bool in_closed_triangle(const case_setup& s, std::int64_t qx, std::int64_t qy, s
   return u >= 0 && v >= 0 && u + v <= s.adet * scale;
 }
 
-// Every statement at pixel (x, y) (in the closed triangle): f(k, channel, σ, {left, allowance}) for
+// Every statement at pixel (x, y) (in the closed triangle): f(k, channel, view, {left, allowance}) for
 // each statement k that applies; returns whether w is in the closed triangle.
 template <class F>
 bool visit_pixel(const case_setup& s, int x, int y, std::int64_t window, F&& f) {
@@ -103,7 +104,7 @@ bool visit_pixel(const case_setup& s, int x, int y, std::int64_t window, F&& f) 
       view.aligned_x = s.aligned[ch][side][0], view.aligned_y = s.aligned[ch][side][1];
       // each row by its constant index, so that its two functions are called directly (inlined)
       [&]<std::size_t... K>(std::index_sequence<K...>) {
-        ((statement_table[K].applies(view) ? f(K, ch, view.sigma, statement_table[K].sides(view, window)) : void()), ...);
+        ((statement_table[K].applies(view) ? f(K, ch, view, statement_table[K].sides(view, window)) : void()), ...);
       }(std::make_index_sequence<statement_count>{});
     }
   }
@@ -122,7 +123,7 @@ void check_case(const triangle_case& c, std::uint64_t index, int window, brute_f
       ++acc.pixels;
       const std::uint64_t at = pixel_witness(index, x, y);
       bool broken[statement_count] = {};
-      const bool w_inside = visit_pixel(*s, x, y, window, [&](std::size_t k, std::size_t, int, std::array<std::int64_t, 2> sides) {
+      const bool w_inside = visit_pixel(*s, x, y, window, [&](std::size_t k, std::size_t, const channel_view&, std::array<std::int64_t, 2> sides) {
         const std::int64_t left = sides[0], allowance = sides[1];
         auto& st = acc.statement[k];
         ++st.checked;
@@ -141,12 +142,14 @@ std::string failures_at(const triangle_case& c, int window) {
   const auto s = set_up(c);
   if (!s || !in_closed_triangle(*s, 16 * std::int64_t{c.px}, 16 * std::int64_t{c.py}, 1)) return "pixel not in the closed triangle";
   std::string out;
-  const bool w_inside = visit_pixel(*s, c.px, c.py, window, [&](std::size_t k, std::size_t ch, int sigma, std::array<std::int64_t, 2> sides) {
-    const std::int64_t left = sides[0], allowance = sides[1];
-    if (left < allowance) return;
-    out += (out.empty() ? "" : "; ") + std::string("(") + std::string(statement_table[k].name) + ") " +
-           std::string(statement_table[k].text) + " fails on channel " + "rgb"[ch] + ", sigma " + std::to_string(sigma) +
-           ": " + std::to_string(left) + " >= " + std::to_string(allowance);
+  const bool w_inside = visit_pixel(*s, c.px, c.py, window, [&](std::size_t k, std::size_t ch, const channel_view& v, std::array<std::int64_t, 2> sides) {
+    if (sides[0] < sides[1]) return;
+    char light[32];
+    std::snprintf(light, sizeof light, "0x%04llx", static_cast<unsigned long long>(v.L));
+    out += std::string(out.empty() ? "(" : "; (") + std::string(statement_table[k].name) + ") " + std::string(statement_table[k].text) + " fails on channel " + "rgb"[ch] + ", sigma " +
+           std::to_string(v.sigma) + ": L_c " + light + ", P_c(p) = " + std::to_string(v.P_p) + "/" + std::to_string(v.den_p) +
+           ", P_c(w) = " + std::to_string(v.P_w) + "/" + std::to_string(v.den_w) + ", left " + std::to_string(sides[0]) +
+           " >= allowance " + std::to_string(sides[1]);
   });
   if (!w_inside) out += (out.empty() ? "" : "; ") + std::string("w is outside the closed triangle");
   return out;
