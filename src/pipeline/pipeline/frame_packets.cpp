@@ -214,7 +214,7 @@ frame_packets build_frame_packets(const scene& s, const prepared_scene& ps, meth
   frame_packets fp;
   fp.buffers = buffer_layout_for(ps.width, ps.height);
   const buffer_layout& b = fp.buffers;
-  if (4 * b.pages > gs::mem::memory_blocks / 32)
+  if (!b.fits())
     throw std::invalid_argument("frame packets: four " + std::to_string(ps.width) + "x" + std::to_string(ps.height) +
                                 " PSMCT32 buffers do not fit in the GS's 4 MiB");
   fp.z = {fixed::uint<14>::from_wrapped(32 * b.z()), fixed::uint<6>::from_wrapped(b.fbw), gs::mem::psm::PSMZ24};

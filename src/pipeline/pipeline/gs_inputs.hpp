@@ -34,6 +34,8 @@ struct buffer_layout {
   std::uint32_t output() const noexcept { return 2 * pages; }
   std::uint32_t z() const noexcept { return 3 * pages; }
   std::uint32_t first_texture_block() const noexcept { return 4 * 32 * pages; }
+  // Whether the four buffers fit in the GS's 4 MiB (at 512×448: 4 × 112 of the 512 pages).
+  bool fits() const noexcept { return 4 * pages * gs::mem::page_bytes <= gs::mem::memory_bytes; }
   // The PSMCT32 buffer at FBP `fbp` (one of the above) as a texture / transfer buffer.
   gs::mem::buffer colour(std::uint32_t fbp) const noexcept {
     return {fixed::uint<14>::from_wrapped(32 * fbp), fixed::uint<6>::from_wrapped(fbw), gs::mem::psm::PSMCT32};

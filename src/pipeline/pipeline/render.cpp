@@ -392,8 +392,8 @@ frame render(const scene& s, const prepared_scene& ps, method m, const render_op
     // gs_inputs.hpp's buffer layout: the DPB (and in step 3 the diffuse layer), the LAB, the output
     // (PSMCT32) and the Z buffer (PSMZ24), FBW = ceil(width / 64).
     const buffer_layout layout = buffer_layout_for(ps.width, ps.height);
-    const std::uint32_t fbw = layout.fbw, pages = layout.pages;
-    if (4 * pages * gs::mem::page_bytes > gs::mem::memory_bytes)
+    const std::uint32_t fbw = layout.fbw;
+    if (!layout.fits())
       throw std::invalid_argument("memory path: four " + std::to_string(ps.width) + "x" + std::to_string(ps.height) +
                                   " 32-bit buffers do not fit in the GS's 4 MiB");
     gs::mem::local_memory memory;
