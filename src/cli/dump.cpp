@@ -45,7 +45,7 @@ void add_dump_command(CLI::App& app, context& ctx) {
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     std::cout << *out << ": " << pipeline::name(st.methods[0]) << ", state version " << gs::dump::state_version_written << ", "
               << fp.gif.size() << " bytes of GIF packets, " << fp.triangles << " triangles, " << fp.sprites
-              << " sprites; displayed: DISPFB1 FBP " << fp.buffers.fbp(3) << " FBW " << fp.buffers.fbw << " PSMCT32, "
+              << " sprites; displayed: DISPFB1 FBP " << fp.buffers.output() << " FBW " << fp.buffers.fbw << " PSMCT32, "
               << st.in.s.width << "x" << st.in.s.height << "; " << seconds << " s\n";
     ctx.exit_code = 0;
   });

@@ -109,6 +109,26 @@ TEST(Draw, BitsOutsideTheFieldsAreIgnoredReservedFieldValuesNamed) {
       << it.unmodelled_features()[0].what;
 }
 
+// ZBUF_1 through gs_arith's decode_zbuf: bits outside ZBP (0-8), PSM (24-27), ZMSK (32) are dropped
+// (PCSX2's ZBUF_REG_MASK 0x10F0001FF) and the Z buffer is still written at ZBP; PSM = 3 (no Z format)
+// is refused and named.
+TEST(Draw, ZbufBitsOutsideTheFieldsAreIgnoredAReservedPsmNamed) {
+  fixture f;
+  const mem::buffer zb{fixed::uint<14>::from_wrapped(16 * 32), fixed::uint<6>::from_wrapped(1), mem::psm::PSMZ32};
+  const std::uint64_t always = 1 << 16 | 1 << 17;
+  run(f.it, {{ZBUF_1, 16 | 1 << 9 | std::uint64_t{1} << 28 | std::uint64_t{1} << 40}, {TEST_1, always}, {PRIM, SPRITE},
+             {RGBAQ, rgbaq(7, 7, 7, 7)}, {XYZ2, xyz(0, 0, 321)}, {XYZ2, xyz(16, 16, 321)}});
+  EXPECT_EQ(f.px(0, 0), 0x07070707u);
+  EXPECT_EQ(f.px(0, 0, zb), 321u);
+  mem::local_memory m;
+  interpreter it(m, {.skip_unmodelled = true});
+  run(it, environment());
+  run(it, {{ZBUF_1, 16 | 3 << 24}, {TEST_1, always}, {PRIM, SPRITE}, {XYZ2, xyz(0, 0)}, {XYZ2, xyz(16, 16)}});
+  ASSERT_EQ(it.unmodelled_features().size(), 1u);
+  EXPECT_EQ(it.unmodelled_features()[0].what.rfind("SPRITE: context 1 registers: ZBUF_1.PSM", 0), 0u)
+      << it.unmodelled_features()[0].what;
+}
+
 TEST(Draw, XyoffsetAndScissorPlaceAndClipThePrimitive) {
   fixture f;
   // OFX = 100 px, OFY = 50 px: vertex (101, 52) .. (103, 53) lands on window (1, 2) .. (3, 3).

@@ -50,24 +50,36 @@ const std::vector<std::pair<std::string, const pass_regs*>>& table() {
       {"four_pass_y", &four_pass_y},      {"four_pass_z", &four_pass_z},             {"baseline_add", &baseline_add},
       {"baseline_subtract", &baseline_subtract}, {"post_add_into_red", &post_add_into_red}, {"ilp_into_lab", &ilp_into_lab},
       {"diffuse_layer", &diffuse_layer},  {"multiply_red", &multiply_red},           {"multiply_green", &multiply_green},
-      {"multiply_blue", &multiply_blue},  {"move_into_alpha", &move_into_alpha},     {"copy_word", &copy_word}};
+      {"multiply_blue", &multiply_blue},  {"move_into_alpha", &move_into_alpha}};
   return t;
 }
 
 struct decoded {
   std::vector<pk::gif_event> events;
-  std::vector<std::string> passes;  // per PRIM write: "sprite|triangle PASS BUFFER", consecutive repeats collapsed
+  // per PRIM write: "sprite|triangle PASS BUFFER", per local -> local transfer "transfer SRC -> DST";
+  // consecutive repeats collapsed
+  std::vector<std::string> passes;
 };
 
 decoded decode(const frame_packets& fp) {
   decoded d;
   d.events = pk::decode_gif(fp.gif);
   std::map<std::uint8_t, std::uint64_t> regs;
-  const std::map<std::uint32_t, std::string> buffers = {
-      {fp.buffers.fbp(0), "DPB"}, {fp.buffers.fbp(1), "LAB"}, {fp.buffers.fbp(2), "diffuse"}, {fp.buffers.fbp(3), "out"}};
+  // The layout (docs/dumps.md): the DPB at FBP 0, the LAB at P, the output at 2P.
+  const std::uint32_t P = fp.buffers.pages;
+  const std::map<std::uint32_t, std::string> buffers = {{0, "DPB"}, {P, "LAB"}, {2 * P, "out"}};
+  auto buffer_name = [&](std::uint32_t fbp) {
+    const auto b = buffers.find(fbp);
+    return b == buffers.end() ? std::string("?") : b->second;
+  };
   for (const pk::gif_event& e : d.events) {
     if (e.what != pk::gif_event::kind::reg_write) continue;
     regs[e.address] = e.value;
+    if (e.address == addr("TRXDIR") && gs::mem::decode_trxdir(e.value).XDIR == gs::mem::xdir::local_to_local) {
+      const gs::mem::bitbltbuf_reg blt = gs::mem::decode_bitbltbuf(regs[addr("BITBLTBUF")]);
+      d.passes.push_back("transfer " + buffer_name(static_cast<std::uint32_t>(blt.SBP.value()) / 32) + " -> " +
+                         buffer_name(static_cast<std::uint32_t>(blt.DBP.value()) / 32));
+    }
     if (e.address != addr("PRIM")) continue;
     const gs::prim_reg prim = gs::decode_prim(e.value);
     gs::gs_registers r;
@@ -80,7 +92,7 @@ decoded decode(const frame_packets& fp) {
     r.COLCLAMP = gs::decode_colclamp(regs[addr("COLCLAMP")]);
     const gs::frame_reg frame = gs::decode_frame(regs[addr("FRAME_1")]);
     r.FRAME_1.FBMSK = frame.FBMSK;
-    std::string pass = frame.FBMSK == 0xFFFFFFFFu ? "z_clear" : "?";
+    std::string pass = "?";
     if (!prim.TME) r.TEX0_1 = {};  // untextured: TEX0 is not part of the pass
     for (const auto& [n, p] : table()) {
       gs::gs_registers want = p->registers();
@@ -90,9 +102,8 @@ decoded decode(const frame_packets& fp) {
         break;
       }
     }
-    const auto buffer = buffers.find(static_cast<std::uint32_t>(frame.FBP.value()));
     const std::string name = std::string(prim.PRIM == gs::prim_type::SPRITE ? "sprite " : "triangle ") + pass + " " +
-                             (buffer == buffers.end() ? "?" : buffer->second);
+                             buffer_name(static_cast<std::uint32_t>(frame.FBP.value()));
     if (d.passes.empty() || d.passes.back() != name) d.passes.push_back(name);
   }
   return d;
@@ -101,7 +112,7 @@ decoded decode(const frame_packets& fp) {
 // The paper's steps (section 3.1; 3.5 two-pass, 3.6 four-pass, section 2 baseline) as the passes
 // the stream must draw, per light the method's own.
 std::vector<std::string> expected_passes(method m, std::size_t lights) {
-  std::vector<std::string> p = {"sprite fill DPB", "sprite fill LAB", "sprite z_clear out", "triangle fill LAB"};
+  std::vector<std::string> p = {"sprite fill DPB", "sprite fill LAB", "sprite fill out", "triangle fill LAB"};
   for (std::size_t l = 0; l < lights; ++l) {
     p.push_back("sprite fill DPB");
     switch (m) {
@@ -118,7 +129,9 @@ std::vector<std::string> expected_passes(method m, std::size_t lights) {
     }
     p.insert(p.end(), {"sprite post_add_into_red DPB", "sprite ilp_into_lab LAB"});
   }
-  p.insert(p.end(), {"sprite fill diffuse", "triangle diffuse_layer diffuse", "sprite fill out", "sprite copy_word out"});
+  // Step 3 into the DPB ("We are done with the DPB. Clear it to zero and render all objects unlit"),
+  // step 4's copy of the LAB into the output as a local -> local transfer.
+  p.insert(p.end(), {"sprite fill DPB", "triangle diffuse_layer DPB", "transfer LAB -> out"});
   for (const char* c : {"red", "green", "blue"}) {
     p.push_back("sprite move_into_alpha out");
     p.push_back(std::string("sprite multiply_") + c + " out");
@@ -138,7 +151,8 @@ TEST_P(FramePackets, DrawsThePapersPassesInOrder) {
 
 // Every register write decodes (strictly: no padding bit, no reserved value) to exactly the value
 // written; the registers without a gs_arith / gs_memory decoder are checked field by field against
-// the manual's layouts (XYOFFSET, SCISSOR, ZBUF, TEX1, PRMODECONT).
+// the manual's layouts (XYOFFSET, SCISSOR, TEX1, PRMODECONT), ZBUF_1's fields too (ZBP 0-8, PSM 24-27,
+// ZMSK 32), and the one local -> local transfer against the sprite area.
 TEST_P(FramePackets, EveryRegisterWriteDecodesToTheValueWritten) {
   const scene& s = small_scene();
   const prepared_scene ps = prepare(s);
@@ -161,9 +175,9 @@ TEST_P(FramePackets, EveryRegisterWriteDecodesToTheValueWritten) {
     else if (n == "DTHE") EXPECT_EQ(v, 0u);
     else if (n == "CLAMP_1") EXPECT_EQ(gs::mem::encode(gs::mem::decode_clamp(v)), v);
     else if (n == "BITBLTBUF") EXPECT_EQ(gs::mem::encode(gs::mem::decode_bitbltbuf(v)), v);
-    else if (n == "TRXPOS") EXPECT_EQ(v, 0u);
+    else if (n == "TRXPOS") EXPECT_EQ(gs::mem::encode(gs::mem::decode_trxpos(v)), v);
     else if (n == "TRXREG") EXPECT_EQ(gs::mem::encode(gs::mem::decode_trxreg(v)), v);
-    else if (n == "TRXDIR") EXPECT_EQ(v, 0u);  // host -> local
+    else if (n == "TRXDIR") EXPECT_TRUE(v == 0u || v == 2u) << v;  // host -> local, local -> local
     else if (n == "TEXFLUSH") EXPECT_EQ(v, 0u);
     else if (n == "UV") EXPECT_EQ(v & ~(0x3FFFull | 0x3FFFull << 16), 0u);  // U 0-13, V 16-29
     else if (n == "XYZ2") EXPECT_LT(v >> 32, 1ull << 24);                    // Z fits PSMZ24
@@ -177,8 +191,9 @@ TEST_P(FramePackets, EveryRegisterWriteDecodesToTheValueWritten) {
       EXPECT_LE(y0, y1);
       EXPECT_LT(y1, static_cast<std::uint64_t>(s.height));
     } else if (n == "ZBUF_1") {
-      EXPECT_EQ(bits(v, 0, 9), fp.buffers.fbp(3));  // the output buffer's pages
-      EXPECT_EQ(bits(v, 24, 4), 1u);                 // PSMZ24
+      EXPECT_EQ(gs::encode(gs::decode_zbuf(v)), v);
+      EXPECT_EQ(bits(v, 0, 9), 3u * fp.buffers.pages);  // ZBP = 3P, the Z buffer's own pages
+      EXPECT_EQ(bits(v, 24, 4), 1u);                    // PSMZ24
       EXPECT_EQ(v & ~(0x1FFull | 0xFull << 24 | 1ull << 32), 0u);
     } else if (n == "TEX1_1") {
       EXPECT_EQ(v, 1u);  // LCM = 1 (K = 0: the base level), MMAG = MMIN = 0 (nearest)
@@ -190,6 +205,39 @@ TEST_P(FramePackets, EveryRegisterWriteDecodesToTheValueWritten) {
                         "SCISSOR_1", "PRMODECONT", "COLCLAMP", "DTHE", "PABE", "FBA_1", "BITBLTBUF", "TRXPOS", "TRXREG", "TRXDIR",
                         "RGBAQ", "UV", "XYZ2"})
     EXPECT_GT(seen[n], 0) << n << " is never written";
+}
+
+// Step 4's copy of the LAB into the output is one local -> local transfer (TRXDIR = 2) of the whole
+// rectangle the step-4 sprites are clipped to (the SCISSOR_1 in effect): BITBLTBUF SBP = the LAB, DBP
+// = the output (blocks: 32 per page), both PSMCT32 with the frame's FBW; TRXPOS the rectangle's corner
+// on both sides with DIR = 0; TRXREG its width and height (SCISSOR's x1 / y1 are inclusive).
+TEST_P(FramePackets, CopiesTheLabIntoTheOutputByOneLocalToLocalTransfer) {
+  const scene& s = small_scene();
+  const prepared_scene ps = prepare(s);
+  const frame_packets fp = build_frame_packets(s, ps, GetParam(), render_options{});
+  std::map<std::uint8_t, std::uint64_t> regs;
+  int copies = 0;
+  for (const pk::gif_event& e : decode(fp).events) {
+    if (e.what != pk::gif_event::kind::reg_write) continue;
+    regs[e.address] = e.value;
+    if (e.address != addr("TRXDIR") || e.value != 2) continue;
+    ++copies;
+    const std::uint64_t blt = regs[addr("BITBLTBUF")], pos = regs[addr("TRXPOS")], size = regs[addr("TRXREG")],
+                        clip = regs[addr("SCISSOR_1")];
+    const std::uint64_t P = fp.buffers.pages, fbw = static_cast<std::uint64_t>((s.width + 63) / 64);
+    EXPECT_EQ(bits(blt, 0, 14), 32 * P);      // SBP: the LAB
+    EXPECT_EQ(bits(blt, 16, 6), fbw);         // SBW
+    EXPECT_EQ(bits(blt, 24, 6), 0u);          // SPSM = PSMCT32
+    EXPECT_EQ(bits(blt, 32, 14), 32 * 2 * P); // DBP: the output
+    EXPECT_EQ(bits(blt, 48, 6), fbw);         // DBW
+    EXPECT_EQ(bits(blt, 56, 6), 0u);          // DPSM = PSMCT32
+    const std::uint64_t x0 = bits(clip, 0, 11), x1 = bits(clip, 16, 11), y0 = bits(clip, 32, 11), y1 = bits(clip, 48, 11);
+    EXPECT_EQ(pos, x0 | y0 << 16 | x0 << 32 | y0 << 48);  // SSAX, SSAY, DSAX, DSAY; DIR = 0
+    EXPECT_EQ(size, (x1 + 1 - x0) | (y1 + 1 - y0) << 32);  // RRW, RRH
+    EXPECT_GT(x1, x0);
+    EXPECT_GT(y1, y0);
+  }
+  EXPECT_EQ(copies, 1);
 }
 
 // The triangles of every triangle pass are the prepared scene's, in mesh order: XYZ2 = window 12.4 +
@@ -229,7 +277,8 @@ TEST_P(FramePackets, UploadsPutTheScenesTexturesWhereTheTexturesAreRead) {
   gs::mem::local_memory m;
   pk::interpreter it(m);
   for (const pk::gif_event& e : decode(fp).events) it.apply(e, 16 * std::uint64_t{e.offset});
-  EXPECT_EQ(it.transfers().size(), (GetParam() == method::four_pass ? 3u : 2u) + 8u);
+  // The textures, the eight palettes, and step 4's local -> local copy of the LAB.
+  EXPECT_EQ(it.transfers().size(), (GetParam() == method::four_pass ? 3u : 2u) + 8u + 1u);
   std::map<std::uint64_t, gs::tex0_reg> textures;  // every TEX0 written, by TBP0
   for (const pk::gif_event& e : decode(fp).events)
     if (e.what == pk::gif_event::kind::reg_write && e.address == addr("TEX0_1")) {
@@ -290,7 +339,7 @@ TEST_P(FramePackets, DumpHoldsTheStreamAndDisplaysTheOutputBuffer) {
   EXPECT_EQ(bits(pmode, 1, 1), 0u);     // EN2
   EXPECT_EQ(bits(pmode, 2, 3), 1u);     // CRTMD = 001
   EXPECT_EQ(bits(pmode, 8, 8), 0xFFu);  // ALP: circuit 1 only
-  EXPECT_EQ(bits(dispfb1, 0, 9), 3u * fp.buffers.pages);  // FBP: the output buffer
+  EXPECT_EQ(bits(dispfb1, 0, 9), 2u * fp.buffers.pages);  // FBP: the output buffer, 2P
   EXPECT_EQ(bits(dispfb1, 9, 6), static_cast<std::uint64_t>((s.width + 63) / 64));
   EXPECT_EQ(bits(dispfb1, 15, 5), 0u);  // PSMCT32
   EXPECT_EQ((bits(display1, 32, 12) + 1) % (bits(display1, 23, 4) + 1), 0u);

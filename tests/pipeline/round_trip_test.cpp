@@ -1,7 +1,9 @@
 // Dump -> replay round trip (issue 15): the frame's GS dump (frame_packets + frame_dump, written and
 // read back as bytes) replayed through gs_packets' interpreter leaves in its local memory exactly the
-// renderer's memory-path buffers: the output (the displayed frame), the last light's DPB and the
-// LAB, word for word over the frame, for every method, the embedded scene and random scenes.
+// renderer's memory-path buffers, at the same addresses (one buffer layout): the output (the
+// displayed frame), the LAB and the DPB's pages (which step 3 draws the diffuse layer into) at the
+// end, and the last light's DPB (the dot products) as the last pass into the LAB reads it, word for
+// word over the frame, for every method, the embedded scene and random scenes.
 // The renderer's buffers come from its trace (render_options::trace: each buffer after its last pass).
 // (Checked to fail: with the triangle passes sent flat-shaded, PRIM.IIP = 0, the DPB and LAB differ.)
 #include <gtest/gtest.h>
@@ -12,8 +14,10 @@
 #include <random>
 #include <string>
 
+#include "gs_arith/registers.hpp"
 #include "gs_memory/address.hpp"
 #include "gs_packets/dump.hpp"
+#include "gs_packets/gs_registers.hpp"
 #include "gs_packets/interpreter.hpp"
 #include "pipeline/default_scene.hpp"
 #include "pipeline/frame_packets.hpp"
@@ -21,7 +25,7 @@
 namespace gsdot3::pipeline {
 namespace {
 
-// The buffer a traced render left last in `target` ("DPB", "LAB", "frame").
+// The buffer a traced render left last in `target` ("DPB", "LAB", "diffuse", "frame").
 const std::vector<std::uint32_t>& last(const std::vector<pass_record>& trace, const std::string& target) {
   for (auto it = trace.rbegin(); it != trace.rend(); ++it)
     if (it->target == target) return it->word;
@@ -38,37 +42,67 @@ void expect_round_trip(const scene& s, const prepared_scene& ps, method m, rende
   const gs::dump::gs_dump d = gs::dump::read_dump(gs::dump::write_dump(frame_dump(fp)));
   gs::mem::local_memory mem;
   gs::packets::interpreter gs(mem, {o.model, false});
-  gs.replay(d);  // throws gs::packets::unmodelled_error at a primitive the model cannot draw
+  // The dump's one PATH3 transfer event by event (as interpreter::replay applies it), the DPB read
+  // when the last primitive into the LAB (FRAME_1.FBP = P: the last light's ILP pass, which reads the
+  // DPB's sums) starts.
+  gs.load_state(d.state, d.state_version);
+  const auto paths = gs::dump::decode_paths(d);
+  ASSERT_EQ(paths[2].events.size(), paths[2].file_offsets.size());
+  const std::uint8_t FRAME_1 = *gs::packets::gs_register_address("FRAME_1"), PRIM = *gs::packets::gs_register_address("PRIM");
+  const auto P = fp.buffers.pages;
+  std::size_t last_into_lab = 0;
+  std::uint32_t fbp = 0;
+  for (std::size_t i = 0; i < paths[2].events.size(); ++i) {
+    const gs::packets::gif_event& e = paths[2].events[i];
+    if (e.what != gs::packets::gif_event::kind::reg_write) continue;
+    if (e.address == FRAME_1) fbp = static_cast<std::uint32_t>(gs::decode_frame(e.value).FBP.value());
+    if (e.address == PRIM && fbp == P) last_into_lab = i;
+  }
+  ASSERT_GT(last_into_lab, 0u);
+  auto buffer_at = [&](std::uint32_t page) {  // PSMCT32, FBW = ceil(width / 64)
+    return gs::mem::buffer{fixed::uint<14>::from_wrapped(32 * page), fixed::uint<6>::from_wrapped((s.width + 63) / 64),
+                           gs::mem::psm::PSMCT32};
+  };
+  auto words = [&](const gs::mem::buffer& at) {
+    std::vector<std::uint32_t> w(static_cast<std::size_t>(s.width) * static_cast<std::size_t>(s.height));
+    for (int y = 0; y < s.height; ++y)
+      for (int x = 0; x < s.width; ++x)
+        w[static_cast<std::size_t>(y * s.width + x)] = mem.read_pixel(at, static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y));
+    return w;
+  };
+  std::vector<std::uint32_t> dpb_read_by_ilp;
+  for (std::size_t i = 0; i < paths[2].events.size(); ++i) {
+    if (i == last_into_lab) dpb_read_by_ilp = words(buffer_at(0));
+    gs.apply(paths[2].events[i], paths[2].file_offsets[i]);  // throws gs::packets::unmodelled_error at what the model cannot draw
+  }
   for (const auto& u : gs.unmodelled_features()) ADD_FAILURE() << what << ": unmodelled at byte " << u.offset << ": " << u.what;
+  // The layout (docs/dumps.md): the DPB at FBP 0, the LAB at P, the output at 2P.
   const struct {
     const char* name;
-    int k;
-    const std::vector<std::uint32_t>& words;
-  } buffers[] = {{"DPB", 0, last(trace, "DPB")}, {"LAB", 1, last(trace, "LAB")}, {"output", 3, last(trace, "frame")}};
+    const std::vector<std::uint32_t>& replayed;
+    const std::vector<std::uint32_t>& rendered;
+  } buffers[] = {{"DPB read by the last ILP pass", dpb_read_by_ilp, last(trace, "DPB")},
+                 {"DPB pages at the end (diffuse layer)", words(buffer_at(0)), last(trace, "diffuse")},
+                 {"LAB", words(buffer_at(P)), last(trace, "LAB")},
+                 {"output", words(buffer_at(2 * P)), last(trace, "frame")}};
   for (const auto& b : buffers) {
-    const gs::mem::buffer at{fixed::uint<14>::from_wrapped(32 * fp.buffers.fbp(b.k)), fixed::uint<6>::from_wrapped(fp.buffers.fbw),
-                             gs::mem::psm::PSMCT32};
     long differing = 0;
     for (int y = 0; y < s.height; ++y)
       for (int x = 0; x < s.width; ++x) {
-        const std::uint32_t want = b.words[static_cast<std::size_t>(y * s.width + x)];
-        const std::uint32_t got = mem.read_pixel(at, static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y));
-        if (want != got && differing++ < 3)
-          ADD_FAILURE() << what << ": " << b.name << " (" << x << ", " << y << "): renderer 0x" << std::hex << want << ", replay 0x" << got;
+        const auto i = static_cast<std::size_t>(y * s.width + x);
+        if (b.rendered[i] != b.replayed[i] && differing++ < 3)
+          ADD_FAILURE() << what << ": " << b.name << " (" << x << ", " << y << "): renderer 0x" << std::hex << b.rendered[i]
+                        << ", replay 0x" << b.replayed[i];
       }
     EXPECT_EQ(differing, 0) << what << ": " << b.name;
   }
   // The displayed frame and the last light's dot products, as render() returns them.
-  const gs::mem::buffer out{fixed::uint<14>::from_wrapped(32 * fp.buffers.fbp(3)), fixed::uint<6>::from_wrapped(fp.buffers.fbw),
-                            gs::mem::psm::PSMCT32};
-  const gs::mem::buffer dpb{{}, fixed::uint<6>::from_wrapped(fp.buffers.fbw), gs::mem::psm::PSMCT32};
+  const std::vector<std::uint32_t> out = words(buffer_at(2 * P));
   long differing = 0;
-  for (int y = 0; y < s.height; ++y)
-    for (int x = 0; x < s.width; ++x) {
-      const auto i = static_cast<std::size_t>(y * s.width + x);
-      differing += f.colour[i] != (mem.read_pixel(out, static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y)) | 0xFF000000u);
-      differing += f.dot.back()[i] != (mem.read_pixel(dpb, static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y)) & 0xFFu);
-    }
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    differing += f.colour[i] != (out[i] | 0xFF000000u);
+    differing += f.dot.back()[i] != (dpb_read_by_ilp[i] & 0xFFu);
+  }
   EXPECT_EQ(differing, 0) << what << ": frame / dot";
   EXPECT_GT(std::count_if(f.visible_triangle.begin(), f.visible_triangle.end(), [](std::int32_t t) { return t >= 0; }), 200)
       << what << ": the head should be in view";

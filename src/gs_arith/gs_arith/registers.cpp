@@ -166,6 +166,19 @@ std::uint64_t encode(const dimx_reg& r) {
   return v;
 }
 
+zbuf_reg decode_zbuf(std::uint64_t v) {
+  field_reader f("ZBUF_1", v);
+  zbuf_reg r;
+  r.ZBP = f.uint<9>(0);
+  const auto psm = f.take(24, 4);
+  if (psm != 0x0 && psm != 0x1 && psm != 0x2 && psm != 0xA) f.fail("PSM", psm, "not a Z format (0 PSMZ32, 1 PSMZ24, 2 PSMZ16, 0xA PSMZ16S)");
+  r.PSM = static_cast<zbuf_psm>(psm);
+  r.ZMSK = f.bit(32);
+  f.done();
+  return r;
+}
+std::uint64_t encode(const zbuf_reg& r) { return bits(r.ZBP) | bits(r.PSM) << 24 | bits(r.ZMSK) << 32; }
+
 void set_register(gs_registers& regs, std::string_view name, std::uint64_t value) {
   if (name == "PRIM") regs.PRIM = decode_prim(value);
   else if (name == "RGBAQ") regs.RGBAQ = decode_rgbaq(value);

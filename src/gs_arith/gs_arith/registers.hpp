@@ -9,6 +9,11 @@
 //   FRAME_1  FBP:9 _:7 FBW:6 _:2 PSM:6 _:2 FBMSK:32
 //   COLCLAMP CLAMP:1   PABE PABE:1   FBA_1 FBA:1   DTHE DTHE:1
 //   DIMX     DM00:3 _:1 DM01:3 _:1 ... DM33:3 _:1 (row i = y & 3 in bits 16·i .. 16·i + 15)
+//   ZBUF_1   ZBP:9 _:15 PSM:4 _:4 ZMSK:1 _:31 (PSM 0 PSMZ32, 1 PSMZ24, 2 PSMZ16, 0xA PSMZ16S; struct in
+//            depth_test.hpp). PCSX2 `pcsx2/GS/GSRegs.h` `REG64_(GIFReg, ZBUF)` (GIFRegZBUF) has ZBP:9,
+//            _PAD1:15, then PSM:6 _PAD2:2 with the manual's "PSM:4, _PAD2:4" kept as a comment (its
+//            GIFRegHandlerZBUF ORs 0x30 into PSM, so 6 bits hold the Z format's full code); its
+//            `GSState.h` ZBUF_REG_MASK 0x10F0001FF keeps bits 0-8, 24-27 and 32: the 4-bit field.
 // Decoding is strict: a set padding bit, a reserved selector (ALPHA A/B/C/D = 3, PRIM = 7), an
 // unknown PSM/CPSM, or TW/TH > 10 throws gs::register_error naming the register and the field.
 // encode() is the exact inverse on every value decode() accepts.
@@ -24,6 +29,7 @@
 #include "gs_arith/alpha_blend.hpp"
 #include "gs_arith/alpha_test.hpp"
 #include "gs_arith/colour.hpp"
+#include "gs_arith/depth_test.hpp"
 #include "gs_arith/dither.hpp"
 #include "gs_arith/frame_write.hpp"
 #include "gs_arith/texture_function.hpp"
@@ -97,6 +103,7 @@ pabe_reg decode_pabe(std::uint64_t v);
 fba_reg decode_fba(std::uint64_t v);
 dthe_reg decode_dthe(std::uint64_t v);
 dimx_reg decode_dimx(std::uint64_t v);
+zbuf_reg decode_zbuf(std::uint64_t v);  // named "ZBUF_1" in errors
 
 std::uint64_t encode(const prim_reg& r);
 std::uint64_t encode(const rgbaq_reg& r);
@@ -109,6 +116,7 @@ std::uint64_t encode(const pabe_reg& r);
 std::uint64_t encode(const fba_reg& r);
 std::uint64_t encode(const dthe_reg& r);
 std::uint64_t encode(const dimx_reg& r);
+std::uint64_t encode(const zbuf_reg& r);
 
 // The register state one pixel sees. Defaults are the neutral values `gsdot3 alu` documents: every
 // register 0 (no texture, no blend, no alpha test, PSMCT32, FBMSK = 0, no FBA, no dither) except

@@ -3,11 +3,12 @@
 // Register fields decoded here (GS User's Manual register map, as PCSX2 `pcsx2/GS/GSRegs.h` transcribes
 // it; the other registers go through gs_arith / gs_memory's strict decoders):
 //   XYOFFSET OFX 0-15, OFY 32-47 (12.4)      SCISSOR SCAX0 0-10, SCAX1 16-26, SCAY0 32-42, SCAY1 48-58
-//   ZBUF     ZBP 0-8, PSM 24-27, ZMSK 32     TEXA    TA0 0-7, AEM 15, TA1 32-39       SCANMSK MSK 0-1
+//   TEXA     TA0 0-7, AEM 15, TA1 32-39      SCANMSK MSK 0-1
 //   TEX1     LCM 0, MXL 2-4, MMAG 5, MMIN 6-8, MTBA 9, L 19-20, K 32-43 (signed 7.4)
 // Bits that belong to no field are dropped before the strict decoders see a value (the GS has nothing
 // there to read; PCSX2's newest `GSState.h` masks register writes the same way, e.g. FRAME_REG_MASK
-// 0xFFFFFFFF3F3F01FF, ALPHA_REG_MASK 0xFF000000FF, DIMX_REG_MASK 0x7777777777777777); reserved values
+// 0xFFFFFFFF3F3F01FF, ALPHA_REG_MASK 0xFF000000FF, DIMX_REG_MASK 0x7777777777777777, ZBUF_REG_MASK
+// 0x10F0001FF); reserved values
 // in a field (ALPHA selector 3, PRIM 7, an unknown PSM) are still refused and named.
 // The Z buffer is addressed with FRAME.FBW (the GS has no Z width; PCSX2 `GSState::Reset` builds the Z
 // offset from ZBUF.Block() and FRAME.FBW).
@@ -81,7 +82,7 @@ std::string texture_filter(const draw_registers& r, const decoded& d, std::span<
 // The field bits of each register the strict decoders read (the manual's layouts, registers.hpp).
 constexpr std::uint64_t prim_fields = 0x7FF, frame_fields = 0xFFFFFFFF3F3F01FFull, test_fields = 0x7FFFF,
                         alpha_fields = 0xFF000000FFull, one_bit = 1, dimx_fields = 0x7777777777777777ull,
-                        clamp_fields = (std::uint64_t{1} << 44) - 1;
+                        clamp_fields = (std::uint64_t{1} << 44) - 1, zbuf_fields = 0x10F0001FFull;
 
 std::string decode(const draw_registers& r, std::span<const vertex> v, decoded& d) {
   const std::string ctx = "context " + std::to_string(r.context) + " ";
@@ -106,6 +107,7 @@ std::string decode(const draw_registers& r, std::span<const vertex> v, decoded& 
     d.regs.PABE = decode_pabe(r.PABE & one_bit);
     d.regs.DTHE = decode_dthe(r.DTHE & one_bit);
     d.regs.DIMX = decode_dimx(r.DIMX & dimx_fields);
+    d.ZBUF = decode_zbuf(r.ZBUF & zbuf_fields);
     if (p.TME) {
       d.regs.TEX0_1 = decode_tex0(r.TEX0);
       d.clamp = mem::decode_clamp(r.CLAMP & clamp_fields);
@@ -115,10 +117,7 @@ std::string decode(const draw_registers& r, std::span<const vertex> v, decoded& 
   }
   d.frame = {mem::from_page(d.regs.FRAME_1.FBP), d.regs.FRAME_1.FBW,
              static_cast<mem::psm>(static_cast<std::uint8_t>(d.regs.FRAME_1.PSM))};
-  const unsigned zpsm = bits(r.ZBUF, 24, 4);
-  if (zpsm != 0 && zpsm != 1 && zpsm != 2 && zpsm != 0xA) return ctx + "ZBUF.PSM = " + std::to_string(zpsm) + " (reserved)";
-  d.ZBUF = {fixed::uint<9>::from_wrapped(bits(r.ZBUF, 0, 9)), static_cast<zbuf_psm>(zpsm), bits(r.ZBUF, 32, 1) != 0};
-  d.zbuf = {mem::from_page(d.ZBUF.ZBP), d.regs.FRAME_1.FBW, static_cast<mem::psm>(0x30 | zpsm)};
+  d.zbuf = {mem::from_page(d.ZBUF.ZBP), d.regs.FRAME_1.FBW, static_cast<mem::psm>(0x30 | static_cast<unsigned>(d.ZBUF.PSM))};
   d.ofx = static_cast<std::int32_t>(bits(r.XYOFFSET, 0, 16));
   d.ofy = static_cast<std::int32_t>(bits(r.XYOFFSET, 32, 16));
   d.clip = {static_cast<int>(bits(r.SCISSOR, 0, 11)), static_cast<int>(bits(r.SCISSOR, 32, 11)),

@@ -29,15 +29,11 @@ constexpr std::uint8_t address(std::string_view name) { return *pk::gs_register_
 
 // Registers without a decoder in gs_arith / gs_memory, packed by their manual layouts (PCSX2
 // `GSRegs.h` REG64_ structs): XYOFFSET OFX 0-15, OFY 32-47; SCISSOR SCAX0 0-10, SCAX1 16-26, SCAY0
-// 32-42, SCAY1 48-58; ZBUF ZBP 0-8, PSM 24-27 (the Z PSM's low 4 bits), ZMSK 32; TEX1 LCM 0,
-// MXL 2-4, MMAG 5, MMIN 6-8, MTBA 9, L 19-20, K 32-43; PRMODECONT AC 0.
+// 32-42, SCAY1 48-58; TEX1 LCM 0, MXL 2-4, MMAG 5, MMIN 6-8, MTBA 9, L 19-20, K 32-43; PRMODECONT AC 0.
 constexpr std::uint64_t xyoffset(std::uint32_t ofx, std::uint32_t ofy) { return ofx | (std::uint64_t{ofy} << 32); }
 constexpr std::uint64_t scissor_reg(const scissor& r) {
   return static_cast<std::uint64_t>(r.x0) | (static_cast<std::uint64_t>(r.x1 - 1) << 16) |
          (static_cast<std::uint64_t>(r.y0) << 32) | (static_cast<std::uint64_t>(r.y1 - 1) << 48);
-}
-constexpr std::uint64_t zbuf(std::uint32_t zbp, const gs::zbuf_reg& z) {
-  return zbp | (std::uint64_t{static_cast<std::uint8_t>(z.PSM)} << 24) | (std::uint64_t{z.ZMSK} << 32);
 }
 // LCM = 1 (LOD = K = 0: the base level), MXL = 0, MMAG = MMIN = the filter.
 constexpr std::uint64_t tex1(bool linear) { return 1u | (std::uint64_t{linear} << 5) | (std::uint64_t{linear} << 6); }
@@ -69,16 +65,25 @@ class stream {
     pending_.clear();
   }
 
-  // FRAME_1 (buffer k of the layout), ALPHA_1, COLCLAMP of a pass.
+  // FRAME_1 (a buffer of the layout, FBP `fbp`), ALPHA_1, COLCLAMP of a pass.
   void target(std::uint32_t fbp, const pass_regs& p, gs::frame_psm psm = gs::frame_psm::PSMCT32) {
     set(address("FRAME_1"), gs::encode(gs::frame_reg{fixed::uint<9>::from_wrapped(fbp), fixed::uint<6>::from_wrapped(b_.fbw), psm, p.FBMSK}));
     set(address("ALPHA_1"), gs::encode(p.ALPHA));
     set(address("COLCLAMP"), gs::encode(gs::colclamp_reg{p.CLAMP}));
   }
-  // TEST_1 and ZBUF_1 of a pass (pass_table.hpp's depth settings), the Z buffer at ZBP = 3P.
-  void depth(const gs::test_reg& test, const gs::zbuf_reg& z) {
+  // TEST_1 and ZBUF_1 of a pass (pass_table.hpp's depth settings), ZBUF_1.ZBP the layout's Z buffer.
+  void depth(const gs::test_reg& test, gs::zbuf_reg z) {
     set(address("TEST_1"), gs::encode(test));
-    set(address("ZBUF_1"), zbuf(3 * b_.pages, z));
+    z.ZBP = fixed::uint<9>::from_wrapped(b_.z());
+    set(address("ZBUF_1"), gs::encode(z));
+  }
+  // The local -> local copy of gs_inputs.hpp's lab_to_output (nothing when the area is empty).
+  void copy(const std::optional<lab_copy>& c) {
+    if (!c) return;
+    set(address("BITBLTBUF"), gs::mem::encode(c->BITBLTBUF));
+    set(address("TRXPOS"), gs::mem::encode(c->TRXPOS));
+    set(address("TRXREG"), gs::mem::encode(c->TRXREG));
+    set(address("TRXDIR"), gs::mem::encode(lab_copy::TRXDIR));
   }
   void clip(const scissor& r) { set(address("SCISSOR_1"), scissor_reg(r)); }
   // TEX0_1 (with the pass's TFX / TCC), TEX1_1, CLAMP_1.
@@ -209,17 +214,14 @@ frame_packets build_frame_packets(const scene& s, const prepared_scene& ps, meth
   frame_packets fp;
   fp.buffers = buffer_layout_for(ps.width, ps.height);
   const buffer_layout& b = fp.buffers;
-  if (4 * b.pages > gs::mem::memory_blocks / 32)
+  if (!b.fits())
     throw std::invalid_argument("frame packets: four " + std::to_string(ps.width) + "x" + std::to_string(ps.height) +
                                 " PSMCT32 buffers do not fit in the GS's 4 MiB");
-  fp.z = {fixed::uint<14>::from_wrapped(32 * b.fbp(3)), fixed::uint<6>::from_wrapped(b.fbw), gs::mem::psm::PSMZ24};
+  fp.z = {fixed::uint<14>::from_wrapped(32 * b.z()), fixed::uint<6>::from_wrapped(b.fbw), gs::mem::psm::PSMZ24};
   const gs_inputs in = place_inputs(make_inputs(s, m, o), b.first_texture_block());
   const scissor area = detail::band_renderer::drawn_area(ps, {0, 0, ps.width, ps.height});
   stream g(ps, b, area);
-  const std::uint32_t DPB = b.fbp(0), LAB = b.fbp(1), DIFF = b.fbp(2), OUT = b.fbp(3);
-  auto buffer = [&](std::uint32_t fbp) {
-    return gs::mem::buffer{fixed::uint<14>::from_wrapped(32 * fbp), fixed::uint<6>::from_wrapped(b.fbw), gs::mem::psm::PSMCT32};
-  };
+  const std::uint32_t DPB = b.dpb(), LAB = b.lab(), OUT = b.output();
 
   // 1. Environment.
   g.set(address("PRMODECONT"), 1);
@@ -232,17 +234,15 @@ frame_packets build_frame_packets(const scene& s, const prepared_scene& ps, meth
   g.flush();
   add_uploads(g.out, in);
   g.texflush();
-  // 3. Clears over the frame.
+  // 3. Clears over the frame; the output and the Z buffer by one sprite (colour 0, Z 0).
   g.depth(depth_always, z_masked);
   g.target(DPB, step1_ambient);
   g.frame_sprite(step1_ambient, gs::rgba8::from_u32(clear_dpb));
   g.target(LAB, step1_ambient);
   g.frame_sprite(step1_ambient, gs::rgba8{});
   g.depth(depth_always, z_written);
-  pass_regs z_only = step1_ambient;
-  z_only.FBMSK = 0xFFFFFFFFu;
-  g.target(OUT, z_only);
-  g.frame_sprite(z_only, gs::rgba8{});
+  g.target(OUT, step1_ambient);
+  g.frame_sprite(step1_ambient, gs::rgba8{});
 
   // 4. Step 1: Z and ambient.
   const auto nm_uv = [](const prepared_triangle& t, int k) { return normal_map_uv(t, k); };
@@ -283,7 +283,7 @@ frame_packets build_frame_packets(const scene& s, const prepared_scene& ps, meth
         g.clip(area);
         g.depth(depth_always, z_masked);
         g.texflush();
-        gs::mem::buffer t8h = buffer(DPB);
+        gs::mem::buffer t8h = b.colour(DPB);
         t8h.PSM = gs::mem::psm::PSMT8H;
         g.texture(two_pass_add_alpha, t8h, ps.width, ps.height, in.cbp[grey], false, false);
         g.target(DPB, two_pass_add_alpha);
@@ -330,35 +330,29 @@ frame_packets build_frame_packets(const scene& s, const prepared_scene& ps, meth
     g.channel_pass(ilp_into_lab, rgb(lc[0], lc[1], lc[2], 0x80), in.cbp[ilp], 0, DPB);
   }
 
-  // Step 3: the diffuse layer.
+  // Step 3: the DPB cleared to zero over the sprite area and the diffuse layer drawn into it.
   g.clip(area);
   g.depth(depth_always, z_masked);
-  g.target(DIFF, step1_ambient);
+  g.target(DPB, step1_ambient);
   g.area_sprite(step1_ambient, gs::rgba8{});
   g.clip(g.frame());
   g.depth(depth_gequal, z_masked);
   g.texture(diffuse_layer, in.diffuse_at, in.diffuse->width, in.diffuse->height, std::nullopt, false, linear);
-  g.target(DIFF, diffuse_layer);
+  g.target(DPB, diffuse_layer);
   g.triangles(diffuse_layer, true, white_vertex, nm_uv);
 
-  // Step 4: the output cleared over the frame (the Z buffer shared its pages: no Z is read from
-  // here on), the LAB copied into it; per channel the LAB byte moved into the output's alpha, then
-  // diffuse × alpha into that channel.
+  // Step 4: the LAB copied into the output by the renderer's transfer; per channel the LAB byte
+  // moved into the output's alpha, then diffuse (the DPB) × alpha into that channel.
   g.depth(depth_always, z_masked);
-  g.target(OUT, step1_ambient);
-  g.frame_sprite(step1_ambient, gs::rgba8{});
   g.clip(area);
-  g.texflush();
-  g.texture(copy_word, buffer(LAB), ps.width, ps.height, std::nullopt, false, false);
-  g.target(OUT, copy_word);
-  g.area_sprite(copy_word, white);
+  g.copy(lab_to_output(b, area, false));
   const pass_regs* multiply[3] = {&multiply_red, &multiply_green, &multiply_blue};
   for (unsigned c = 0; c < 3; ++c) {
     g.texflush();
     g.target(OUT, move_into_alpha);
     g.channel_pass(move_into_alpha, white, in.cbp[alpha_index], c, LAB);
     g.texflush();
-    g.texture(*multiply[c], buffer(DIFF), ps.width, ps.height, std::nullopt, false, false);
+    g.texture(*multiply[c], b.colour(DPB), ps.width, ps.height, std::nullopt, false, false);
     g.target(OUT, *multiply[c]);
     g.area_sprite(*multiply[c], white);
   }

@@ -6,11 +6,12 @@
 // The stream (context 1 throughout, PRMODECONT.AC = 1, XYOFFSET_1 = 2048.0 in both axes):
 // 1. environment: PRMODECONT, XYOFFSET_1, SCISSOR_1 (the frame), DTHE = 0, PABE = 0, FBA_1 = 0;
 // 2. uploads (gs_inputs.hpp: BITBLTBUF, TRXPOS, TRXREG, TRXDIR + IMAGE), then TEXFLUSH;
-// 3. clears, as flat sprites: the DPB to 0x00808080 and the LAB to 0 over the frame, the Z buffer
-//    to 0 (FBMSK = all ones, ZTST = ALWAYS, ZMSK = 0);
-// 4. step 1 (Z and ambient: TRIANGLE, ZTST = GEQUAL, Z written), per light steps 2.1-2.6, step 3,
-//    step 4 (after a clear of the output). Each pass writes FRAME_1, ALPHA_1, COLCLAMP, TEST_1,
-//    ZBUF_1 and its texture's TEX0_1, TEX1_1, CLAMP_1. Triangle passes: PACKED {RGBAQ, UV, XYZ2}
+// 3. clears, as flat sprites over the frame: the DPB to 0x00808080, the LAB to 0, and the output
+//    and the Z buffer to 0 by one sprite (ZTST = ALWAYS, ZMSK = 0);
+// 4. step 1 (Z and ambient: TRIANGLE, ZTST = GEQUAL, Z written), per light steps 2.1-2.6, step 3
+//    (the DPB cleared to 0 over the sprite area, the diffuse layer drawn into it), step 4. Each pass
+//    writes FRAME_1, ALPHA_1, COLCLAMP, TEST_1, ZBUF_1 (gs_arith's encoders) and its texture's
+//    TEX0_1, TEX1_1, CLAMP_1. Triangle passes: PACKED {RGBAQ, UV, XYZ2}
 //    per vertex with PRE = 1 (PRIM.IIP = 1 for the Gouraud passes, FST = 1), ZTST = GEQUAL with
 //    ZMSK = 1 after step 1. Sprite passes: the flat colour by A+D RGBAQ, PACKED {UV, XYZ2, UV, XYZ2}
 //    per sprite, drawn 1:1 (UV = the texel at the top-left pixel, 12.4) with SCISSOR_1 = the
@@ -18,10 +19,11 @@
 //    A texture read from a buffer drawn before is preceded by TEXFLUSH. The post filter, the ILP
 //    read and step 4's channel move are gs_memory's channel-fetch sprites per page (TEX0_1 PSMT8 at
 //    the page, TBW = 2·FBW, TW = 7, TH = 6; CLAMP_1 REGION_REPEAT); step 4's copy of the LAB into
-//    the output is a DECAL sprite (the renderer copies the words directly: the same words).
-// Memory: the DPB, LAB, diffuse layer and output at FBP 0, P, 2P, 3P (render.cpp), the textures
-// after them (gs_inputs.hpp); the Z buffer (PSMZ24) shares the output buffer's pages, which hold no
-// colour until step 4: step 4 clears the output over the frame first and draws no Z-tested primitive.
+//    the output is the renderer's local -> local transfer (gs_inputs.hpp's lab_to_output: BITBLTBUF,
+//    TRXPOS, TRXREG, then TRXDIR = 2, as A+D writes).
+// Memory: gs_inputs.hpp's buffer_layout, the renderer's memory path's: the DPB (and in step 3 the
+// diffuse layer) at FBP 0, the LAB at P, the output at 2P, the Z buffer (PSMZ24) at ZBP = 3P, the
+// textures after them.
 // Not written: the z-trick DPB clears (render_options::dpb_clear other than explicit); frames wider
 // or taller than 1023 pixels (a sprite's UV is 10.4: at most 1023.9375).
 #pragma once

@@ -50,6 +50,22 @@ gs::clut_buffer index_in_alpha() {
 
 }  // namespace
 
+std::optional<lab_copy> lab_to_output(const buffer_layout& b, const scissor& area, bool lab_in_z_layout) {
+  if (area.x0 >= area.x1 || area.y0 >= area.y1) return std::nullopt;
+  lab_copy c;
+  const gs::mem::buffer lab = b.colour(b.lab()), out = b.colour(b.output());
+  c.BITBLTBUF.SBP = lab.BP;
+  c.BITBLTBUF.SBW = lab.BW;
+  c.BITBLTBUF.SPSM = lab_in_z_layout ? gs::mem::psm::PSMZ32 : gs::mem::psm::PSMCT32;
+  c.BITBLTBUF.DBP = out.BP;
+  c.BITBLTBUF.DBW = out.BW;
+  c.BITBLTBUF.DPSM = out.PSM;
+  c.TRXPOS.SSAX = c.TRXPOS.DSAX = fixed::uint<11>::from_wrapped(area.x0);
+  c.TRXPOS.SSAY = c.TRXPOS.DSAY = fixed::uint<11>::from_wrapped(area.y0);
+  c.TRXREG = {fixed::uint<12>::from_wrapped(area.x1 - area.x0), fixed::uint<12>::from_wrapped(area.y1 - area.y0)};
+  return c;
+}
+
 std::array<gs::clut_buffer*, 8> palettes(gs_inputs& in) {
   return {&in.pos, &in.neg, &in.axis[0], &in.axis[1], &in.axis[2], &in.ilp, &in.grey, &in.alpha_index};
 }

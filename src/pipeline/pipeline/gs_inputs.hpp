@@ -1,37 +1,64 @@
 // pipeline/gs_inputs.hpp — a method's textures and palettes (built once per frame, the VU1 / tool
-// side) and, for the memory path and the packet stream, where they live in GS local memory and the
-// host -> local transfers that put them there. The renderer's memory path runs these transfers
+// side) and, for the memory path and the packet stream, where they live in GS local memory, the
+// host -> local transfers that put them there, and the frame buffers' layout with step 4's copy. The renderer's memory path runs these transfers
 // through the packet interpreter (gs_packets), the dump writer sends the same packets: one upload.
 #pragma once
 
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "gs_arith/clut.hpp"
 #include "gs_memory/address.hpp"
 #include "gs_memory/fast_address.hpp"
 #include "gs_memory/local_memory.hpp"
+#include "gs_memory/memory_registers.hpp"
 #include "gs_packets/builder.hpp"
+#include "pipeline/raster.hpp"
 #include "pipeline/render.hpp"
 #include "pipeline/scene.hpp"
 
 namespace gsdot3::pipeline {
 
-// The memory path's frame buffers: PSMCT32, FBW = ceil(width / 64), P pages each, the DPB, LAB,
-// diffuse layer and output at FBP 0, P, 2P, 3P; the textures start at block 4·32·P.
+// The memory path's buffers, one layout for the renderer's memory path (render.cpp) and the GIF
+// packet stream of the same frame (frame_packets.cpp): PSMCT32, FBW = ceil(width / 64), P pages each;
+// the DPB at FBP 0 (step 3 draws the diffuse layer into it, as the paper's step 3 says), the LAB at
+// P, the output at 2P, the Z buffer (PSMZ24) at ZBP = 3P; the textures start at block 4·32·P.
 struct buffer_layout {
   std::uint32_t fbw = 0, pages = 0;
-  // Buffer k at FBP k·P. The packet stream (frame_packets.cpp): 0 DPB, 1 LAB, 2 diffuse, 3 output (Z on
-  // the output's pages); the renderer's memory path (render.cpp): 0 DPB and diffuse, 1 LAB, 2 output, 3 Z.
-  std::uint32_t fbp(int k) const noexcept { return static_cast<std::uint32_t>(k) * pages; }
+  // FRAME.FBP of the DPB, the LAB and the output, ZBUF.ZBP of the Z buffer (8 KiB pages).
+  std::uint32_t dpb() const noexcept { return 0; }
+  std::uint32_t lab() const noexcept { return pages; }
+  std::uint32_t output() const noexcept { return 2 * pages; }
+  std::uint32_t z() const noexcept { return 3 * pages; }
   std::uint32_t first_texture_block() const noexcept { return 4 * 32 * pages; }
+  // Whether the four buffers fit in the GS's 4 MiB (at 512×448: 4 × 112 of the 512 pages).
+  bool fits() const noexcept { return 4 * pages * gs::mem::page_bytes <= gs::mem::memory_bytes; }
+  // The PSMCT32 buffer at FBP `fbp` (one of the above) as a texture / transfer buffer.
+  gs::mem::buffer colour(std::uint32_t fbp) const noexcept {
+    return {fixed::uint<14>::from_wrapped(32 * fbp), fixed::uint<6>::from_wrapped(fbw), gs::mem::psm::PSMCT32};
+  }
 };
 constexpr buffer_layout buffer_layout_for(int width, int height) noexcept {
   const auto fbw = static_cast<std::uint32_t>((width + 63) / 64);
   return {fbw, fbw * static_cast<std::uint32_t>((height + 31) / 32)};
 }
+
+// The copy of the LAB into the output over `area` before step 4, a local -> local transfer (the GS's
+// own copy, no pixel arithmetic): BITBLTBUF SBP = the LAB, SPSM = PSMCT32 (PSMZ32 when the LAB was
+// drawn in the Z layout, z-trick-psmz32: the transfer then reads it back into PSMCT32 order, the
+// paper's "unswizzle"), DBP = the output (PSMCT32), both with FBW; TRXPOS = the area's corner on both
+// sides, DIR = 0; TRXREG = the area's size; then TRXDIR = 2 starts it. The renderer runs it through
+// gs_memory's local_to_local, the packet stream writes it as A+D: one copy. Empty area: no copy.
+struct lab_copy {
+  gs::mem::bitbltbuf_reg BITBLTBUF;
+  gs::mem::trxpos_reg TRXPOS;
+  gs::mem::trxreg_reg TRXREG;
+  static constexpr gs::mem::trxdir_reg TRXDIR{gs::mem::xdir::local_to_local};
+};
+std::optional<lab_copy> lab_to_output(const buffer_layout& b, const scissor& area, bool lab_in_z_layout);
 
 struct gs_inputs {
   const normal_map* nm = nullptr;

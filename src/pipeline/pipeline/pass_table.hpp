@@ -65,8 +65,6 @@ inline constexpr pass_regs multiply_red{               true,  true,  gs::tfx::DE
 inline constexpr pass_regs multiply_green{             true,  true,  gs::tfx::DECAL,     gs::tcc::RGB,   multiply_by_ad,  true,  only_channel[1]};
 inline constexpr pass_regs multiply_blue{              true,  true,  gs::tfx::DECAL,     gs::tcc::RGB,   multiply_by_ad,  true,  only_channel[2]};
 inline constexpr pass_regs move_into_alpha{            true,  false, gs::tfx::DECAL,     gs::tcc::RGBA,  {},              true,  0x00FFFFFFu};  // memory path, step 4
-// The packet stream's copy of the LAB into the output before step 4 (a DECAL sprite: texel = word).
-inline constexpr pass_regs copy_word{                  true,  false, gs::tfx::DECAL,     gs::tcc::RGBA,  {},              true,  0};
 
 inline gs::rgba8 rgb(int r, int g, int b, int a) {
   return {gs::u8::from_wrapped(r), gs::u8::from_wrapped(g), gs::u8::from_wrapped(b), gs::u8::from_wrapped(a)};

@@ -13,12 +13,14 @@
 //   (PSMCT32; step 3 draws the diffuse layer into it, as the paper's step 3 says: "We are done with
 //   the DPB. Clear it to zero and render all objects unlit"), the LAB at P, the output at 2P (P =
 //   pages per buffer) and the Z buffer at ZBP = 3P (PSMZ24, band_renderer.hpp's z_view), the
-//   textures from 4P on: at 512×448 that is 4 × 112 of the 512 pages, none overlapping. The post
+//   textures from 4P on: at 512×448 that is 4 × 112 of the 512 pages, none overlapping (gs_inputs.hpp's
+//   buffer_layout, the packet stream's too). The post
 //   filter, the ILP read and step 4's channel move are gs_memory's channel-fetch sprites (the DPB /
 //   LAB read as a PSMT8 texture, TBW = 2·FBW, TBP0 per page, CLAMP_1 REGION_REPEAT), each texel
 //   through the PSMT8 address function (tabulated: gs_memory/fast_address.hpp, as are the frame
 //   buffers' and textures' addresses); the two-pass alpha pass reads the DPB as PSMT8H. The copy of
-//   the LAB into the output before step 4 is a local -> local transfer (TRXDIR = 2, copy_lab): the
+//   the LAB into the output before step 4 is a local -> local transfer (TRXDIR = 2, gs_inputs.hpp's
+//   lab_to_output, which the packet stream writes as A+D): the
 //   GS's own copy, no pixel arithmetic, and with SPSM = PSMZ32 it is also the paper's "unswizzle the
 //   LAB" of the z-trick-psmz32 mode. The normal map (PSMT8), the sphere map and the diffuse texture
 //   (PSMCT32) are uploaded by host -> local transfers and every texel is read from memory; the
@@ -32,6 +34,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -82,6 +85,7 @@ struct frame_buffers {
   z_view zb;
   FB lab, dpb, diff, out;
   gs::mem::local_memory* memory = nullptr;  // the memory path's local memory, else null
+  buffer_layout layout;                     // the memory path's buffers (gs_inputs.hpp)
   const gs::mem::texel_addresses* page_as_t8 = nullptr;  // the memory path: a page of the DPB / LAB as PSMT8 (BP 0)
   dpb_clear_mode clear = dpb_clear_mode::explicit_clear;
 };
@@ -178,24 +182,11 @@ void channel_pass(band_renderer& r, const frame_buffers<memory_view>& fb, gs::rg
     }
 }
 
-// The memory path's copy of the LAB into the output over `area` (before step 4): BITBLTBUF SBP = the
-// LAB (PSMZ32 when it was drawn in the Z layout: the transfer reads it back to PSMCT32 order), DBP =
-// the output, TRXPOS = the area's corner on both sides, DIR = 0, TRXREG = its size, TRXDIR = 2.
+// The memory path's copy of the LAB into the output over `area` (before step 4): gs_inputs.hpp's
+// lab_to_output, the transfer the packet stream writes, run through gs_memory's local_to_local.
 void copy_lab(const frame_buffers<memory_view>& fb, const scissor& area) {
-  if (area.x0 >= area.x1 || area.y0 >= area.y1) return;
-  gs::mem::bitbltbuf_reg blt;
-  blt.SBP = fixed::uint<14>::from_wrapped(fb.lab.bp);
-  blt.SBW = fixed::uint<6>::from_wrapped(fb.lab.bw);
-  blt.SPSM = fb.lab.z ? gs::mem::psm::PSMZ32 : gs::mem::psm::PSMCT32;
-  blt.DBP = fixed::uint<14>::from_wrapped(fb.out.bp);
-  blt.DBW = fixed::uint<6>::from_wrapped(fb.out.bw);
-  blt.DPSM = gs::mem::psm::PSMCT32;
-  gs::mem::trxpos_reg pos;
-  pos.SSAX = pos.DSAX = fixed::uint<11>::from_wrapped(area.x0);
-  pos.SSAY = pos.DSAY = fixed::uint<11>::from_wrapped(area.y0);
-  gs::mem::local_to_local(*fb.memory, blt, pos,
-                          {fixed::uint<12>::from_wrapped(area.x1 - area.x0), fixed::uint<12>::from_wrapped(area.y1 - area.y0)},
-                          {gs::mem::xdir::local_to_local});
+  if (const std::optional<lab_copy> c = lab_to_output(fb.layout, area, fb.lab.z))
+    gs::mem::local_to_local(*fb.memory, c->BITBLTBUF, c->TRXPOS, c->TRXREG, lab_copy::TRXDIR);
 }
 
 template <class FB>
@@ -398,21 +389,23 @@ frame render(const scene& s, const prepared_scene& ps, method m, const render_op
   result.visible_triangle.assign(n, -1);
   result.dot.assign(s.lights.size(), std::vector<std::uint8_t>(n, 0));
   if (o.memory_path || o.dpb_clear != dpb_clear_mode::explicit_clear) {
-    // Buffers of FBW = ceil(width / 64): the DPB (and in step 3 the diffuse layer) at FBP 0, the
-    // LAB at P, the output at 2P (PSMCT32), the Z buffer at ZBP = 3P (PSMZ24).
+    // gs_inputs.hpp's buffer layout: the DPB (and in step 3 the diffuse layer), the LAB, the output
+    // (PSMCT32) and the Z buffer (PSMZ24), FBW = ceil(width / 64).
     const buffer_layout layout = buffer_layout_for(ps.width, ps.height);
-    const std::uint32_t fbw = layout.fbw, pages = layout.pages;
-    if (4 * pages * gs::mem::page_bytes > gs::mem::memory_bytes)
+    const std::uint32_t fbw = layout.fbw;
+    if (!layout.fits())
       throw std::invalid_argument("memory path: four " + std::to_string(ps.width) + "x" + std::to_string(ps.height) +
                                   " 32-bit buffers do not fit in the GS's 4 MiB");
     gs::mem::local_memory memory;
     frame_buffers<memory_view> fb;
     fb.memory = &memory;
+    fb.layout = layout;
     fb.clear = o.dpb_clear;
-    memory_view* views[3] = {&fb.dpb, &fb.lab, &fb.out};
-    for (std::uint32_t k = 0; k < 3; ++k) *views[k] = memory_view{memory.words(), 32 * k * pages, fbw, false};
+    fb.dpb = memory_view{memory.words(), 32 * layout.dpb(), fbw, false};
+    fb.lab = memory_view{memory.words(), 32 * layout.lab(), fbw, false};
+    fb.out = memory_view{memory.words(), 32 * layout.output(), fbw, false};
     fb.diff = fb.dpb;
-    fb.zb.memory = memory_view{memory.words(), 32 * 3 * pages, fbw, true};
+    fb.zb.memory = memory_view{memory.words(), 32 * layout.z(), fbw, true};
     fb.zb.in_memory = true;
     fb.dpb.z = o.dpb_clear == dpb_clear_mode::z_trick;
     fb.lab.z = o.dpb_clear == dpb_clear_mode::z_trick_psmz32;

@@ -4,6 +4,7 @@
 #include <array>
 #include <utility>
 
+#include "gs_arith/registers.hpp"
 #include "gs_memory/memory_registers.hpp"
 #include "gs_packets/gs_registers.hpp"
 #include "gs_packets/state.hpp"
@@ -62,7 +63,8 @@ display_registers probe_display() {
 pk::packet_builder probe_packets() {
   const design& des = probe_design();
   pk::packet_builder pb;
-  const write setup[] = {{0x18, 0}, {0x1A, 1}, {0x4E, 200u | std::uint64_t{1} << 32}};  // XYOFFSET_1, PRMODECONT, ZBUF_1
+  const gs::zbuf_reg zbuf{fixed::uint<9>::from_wrapped(200), gs::zbuf_psm::PSMZ32, true};  // ZMSK = 1: no Z writes
+  const write setup[] = {{0x18, 0}, {0x1A, 1}, {0x4E, gs::encode(zbuf)}};  // XYOFFSET_1, PRMODECONT, ZBUF_1
   pb.ad(setup);
   add_texture_upload(pb, des.texture);
   std::vector<write> last;
