@@ -50,7 +50,7 @@ struct triangle_case {
 // units per axis) on those two channels; the third loses most of a level on one axis (X and Y
 // differ by 15 there, which no geometry with both lag steps below 1 makes lossless). The same tool
 // reaches 127 at s = 88 (`88`, 300 candidates) and 126 under truncate_to_8 (`88 truncate_to_8`),
-// whose lattice candidates (their value exact there: the truncated light is a flat one) top out at 127.
+// where its lattice candidates' predicted value (the truncated light is a flat one) tops out at 127.
 // tests/proofs replays each through the pipeline's rasteriser (the pixel is covered) and
 // gs::pixel_pipeline.
 std::span<const triangle_case> certificates() noexcept;
