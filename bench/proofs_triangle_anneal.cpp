@@ -19,54 +19,21 @@
 #include <set>
 #include <utility>
 
-#include "pipeline/raster.hpp"
 #include "proofs_search_args.hpp"
+#include "proofs_triangle_score.hpp"
 #include "proofs/domains.hpp"
 #include "proofs/two_pass.hpp"
 #include "proofs/two_pass_triangle.hpp"
 
 namespace p = gsdot3::proofs;
-namespace pl = gsdot3::pipeline;
 namespace tt = gsdot3::proofs::two_pass::triangle;
 
 namespace {
-struct scored {
-  double smooth = -1e9;  // wrap-side value in levels, real
-  int value = 0;         // the model's value at the best pixel
-  int px = -1, py = -1;
-};
-
+using gsdot3::bench::scored;
 constexpr int max124 = (tt::window_pixels - 1) * 16;
 
 scored evaluate(const tt::triangle_case& c, const gs::model_options& o, const p::two_pass::table& t, int side) {
-  scored best;
-  const auto setup = pl::setup_triangle({pl::xy124{c.xy16[0], c.xy16[1]}, pl::xy124{c.xy16[2], c.xy16[3]}, pl::xy124{c.xy16[4], c.xy16[5]}});
-  if (setup.area2 == 0) return best;
-  const auto nm = p::paper::pack_normal_from(c.iX, c.iY);
-  const int e = t.alpha_error(nm);
-  const int n[3] = {nm.iX, nm.iY, nm.iZ};
-  for (int k = 0; k < 3; ++k) {
-    const int vx = c.xy16[2 * k] >> 4, vy = c.xy16[2 * k + 1] >> 4;
-    for (int y = vy - 2; y <= vy + 2; ++y)
-      for (int x = vx - 2; x <= vx + 2; ++x) {
-        if (x < 0 || y < 0 || x >= tt::window_pixels || y >= tt::window_pixels || !pl::covers(setup, x, y)) continue;
-        tt::triangle_case q = c;
-        q.px = x, q.py = y;
-        const auto L = tt::pixel_light(q);
-        const int Lc[3] = {L.r.value(), L.g.value(), L.b.value()};
-        double real = e;
-        for (int ch = 0; ch < 3; ++ch) {
-          const int l = o.gouraud == gs::gouraud_fraction::truncate_to_8 ? (Lc[ch] >> 7) << 7 : Lc[ch];
-          real += n[ch] * (l - 16384) / 16384.0;
-        }
-        const double sm = side > 0 ? real : -real - 1;
-        if (sm > best.smooth) {
-          const auto r = p::two_pass::pixel(nm, L, o);
-          best = {sm, side > 0 ? r.value : -r.value - 1, x, y};
-        }
-      }
-  }
-  return best;
+  return gsdot3::bench::score_near_vertices(c, o, t, side);
 }
 }  // namespace
 
@@ -148,11 +115,7 @@ int main(int argc, char** argv) {
     }
     std::fprintf(stderr, "start %d (side %+d): best value %d (smooth %.3f), %ld evaluated\n", start, side, best.value, best.smooth, total);
     if (best.value >= 128) {
-      const auto& k = best_c;
-      std::printf("s = %d (%s): wrap at pixel (%d, %d)\n    {%d, %d, %d, {{{%d, %d, %d}, {%d, %d, %d}, {%d, %d, %d}}}, {%d, %d, %d, %d, %d, %d}, %d, %d},\n",
-                  s, args.option_name(), best.px, best.py, s, k.iX,
-                  k.iY, k.light[0][0], k.light[0][1], k.light[0][2], k.light[1][0], k.light[1][1], k.light[1][2], k.light[2][0],
-                  k.light[2][1], k.light[2][2], k.xy16[0], k.xy16[1], k.xy16[2], k.xy16[3], k.xy16[4], k.xy16[5], best.px, best.py);
+      gsdot3::bench::print_certificate_row(best_c, best, args.option_name());
       return 0;
     }
     if (start >= 5) break;

@@ -1,7 +1,9 @@
 // Section 3.5: the two-pass method's error and its wrap limit s.
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include "proofs/claim_util.hpp"
 #include "proofs/claims.hpp"
@@ -126,6 +128,20 @@ namespace {
 // wrap under the options in force is counted (certificates_not_wrapping), not trusted.
 using two_pass::triangle::triangle_case;
 
+// Sorted values as "89..91, 98, 100" (runs of consecutive values joined).
+std::string s_ranges(std::vector<int> v) {
+  std::sort(v.begin(), v.end());
+  v.erase(std::unique(v.begin(), v.end()), v.end());
+  std::string out;
+  for (std::size_t i = 0; i < v.size();) {
+    std::size_t j = i;
+    while (j + 1 < v.size() && v[j + 1] == v[j] + 1) ++j;
+    out += (out.empty() ? "" : ", ") + std::to_string(v[i]) + (j > i ? ".." + std::to_string(v[j]) : "");
+    i = j + 1;
+  }
+  return out;
+}
+
 std::string describe_certificate(const triangle_case& c, const gs::model_options& o) {
   const auto p = paper::pack_normal_from(c.iX, c.iY);
   const auto light = two_pass::triangle::pixel_light(c);
@@ -205,6 +221,8 @@ outcome two_pass_max_s_interpolated(const gs::model_options& o, const sweep_conf
   const auto& normals = appendix2_normals();
   const int proven_safe = two_pass::triangle::bound_safe_s(o);
   int first_wrap = 128;
+  const triangle_case* lowest = nullptr;
+  std::vector<int> wrapping_s;
   std::vector<std::string> witnesses;
   tally failed, wrapping;
   std::uint64_t index = 0;
@@ -215,7 +233,8 @@ outcome two_pass_max_s_interpolated(const gs::model_options& o, const sweep_conf
     for (int v : c.xy16) ok = ok && v >= 0 && v <= (two_pass::triangle::window_pixels - 1) * 16;
     const auto r = two_pass::pixel(p, two_pass::triangle::pixel_light(c), o);
     if (ok && r.dot != r.value) {
-      first_wrap = std::min(first_wrap, c.s);
+      if (c.s < first_wrap) first_wrap = c.s, lowest = &c;
+      wrapping_s.push_back(c.s);
       wrapping.add(index);
       witnesses.push_back(describe_certificate(c, o));
     } else {
@@ -223,6 +242,24 @@ outcome two_pass_max_s_interpolated(const gs::model_options& o, const sweep_conf
     }
     ++index;
   }
+  // the lowest wrapping certificate's lag: its pixel's light against the light of the vertex nearest
+  // the pixel, in levels, the largest over the channels
+  double lowest_lag = 0;
+  if (lowest != nullptr) {
+    const triangle_case& c = *lowest;
+    auto dist2 = [&](std::size_t k) {
+      const double dx = c.xy16[2 * k] / 16.0 - c.px, dy = c.xy16[2 * k + 1] / 16.0 - c.py;
+      return dx * dx + dy * dy;
+    };
+    std::size_t near = 0;
+    for (std::size_t k = 1; k < 3; ++k)
+      if (dist2(k) < dist2(near)) near = k;
+    const auto light = two_pass::triangle::pixel_light(c);
+    const int Lc[3] = {light.r.value(), light.g.value(), light.b.value()};
+    for (std::size_t ch = 0; ch < 3; ++ch) lowest_lag = std::max(lowest_lag, std::abs(Lc[ch] / 128.0 - 128 - c.light[near][ch]));
+  }
+  char lag_text[16];
+  std::snprintf(lag_text, sizeof lag_text, "%.1f", lowest_lag);
   const bool paper_wraps = std::any_of(two_pass::triangle::certificates().begin(), two_pass::triangle::certificates().end(), [&](const triangle_case& c) {
     const auto r = two_pass::pixel(paper::pack_normal_from(c.iX, c.iY), two_pass::triangle::pixel_light(c), o);
     return c.s == paper_s && r.dot != r.value;
@@ -239,15 +276,20 @@ outcome two_pass_max_s_interpolated(const gs::model_options& o, const sweep_conf
   out.note = "on whole triangles the paper's s = " + std::to_string(paper_s) +
              (paper_wraps ? " wraps" : " is not shown to wrap") + ": a pixel ~2030 pixels from the plane's reference pixel "
              "misses the truncated fraction of each 8.7 step, up to 16 levels per channel and axis, and that pushes its light "
-             "out of the vertex sphere along the normal. Wraps are certified from s = " + std::to_string(first_wrap) +
-             " and at s = 122..125 (certificates, each a refutation at its s, under either gouraud_fraction); no s <= " + std::to_string(proven_safe) +
+             "out of the vertex sphere along the normal. Wraps are certified at s = " + s_ranges(wrapping_s) +
+             " (certificates, each a refutation at its s; the lowest s = " + std::to_string(first_wrap) + "); no s <= " + std::to_string(proven_safe) +
              " wraps (error bound: one axis's lag, 16 levels, per channel; two axes' only on channels whose plane falls along "
              "both axes, and not on all channels at once, and then weighed against a second point of the vertex lights' "
-             "ball that the falling plane passes). s = " + std::to_string(proven_safe + 1) + ".." + std::to_string(first_wrap - 1) +
-             " is bracketed, not settled: from s = 90 the certificates lag along both axes on the two largest channels "
-             "(2·15 levels each) and keep the plane level along n with the third; the bound charges the sphere's curvature "
-             "for the light difference that lag needs only through the two points' ball (θ-relaxation), not the triangle's shape. The local searches (bench/proofs_triangle_two_axis, "
-             "bench/proofs_triangle_anneal) found no wrap below " +
+             "ball that the falling plane passes). " +
+             (first_wrap > proven_safe + 1
+                  ? "s = " + std::to_string(proven_safe + 1) + ".." + std::to_string(first_wrap - 1) + " is bracketed, not settled: "
+                  : std::string("the bound meets the lowest certificate: ")) +
+             "the lowest certificate (s = " + std::to_string(first_wrap) + ") puts its pixel's light " + lag_text +
+             " levels from the light of the vertex next to it" +
+             (lowest_lag > 2047.0 / 128 ? " (more than one axis's 2047/128: its plane lags along both axes)" : " (one axis's lag)") +
+             "; the bound charges the sphere's curvature for the light difference a lag needs only through the two points' ball "
+             "(θ-relaxation), not the triangle's shape. The searches (bench/proofs_triangle_two_axis, bench/proofs_triangle_anneal, "
+             "bench/proofs_triangle_corner) found no wrap below " +
              std::to_string(first_wrap);
   return for_domain(std::move(out), cfg);
 }

@@ -44,6 +44,14 @@ struct triangle_case {
 // (`proofs_triangle_anneal 90 3 300000`, `proofs_triangle_anneal 90 truncate_to_8 3 300000`, started
 // from the s = 91 row): the pixel lags along both axes, 15 levels per axis, on the two largest
 // channels, the third keeping the plane level along the normal (case (ii) of the bound below).
+// s = 89, one per gouraud_fraction: bench/proofs_triangle_corner (`89` and `89 truncate_to_8`, 300
+// candidates each): the corner model's lattice candidates (X, Y ~2046 pixels from Z on either axis,
+// u = v + 16 levels on two channels), then the sub-pixel geometry that keeps both of their steps
+// just below one unit per pixel and a steepest ascent: the pixel keeps 31.9 levels of lag (~2046
+// units per axis) on those two channels; the third loses most of a level on one axis (X and Y
+// differ by 15 there, which no geometry with both lag steps below 1 makes lossless). The same tool
+// reaches 127 at s = 88 (`88`, 300 candidates) and 126 under truncate_to_8 (`88 truncate_to_8`),
+// where its lattice candidates' predicted value (the truncated light is a flat one) tops out at 127.
 // tests/proofs replays each through the pipeline's rasteriser (the pixel is covered) and
 // gs::pixel_pipeline.
 std::span<const triangle_case> certificates() noexcept;
