@@ -52,6 +52,17 @@ struct triangle_case {
 // differ by 15 there, which no geometry with both lag steps below 1 makes lossless). The same tool
 // reaches 127 at s = 88 (`88`, 300 candidates) and 126 under truncate_to_8 (`88 truncate_to_8`),
 // where its lattice candidates' predicted value (the truncated light is a flat one) tops out at 127.
+// s = 86, one per gouraud_fraction: bench/proofs_triangle_steep (`86 -79 -57 1 0 -20 -51 65 7 23
+// 880 940` and `86 truncate_to_8 -79 -57 1 0 -22 -50 65 7 23 860 900 6`), its start
+// values from bench/proofs_triangle_relaxation (`57 79 83 86 300000 7`): X = (0, ~870), far above
+// the pixel's row. The two lag channels fall along both axes with steps just below one unit per
+// pixel (31.9 levels of lag, as at s = 89), and the third channel lags one axis too: its x step is
+// just below one unit and its y step an integer K = 7 (a steep rise towards Z's row that truncation
+// keeps), which lets P_c(pixel) on that channel sit ~50 levels from X's light; the third vertex Y,
+// ~7·880/128 levels away on that channel, pays for it. Case (ii) of the bound charges that channel
+// W over P_c(p) with nothing but the ball tying P(p) to the vertex lights, which is where the bound
+// and these certificates still differ (the relaxation's best at s = 86 for n = (−79, −57, 83) is
+// 16297 against the wrap threshold 16000 in n·level units; see the closing notes of issue 13).
 // tests/proofs replays each through the pipeline's rasteriser (the pixel is covered) and
 // gs::pixel_pipeline.
 std::span<const triangle_case> certificates() noexcept;
