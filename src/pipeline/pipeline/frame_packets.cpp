@@ -217,7 +217,6 @@ frame_packets build_frame_packets(const scene& s, const prepared_scene& ps, meth
   if (!b.fits())
     throw std::invalid_argument("frame packets: four " + std::to_string(ps.width) + "x" + std::to_string(ps.height) +
                                 " PSMCT32 buffers do not fit in the GS's 4 MiB");
-  fp.z = {fixed::uint<14>::from_wrapped(32 * b.z()), fixed::uint<6>::from_wrapped(b.fbw), gs::mem::psm::PSMZ24};
   const gs_inputs in = place_inputs(make_inputs(s, m, o), b.first_texture_block());
   const scissor area = detail::band_renderer::drawn_area(ps, {0, 0, ps.width, ps.height});
   stream g(ps, b, area);

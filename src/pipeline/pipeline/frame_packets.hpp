@@ -42,7 +42,6 @@ namespace gsdot3::pipeline {
 struct frame_packets {
   std::vector<std::uint8_t> gif;        // the stream (GIF PATH3), little-endian qwords
   buffer_layout buffers;
-  gs::mem::buffer z;                    // ZBUF_1: the Z buffer (PSMZ24)
   // Privileged registers so the displayed frame is the output buffer: PMODE (circuit 1, ALP = 0xFF),
   // DISPFB1 (FBP, FBW, PSMCT32), DISPLAY1 (DW, DH from the frame size, MAGH so DW + 1 <= 2560).
   std::uint64_t PMODE = 0, DISPFB1 = 0, DISPLAY1 = 0;
