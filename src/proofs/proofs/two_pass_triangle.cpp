@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "gs_arith/gouraud.hpp"
+#include "gs_arith/rasteriser.hpp"
 #include "proofs/methods.hpp"
 #include "proofs/two_pass.hpp"
 
@@ -37,11 +38,6 @@ std::span<const triangle_case> certificates() noexcept { return certificate_tabl
 gs::rgba8 light_colour(const ivec3& l) noexcept {
   return {methods::byte(128 + l[0]), methods::byte(128 + l[1]), methods::byte(128 + l[2]), methods::byte(0x80)};
 }
-
-namespace {
-// ceil(v / 16) for a 12.4 value (pipeline/raster.hpp ceil_124).
-constexpr int ceil_124(int v) noexcept { return static_cast<int>((static_cast<std::int64_t>(v) + 15) >> 4); }
-}  // namespace
 
 gs::fragment_colour pixel_light(const triangle_case& c) noexcept {
   std::array<gs::gouraud_vertex, 3> v{};
@@ -149,7 +145,7 @@ int bound_safe_s(const gs::model_options& o) {
 }
 
 std::array<int, 2> reference_pixel(const std::array<int, 6>& xy16) noexcept {
-  return {ceil_124(std::min({xy16[0], xy16[2], xy16[4]})), ceil_124(std::min({xy16[1], xy16[3], xy16[5]}))};
+  return {gs::ceil_124(std::min({xy16[0], xy16[2], xy16[4]})), gs::ceil_124(std::min({xy16[1], xy16[3], xy16[5]}))};
 }
 
 lag_edge lag_edge_of(const std::array<int, 6>& xy16) noexcept {
