@@ -163,12 +163,14 @@ std::string describe_certificate(const triangle_case& c, const gs::model_options
 // --brute-force (two_pass::triangle::brute_force, proofs/triangle_brute_force.hpp): the bound's
 // per-channel statements at full size. The light does not depend on the model options (the Gouraud
 // unit has none; truncate_to_8 is applied after, in the multiply, and adds its 128 units to the
-// bound), so every variant re-checks the same cases (--no-variants runs them once).
+// bound; the cases use no domain option), so the outcome is option-free and the runner checks the
+// cases once, with no variants.
 outcome interpolated_brute_force(const gs::model_options&, const sweep_config& cfg) {
   namespace tt = two_pass::triangle;
   const auto r = tt::brute_force(cfg);
   const auto statements = tt::channel_statements();
   outcome out;
+  out.option_free = true;
   out.domain_size = tt::brute_force_cases;
   out.figures = {fig("pixels", static_cast<std::int64_t>(r.pixels))};
   auto describe = [](std::uint64_t at, const std::string& what) {
