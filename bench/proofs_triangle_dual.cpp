@@ -12,7 +12,7 @@
 // step in units per pixel), a = xZ, b = yZ: the lag of truncated steps approaches a·min(1, |g|)
 // where an axis is aligned, and nothing where it is not. Σ_c |n_c|·σ_c·(L_c − 16384) above the
 // wrap side's threshold (128·(128 − #neg − e) levels·|n| at the top, 128·(129 − #pos + e) at the
-// bottom; truncate_to_8 adds |n|_1 levels·|n|) means no argument built from those statements can
+// bottom; truncate_to_8 adds two_pass_triangle's truncation_units) means no argument built from those statements can
 // prove the normal safe at S.
 // At one geometry the maximum over the lights is exact through its dual: for each alignment
 // pattern π (which axes of which channel are charged) the objective is concave in the lights, and
@@ -221,8 +221,8 @@ struct side_threshold {
 side_threshold thresholds(const p::paper::packed_normal& nm, const p::two_pass::table& t, const gs::model_options& o) {
   const int e = t.alpha_error(nm), neg = (nm.iX < 0) + (nm.iY < 0) + (nm.iZ < 0);
   const double l1 = std::abs(nm.iX) + std::abs(nm.iY) + std::abs(nm.iZ);
-  const double extra = l1 / 128 + (o.gouraud == gs::gouraud_fraction::truncate_to_8 ? l1 : 0);
-  return {128.0 * (128 - neg - e) - extra, 128.0 * (129 - (3 - neg) + e) - extra};
+  auto extra = [&](int side) { return l1 / 128 + static_cast<double>(tt::truncation_units(nm, side, o)) / 128; };
+  return {128.0 * (128 - neg - e) - extra(1), 128.0 * (129 - (3 - neg) + e) - extra(-1)};
 }
 
 void print_found(const found& f, double threshold) {
@@ -290,12 +290,12 @@ int main(int argc, char** argv) {
     for (const auto& nm : p::appendix2_normals()) {
       std::array<int, 3> a{std::abs(nm.iX), std::abs(nm.iY), std::abs(nm.iZ)};
       std::sort(a.begin(), a.end());
-      const std::int64_t reach = tt::reach_units({a[0], a[1], a[2]}, s, tt::window_pixels, args.o);
+      const std::int64_t reach = tt::reach_units({a[0], a[1], a[2]}, s, tt::window_pixels);
       const int e = t.alpha_error(nm), neg = (nm.iX < 0) + (nm.iY < 0) + (nm.iZ < 0);
       const std::int64_t top = std::int64_t{16384} * (128 - neg - e), bottom = std::int64_t{16384} * (129 - (3 - neg) + e);
       const auto th = thresholds(nm, t, args.o);
-      if (reach >= top) open.emplace(std::tuple{a[0], a[1], a[2], th.top}, std::tuple{reach - top, nm.iX, nm.iY});
-      if (reach >= bottom) open.emplace(std::tuple{a[0], a[1], a[2], th.bottom}, std::tuple{reach - bottom, nm.iX, nm.iY});
+      if (reach + tt::truncation_units(nm, 1, args.o) >= top) open.emplace(std::tuple{a[0], a[1], a[2], th.top}, std::tuple{reach - top, nm.iX, nm.iY});
+      if (reach + tt::truncation_units(nm, -1, args.o) >= bottom) open.emplace(std::tuple{a[0], a[1], a[2], th.bottom}, std::tuple{reach - bottom, nm.iX, nm.iY});
     }
     std::vector<std::pair<std::int64_t, std::tuple<int, int, int, double>>> order;
     for (const auto& [k, v] : open) order.push_back({std::get<0>(v), k});

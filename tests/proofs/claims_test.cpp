@@ -265,7 +265,7 @@ TEST(Claims, TwoPassMaxSInterpolated) {
   EXPECT_NE(o.note.find("s = 80..85 is bracketed"), std::string::npos) << o.note;
   EXPECT_NE(o.note.find("the lowest s = 86"), std::string::npos) << o.note;
   // The bound's own statements admit a wrap from s = 84 (a relaxation witness; triangle_test.cpp
-  // recomputes it), 82 under truncate_to_8 (its 128·|n|_1 units of slack).
+  // recomputes it), 83 under truncate_to_8 (whose lattice already wraps at 84).
   EXPECT_EQ(fig(o, "bound_limit_s"), 84);
   EXPECT_NE(o.note.find("admit a wrap from s = 84"), std::string::npos) << o.note;
   const auto& t = variant("two-pass.max-s.interpolated", "gouraud_fraction", "truncate_to_8");
@@ -275,7 +275,7 @@ TEST(Claims, TwoPassMaxSInterpolated) {
   EXPECT_EQ(fig(t, "s_max_upper"), 85);
   EXPECT_EQ(fig(t, "certificates_not_wrapping"), 4);  // the keep_fraction rows for s = 86, 90, 98 and 100
   EXPECT_NE(t.note.find("s = 79..85 is bracketed"), std::string::npos) << t.note;
-  EXPECT_EQ(fig(t, "bound_limit_s"), 82);
+  EXPECT_EQ(fig(t, "bound_limit_s"), 83);
   bool paper = false;
   for (const auto& w : o.witnesses) paper = paper || w.rfind("s = 122:", 0) == 0;
   EXPECT_TRUE(paper);

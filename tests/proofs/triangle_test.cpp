@@ -382,8 +382,8 @@ TEST(Triangle, ChannelStatementsHoldOnRandomFullSizeTriangles) {
 namespace {
 // (iii)'s bound in doubles, written from its closed form: for every set D leaving out a nonzero
 // channel and θ_c = k/16, R·(|α| + |β|) + K; the least over the grid, the greatest over D, and case
-// (i) R·|n| + |n|_1·W; truncate_to_8 adds 128·|n|_1.
-double reach_double(const double n[3], int s, bool truncate_to_8) {
+// (i) R·|n| + |n|_1·W (the light's; the truncation of truncate_to_8 comes on top, per side).
+double reach_double(const double n[3], int s) {
   const double R = 128.0 * s, W = 2048, l1 = n[0] + n[1] + n[2];
   double reach = R * std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]) + l1 * W;
   for (unsigned d = 1; d < 8; ++d) {
@@ -410,7 +410,7 @@ double reach_double(const double n[3], int s, bool truncate_to_8) {
     }
     reach = std::max(reach, least);
   }
-  return reach + (truncate_to_8 ? 128 * l1 : 0);
+  return reach;
 }
 }  // namespace
 
@@ -467,9 +467,14 @@ TEST(Triangle, BoundedSafeSIsWhatTheInequalityGivesForTheWorstNormal) {
     for (const auto& nm : p::appendix2_normals()) {
       const double n[3] = {double(std::abs(nm.iX)), double(std::abs(nm.iY)), double(std::abs(nm.iZ))};
       const int neg = (nm.iX < 0) + (nm.iY < 0) + (nm.iZ < 0), e = t.alpha_error(nm);
+      // truncate_to_8: the multiply's light is at most 127/128 level above the Gouraud light on the
+      // channels whose σ is −1 (n_c < 0 at the top, n_c > 0 at the bottom), bounded here by 1 level
+      double top_cut = 0, bottom_cut = 0;
+      if (g == gs::gouraud_fraction::truncate_to_8)
+        for (int c : {nm.iX, nm.iY, nm.iZ}) (c < 0 ? top_cut : bottom_cut) += 128.0 * std::abs(c);
       auto safe = [&](int s) {
-        const double reach = reach_double(n, s, g == gs::gouraud_fraction::truncate_to_8) / 16384;
-        return reach + neg + e < 128 && -reach - (3 - neg) + e > -129;
+        const double reach = reach_double(n, s);
+        return (reach + top_cut) / 16384 + neg + e < 128 && -(reach + bottom_cut) / 16384 - (3 - neg) + e > -129;
       };
       EXPECT_TRUE(safe(s_max)) << nm.iX << " " << nm.iY;
       fails_above = fails_above || !safe(s_max + 1);
@@ -532,7 +537,12 @@ TEST(Triangle, RelaxationWitnessesLieInTheRelaxationAndExceedTheirThresholds) {
     EXPECT_NEAR(tt::relaxation_value(w.at, n, w.s), value, 1e-6) << w.s;
     const double l1 = n[0] + n[1] + n[2];
     const int neg = (nm.iX < 0) + (nm.iY < 0) + (nm.iZ < 0);
-    const double margin = value + l1 / 128 + (w.gouraud == gs::gouraud_fraction::truncate_to_8 ? l1 : 0) - 128.0 * (128 - neg - t.alpha_error(nm));
+    // truncate_to_8: up to one level more on the channels against the side (n_c < 0 at the top, > 0 at the bottom)
+    double against = 0;
+    for (int c : {nm.iX, nm.iY, nm.iZ}) against += w.side * c < 0 ? std::abs(c) : 0;
+    const int e = t.alpha_error(nm);
+    const double threshold = w.side > 0 ? 128.0 * (128 - neg - e) : 128.0 * (129 - (3 - neg) + e);
+    const double margin = value + l1 / 128 + (w.gouraud == gs::gouraud_fraction::truncate_to_8 ? against : 0) - threshold;
     EXPECT_NEAR(tt::relaxation_margin(w, t, o), margin, 1e-6);
     EXPECT_GT(margin, 10) << "s = " << w.s << ": the witness should clear its threshold by far more than its rounding";
     // and the bound itself cannot settle that normal at that s (else the witness would say nothing)

@@ -5,22 +5,23 @@
 #include <cstdlib>
 
 #include "proofs/paper_code.hpp"
+#include "proofs/two_pass_triangle.hpp"
 
 namespace gsdot3::proofs::two_pass::triangle {
 
 namespace {
-// One witness per gouraud_fraction value, at the lowest s the corner family reaches (the top normal
-// of the surveys, n = (−89, −65, 65), whose lattice certificates wrap at s = 85): printed by
-// `proofs_triangle_dual 84 -89 -65 4 150` and `proofs_triangle_dual 82 truncate_to_8 -89 -65 4 150`
-// (its `survey 83` finds no class above its threshold on the corner family at s = 83 under
-// keep_fraction). Lights to three decimals, as printed.
+// One witness per gouraud_fraction value, at the lowest s found: keep_fraction, the top side of
+// n = (−89, −65, 65) (the normal of the s = 85 certificates), printed by `proofs_triangle_dual 84 -89 -65 4 150`
+// (its `survey 83` finds no class above its threshold on the corner family at s = 83);
+// truncate_to_8, the bottom side of n = (61, 66, 91) (the normal of the s = 84 certificate), by
+// `proofs_triangle_dual 83 truncate_to_8 61 66 4 150` (−6.2 at s = 82). Lights to three decimals, as printed.
 constexpr relaxation_witness witness_table[] = {
-    {84, -89, -65, gs::gouraud_fraction::keep_fraction,
+    {84, -89, -65, 1, gs::gouraud_fraction::keep_fraction,
      {{{{0, 2047}, {848.51, 0}, {2047, 2047}}}, {{2047, 2047}},
       {{{-47.824, 48.849, 48.812}, {17.108, 58.162, 58.142}, {70.091, 32.732, 32.740}}}}},
-    {82, -89, -65, gs::gouraud_fraction::truncate_to_8,
-     {{{{0, 2047}, {845, 0}, {2047, 2047}}}, {{2047, 2047}},
-      {{{-47.238, 47.409, 47.381}, {16.785, 56.762, 56.748}, {69.001, 31.325, 31.331}}}}},
+    {83, 61, 66, -1, gs::gouraud_fraction::truncate_to_8,
+     {{{{0, 2047}, {885.05, 0}, {2047, 2047}}}, {{2047, 2047}},
+      {{{46.640, 49.562, -47.512}, {55.623, 58.562, 19.119}, {30.440, 33.423, 69.608}}}}},
 };
 
 double cross(double ax, double ay, double bx, double by) { return ax * by - ay * bx; }
@@ -60,9 +61,10 @@ double relaxation_margin(const relaxation_witness& w, const two_pass::table& t, 
   const auto p = paper::pack_normal_from(w.iX, w.iY);
   const std::array<double, 3> n{double(std::abs(p.iX)), double(std::abs(p.iY)), double(std::abs(p.iZ))};
   const double l1 = n[0] + n[1] + n[2];
-  const int neg = (p.iX < 0) + (p.iY < 0) + (p.iZ < 0);
-  const double slack = l1 / 128 + (o.gouraud == gs::gouraud_fraction::truncate_to_8 ? l1 : 0);
-  return relaxation_value(w.at, n, w.s) + slack - 128.0 * (128 - neg - t.alpha_error(p));
+  const int neg = (p.iX < 0) + (p.iY < 0) + (p.iZ < 0), e = t.alpha_error(p);
+  const double slack = l1 / 128 + static_cast<double>(truncation_units(p, w.side, o)) / 128;
+  const double threshold = w.side > 0 ? 128.0 * (128 - neg - e) : 128.0 * (129 - (3 - neg) + e);
+  return relaxation_value(w.at, n, w.s) + slack - threshold;
 }
 
 }  // namespace gsdot3::proofs::two_pass::triangle

@@ -21,8 +21,8 @@
 
 namespace gsdot3::proofs::two_pass::triangle {
 
-// Lights and directions are σ-folded: component c is σ_c times the light's component, σ_c = sign n_c
-// (the top side), so "larger" is towards the wrap on every channel.
+// Lights and directions are σ-folded: component c is σ_c times the light's component, σ_c = side·sign n_c
+// (side +1: the top, −1: the bottom), so "larger" is towards the wrap on every channel.
 struct relaxation_point {
   std::array<std::array<double, 2>, 3> vertex;  // pixels, relative to the reference pixel r = (0, 0)
   std::array<double, 2> pixel;                  // p, in the closed triangle
@@ -34,16 +34,18 @@ struct relaxation_point {
 double relaxation_value(const relaxation_point& x, const std::array<double, 3>& w, double s) noexcept;
 
 struct relaxation_witness {
-  int s, iX, iY;  // the normal (paper::pack_normal_from), top side
+  int s, iX, iY;  // the normal (paper::pack_normal_from)
+  int side;       // +1: the top (value >= 128), −1: the bottom (value <= −129)
   gs::gouraud_fraction gouraud;
   relaxation_point at;
 };
 // The table; bench/proofs_triangle_dual's `families` mode printed each row (command beside it).
 std::span<const relaxation_witness> relaxation_witnesses() noexcept;
 
-// The witness's value above its top-side threshold, levels·|n|: relaxation_value + the start error
-// (|n|_1/128: < 1 unit per channel) + truncate_to_8's 128·|n|_1 units, minus 128·(128 − #neg − e)
-// (cannot_wrap's comparison, e = t.alpha_error). Positive: the bound's statements admit a wrap.
+// The witness's value above its side's threshold, levels·|n|: relaxation_value + the start error
+// (|n|_1/128: < 1 unit per channel) + truncation_units of the side (truncate_to_8), minus
+// 128·(128 − #neg − e) at the top, 128·(129 − #{n_c >= 0} + e) at the bottom (cannot_wrap's
+// comparisons, e = t.alpha_error). Positive: the bound's statements admit a wrap.
 double relaxation_margin(const relaxation_witness& w, const two_pass::table& t, const gs::model_options& o);
 
 }  // namespace gsdot3::proofs::two_pass::triangle

@@ -73,9 +73,10 @@ normal_terms terms(const paper::packed_normal& p) {
 
 // The largest s (0 .. 127) for which the bound of cannot_wrap holds for this normal: the reach
 // len·s·128 + G grows with s, so that is every s below the least failing one.
-int safe_s(const normal_terms& n, int e, const gs::model_options& o) {
-  const std::int64_t err = gain_units(n.l1, n.least, window_pixels, o);
-  const std::int64_t top = std::int64_t{16384} * (128 - n.neg - e) - err, bottom = std::int64_t{16384} * (129 - (3 - n.neg) + e) - err;
+int safe_s(const paper::packed_normal& p, const normal_terms& n, int e, const gs::model_options& o) {
+  const std::int64_t err = gain_units(n.l1, n.least, window_pixels);
+  const std::int64_t top = std::int64_t{16384} * (128 - n.neg - e) - err - truncation_units(p, 1, o),
+                     bottom = std::int64_t{16384} * (129 - (3 - n.neg) + e) - err - truncation_units(p, -1, o);
   const std::int64_t room = std::min(top, bottom) - 1;  // reach <= room
   if (room < 0) return 0;
   return static_cast<int>(std::min<std::int64_t>(127, room / (n.len * 128)));
@@ -104,20 +105,21 @@ std::int64_t two_point_units(const std::array<std::int64_t, 3>& n, unsigned in_d
   return best;
 }
 
-std::int64_t reach_units(const std::array<std::int64_t, 3>& n, int s, int window, const gs::model_options& o) {
+std::int64_t reach_units(const std::array<std::int64_t, 3>& n, int s, int window) {
   const std::int64_t radius = std::int64_t{128} * s, l1 = n[0] + n[1] + n[2];
   std::int64_t reach = radius * isqrt_ceil(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]) + l1 * window;  // (i)
   const unsigned nonzero = (n[0] != 0) | (n[1] != 0) << 1 | (n[2] != 0) << 2;
   for (unsigned d = 1; d < 8; ++d)
     if ((d & nonzero) == d && d != nonzero) reach = std::max(reach, two_point_units(n, d, radius, window));
-  return reach + (o.gouraud == gs::gouraud_fraction::keep_fraction ? 0 : 128 * l1);
+  return reach;
 }
 
 bool cannot_wrap(const paper::packed_normal& p, int e, int s, const gs::model_options& o) noexcept {
   const normal_terms n = terms(p);
   // value < reach/16384 + neg + e, compared without division.
-  const std::int64_t reach = reach_units({std::abs(p.iX), std::abs(p.iY), std::abs(p.iZ)}, s, window_pixels, o);
-  return reach < std::int64_t{16384} * (128 - n.neg - e) && reach < std::int64_t{16384} * (129 - (3 - n.neg) + e);
+  const std::int64_t reach = reach_units({std::abs(p.iX), std::abs(p.iY), std::abs(p.iZ)}, s, window_pixels);
+  return reach + truncation_units(p, 1, o) < std::int64_t{16384} * (128 - n.neg - e) &&
+         reach + truncation_units(p, -1, o) < std::int64_t{16384} * (129 - (3 - n.neg) + e);
 }
 
 int bound_safe_s(const gs::model_options& o) {
@@ -131,7 +133,7 @@ int bound_safe_s(const gs::model_options& o) {
     int e;
   };
   std::vector<start> order;
-  for (const auto& p : appendix2_normals()) order.push_back({safe_s(terms(p), t.alpha_error(p), o), &p, t.alpha_error(p)});
+  for (const auto& p : appendix2_normals()) order.push_back({safe_s(p, terms(p), t.alpha_error(p), o), &p, t.alpha_error(p)});
   std::sort(order.begin(), order.end(), [](const start& a, const start& b) { return a.s < b.s; });
   int least = 127;
   for (const auto& k : order) {

@@ -103,17 +103,28 @@ gs::fragment_colour pixel_light(const triangle_case& c) noexcept;
 // In both cases the plane point (w or p) lies in the closed triangle, so P there is a convex
 // combination of the vertex values, inside the ball |l| <= s around 128 per channel. The clamp to
 // 0 .. 0x7FFF only moves each L_c towards [0, 32640], where every P_c lies (each bound above holds
-// channel by channel). With gouraud_fraction = truncate_to_8 the multiply sees 128·floor(L_c/128):
-// up to 128 units more per channel. tests/proofs/triangle_test.cpp checks (i) and (ii) against the
+// channel by channel). With gouraud_fraction = truncate_to_8 the multiply sees 128·floor(L_c/128),
+// which is <= L_c and > L_c − 128: it only lowers σ_c·L_c where σ_c = +1 and raises it by less than
+// 128 units where σ_c = −1, so the wrap side adds truncation_units = 128·Σ_{σ_c < 0} |n_c| (n_c < 0 at
+// the top, n_c > 0 at the bottom). tests/proofs/triangle_test.cpp checks (i) and (ii) against the
 // exact rational plane on every lattice triangle of a small window and on random full-size ones.
 // With λ_c = L_c/128 − 128 and the floors of the two passes (q_c = floor or ceil of n_c·λ_c/128,
 // two_pass::wrap_search), value <= n·λ/128 + #{n_c < 0} + e and value >= n·λ/128 − #{n_c >= 0} + e,
-// so a normal cannot wrap at s when  reach/16384 + #{n_c < 0} + e < 128  and
-// −reach/16384 − #{n_c >= 0} + e > −129, with reach = |n|·s·128 + G, G = gain_units, by (i) and
+// so a normal cannot wrap at s when  (reach + T_top)/16384 + #{n_c < 0} + e < 128  and
+// −(reach + T_bottom)/16384 − #{n_c >= 0} + e > −129 (T = truncation_units of that side), with
+// reach = |n|·s·128 + G, G = gain_units, by (i) and
 // (ii) (evaluated exactly in integers: |n| is taken as the ceiling of the square root), or the
 // tighter reach_units of (iii) below, which bound_safe_s uses where (ii) alone does not settle s.
-constexpr std::int64_t gain_units(std::int64_t l1, std::int64_t least, int window, const gs::model_options& o) noexcept {
-  return l1 * window + std::int64_t{window - 1} * (l1 - least) + (o.gouraud == gs::gouraud_fraction::keep_fraction ? 0 : 128 * l1);
+constexpr std::int64_t gain_units(std::int64_t l1, std::int64_t least, int window) noexcept {
+  return l1 * window + std::int64_t{window - 1} * (l1 - least);
+}
+// side +1: the top (value >= 128), −1: the bottom (value <= −129).
+constexpr std::int64_t truncation_units(const paper::packed_normal& p, int side, const gs::model_options& o) noexcept {
+  if (o.gouraud == gs::gouraud_fraction::keep_fraction) return 0;
+  std::int64_t sum = 0;
+  for (int n : {p.iX, p.iY, p.iZ})
+    if (side * n < 0) sum += n < 0 ? -n : n;
+  return 128 * sum;
 }
 // (iii) The curvature, for case (ii). Write D for the set of channels aligned on both axes. Each
 // channel statement holds on its own (the argument of (i) is channel by channel, w is the same for
@@ -135,9 +146,9 @@ constexpr std::int64_t gain_units(std::int64_t l1, std::int64_t least, int windo
 // (iii) for one set D (bit c set: c in D) and ball radius R, n_c >= 0: the least bound over the θ grid,
 // rounded up (an integer >= the maximum over v, u in B of the bracket above plus K).
 std::int64_t two_point_units(const std::array<std::int64_t, 3>& n, unsigned in_d, std::int64_t radius, int window);
-// The bound on n·L(p) − n·centre (8.7 units, truncate_to_8's 128·|n|_1 included), for a normal
-// with components |n_c| and s: max of case (i) and (iii) over every D.
-std::int64_t reach_units(const std::array<std::int64_t, 3>& n, int s, int window, const gs::model_options& o);
+// The bound on n·L(p) − n·centre (8.7 units, the Gouraud light's; truncation_units come on top), for a
+// normal with components |n_c| and s: max of case (i) and (iii) over every D.
+std::int64_t reach_units(const std::array<std::int64_t, 3>& n, int s, int window);
 bool cannot_wrap(const paper::packed_normal& p, int e, int s, const gs::model_options& o) noexcept;
 // The largest s such that no normal can wrap for any s' <= s by that bound (0 if none).
 int bound_safe_s(const gs::model_options& o);
