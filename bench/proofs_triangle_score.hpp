@@ -20,8 +20,9 @@ struct scored {
 };
 
 // The best wrap-side pixel (side +1: value >= 128, −1: value <= −129, read as −value − 1 >= 128)
-// among the covered pixels within `radius` of the vertices in `vertices` (bit k: vertex k), ranked by
-// the smooth part.
+// among the covered pixels within `radius` of the vertices in `vertices` (bit k: vertex k): the
+// model's exact value is computed at every one of them and ranks first, the smooth part second
+// (a neighbouring pixel with a smaller smooth part can have kinder floors and wrap).
 inline scored score_near_vertices(const proofs::two_pass::triangle::triangle_case& c, const gs::model_options& o,
                                   const proofs::two_pass::table& t, int side, int radius = 2, unsigned vertices = 7) {
   namespace tt = proofs::two_pass::triangle;
@@ -48,10 +49,9 @@ inline scored score_near_vertices(const proofs::two_pass::triangle::triangle_cas
           real += n[ch] * (l - 16384) / 16384.0;
         }
         const double sm = side > 0 ? real : -real - 1;
-        if (sm > best.smooth) {
-          const auto r = proofs::two_pass::pixel(nm, L, o);
-          best = {sm, side > 0 ? r.value : -r.value - 1, x, y};
-        }
+        const auto r = proofs::two_pass::pixel(nm, L, o);
+        const int v = side > 0 ? r.value : -r.value - 1;
+        if (best.px < 0 || v > best.value || (v == best.value && sm > best.smooth)) best = {sm, v, x, y};
       }
   }
   return best;
