@@ -57,10 +57,12 @@ inline scored score_near_vertices(const proofs::two_pass::triangle::triangle_cas
   return best;
 }
 
-// One certificate row, as in two_pass_triangle.cpp's table (the pixel from `at`).
-inline void print_certificate_row(const proofs::two_pass::triangle::triangle_case& k, const scored& at, const char* option) {
-  std::printf("s = %d (%s): wrap at pixel (%d, %d)\n    {%d, %d, %d, {{{%d, %d, %d}, {%d, %d, %d}, {%d, %d, %d}}}, {%d, %d, %d, %d, %d, %d}, %d, %d},\n",
-              k.s, option, at.px, at.py, k.s, k.iX, k.iY, k.light[0][0], k.light[0][1], k.light[0][2], k.light[1][0], k.light[1][1],
+// One certificate row, as in two_pass_triangle.cpp's table (the pixel from `at`); `what` names the
+// row in its heading ("wrap", or "best" for a search's best case that does not wrap).
+inline void print_certificate_row(const proofs::two_pass::triangle::triangle_case& k, const scored& at, const char* option,
+                                  const char* what = "wrap") {
+  std::printf("s = %d (%s): %s at pixel (%d, %d)\n    {%d, %d, %d, {{{%d, %d, %d}, {%d, %d, %d}, {%d, %d, %d}}}, {%d, %d, %d, %d, %d, %d}, %d, %d},\n",
+              k.s, option, what, at.px, at.py, k.s, k.iX, k.iY, k.light[0][0], k.light[0][1], k.light[0][2], k.light[1][0], k.light[1][1],
               k.light[1][2], k.light[2][0], k.light[2][1], k.light[2][2], k.xy16[0], k.xy16[1], k.xy16[2], k.xy16[3], k.xy16[4], k.xy16[5],
               at.px, at.py);
 }
