@@ -63,6 +63,14 @@ struct triangle_case {
 // W over P_c(p) with nothing but the ball tying P(p) to the vertex lights, which is where the bound
 // and these certificates still differ (the relaxation's best at s = 86 for n = (−79, −57, 83) is
 // 16297 against the wrap threshold 16000 in n·level units; see the closing notes of issue 13).
+// s = 85, one per gouraud_fraction: the same construction, `proofs_triangle_steep 85 -89 -65 1 0 -17
+// -59 59 4 26 750 775 6` (188 cases) and `proofs_triangle_steep 85 truncate_to_8 -89 -65 1 0 -17 -59
+// 59 4 26 750 775 6` (190 cases), its start values from bench/proofs_triangle_plan (`survey 85`: the
+// exact optimum of the truncated-step model, 16188 against 16000 for n = (−89, −65, 65), top side,
+// e = +1, with X = (0, ~761), K = 7, Z = p = (2047, 2047)). The earlier steep runs at s = 85 (best
+// 127) took D1 = 9 from the relaxation; with the plan's lights that puts Y inside the ball (|l_Y| ~ 80),
+// but a packed light sits on the shell: the plan's objective does not depend on xY, and moving Y =
+// (xY, 0) until |l_Y| = s gives D1 = 4.
 // tests/proofs replays each through the pipeline's rasteriser (the pixel is covered) and
 // gs::pixel_pipeline.
 std::span<const triangle_case> certificates() noexcept;
