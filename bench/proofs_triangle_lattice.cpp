@@ -3,7 +3,7 @@
 // not a proof (the windows' slack, the 12.4 vertices, the start value's truncation and the floors are
 // left to proofs_triangle_steep, which scores each case exactly); deterministic.
 //
-//   proofs_triangle_lattice S IX IY SIDE THIRD [F_MIN] [TOP]
+//   proofs_triangle_lattice S [truncate_to_8] IX IY SIDE THIRD [F_MIN] [TOP]
 // Folded (σ_c = sign n_c · SIDE, larger is closer to the wrap; packed lights are symmetric in each
 // channel's sign), with A, B the lag channels and 3 = THIRD, the steep construction in the limit of
 // its windows (lag steps −1 on both axes, the third channel's x step −1 and y step K, r = (0, 0),
@@ -15,6 +15,10 @@
 // optimum (proofs_triangle_plan) can miss the lattice by most of a level. The pixel is the bottom row
 // y_p = floor(yZ), where the lag channels keep X_c + yX/128 and the third X_3 + K·(y_p − yX)/128, so
 //   F = |n_A|·(X_A + yX/128) + |n_B|·(X_B + yX/128) + |n_3|·(X_3 + K·(y_p − yX)/128).
+// Under truncate_to_8 the multiply sees the light's integer level, floor(L_c/128): folded, that is
+// ceil of the folded level where σ_c = −1 (a gain of up to one level) and floor where σ_c = +1, so
+// F takes each channel's term that way (a folded level within 1e-6 of an integer is taken at the
+// integer: the exact case, a hair off the limit, decides).
 // Every packed X, D2 = 1..40, packed Z, K = 1..15, D1 = 1..20 and packed Y with all four
 // coordinates in [0, 2047] is tried (a limit yZ up to 2 pixels past 2047 is moved in with yX: the
 // windows' slack; the s = 85 certificates have yX = 751 for a limit of 752); the TOP (default 20) cases with F >= F_MIN (default 0) are
@@ -25,6 +29,7 @@
 #include <cstdlib>
 #include <vector>
 
+#include "proofs_search_args.hpp"
 #include "proofs/domains.hpp"
 #include "proofs/paper_code.hpp"
 
@@ -40,21 +45,31 @@ struct lattice_case {
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc < 6) {
-    std::fprintf(stderr, "usage: proofs_triangle_lattice S IX IY SIDE THIRD [F_MIN] [TOP]\n");
+  const auto args = gsdot3::bench::parse_search_args(argc, argv, "proofs_triangle_lattice", " IX IY SIDE THIRD [F_MIN] [TOP]");
+  const int at = args.next;
+  if (argc < at + 4) {
+    std::fprintf(stderr, "usage: proofs_triangle_lattice S [truncate_to_8] IX IY SIDE THIRD [F_MIN] [TOP]\n");
     return 2;
   }
-  const int s = std::atoi(argv[1]), iX = std::atoi(argv[2]), iY = std::atoi(argv[3]), side = std::atoi(argv[4]), c3 = std::atoi(argv[5]);
-  const double f_min = argc > 6 ? std::atof(argv[6]) : 0;
-  const int top = argc > 7 ? std::atoi(argv[7]) : 20;
-  if (s < 1 || s > 127 || (side != 1 && side != -1) || c3 < 0 || c3 > 2 || top < 1) {
-    std::fprintf(stderr, "proofs_triangle_lattice: S in 1..127, SIDE 1 or -1, THIRD 0..2, TOP >= 1\n");
+  const int s = args.s, iX = std::atoi(argv[at]), iY = std::atoi(argv[at + 1]), side = std::atoi(argv[at + 2]), c3 = std::atoi(argv[at + 3]);
+  const double f_min = argc > at + 4 ? std::atof(argv[at + 4]) : 0;
+  const int top = argc > at + 5 ? std::atoi(argv[at + 5]) : 20;
+  const bool truncate = args.o.gouraud == gs::gouraud_fraction::truncate_to_8;
+  if ((side != 1 && side != -1) || c3 < 0 || c3 > 2 || top < 1) {
+    std::fprintf(stderr, "proofs_triangle_lattice: SIDE 1 or -1, THIRD 0..2, TOP >= 1\n");
     return 2;
   }
   const auto nm = p::paper::pack_normal_from(iX, iY);
   const int n[3] = {nm.iX, nm.iY, nm.iZ};
   const std::size_t c = static_cast<std::size_t>(c3), ca = (c + 1) % 3, cb = (c + 2) % 3;
   const double wa = std::abs(n[ca]), wb = std::abs(n[cb]), w3 = std::abs(n[c]);
+  // a channel's folded level at the pixel as the multiply sees it
+  auto seen = [&](std::size_t ch, double level) {
+    if (!truncate) return level;
+    const double r = std::round(level);
+    if (std::fabs(level - r) < 1e-6) return r;
+    return (n[ch] >= 0 ? side : -side) < 0 ? std::ceil(level) : std::floor(level);
+  };
   constexpr double W = 2047;
   // the packed values of the third channel for given A, B values (folded: any sign), tabulated
   const int side_len = 2 * s + 1;
@@ -73,8 +88,9 @@ int main(int argc, char** argv) {
   };
   std::vector<lattice_case> found;
   for (const auto& x : p::packed_lights(s)) {
-    // an upper bound on F for this X: yX <= W, and the third channel at most s + W/128 (one axis's lag)
-    if (wa * (x[ca] + W / 128) + wb * (x[cb] + W / 128) + w3 * (s + W / 128) < f_min) continue;
+    // an upper bound on F for this X: yX <= W, and the third channel at most s + W/128 (one axis's lag),
+    // each up to a level more under truncate_to_8
+    if (wa * (x[ca] + W / 128 + 1) + wb * (x[cb] + W / 128 + 1) + w3 * (s + W / 128 + 1) < f_min) continue;
     for (int d2 = 1; d2 <= 40; ++d2)
       for (int z3 : third_values(x[ca] - d2, x[cb] - d2)) {
         const int e2 = z3 - x[c];
@@ -88,7 +104,8 @@ int main(int argc, char** argv) {
               const double over = std::max(0.0, -unit * (y3 - x[c] + d1) + rise - W);
               const double yX = -unit * (y3 - x[c] + d1) - over, xY = yX + 128.0 * d1, yZ = yX + rise;
               if (over > 2 || yX < 0 || xY > W) continue;
-              const double f = wa * (x[ca] + yX / 128) + wb * (x[cb] + yX / 128) + w3 * (x[c] + K * (std::floor(yZ) - yX) / 128);
+              const double f = wa * seen(ca, x[ca] + yX / 128) + wb * seen(cb, x[cb] + yX / 128) +
+                               w3 * seen(c, x[c] + K * (std::floor(yZ) - yX) / 128);
               if (f < f_min) continue;
               p::ivec3 y = x, z = x;
               y[ca] -= d1, y[cb] -= d1, y[c] = y3;
@@ -99,15 +116,16 @@ int main(int argc, char** argv) {
       }
   }
   std::sort(found.begin(), found.end(), [](const lattice_case& a, const lattice_case& b) { return a.f > b.f; });
-  std::printf("s = %d, n = (%d, %d, %d), side %+d, third channel %d: %zu lattice cases with F >= %g\n", s, n[0], n[1], n[2], side, c3,
-              found.size(), f_min);
+  std::printf("s = %d (%s), n = (%d, %d, %d), side %+d, third channel %d: %zu lattice cases with F >= %g\n", s, args.option_name(), n[0], n[1],
+              n[2], side, c3, found.size(), f_min);
   for (int i = 0; i < top && i < static_cast<int>(found.size()); ++i) {
     const lattice_case& k = found[static_cast<std::size_t>(i)];
     int lx[3];
     for (std::size_t ch = 0; ch < 3; ++ch) lx[ch] = (n[ch] >= 0 ? 1 : -1) * side * k.x[ch];
     std::printf("F %.2f  K %d  X = (0, %.2f) Y = (%.2f, 0) Z = (%.2f, %.2f)  folded X (%d, %d, %d) Y (%d, %d, %d) Z (%d, %d, %d)\n", k.f, k.K,
                 k.yX, k.xY, k.xZ, k.yZ, k.x[0], k.x[1], k.x[2], k.y[0], k.y[1], k.y[2], k.z[0], k.z[1], k.z[2]);
-    std::printf("      steep: proofs_triangle_steep %d %d %d %d %d %d %d %d %d %d %d %d 1\n", s, iX, iY, side, c3, lx[0], lx[1], lx[2], k.d1, k.d2,
+    std::printf("      steep: proofs_triangle_steep %d%s %d %d %d %d %d %d %d %d %d %d %d 1\n", s, truncate ? " truncate_to_8" : "", iX, iY, side, c3,
+                lx[0], lx[1], lx[2], k.d1, k.d2,
                 std::max(0, static_cast<int>(std::floor(k.yX)) - 3), std::min(2047, static_cast<int>(std::ceil(k.yX)) + 1));
   }
   return 0;

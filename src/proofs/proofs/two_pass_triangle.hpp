@@ -71,6 +71,15 @@ struct triangle_case {
 // 127) took D1 = 9 from the relaxation; with the plan's lights that puts Y inside the ball (|l_Y| ~ 80),
 // but a packed light sits on the shell: the plan's objective does not depend on xY, and moving Y =
 // (xY, 0) until |l_Y| = s gives D1 = 4.
+// s = 84, truncate_to_8 only: the same construction on the bottom side of an all-positive normal,
+// where the multiply's floor of each channel's light level (folded: the ceiling, all three σ_c =
+// −1) gives back up to a level per channel. bench/proofs_triangle_lattice (`84 truncate_to_8 60 67
+// -1 2 16000 40`: the construction's integer data in the limit of its windows, best F 16049 against
+// 16000) and its first steep command with neighbouring normals, `proofs_triangle_steep 84
+// truncate_to_8 60 67 -1 2 -53 -62 -19 6 25 828 832 1 60 200 2 0 124.5` (7 cases): n = (61, 66, 91).
+// Under keep_fraction no lattice case of the construction reaches the threshold at s = 84
+// (proofs_triangle_lattice F >= 16000 for none of the 65 weight classes of the top 300 rows of
+// `proofs_triangle_plan survey 84`; best 15999.59).
 // tests/proofs replays each through the pipeline's rasteriser (the pixel is covered) and
 // gs::pixel_pipeline.
 std::span<const triangle_case> certificates() noexcept;
