@@ -77,9 +77,11 @@ struct triangle_case {
 // -1 2 16000 40`: the construction's integer data in the limit of its windows, best F 16049 against
 // 16000) and its first steep command with neighbouring normals, `proofs_triangle_steep 84
 // truncate_to_8 60 67 -1 2 -53 -62 -19 6 25 828 832 1 60 200 2 0 124.5` (7 cases): n = (61, 66, 91).
-// Under keep_fraction no lattice case of the construction reaches the threshold at s = 84
-// (proofs_triangle_lattice F >= 16000 for none of the 65 weight classes of the top 300 rows of
-// `proofs_triangle_plan survey 84`; best 15999.59).
+// Under keep_fraction no lattice case of the construction reaches the threshold at s = 84 in the
+// limit of its windows (a search result, not a proof: proofs_triangle_lattice finds F >= 16000 for
+// none of the 65 weight classes of the top 300 rows of `proofs_triangle_plan survey 84`; the best of
+// the top nine classes is 15999.59, for n = (−87, −73, 59)), and the floors give back less than the
+// 2 (top) or 3 (bottom) that the threshold counts.
 // tests/proofs replays each through the pipeline's rasteriser (the pixel is covered) and
 // gs::pixel_pipeline.
 std::span<const triangle_case> certificates() noexcept;
