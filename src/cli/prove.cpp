@@ -165,7 +165,7 @@ void add_prove_command(CLI::App& app, context& ctx) {
                 "sigma*P_c(p) + 1 + a + b and (C) < sigma*P_c(w) + W where it is aligned on both, and the bound's point w "
                 "in the closed triangle; at every pixel centre of 2^24 cases (8x8-lattice triangles of the full 2048^2 "
                 "window x ordered triples of 4 lights of L_122) in 65536 chunks: a cluster run, split it with --shard "
-                "(its cases do not depend on the model options: add --no-variants to check them once)");
+                "(its cases depend on no model or domain option, so they are checked once, without variants)");
   auto* merge = cmd->add_subcommand("merge", "Combine the partial ledgers of `prove --claim ID --shard K/N --json` (K = 0..N-1) into the ledger of the unsplit run");
   merge->add_option("parts", args->parts, "Partial ledger files, one per shard, any order")->check(CLI::ExistingFile);
   merge->allow_extras();  // the second and later PARTS (every option takes one value, main.cpp)

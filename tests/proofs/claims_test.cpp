@@ -264,6 +264,10 @@ TEST(Claims, TwoPassMaxSInterpolated) {
   // The verdict text follows the figures: the bracket is 80..84 and the lowest certificate's s is named.
   EXPECT_NE(o.note.find("s = 80..84 is bracketed"), std::string::npos) << o.note;
   EXPECT_NE(o.note.find("the lowest s = 85"), std::string::npos) << o.note;
+  // The bound's own statements admit a wrap from s = 84 (a relaxation witness; triangle_test.cpp
+  // recomputes it), 82 under truncate_to_8 (its 128·|n|_1 units of slack).
+  EXPECT_EQ(fig(o, "bound_limit_s"), 84);
+  EXPECT_NE(o.note.find("admit a wrap from s = 84"), std::string::npos) << o.note;
   const auto& t = variant("two-pass.max-s.interpolated", "gouraud_fraction", "truncate_to_8");
   EXPECT_EQ(t.result, p::verdict::refuted);
   EXPECT_EQ(fig(t, "s_max"), 78);
@@ -272,6 +276,7 @@ TEST(Claims, TwoPassMaxSInterpolated) {
   EXPECT_EQ(fig(t, "certificates_not_wrapping"), 5);  // the keep_fraction rows for s = 85, 86, 90, 98 and 100
   EXPECT_NE(t.note.find("s = 79..83 is bracketed"), std::string::npos) << t.note;
   EXPECT_NE(t.note.find("the lowest s = 84"), std::string::npos) << t.note;
+  EXPECT_EQ(fig(t, "bound_limit_s"), 82);
   bool paper = false;
   for (const auto& w : o.witnesses) paper = paper || w.rfind("s = 122:", 0) == 0;
   EXPECT_TRUE(paper);

@@ -133,6 +133,32 @@ TEST(Runner, VariantsCoverEveryOtherValueAndFlagChanges) {
   EXPECT_TRUE(r.variants[0].changed);
 }
 
+namespace {
+// Two synthetic claims on the same options, counting their evaluations: one outcome option-free.
+int evaluations = 0;
+p::outcome counted(bool option_free) {
+  ++evaluations;
+  p::outcome o;
+  o.option_free = option_free;
+  return o;
+}
+p::outcome option_free_eval(const gs::model_options&, const p::sweep_config&) { return counted(true); }
+p::outcome option_reading_eval(const gs::model_options&, const p::sweep_config&) { return counted(false); }
+}  // namespace
+
+TEST(Runner, AnOptionFreeOutcomeIsEvaluatedOnceWithoutVariants) {
+  const p::claim reading{"test.reads-options", "-", "-", "-", p::method::exhaustive, {"blend_shift", "gouraud_fraction"}, option_reading_eval};
+  const p::claim free{"test.option-free", "-", "-", "-", p::method::exhaustive, {"blend_shift", "gouraud_fraction"}, option_free_eval};
+  evaluations = 0;
+  const auto r = p::run_claim(reading, {}, p::run_config{});
+  EXPECT_EQ(r.variants.size(), 2u);  // blend_shift=truncate, gouraud_fraction=truncate_to_8
+  EXPECT_EQ(evaluations, 3);
+  evaluations = 0;
+  const auto f = p::run_claim(free, {}, p::run_config{});
+  EXPECT_TRUE(f.variants.empty());
+  EXPECT_EQ(evaluations, 1);
+}
+
 TEST(Ledger, JsonHasTheIssueSchemaAndMarkdownHasNoTimings) {
   const auto* c = p::find_claim("ilp.dpb-clear-zero");
   ASSERT_NE(c, nullptr);

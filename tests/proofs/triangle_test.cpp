@@ -22,6 +22,7 @@
 #include "proofs/two_pass.hpp"
 #include "proofs/triangle_brute_force.hpp"
 #include "proofs/two_pass_triangle.hpp"
+#include "proofs/triangle_relaxation.hpp"
 #include "reference.hpp"
 
 namespace p = gsdot3::proofs;
@@ -476,4 +477,96 @@ TEST(Triangle, BoundedSafeSIsWhatTheInequalityGivesForTheWorstNormal) {
     }
     EXPECT_TRUE(fails_above);
   }
+}
+
+namespace {
+// The plane through the three vertex lights of one channel, written another way: Cramer's rule on
+// [x y 1]·(g_x, g_y, c) = l at the three vertices (levels; g per pixel).
+std::array<double, 3> plane_by_cramer(const tt::relaxation_point& x, std::size_t c, const std::array<std::array<double, 3>, 3>& l) {
+  const auto& V = x.vertex;
+  auto det3 = [](const double m[3][3]) {
+    return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+           m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+  };
+  const double A[3][3] = {{V[0][0], V[0][1], 1}, {V[1][0], V[1][1], 1}, {V[2][0], V[2][1], 1}};
+  const double d = det3(A);
+  std::array<double, 3> out{};
+  for (int col = 0; col < 3; ++col) {
+    double M[3][3];
+    for (int r = 0; r < 3; ++r)
+      for (int k = 0; k < 3; ++k) M[r][k] = k == col ? l[static_cast<std::size_t>(r)][c] : A[r][k];
+    out[static_cast<std::size_t>(col)] = det3(M) / d;
+  }
+  return out;  // g_x, g_y, constant
+}
+}  // namespace
+
+TEST(Triangle, RelaxationWitnessesLieInTheRelaxationAndExceedTheirThresholds) {
+  for (const auto& w : tt::relaxation_witnesses()) {
+    gs::model_options o;
+    o.gouraud = w.gouraud;
+    const p::two_pass::table t(o);
+    const auto nm = p::paper::pack_normal_from(w.iX, w.iY);
+    const std::array<double, 3> n{double(std::abs(nm.iX)), double(std::abs(nm.iY)), double(std::abs(nm.iZ))};
+    // the domain: vertices in the window with r = (0, 0) their least coordinates, p a point of the triangle
+    double least_x = 1e9, least_y = 1e9;
+    for (const auto& v : w.at.vertex) {
+      EXPECT_TRUE(v[0] >= 0 && v[0] <= 2047 && v[1] >= 0 && v[1] <= 2047) << w.s;
+      least_x = std::min(least_x, v[0]), least_y = std::min(least_y, v[1]);
+    }
+    EXPECT_EQ(least_x, 0);
+    EXPECT_EQ(least_y, 0);
+    // the lights, scaled onto the ball as relaxation_value does, then the objective by Cramer's rule
+    auto l = w.at.light;
+    for (auto& v : l) {
+      const double len = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+      EXPECT_LT(len, w.s + 0.01) << "a witness light is far outside the ball";
+      if (len > w.s)
+        for (double& c : v) c *= w.s / len;
+    }
+    double value = 0;
+    for (std::size_t c = 0; c < 3; ++c) {
+      const auto g = plane_by_cramer(w.at, c, l);
+      const double P = g[0] * w.at.pixel[0] + g[1] * w.at.pixel[1] + g[2];
+      value += n[c] * (P + w.at.pixel[0] * std::clamp(-128 * g[0], 0.0, 1.0) / 128 + w.at.pixel[1] * std::clamp(-128 * g[1], 0.0, 1.0) / 128);
+    }
+    EXPECT_NEAR(tt::relaxation_value(w.at, n, w.s), value, 1e-6) << w.s;
+    const double l1 = n[0] + n[1] + n[2];
+    const int neg = (nm.iX < 0) + (nm.iY < 0) + (nm.iZ < 0);
+    const double margin = value + l1 / 128 + (w.gouraud == gs::gouraud_fraction::truncate_to_8 ? l1 : 0) - 128.0 * (128 - neg - t.alpha_error(nm));
+    EXPECT_NEAR(tt::relaxation_margin(w, t, o), margin, 1e-6);
+    EXPECT_GT(margin, 10) << "s = " << w.s << ": the witness should clear its threshold by far more than its rounding";
+    // and the bound itself cannot settle that normal at that s (else the witness would say nothing)
+    EXPECT_FALSE(tt::cannot_wrap(nm, t.alpha_error(nm), w.s, o)) << w.s;
+  }
+}
+
+TEST(Triangle, RelaxationIsAnUpperBoundOnEveryCertificatesPixel) {
+  // The relaxation's lag statement on real cases: for every certificate (its own wrap side) the
+  // pixel's light, through the model's Gouraud set-up, stays below the relaxation's value at the
+  // same vertices, pixel and (integer) lights plus the start error's |n|_1/128.
+  int checked = 0;
+  for (const auto& c : tt::certificates()) {
+    const auto nm = p::paper::pack_normal_from(c.iX, c.iY);
+    const int n[3] = {nm.iX, nm.iY, nm.iZ};
+    const auto r = tt::reference_pixel(c.xy16);
+    const auto L = tt::pixel_light(c);
+    const int Lc[3] = {L.r.value(), L.g.value(), L.b.value()};
+    for (int side : {1, -1}) {
+      tt::relaxation_point x{};
+      for (std::size_t k = 0; k < 3; ++k) x.vertex[k] = {c.xy16[2 * k] / 16.0 - r[0], c.xy16[2 * k + 1] / 16.0 - r[1]};
+      x.pixel = {double(c.px - r[0]), double(c.py - r[1])};
+      std::array<double, 3> w{};
+      double actual = 0, l1 = 0;
+      for (std::size_t ch = 0; ch < 3; ++ch) {
+        const int sigma = side * (n[ch] >= 0 ? 1 : -1);
+        w[ch] = std::abs(n[ch]), l1 += w[ch];
+        for (std::size_t k = 0; k < 3; ++k) x.light[k][ch] = sigma * c.light[k][ch];
+        actual += w[ch] * sigma * (Lc[ch] - 16384) / 128.0;
+      }
+      EXPECT_LT(actual, tt::relaxation_value(x, w, c.s) + l1 / 128 + 1e-9) << "s = " << c.s << " side " << side;
+      ++checked;
+    }
+  }
+  EXPECT_EQ(checked, 2 * static_cast<int>(tt::certificates().size()));
 }

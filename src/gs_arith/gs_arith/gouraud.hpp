@@ -1,14 +1,18 @@
 // gs_arith/gouraud.hpp — Gouraud colour interpolation in 8.7 fixed point (PRIM.IIP = 1).
 //
-// Evidence (facts digest, "Rasterisation and interpolation"): PCSX2 SW steps the RGBA colour per pixel
-// in 8.7 fixed point and clamps the stepped value at >= 0; flat shading (IIP = 0) takes the last
-// vertex's colour. SW only, no hardware recording: confidence low for the exact rounding of the setup.
+// Evidence (facts digest, "Rasterisation and interpolation"): PCSX2 SW steps the RGBA colour in 8.7
+// fixed point and clamps the stepped value at >= 0; flat shading (IIP = 0) takes the last vertex's
+// colour. SW only, no hardware recording: confidence low for the exact rounding of the setup.
+// The triangle set-up below (one plane, both steps truncated to whole units, every pixel stepped from
+// one reference pixel) is this model's own choice: PCSX2 SW starts each row afresh from a float edge
+// walk and truncates the step of 4 (or 8) pixels, DobieStation stays in float (docs/evidence.md, M1,
+// with the functions read). Spans (gouraud_span) step per pixel as below.
 //
 // The model, at value level (how to use it for "light vectors after the model's Gouraud interpolation"):
 //   1. setup per primitive: a start value (8.7, signed, at a reference pixel) and a step per pixel
 //      (8.7, signed). Rounding of the setup, named `toward_zero`: the exact rational gradient
-//      (c1 − c0)·128 / distance is truncated toward zero (PCSX2 converts its float gradient with a
-//      truncating conversion). Truncating the step never overshoots the far endpoint.
+//      (c1 − c0)·128 / distance is truncated toward zero (PCSX2 SW `CSetupPrim` converts its float
+//      step with a truncating conversion). Truncating the step never overshoots the far endpoint.
 //   2. per pixel, k steps from the start: value = start + k·step, exactly (no per-step rounding),
 //   3. clamped to the 15-bit 8.7 range 0 .. 0x7FFF (255 + 127/128); the >= 0 clamp is the digest's,
 //      the upper one only matters outside the primitive's own colour range.

@@ -12,6 +12,7 @@
 #include "proofs/two_pass.hpp"
 #include "proofs/two_pass_triangle.hpp"
 #include "proofs/triangle_brute_force.hpp"
+#include "proofs/triangle_relaxation.hpp"
 
 namespace gsdot3::proofs::claims {
 
@@ -163,12 +164,14 @@ std::string describe_certificate(const triangle_case& c, const gs::model_options
 // --brute-force (two_pass::triangle::brute_force, proofs/triangle_brute_force.hpp): the bound's
 // per-channel statements at full size. The light does not depend on the model options (the Gouraud
 // unit has none; truncate_to_8 is applied after, in the multiply, and adds its 128 units to the
-// bound), so every variant re-checks the same cases (--no-variants runs them once).
+// bound; the cases use no domain option), so the outcome is option-free and the runner checks the
+// cases once, with no variants.
 outcome interpolated_brute_force(const gs::model_options&, const sweep_config& cfg) {
   namespace tt = two_pass::triangle;
   const auto r = tt::brute_force(cfg);
   const auto statements = tt::channel_statements();
   outcome out;
+  out.option_free = true;
   out.domain_size = tt::brute_force_cases;
   out.figures = {fig("pixels", static_cast<std::int64_t>(r.pixels))};
   auto describe = [](std::uint64_t at, const std::string& what) {
@@ -264,6 +267,24 @@ outcome two_pass_max_s_interpolated(const gs::model_options& o, const sweep_conf
     const auto r = two_pass::pixel(paper::pack_normal_from(c.iX, c.iY), two_pass::triangle::pixel_light(c), o);
     return c.s == paper_s && r.dot != r.value;
   });
+  // How far the bound's own statements can go: the least s of a relaxation witness (real geometry,
+  // real lights in the ball) above the threshold under this option (triangle_relaxation.hpp).
+  const two_pass::table t(o);
+  int limit = 0;
+  double limit_margin = 0;
+  for (const auto& w : two_pass::triangle::relaxation_witnesses()) {
+    if (w.gouraud != o.gouraud) continue;
+    const double m = two_pass::triangle::relaxation_margin(w, t, o);
+    if (m > 0 && (limit == 0 || w.s < limit)) limit = w.s, limit_margin = m;
+  }
+  std::string limit_text;
+  if (limit > 0) {
+    char margin[32];
+    std::snprintf(margin, sizeof margin, "%.1f", limit_margin);
+    limit_text = " The bound's statements themselves admit a wrap from s = " + std::to_string(limit) +
+                 " (relaxation witness: real vertices and real lights in the ball, " + margin +
+                 " levels·|n| over the threshold; two_pass_triangle's relaxation_witnesses)";
+  }
   outcome out;
   out.result = paper_wraps ? verdict::refuted : verdict::bound;
   out.domain_size = normals.size() * static_cast<std::uint64_t>(proven_safe + 1) + two_pass::triangle::certificates().size();
@@ -271,7 +292,7 @@ outcome two_pass_max_s_interpolated(const gs::model_options& o, const sweep_conf
   out.figures = {fig("s_max", proven_safe), fig("s_max_upper", first_wrap - 1), fig("first_wrapping_s", first_wrap),
                  fig("paper_s", paper_s), fig("window_pixels", two_pass::triangle::window_pixels),
                  fig("certificates_not_wrapping", static_cast<std::int64_t>(failed.count)),
-                 fig("normals", static_cast<std::int64_t>(normals.size()))};
+                 fig("normals", static_cast<std::int64_t>(normals.size())), fig("bound_limit_s", limit)};
   out.witnesses = std::move(witnesses);
   out.note = "on whole triangles the paper's s = " + std::to_string(paper_s) +
              (paper_wraps ? " wraps" : " is not shown to wrap") + ": a pixel ~2030 pixels from the plane's reference pixel "
@@ -293,7 +314,10 @@ outcome two_pass_max_s_interpolated(const gs::model_options& o, const sweep_conf
              "their third channel through a steep step on the other). The searches (bench/proofs_triangle_two_axis, "
              "bench/proofs_triangle_anneal, bench/proofs_triangle_corner, bench/proofs_triangle_steep with "
              "bench/proofs_triangle_plan) found no wrap below " +
-             std::to_string(first_wrap);
+             std::to_string(first_wrap) + "." + limit_text +
+             (limit > 0 ? std::string(", so s = ") + std::to_string(limit) + " and above can only be settled with the lattice (integer "
+                                                      "lights, 12.4 vertices, the truncation itself, the floors)"
+                        : std::string());
   return for_domain(std::move(out), cfg);
 }
 

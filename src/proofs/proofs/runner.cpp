@@ -19,7 +19,7 @@ claim_result run_claim(const claim& c, const gs::model_options& base, const run_
     return c.evaluate(o, cfg.sweep);
   };
   claim_result r{&c, base, evaluate(base), {}, 0};
-  if (cfg.variants) {
+  if (cfg.variants && !r.result.option_free) {
     for (auto name : c.depends_on) {
       const auto current = gs::option_value(base, name);
       for (const auto& info : gs::option_catalogue()) {
@@ -35,7 +35,7 @@ claim_result run_claim(const claim& c, const gs::model_options& base, const run_
       }
     }
   }
-  if (cfg.variants) {
+  if (cfg.variants && !r.result.option_free) {
     for (const auto& info : domain_option_catalogue()) {
       if (std::find(info.claims.begin(), info.claims.end(), c.id) == info.claims.end()) continue;
       const auto current = domain_option_value(cfg.sweep.domain, info.name);

@@ -27,7 +27,9 @@ struct claim_result {
 
 struct run_config {
   sweep_config sweep;
-  bool variants = true;  // also evaluate under the other values of each option the claim depends on
+  // Also evaluate under the other values of each option the claim depends on (not when the base
+  // outcome is option_free: every variant would repeat it).
+  bool variants = true;
   // Called before each claim (may be empty): the CLI uses it to label progress lines.
   std::function<void(const claim&)> starting;
 };

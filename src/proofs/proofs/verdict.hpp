@@ -37,6 +37,9 @@ struct outcome {
   std::vector<figure> figures;
   std::vector<std::string> witnesses;  // "inputs => observed, expected" lines, hex and decimal
   std::string note;                    // one sentence: what the verdict means here
+  // The evaluation read neither the model options nor the domain options (e.g. a brute force of
+  // option-free statements): every variant would repeat it, so the runner evaluates none.
+  bool option_free = false;
 
   const figure* find(std::string_view figure_name) const noexcept;
   std::int64_t integer(std::string_view figure_name) const;  // throws if absent or not integral

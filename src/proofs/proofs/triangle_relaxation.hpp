@@ -1,0 +1,49 @@
+// proofs/triangle_relaxation.hpp — how far the error bound of two-pass.max-s.interpolated can go:
+// the continuous relaxation of its per-channel statements, and the witnesses that it admits a wrap.
+//
+// The statements (two_pass_triangle.hpp): at a covered pixel p = r + (a, b), channel c with wrap-side
+// sign σ_c has σ_c·L_c(p) < σ_c·P_c(p) + 1 + a·min(1, t_x) + b·min(1, t_y) units on the axes where it is
+// aligned (t = −σ_c·(the exact step in units per pixel) > 0) and nothing more on the others; P lies
+// in the vertex lights' ball. Relaxed: real vertices, real lights in the ball |l| <= s (levels), any
+// real p in the triangle, the lag a·clamp(t, 0, 1) taken in full. A relaxation witness is a point of
+// that relaxation where Σ_c |n_c|·σ_c·(L_c − 16384) plus the bound's own slack exceeds the wrap
+// threshold: then no argument that uses only those statements and the ball can prove its normal
+// safe at s, and the open range can only be closed with the lattice (integer lights, 12.4 vertices,
+// the truncation itself, the floors). bench/proofs_triangle_dual finds them (its header argues the
+// reduction of the geometry to five families with the bounding box [0, 2048]² and p at a vertex).
+#pragma once
+
+#include <array>
+#include <span>
+
+#include "gs_arith/options.hpp"
+#include "proofs/two_pass.hpp"
+
+namespace gsdot3::proofs::two_pass::triangle {
+
+// Lights and directions are σ-folded: component c is σ_c times the light's component, σ_c = sign n_c
+// (the top side), so "larger" is towards the wrap on every channel.
+struct relaxation_point {
+  std::array<std::array<double, 2>, 3> vertex;  // pixels, relative to the reference pixel r = (0, 0)
+  std::array<double, 2> pixel;                  // p, in the closed triangle
+  std::array<std::array<double, 3>, 3> light;   // levels, σ-folded; scaled onto the ball |l| <= s where outside
+};
+
+// Σ_c w_c·(P_c(p) + p_x·clamp(t_x,c, 0, 1)/128 + p_y·clamp(t_y,c, 0, 1)/128) in levels·|n| (w = |n|,
+// σ-folded), with the lights scaled onto the ball of radius s where they leave it.
+double relaxation_value(const relaxation_point& x, const std::array<double, 3>& w, double s) noexcept;
+
+struct relaxation_witness {
+  int s, iX, iY;  // the normal (paper::pack_normal_from), top side
+  gs::gouraud_fraction gouraud;
+  relaxation_point at;
+};
+// The table; bench/proofs_triangle_dual's `families` mode printed each row (command beside it).
+std::span<const relaxation_witness> relaxation_witnesses() noexcept;
+
+// The witness's value above its top-side threshold, levels·|n|: relaxation_value + the start error
+// (|n|_1/128: < 1 unit per channel) + truncate_to_8's 128·|n|_1 units, minus 128·(128 − #neg − e)
+// (cannot_wrap's comparison, e = t.alpha_error). Positive: the bound's statements admit a wrap.
+double relaxation_margin(const relaxation_witness& w, const two_pass::table& t, const gs::model_options& o);
+
+}  // namespace gsdot3::proofs::two_pass::triangle
