@@ -20,8 +20,9 @@ struct scored {
 };
 
 // The best wrap-side pixel (side +1: value >= 128, −1: value <= −129, read as −value − 1 >= 128)
-// among the covered pixels within `radius` of the vertices in `vertices` (bit k: vertex k), ranked by
-// the smooth part.
+// among the covered pixels within `radius` of the vertices in `vertices` (bit k: vertex k): the
+// model's exact value is computed at every one of them and ranks first, the smooth part second
+// (a neighbouring pixel with a smaller smooth part can have kinder floors and wrap).
 inline scored score_near_vertices(const proofs::two_pass::triangle::triangle_case& c, const gs::model_options& o,
                                   const proofs::two_pass::table& t, int side, int radius = 2, unsigned vertices = 7) {
   namespace tt = proofs::two_pass::triangle;
@@ -48,19 +49,20 @@ inline scored score_near_vertices(const proofs::two_pass::triangle::triangle_cas
           real += n[ch] * (l - 16384) / 16384.0;
         }
         const double sm = side > 0 ? real : -real - 1;
-        if (sm > best.smooth) {
-          const auto r = proofs::two_pass::pixel(nm, L, o);
-          best = {sm, side > 0 ? r.value : -r.value - 1, x, y};
-        }
+        const auto r = proofs::two_pass::pixel(nm, L, o);
+        const int v = side > 0 ? r.value : -r.value - 1;
+        if (best.px < 0 || v > best.value || (v == best.value && sm > best.smooth)) best = {sm, v, x, y};
       }
   }
   return best;
 }
 
-// One certificate row, as in two_pass_triangle.cpp's table (the pixel from `at`).
-inline void print_certificate_row(const proofs::two_pass::triangle::triangle_case& k, const scored& at, const char* option) {
-  std::printf("s = %d (%s): wrap at pixel (%d, %d)\n    {%d, %d, %d, {{{%d, %d, %d}, {%d, %d, %d}, {%d, %d, %d}}}, {%d, %d, %d, %d, %d, %d}, %d, %d},\n",
-              k.s, option, at.px, at.py, k.s, k.iX, k.iY, k.light[0][0], k.light[0][1], k.light[0][2], k.light[1][0], k.light[1][1],
+// One certificate row, as in two_pass_triangle.cpp's table (the pixel from `at`); `what` names the
+// row in its heading ("wrap", or "best" for a search's best case that does not wrap).
+inline void print_certificate_row(const proofs::two_pass::triangle::triangle_case& k, const scored& at, const char* option,
+                                  const char* what = "wrap") {
+  std::printf("s = %d (%s): %s at pixel (%d, %d)\n    {%d, %d, %d, {{{%d, %d, %d}, {%d, %d, %d}, {%d, %d, %d}}}, {%d, %d, %d, %d, %d, %d}, %d, %d},\n",
+              k.s, option, what, at.px, at.py, k.s, k.iX, k.iY, k.light[0][0], k.light[0][1], k.light[0][2], k.light[1][0], k.light[1][1],
               k.light[1][2], k.light[2][0], k.light[2][1], k.light[2][2], k.xy16[0], k.xy16[1], k.xy16[2], k.xy16[3], k.xy16[4], k.xy16[5],
               at.px, at.py);
 }

@@ -253,17 +253,17 @@ TEST(Claims, TwoPassMaxSVertex) {
 TEST(Claims, TwoPassMaxSInterpolated) {
   // Whole triangles: the paper's s = 122 wraps (a certificate, replayed through the pipeline in
   // triangle_test.cpp); the bound proves s <= 79 (78 under truncate_to_8: the same inequality in
-  // doubles, triangle_test.cpp); the lowest certificate is s = 86 under both options.
+  // doubles, triangle_test.cpp); the lowest certificate is s = 85 (84 under truncate_to_8).
   const auto& o = base("two-pass.max-s.interpolated");
   EXPECT_EQ(o.result, p::verdict::refuted);
   EXPECT_EQ(fig(o, "s_max"), 79);
-  EXPECT_EQ(fig(o, "first_wrapping_s"), 86);
-  EXPECT_EQ(fig(o, "s_max_upper"), 85);
-  EXPECT_EQ(fig(o, "certificates_not_wrapping"), 6);  // the truncate_to_8 rows for s = 86, 89, 90, 91, 98 and 100
-  EXPECT_EQ(o.witnesses.size(), 10u);                  // s = 86, 89, 90, 91, 98, 100, 122, 123, 124, 125
-  // The verdict text follows the figures: the bracket is 80..85 and the lowest certificate's s is named.
-  EXPECT_NE(o.note.find("s = 80..85 is bracketed"), std::string::npos) << o.note;
-  EXPECT_NE(o.note.find("the lowest s = 86"), std::string::npos) << o.note;
+  EXPECT_EQ(fig(o, "first_wrapping_s"), 85);
+  EXPECT_EQ(fig(o, "s_max_upper"), 84);
+  EXPECT_EQ(fig(o, "certificates_not_wrapping"), 8);  // the truncate_to_8 rows for s = 84, 85, 86, 89, 90, 91, 98 and 100
+  EXPECT_EQ(o.witnesses.size(), 11u);                  // s = 85, 86, 89, 90, 91, 98, 100, 122, 123, 124, 125
+  // The verdict text follows the figures: the bracket is 80..84 and the lowest certificate's s is named.
+  EXPECT_NE(o.note.find("s = 80..84 is bracketed"), std::string::npos) << o.note;
+  EXPECT_NE(o.note.find("the lowest s = 85"), std::string::npos) << o.note;
   // The bound's own statements admit a wrap from s = 84 (a relaxation witness; triangle_test.cpp
   // recomputes it), 83 under truncate_to_8 (whose lattice already wraps at 84).
   EXPECT_EQ(fig(o, "bound_limit_s"), 84);
@@ -271,10 +271,11 @@ TEST(Claims, TwoPassMaxSInterpolated) {
   const auto& t = variant("two-pass.max-s.interpolated", "gouraud_fraction", "truncate_to_8");
   EXPECT_EQ(t.result, p::verdict::refuted);
   EXPECT_EQ(fig(t, "s_max"), 78);
-  EXPECT_EQ(fig(t, "first_wrapping_s"), 86);
-  EXPECT_EQ(fig(t, "s_max_upper"), 85);
-  EXPECT_EQ(fig(t, "certificates_not_wrapping"), 4);  // the keep_fraction rows for s = 86, 90, 98 and 100
-  EXPECT_NE(t.note.find("s = 79..85 is bracketed"), std::string::npos) << t.note;
+  EXPECT_EQ(fig(t, "first_wrapping_s"), 84);
+  EXPECT_EQ(fig(t, "s_max_upper"), 83);
+  EXPECT_EQ(fig(t, "certificates_not_wrapping"), 5);  // the keep_fraction rows for s = 85, 86, 90, 98 and 100
+  EXPECT_NE(t.note.find("s = 79..83 is bracketed"), std::string::npos) << t.note;
+  EXPECT_NE(t.note.find("the lowest s = 84"), std::string::npos) << t.note;
   EXPECT_EQ(fig(t, "bound_limit_s"), 83);
   bool paper = false;
   for (const auto& w : o.witnesses) paper = paper || w.rfind("s = 122:", 0) == 0;

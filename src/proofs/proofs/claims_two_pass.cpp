@@ -310,9 +310,10 @@ outcome two_pass_max_s_interpolated(const gs::model_options& o, const sweep_conf
              (lowest_lag > 2047.0 / 128 ? " (more than one axis's 2047/128: its plane lags along both axes)" : " (one axis's lag)") +
              "; the bound ties the plane at the pixel (and at the second point) to the vertex lights only through their ball "
              "(θ-relaxation): it charges a channel's one-axis lag over P(p) however far P(p) lies from the lights of the vertices "
-             "the lag runs to, which the third vertex pays for in a triangle (the s = 86 certificates lag one axis on their "
-             "third channel through a steep step on the other). The searches (bench/proofs_triangle_two_axis, "
-             "bench/proofs_triangle_anneal, bench/proofs_triangle_corner, bench/proofs_triangle_steep) found no wrap below " +
+             "the lag runs to, which the third vertex pays for in a triangle (the certificates of bench/proofs_triangle_steep lag one axis on "
+             "their third channel through a steep step on the other). The searches (bench/proofs_triangle_two_axis, "
+             "bench/proofs_triangle_anneal, bench/proofs_triangle_corner, bench/proofs_triangle_steep with "
+             "bench/proofs_triangle_plan) found no wrap below " +
              std::to_string(first_wrap) + "." + limit_text +
              (limit > 0 ? std::string(", so s = ") + std::to_string(limit) + " and above can only be settled with the lattice (integer "
                                                       "lights, 12.4 vertices, the truncation itself, the floors)"

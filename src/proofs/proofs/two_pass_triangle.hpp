@@ -63,6 +63,25 @@ struct triangle_case {
 // W over P_c(p) with nothing but the ball tying P(p) to the vertex lights, which is where the bound
 // and these certificates still differ (the relaxation's best at s = 86 for n = (−79, −57, 83) is
 // 16297 against the wrap threshold 16000 in n·level units; see the closing notes of issue 13).
+// s = 85, one per gouraud_fraction: the same construction, `proofs_triangle_steep 85 -89 -65 1 0 -17
+// -59 59 4 26 750 775 6` (188 cases) and `proofs_triangle_steep 85 truncate_to_8 -89 -65 1 0 -17 -59
+// 59 4 26 750 775 6` (190 cases), its start values from bench/proofs_triangle_plan (`survey 85`: the
+// exact optimum of the truncated-step model, 16188 against 16000 for n = (−89, −65, 65), top side,
+// e = +1, with X = (0, ~761), K = 7, Z = p = (2047, 2047)). The earlier steep runs at s = 85 (best
+// 127) took D1 = 9 from the relaxation; with the plan's lights that puts Y inside the ball (|l_Y| ~ 80),
+// but a packed light sits on the shell: the plan's objective does not depend on xY, and moving Y =
+// (xY, 0) until |l_Y| = s gives D1 = 4.
+// s = 84, truncate_to_8 only: the same construction on the bottom side of an all-positive normal,
+// where the multiply's floor of each channel's light level (folded: the ceiling, all three σ_c =
+// −1) gives back up to a level per channel. bench/proofs_triangle_lattice (`84 truncate_to_8 60 67
+// -1 2 16000 40`: the construction's integer data in the limit of its windows, best F 16049 against
+// 16000) and its first steep command with neighbouring normals, `proofs_triangle_steep 84
+// truncate_to_8 60 67 -1 2 -53 -62 -19 6 25 828 832 1 60 200 2 0 124.5` (7 cases): n = (61, 66, 91).
+// Under keep_fraction no lattice case of the construction reaches the threshold at s = 84 in the
+// limit of its windows (a search result, not a proof: proofs_triangle_lattice finds F >= 16000 for
+// none of the 65 weight classes of the top 300 rows of `proofs_triangle_plan survey 84`; the best of
+// the top nine classes is 15999.59, for n = (−87, −73, 59)), and the floors give back less than the
+// 2 (top) or 3 (bottom) that the threshold counts.
 // tests/proofs replays each through the pipeline's rasteriser (the pixel is covered) and
 // gs::pixel_pipeline.
 std::span<const triangle_case> certificates() noexcept;
