@@ -57,6 +57,7 @@
 #include "proofs/domains.hpp"
 #include "proofs/two_pass.hpp"
 #include "proofs/two_pass_triangle.hpp"
+#include "proofs/triangle_relaxation.hpp"
 
 namespace p = gsdot3::proofs;
 namespace tt = gsdot3::proofs::two_pass::triangle;
@@ -115,16 +116,13 @@ struct relaxation {
     for (auto& row : G) sum += std::sqrt(row[0] * row[0] + row[1] * row[1] + row[2] * row[2]);
     return s * sum + K;
   }
-  // The objective itself (levels·|n|, σ folded in, without the start error).
-  double primal(const geometry& g, const barycentric& b, const lights& l) const {
-    double total = 0;
-    for (int c = 0; c < 3; ++c) {
-      double gx = 0, gy = 0;
-      for (int k = 0; k < 3; ++k) gx += b.Bx[k] * l[k][c], gy += b.By[k] * l[k][c];
-      total += w[c] * (l[static_cast<std::size_t>(g.p)][c] + g.a() * std::clamp(-128 * gx, 0.0, 1.0) / 128 +
-                       g.b() * std::clamp(-128 * gy, 0.0, 1.0) / 128);
-    }
-    return total;
+  // The objective itself (levels·|n|, σ folded in, without the start error): the ledger's.
+  double primal(const geometry& g, const lights& l) const {
+    tt::relaxation_point x{};
+    for (std::size_t k = 0; k < 3; ++k) x.vertex[k] = {g.v[k][0], g.v[k][1]};
+    x.pixel = {g.a(), g.b()};
+    x.light = l;
+    return tt::relaxation_value(x, w, s);
   }
 };
 
@@ -166,7 +164,7 @@ evaluation evaluate(const relaxation& r, const geometry& g, double side = 2047, 
       const double n = std::sqrt(G[k][0] * G[k][0] + G[k][1] * G[k][1] + G[k][2] * G[k][2]);
       for (int c = 0; c < 3; ++c) l[k][c] = n > 0 ? r.s * G[k][c] / n : 0;
     }
-    const double v = r.primal(g, b, l);
+    const double v = r.primal(g, l);
     if (v > out.lower) out.lower = v, out.l = l;
   }
   return out;
@@ -219,10 +217,8 @@ struct side_threshold {
   double top, bottom;
 };
 side_threshold thresholds(const p::paper::packed_normal& nm, const p::two_pass::table& t, const gs::model_options& o) {
-  const int e = t.alpha_error(nm), neg = (nm.iX < 0) + (nm.iY < 0) + (nm.iZ < 0);
-  const double l1 = std::abs(nm.iX) + std::abs(nm.iY) + std::abs(nm.iZ);
-  auto extra = [&](int side) { return l1 / 128 + static_cast<double>(tt::truncation_units(nm, side, o)) / 128; };
-  return {128.0 * (128 - neg - e) - extra(1), 128.0 * (129 - (3 - neg) + e) - extra(-1)};
+  const int e = t.alpha_error(nm);
+  return {tt::relaxation_threshold(nm, e, 1, o), tt::relaxation_threshold(nm, e, -1, o)};
 }
 
 void print_found(const found& f, double threshold) {
@@ -291,8 +287,8 @@ int main(int argc, char** argv) {
       std::array<int, 3> a{std::abs(nm.iX), std::abs(nm.iY), std::abs(nm.iZ)};
       std::sort(a.begin(), a.end());
       const std::int64_t reach = tt::reach_units({a[0], a[1], a[2]}, s, tt::window_pixels);
-      const int e = t.alpha_error(nm), neg = (nm.iX < 0) + (nm.iY < 0) + (nm.iZ < 0);
-      const std::int64_t top = std::int64_t{16384} * (128 - neg - e), bottom = std::int64_t{16384} * (129 - (3 - neg) + e);
+      const int e = t.alpha_error(nm);
+      const std::int64_t top = tt::wrap_threshold_units(nm, e, 1), bottom = tt::wrap_threshold_units(nm, e, -1);
       const auto th = thresholds(nm, t, args.o);
       if (reach + tt::truncation_units(nm, 1, args.o) >= top) open.emplace(std::tuple{a[0], a[1], a[2], th.top}, std::tuple{reach - top, nm.iX, nm.iY});
       if (reach + tt::truncation_units(nm, -1, args.o) >= bottom) open.emplace(std::tuple{a[0], a[1], a[2], th.bottom}, std::tuple{reach - bottom, nm.iX, nm.iY});

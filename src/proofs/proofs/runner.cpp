@@ -34,8 +34,6 @@ claim_result run_claim(const claim& c, const gs::model_options& base, const run_
         }
       }
     }
-  }
-  if (cfg.variants && !r.result.option_free) {
     for (const auto& info : domain_option_catalogue()) {
       if (std::find(info.claims.begin(), info.claims.end(), c.id) == info.claims.end()) continue;
       const auto current = domain_option_value(cfg.sweep.domain, info.name);

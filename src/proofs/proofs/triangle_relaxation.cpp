@@ -60,11 +60,12 @@ double relaxation_value(const relaxation_point& x, const std::array<double, 3>& 
 double relaxation_margin(const relaxation_witness& w, const two_pass::table& t, const gs::model_options& o) {
   const auto p = paper::pack_normal_from(w.iX, w.iY);
   const std::array<double, 3> n{double(std::abs(p.iX)), double(std::abs(p.iY)), double(std::abs(p.iZ))};
-  const double l1 = n[0] + n[1] + n[2];
-  const int neg = (p.iX < 0) + (p.iY < 0) + (p.iZ < 0), e = t.alpha_error(p);
-  const double slack = l1 / 128 + static_cast<double>(truncation_units(p, w.side, o)) / 128;
-  const double threshold = w.side > 0 ? 128.0 * (128 - neg - e) : 128.0 * (129 - (3 - neg) + e);
-  return relaxation_value(w.at, n, w.s) + slack - threshold;
+  return relaxation_value(w.at, n, w.s) - relaxation_threshold(p, t.alpha_error(p), w.side, o);
+}
+
+double relaxation_threshold(const paper::packed_normal& p, int e, int side, const gs::model_options& o) noexcept {
+  const double l1 = std::abs(p.iX) + std::abs(p.iY) + std::abs(p.iZ);
+  return static_cast<double>(wrap_threshold_units(p, e, side) - truncation_units(p, side, o)) / 128 - l1 / 128;
 }
 
 }  // namespace gsdot3::proofs::two_pass::triangle

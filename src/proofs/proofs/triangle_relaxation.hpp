@@ -17,6 +17,7 @@
 #include <span>
 
 #include "gs_arith/options.hpp"
+#include "proofs/paper_code.hpp"
 #include "proofs/two_pass.hpp"
 
 namespace gsdot3::proofs::two_pass::triangle {
@@ -47,5 +48,8 @@ std::span<const relaxation_witness> relaxation_witnesses() noexcept;
 // 128·(128 − #neg − e) at the top, 128·(129 − #{n_c >= 0} + e) at the bottom (cannot_wrap's
 // comparisons, e = t.alpha_error). Positive: the bound's statements admit a wrap.
 double relaxation_margin(const relaxation_witness& w, const two_pass::table& t, const gs::model_options& o);
+// What relaxation_value must exceed on that side for the bound's statements to admit a wrap:
+// wrap_threshold_units minus the start error and truncation_units, in levels·|n|.
+double relaxation_threshold(const paper::packed_normal& p, int e, int side, const gs::model_options& o) noexcept;
 
 }  // namespace gsdot3::proofs::two_pass::triangle

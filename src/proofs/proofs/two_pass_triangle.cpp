@@ -64,22 +64,21 @@ std::int64_t isqrt_ceil(std::int64_t v) {
 namespace {
 struct normal_terms {
   std::int64_t len, l1, least;  // ceil |n|, |n|_1, the least nonzero |n_c|
-  int neg;                      // #{n_c < 0}
 };
 normal_terms terms(const paper::packed_normal& p) {
   const std::int64_t c[3] = {std::abs(p.iX), std::abs(p.iY), std::abs(p.iZ)};
   std::int64_t least = 1 << 30;
   for (std::int64_t v : c)
     if (v != 0) least = std::min(least, v);
-  return {isqrt_ceil(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]), c[0] + c[1] + c[2], least, (p.iX < 0) + (p.iY < 0) + (p.iZ < 0)};
+  return {isqrt_ceil(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]), c[0] + c[1] + c[2], least};
 }
 
 // The largest s (0 .. 127) for which the bound of cannot_wrap holds for this normal: the reach
 // len·s·128 + G grows with s, so that is every s below the least failing one.
 int safe_s(const paper::packed_normal& p, const normal_terms& n, int e, const gs::model_options& o) {
   const std::int64_t err = gain_units(n.l1, n.least, window_pixels);
-  const std::int64_t top = std::int64_t{16384} * (128 - n.neg - e) - err - truncation_units(p, 1, o),
-                     bottom = std::int64_t{16384} * (129 - (3 - n.neg) + e) - err - truncation_units(p, -1, o);
+  const std::int64_t top = wrap_threshold_units(p, e, 1) - err - truncation_units(p, 1, o),
+                     bottom = wrap_threshold_units(p, e, -1) - err - truncation_units(p, -1, o);
   const std::int64_t room = std::min(top, bottom) - 1;  // reach <= room
   if (room < 0) return 0;
   return static_cast<int>(std::min<std::int64_t>(127, room / (n.len * 128)));
@@ -118,11 +117,10 @@ std::int64_t reach_units(const std::array<std::int64_t, 3>& n, int s, int window
 }
 
 bool cannot_wrap(const paper::packed_normal& p, int e, int s, const gs::model_options& o) noexcept {
-  const normal_terms n = terms(p);
   // value < reach/16384 + neg + e, compared without division.
   const std::int64_t reach = reach_units({std::abs(p.iX), std::abs(p.iY), std::abs(p.iZ)}, s, window_pixels);
-  return reach + truncation_units(p, 1, o) < std::int64_t{16384} * (128 - n.neg - e) &&
-         reach + truncation_units(p, -1, o) < std::int64_t{16384} * (129 - (3 - n.neg) + e);
+  return reach + truncation_units(p, 1, o) < wrap_threshold_units(p, e, 1) &&
+         reach + truncation_units(p, -1, o) < wrap_threshold_units(p, e, -1);
 }
 
 int bound_safe_s(const gs::model_options& o) {

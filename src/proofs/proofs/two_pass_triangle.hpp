@@ -137,7 +137,12 @@ gs::fragment_colour pixel_light(const triangle_case& c) noexcept;
 constexpr std::int64_t gain_units(std::int64_t l1, std::int64_t least, int window) noexcept {
   return l1 * window + std::int64_t{window - 1} * (l1 - least);
 }
-// side +1: the top (value >= 128), −1: the bottom (value <= −129).
+// What reach + truncation_units must stay below on a wrap side (side +1: the top, value >= 128;
+// −1: the bottom, value <= −129): 16384·(128 − #{n_c < 0} − e), 16384·(129 − #{n_c >= 0} + e).
+constexpr std::int64_t wrap_threshold_units(const paper::packed_normal& p, int e, int side) noexcept {
+  const int neg = (p.iX < 0) + (p.iY < 0) + (p.iZ < 0);
+  return std::int64_t{16384} * (side > 0 ? 128 - neg - e : 129 - (3 - neg) + e);
+}
 constexpr std::int64_t truncation_units(const paper::packed_normal& p, int side, const gs::model_options& o) noexcept {
   if (o.gouraud == gs::gouraud_fraction::keep_fraction) return 0;
   std::int64_t sum = 0;
