@@ -249,4 +249,25 @@ RC_GTEST_PROP(GsArithProperty, GouraudTriangleMatchesBarycentric, ()) {
   RC_ASSERT(static_cast<long long>(gs::gouraud_at(*plane, x, y).g.value()) == gs_ref::gouraud_plane_at(rv, xr, yr, x, y));
 }
 
+// gouraud_setup = per_pixel against the same barycentric formulation read at the pixel itself, and
+// against plane_steps at the reference pixel (where both are the start value).
+RC_GTEST_PROP(GsArithProperty, GouraudExactAtMatchesBarycentric, ()) {
+  const auto coord = [] { return *rc::gen::inRange(0, 2048 * 16); };
+  gs::gouraud_vertex gv[3];
+  gs_ref::plane_vertex rv[3];
+  for (int i = 0; i < 3; ++i) {
+    const int x = coord(), y = coord();
+    const std::uint32_t c = *word_gen();
+    gv[i] = {x, y, rgba8::from_u32(c)};
+    rv[i] = {x, y, gs_ref::byte(c, 0)};  // the red channel
+  }
+  const auto pixel = [] { return *rc::gen::inRange(-16, 2064); };
+  const int xr = pixel(), yr = pixel(), x = pixel(), y = pixel();
+  const auto plane = gs::gouraud_triangle(gv[0], gv[1], gv[2], xr, yr);
+  RC_PRE(gs_ref::plane_det(rv) != 0);
+  RC_ASSERT(plane.has_value());
+  RC_ASSERT(static_cast<long long>(gs::gouraud_exact_at(*plane, x, y).r.value()) == gs_ref::gouraud_exact_at(rv, x, y));
+  RC_ASSERT(gs::gouraud_colour(*plane, xr, yr, gs::gouraud_setup::per_pixel) == gs::gouraud_colour(*plane, xr, yr, gs::gouraud_setup::plane_steps));
+}
+
 }  // namespace

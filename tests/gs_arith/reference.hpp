@@ -164,5 +164,12 @@ constexpr long long gouraud_plane_at(const plane_vertex (&v)[3], long long xr, l
   const long long value = base + (x - xr) * dx + (y - yr) * dy;
   return std::min<long long>(std::max<long long>(value, 0), 0x7FFF);
 }
+// gouraud_setup = per_pixel: the exact plane at the pixel itself, 128·c0 + trunc(128·(plane(x, y) − c0)),
+// clamped (the documented base value, with the pixel as its own reference).
+constexpr long long gouraud_exact_at(const plane_vertex (&v)[3], long long x, long long y) {
+  const long long det = plane_det(v);
+  const long long value = 128 * v[0].c + (128 * (plane_numerator(v, 16 * x, 16 * y) - v[0].c * det)) / det;
+  return std::min<long long>(std::max<long long>(value, 0), 0x7FFF);
+}
 
 }  // namespace gs_ref

@@ -63,8 +63,8 @@ writes environment() {
 
 struct fixture {
   mem::local_memory m;
-  interpreter it{m};
-  fixture() { run(it, environment()); }
+  interpreter it;
+  explicit fixture(interpreter_options o = {}) : it(m, o) { run(it, environment()); }
   std::uint32_t px(int x, int y, const mem::buffer& b = fb0) const {
     return m.read_pixel(b, static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y));
   }
@@ -188,8 +188,11 @@ TEST(Draw, DepthTestGequalGreaterAndZmsk) {
   EXPECT_EQ(f.px(1, 1, zb), 100u);
 }
 
-TEST(Draw, GouraudTriangleIsGouraudTrianglePlaneOnTheFillRulesPixels) {
-  fixture f;
+// The interpreter's Gouraud triangle against gs::gouraud_triangle read by gs::gouraud_colour under `setup`.
+void expect_gouraud_triangle_plane_on_the_fill_rules_pixels(gs::gouraud_setup setup) {
+  interpreter_options o;
+  o.model.setup = setup;
+  fixture f(o);
   // Window vertices (2.25, 1.5), (20.75, 6), (5.5, 17.25) with XYOFFSET 2048 px, as the renderer sets it.
   const std::array<std::array<std::int32_t, 2>, 3> w{{{36, 24}, {332, 96}, {88, 276}}};
   const std::array<gs::rgba8, 3> c{gs::rgba8::from_u32(0xFF0000FFu), gs::rgba8::from_u32(0x8000FF00u),
@@ -210,7 +213,7 @@ TEST(Draw, GouraudTriangleIsGouraudTrianglePlaneOnTheFillRulesPixels) {
     for (int x = 0; x < 32; ++x) {
       std::uint32_t want = 0;
       if (gs::covers(t, x, y)) {
-        const gs::fragment_colour cf = gs::gouraud_at(*plane, x + 2048, y + 2048);
+        const gs::fragment_colour cf = gs::gouraud_colour(*plane, x + 2048, y + 2048, setup);
         want = gs::rgba8{gs::integer_part(cf.r), gs::integer_part(cf.g), gs::integer_part(cf.b), gs::integer_part(cf.a)}.to_u32();
         ++covered;
       }
@@ -218,6 +221,13 @@ TEST(Draw, GouraudTriangleIsGouraudTrianglePlaneOnTheFillRulesPixels) {
     }
   EXPECT_GT(covered, 100);
   EXPECT_EQ(f.it.pixels_drawn(), static_cast<std::uint64_t>(covered));
+}
+
+TEST(Draw, GouraudTriangleIsGouraudTrianglePlaneOnTheFillRulesPixels) {
+  expect_gouraud_triangle_plane_on_the_fill_rules_pixels(gs::gouraud_setup::plane_steps);
+}
+TEST(Draw, PerPixelGouraudTriangleIsTheExactPlaneOnTheFillRulesPixels) {
+  expect_gouraud_triangle_plane_on_the_fill_rules_pixels(gs::gouraud_setup::per_pixel);
 }
 
 TEST(Draw, FlatRightTriangleCoversTheTopLeftRulesTenPixels) {

@@ -26,7 +26,8 @@ using namespace gs::packets;
 constexpr gs::alpha_reg blend{gs::blend_colour::Cs, gs::blend_colour::Cd, gs::blend_alpha::As, gs::blend_colour::Cd, gs::u8{}};
 constexpr pl::pass_regs textured_blend{true, true, gs::tfx::MODULATE, gs::tcc::RGBA, blend, true, 0};
 
-TEST(RendererMatch, RandomTexturedGouraudTrianglesGiveTheRenderersFrame) {
+// Under each gouraud_setup (both sides take it from their options).
+void expect_the_renderers_frame(gs::gouraud_setup setup) {
   constexpr int W = 64, H = 64, T = 16;
   std::mt19937 rng(15);
   std::uniform_int_distribution<int> xy(-8 * 16, 72 * 16), uv(0, 40 * 16), byte(0, 255);
@@ -53,13 +54,14 @@ TEST(RendererMatch, RandomTexturedGouraudTrianglesGiveTheRenderersFrame) {
   // The renderer: frame words start at 0x40808080 (a blend destination), Z all 0 (every Z 1000 passes GEQUAL).
   pl::render_options o;
   o.path = pl::raster_path::reference;
+  o.model.setup = setup;
   std::vector<std::uint32_t> z(W * H, 0), frame(W * H, 0x40808080u);
   std::vector<std::int32_t> visible(W * H, -1);
   pl::detail::band_renderer r(ps, o, pl::scissor{0, 0, W, H}, pl::detail::z_view{pl::detail::row_view{z.data(), W}, {}, false},
                               visible);
   const pl::texture_ref tex{T, T, nullptr, nullptr, texels.data(), false, o.model.bilinear, nullptr, {}};
   const auto attr = pl::detail::attributes(
-      ps, [&](std::uint32_t v) { return colours[v]; },
+      ps, o.model.setup, [&](std::uint32_t v) { return colours[v]; },
       [](const pl::prepared_triangle& t, int k) {
         return std::pair<std::int32_t, std::int32_t>{t.uv16[static_cast<std::size_t>(k)][0], t.uv16[static_cast<std::size_t>(k)][1]};
       });
@@ -96,7 +98,7 @@ TEST(RendererMatch, RandomTexturedGouraudTrianglesGiveTheRenderersFrame) {
                              static_cast<std::uint64_t>(t.setup.v[k].y + 2048 * 16) << 16 | std::uint64_t{1000} << 32});
     }
   pb.ad(w, true);
-  interpreter it(m);
+  interpreter it(m, interpreter_options{o.model});
   const auto stream = pb.bytes();
   for (const gif_event& e : decode_gif(stream)) it.apply(e, 16u * e.offset);
   ASSERT_TRUE(it.unmodelled_features().empty()) << it.unmodelled_features()[0].what;
@@ -105,6 +107,13 @@ TEST(RendererMatch, RandomTexturedGouraudTrianglesGiveTheRenderersFrame) {
   EXPECT_GT(r.pixel_ops(), 1000u);
   for (std::uint32_t y = 0; y < H; ++y)
     for (std::uint32_t x = 0; x < W; ++x) ASSERT_EQ(m.read_pixel(fb, x, y), frame[y * W + x]) << x << "," << y;
+}
+
+TEST(RendererMatch, RandomTexturedGouraudTrianglesGiveTheRenderersFrame) {
+  expect_the_renderers_frame(gs::gouraud_setup::plane_steps);
+}
+TEST(RendererMatch, RandomTexturedPerPixelGouraudTrianglesGiveTheRenderersFrame) {
+  expect_the_renderers_frame(gs::gouraud_setup::per_pixel);
 }
 
 }  // namespace

@@ -113,6 +113,9 @@ TEST(ProbeDesign, PatchValuesAreTheOnesWorkedOutByHand) {
       // (0xff · Cf_8.7) >> 14 for Cf_8.7 in 144..172: 2; (0xff · 1) >> 7: 1.
       {"gouraud_fraction", {{"keep_fraction", {{"gouraud_fraction.ramp", 0x020202}}},
                             {"truncate_to_8", {{"gouraud_fraction.ramp", 0x010101}}}}},
+      // Step trunc(4·128/514) = 0 from the reference pixel: Cf 0; exact: trunc(d·512/514) for d = 501..506 is
+      // 499..504, (0xff · 499..504) >> 14 = 7.
+      {"gouraud_setup", {{"plane_steps", {{"gouraud_setup.ramp", 0x000000}}}, {"per_pixel", {{"gouraud_setup.ramp", 0x070707}}}}},
       // 0x81 + floor(-129 / 128) = 0x7f; 0x81 + trunc(-129 / 128) = 0x80.
       {"blend_shift", {{"floor", {{"blend_shift.negative", 0x7F7F7F}}}, {"truncate", {{"blend_shift.negative", 0x808080}}}}},
       {"dither_targets", {{"sixteen_bit_only", {{"dither_targets.ct32", 0x808080}}},

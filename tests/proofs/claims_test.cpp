@@ -260,7 +260,7 @@ TEST(Claims, TwoPassMaxSInterpolated) {
   EXPECT_EQ(fig(o, "first_wrapping_s"), 85);
   EXPECT_EQ(fig(o, "s_max_upper"), 84);
   EXPECT_EQ(fig(o, "certificates_not_wrapping"), 8);  // the truncate_to_8 rows for s = 84, 85, 86, 89, 90, 91, 98 and 100
-  EXPECT_EQ(o.witnesses.size(), 11u);                  // s = 85, 86, 89, 90, 91, 98, 100, 122, 123, 124, 125
+  EXPECT_EQ(o.witnesses.size(), 12u);                  // s = 85, 86, 89, 90, 91, 98, 100, 122..125 and the flat 126
   // The verdict text follows the figures: the bracket is 80..84 and the lowest certificate's s is named.
   EXPECT_NE(o.note.find("s = 80..84 is bracketed"), std::string::npos) << o.note;
   EXPECT_NE(o.note.find("the lowest s = 85"), std::string::npos) << o.note;
@@ -280,6 +280,21 @@ TEST(Claims, TwoPassMaxSInterpolated) {
   bool paper = false;
   for (const auto& w : o.witnesses) paper = paper || w.rfind("s = 122:", 0) == 0;
   EXPECT_TRUE(paper);
+  // gouraud_setup = per_pixel: no pixel lags, so the claim is the vertex lights' (two-pass.max-s.vertex,
+  // settled there by an exhaustive search above its argument): safe up to 125, and only the flat
+  // triangle (the vertex claim's witness as three equal vertex lights) wraps, at 126.
+  const auto& e = variant("two-pass.max-s.interpolated", "gouraud_setup", "per_pixel");
+  const auto& vertex = base("two-pass.max-s.vertex");
+  EXPECT_EQ(e.result, p::verdict::bound);
+  EXPECT_EQ(fig(e, "s_max"), fig(vertex, "s_max"));
+  EXPECT_EQ(fig(e, "s_max_upper"), fig(vertex, "s_max"));
+  EXPECT_EQ(fig(e, "first_wrapping_s"), fig(vertex, "s_max") + 1);
+  EXPECT_EQ(fig(e, "certificates_not_wrapping"), 19);  // every row but the flat one
+  EXPECT_EQ(fig(e, "bound_limit_s"), 0);               // the relaxation witnesses charge a lag per_pixel has not
+  ASSERT_EQ(e.witnesses.size(), 1u);
+  EXPECT_EQ(e.witnesses[0].rfind("s = 126: n = (-127, -15, 5)", 0), 0u) << e.witnesses[0];
+  EXPECT_NE(e.note.find("the bound meets the lowest certificate"), std::string::npos) << e.note;
+  EXPECT_NE(e.note.find("The paper's s = 122 is safe"), std::string::npos) << e.note;
 }
 
 TEST(Claims, FourPassChannelExact) {

@@ -45,7 +45,7 @@ gs::gouraud_plane pipeline_plane(const pl::triangle_setup& setup, const tt::tria
   tri.setup = setup;
   ps.triangles.push_back(tri);
   const auto attr = pl::detail::attributes(
-      ps, [&](std::uint32_t v) { return tt::light_colour(c.light[v]); },
+      ps, gs::gouraud_setup::plane_steps, [&](std::uint32_t v) { return tt::light_colour(c.light[v]); },
       [](const pl::prepared_triangle&, int) { return std::pair<std::int32_t, std::int32_t>{0, 0}; });
   return attr[0].colour;
 }
@@ -74,6 +74,8 @@ TEST(Triangle, EveryCertificateWrapsThroughTheRasteriserAndThePixelPipeline) {
     const auto plane = pipeline_plane(setup, c);
     const gs::fragment_colour cf = gs::gouraud_at(plane, c.px + pl::xy_offset_pixels, c.py + pl::xy_offset_pixels);
     ASSERT_EQ(cf, tt::pixel_light(c));
+    ASSERT_EQ(gs::gouraud_exact_at(plane, c.px + pl::xy_offset_pixels, c.py + pl::xy_offset_pixels),
+              tt::pixel_light(c, gs::gouraud_setup::per_pixel));
     const auto nm = p::paper::pack_normal_from(c.iX, c.iY);
     const auto pal = p::two_pass::palettes(nm);
     const ref::normal n = ref::appendix2(c.iX, c.iY);
@@ -99,9 +101,9 @@ TEST(Triangle, EveryCertificateWrapsThroughTheRasteriserAndThePixelPipeline) {
     auto wraps = [](int v) { return v >= 128 || v <= -129; };
     EXPECT_TRUE(wraps(plain_value(n, L, false)) || wraps(plain_value(n, L, true))) << "s " << c.s;
   }
-  // s = 122..125 under both options, the s = 91 and s = 89 keep_fraction rows under both, every other row
-  // under its own
-  EXPECT_EQ(replayed, 25);
+  // s = 122..125 and the flat s = 126 under both options, the s = 91 and s = 89 keep_fraction rows under
+  // both, every other row under its own
+  EXPECT_EQ(replayed, 27);
 }
 
 namespace {
@@ -482,6 +484,57 @@ TEST(Triangle, BoundedSafeSIsWhatTheInequalityGivesForTheWorstNormal) {
     }
     EXPECT_TRUE(fails_above);
   }
+}
+
+TEST(Triangle, PerPixelSafeSIsWhatTheBallOrTheLightSupportGives) {
+  // gouraud_setup = per_pixel: |L_c − P_c(p)| < 1 unit, P(p) a convex combination of the vertex lights,
+  // so n·(L − centre) < min(R·|n|, 128·max over L_s of Σ|n_c|·|l_c|) + |n|_1 (in doubles and by a scan of
+  // the packed lights here). Every normal is safe at bound_safe_s = 125 that way, and at 126 the
+  // vertex claim's witness normal is not (the flat certificate wraps there).
+  gs::model_options o{};
+  o.setup = gs::gouraud_setup::per_pixel;
+  const p::two_pass::table t(o);
+  ASSERT_EQ(tt::bound_safe_s(o), 125);
+  const auto lights = p::packed_lights(125);
+  int by_support = 0;
+  for (const auto& nm : p::appendix2_normals()) {
+    const double n[3] = {double(std::abs(nm.iX)), double(std::abs(nm.iY)), double(std::abs(nm.iZ))};
+    const double l1 = n[0] + n[1] + n[2];
+    const int neg = (nm.iX < 0) + (nm.iY < 0) + (nm.iZ < 0), pos = (nm.iX > 0) + (nm.iY > 0) + (nm.iZ > 0);
+    const int e = t.alpha_error(nm);
+    auto safe = [&](double reach) { return reach / 16384 + neg + e < 128 && -reach / 16384 - pos + e > -129; };
+    if (safe(128.0 * 125 * std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]) + l1)) continue;
+    double support = 0;
+    for (const auto& l : lights) support = std::max(support, n[0] * std::abs(l[0]) + n[1] * std::abs(l[1]) + n[2] * std::abs(l[2]));
+    EXPECT_TRUE(safe(128 * support + l1)) << nm.iX << " " << nm.iY;
+    ++by_support;
+  }
+  EXPECT_GT(by_support, 0);  // the ball alone does not reach 125
+  const auto w = p::paper::pack_normal_from(-127, -15);
+  EXPECT_FALSE(tt::cannot_wrap(w, t.alpha_error(w), 126, o, p::packed_lights(126)));
+}
+
+TEST(Triangle, AZeroNormalComponentAddsNothingWhateverItsLight) {
+  // The bottom threshold counts #{n_c > 0}, not #{n_c >= 0}: a zero component's two products are 0
+  // whatever its light. Every Appendix 2 normal with a zero x or y, that channel's light over every
+  // 8.7 value, both gouraud_fraction values: the value does not move.
+  int normals = 0;
+  for (auto g : {gs::gouraud_fraction::keep_fraction, gs::gouraud_fraction::truncate_to_8}) {
+    gs::model_options o{};
+    o.gouraud = g;
+    for (const auto& nm : p::appendix2_normals()) {
+      if (nm.iX != 0 && nm.iY != 0) continue;
+      ++normals;
+      gs::fragment_colour f = gs::fragment_colour::flat(gs::rgba8::from_u32(0x80406080u));
+      const int first = p::two_pass::pixel(nm, f, o).value;
+      for (int v = 0; v <= 0x7FFF; v += 7) {
+        if (nm.iX == 0) f.r = gs::gouraud_channel::from_wrapped(v);
+        if (nm.iY == 0) f.g = gs::gouraud_channel::from_wrapped(v);
+        ASSERT_EQ(p::two_pass::pixel(nm, f, o).value, first) << nm.iX << " " << nm.iY << " " << v;
+      }
+    }
+  }
+  EXPECT_GT(normals, 2);
 }
 
 namespace {

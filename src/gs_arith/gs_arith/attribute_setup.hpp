@@ -6,7 +6,8 @@
 // Model choices, stated (no recording decides them; gs_arith/gouraud.hpp and rasteriser.hpp give
 // the evidence and confidence of each plane's rounding):
 // - The colour plane's reference pixel is the triangle's top-left pixel: min over the vertices of
-//   ceil(x), and of ceil(y), in window pixels (the truncated steps' error grows with distance from it).
+//   ceil(x), and of ceil(y), in window pixels (under gouraud_setup::plane_steps the truncated steps'
+//   error grows with distance from it; per_pixel reads the exact plane at every pixel).
 // - gouraud_triangle works in the GS's unsigned 16-bit 12.4 primitive space: window coordinates plus
 //   `offset` whole pixels (XYOFFSET's whole-pixel part; the renderer's 2048), so that vertices left
 //   of or above the window are not clamped.
@@ -28,19 +29,21 @@ struct triangle_attributes {
   gouraud_plane colour{};
   plane u, v;
   std::int32_t offset_x = 0, offset_y = 0;  // window pixel + offset = gouraud_triangle's pixel
+  gouraud_setup setup = gouraud_setup::plane_steps;
   // Cf at window pixel (x, y).
   constexpr fragment_colour colour_at(int x, int y) const noexcept {
-    return gouraud_at(colour, x + offset_x, y + offset_y);
+    return gouraud_colour(colour, x + offset_x, y + offset_y, setup);
   }
 };
 
 // uv16[k] = {U, V} of vertex k in 12.4 texels. A zero-area triangle gives default (zero) planes.
 inline triangle_attributes setup_attributes(const triangle_setup& t, const std::array<rgba8, 3>& c,
                                             const std::array<std::array<std::int32_t, 2>, 3>& uv16,
-                                            std::int32_t offset_x, std::int32_t offset_y) {
+                                            std::int32_t offset_x, std::int32_t offset_y, gouraud_setup setup) {
   triangle_attributes a;
   a.offset_x = offset_x;
   a.offset_y = offset_y;
+  a.setup = setup;
   if (t.area2 == 0) return a;
   std::array<gouraud_vertex, 3> gv{};
   int x_ref = 1 << 16, y_ref = 1 << 16;

@@ -3,10 +3,12 @@
 // Evidence (facts digest, "Rasterisation and interpolation"): PCSX2 SW steps the RGBA colour in 8.7
 // fixed point and clamps the stepped value at >= 0; flat shading (IIP = 0) takes the last vertex's
 // colour. SW only, no hardware recording: confidence low for the exact rounding of the setup.
-// The triangle set-up below (one plane, both steps truncated to whole units, every pixel stepped from
-// one reference pixel) is this model's own choice: PCSX2 SW starts each row afresh from a float edge
-// walk and truncates the step of 4 (or 8) pixels, DobieStation stays in float (docs/evidence.md, M1,
-// with the functions read). Spans (gouraud_span) step per pixel as below.
+// The triangle set-up is option gs::gouraud_setup (docs/evidence.md R9, with the functions read):
+// plane_steps (one plane, both steps truncated to whole units, every pixel stepped from one reference
+// pixel: the model's own choice, no source does it) or per_pixel (the exact plane at each pixel,
+// truncated to whole units: DobieStation's float set-up); PCSX2 SW starts each row afresh from a float
+// edge walk and truncates the step of 4 (or 8) pixels, which neither reproduces. Spans (gouraud_span)
+// step per pixel as below.
 //
 // The model, at value level (how to use it for "light vectors after the model's Gouraud interpolation"):
 //   1. setup per primitive: a start value (8.7, signed, at a reference pixel) and a step per pixel
@@ -30,6 +32,7 @@
 #include "fixed/integer.hpp"
 #include "fixed/rounding.hpp"
 #include "gs_arith/colour.hpp"
+#include "gs_arith/options.hpp"
 #include "gs_arith/texture_function.hpp"
 
 namespace gs {
@@ -88,12 +91,28 @@ struct gouraud_vertex {
   rgba8 c;
 };
 
+// The exact rational plane through the three vertices, per channel: at 12.4 offset (px, py) from
+// vertex 0 the value is c0 + (nx·px + ny·py)·128 / det 8.7 units (|nx|, |ny| < 2^25, |det| < 2^33).
+struct gouraud_exact_plane {
+  std::int64_t x0 = 0, y0 = 0, det = 1;  // vertex 0 in 12.4 (clamped to 0..65535), twice the area
+  std::array<gouraud_start, 4> c0{};
+  std::array<std::int64_t, 4> nx{}, ny{};
+};
+
+// The exact plane at 12.4 offset (px, py) from vertex 0, truncated toward zero to whole 8.7 units
+// from vertex 0's value (|px|, |py| <= 2^21 keep every product below 2^62).
+constexpr std::int64_t exact_plane_units(const gouraud_exact_plane& e, int i, std::int64_t px, std::int64_t py) noexcept {
+  return e.c0[i].value() + divide_toward_zero((e.nx[i] * px + e.ny[i] * py) * 128, e.det);
+}
+
 // A triangle's colour plane: the value at reference pixel (x_ref, y_ref) and the steps per pixel in x
-// and in y, each truncated toward zero from the exact rational plane through the three vertices.
+// and in y, each truncated toward zero from the exact rational plane through the three vertices
+// (gouraud_setup::plane_steps), and that exact plane (gouraud_setup::per_pixel).
 struct gouraud_plane {
   std::int32_t x_ref, y_ref;
   std::array<gouraud_start, 4> base;
   std::array<gouraud_step, 4> dx, dy;
+  gouraud_exact_plane exact;
 };
 
 // Empty for a degenerate (zero-area) triangle. Pixel centres are at integer coordinates.
@@ -110,15 +129,16 @@ constexpr std::optional<gouraud_plane> gouraud_triangle(const gouraud_vertex& v0
   const std::array<u8, 4> c0{v0.c.r, v0.c.g, v0.c.b, v0.c.a}, c1{v1.c.r, v1.c.g, v1.c.b, v1.c.a},
       c2{v2.c.r, v2.c.g, v2.c.b, v2.c.a};
   const std::int64_t px = clamp_distance(x_ref) * 16 - x0, py = clamp_distance(y_ref) * 16 - y0;
-  gouraud_plane p{x_ref, y_ref, {}, {}, {}};
+  gouraud_plane p{x_ref, y_ref, {}, {}, {}, {x0, y0, det, {}, {}, {}}};
   for (int i = 0; i < 4; ++i) {
     const std::int64_t d1 = c1[i].value() - c0[i].value(), d2 = c2[i].value() - c0[i].value();
     // dC per 1/16 pixel: gx = (d1·by − d2·ay) / det, gy = (d2·ax − d1·bx) / det.
     const std::int64_t nx = d1 * by - d2 * ay, ny = d2 * ax - d1 * bx;
+    p.exact.c0[i] = gouraud_value(c0[i]);
+    p.exact.nx[i] = nx, p.exact.ny[i] = ny;
     p.dx[i] = gouraud_step::from_wrapped(divide_toward_zero(nx * 128 * 16, det));
     p.dy[i] = gouraud_step::from_wrapped(divide_toward_zero(ny * 128 * 16, det));
-    p.base[i] = gouraud_start::from_wrapped(gouraud_value(c0[i]).value() +
-                                              divide_toward_zero((nx * px + ny * py) * 128, det));
+    p.base[i] = gouraud_start::from_wrapped(exact_plane_units(p.exact, i, px, py));
   }
   return p;
 }
@@ -131,6 +151,20 @@ constexpr fragment_colour gouraud_at(const gouraud_plane& p, std::int32_t x, std
     return gouraud_channel::from_saturated(v);
   };
   return {ch(0), ch(1), ch(2), ch(3)};
+}
+
+// The fragment colour at pixel (x, y) under gouraud_setup::per_pixel: the exact plane there, truncated
+// toward zero to whole 8.7 units from vertex 0's value, clamped (the start value's formula of
+// gouraud_triangle, evaluated at every pixel; equal to gouraud_at at the reference pixel).
+constexpr fragment_colour gouraud_exact_at(const gouraud_plane& p, std::int32_t x, std::int32_t y) noexcept {
+  const std::int64_t px = clamp_distance(x) * 16 - p.exact.x0, py = clamp_distance(y) * 16 - p.exact.y0;
+  auto ch = [&](int i) { return gouraud_channel::from_saturated(exact_plane_units(p.exact, i, px, py)); };
+  return {ch(0), ch(1), ch(2), ch(3)};
+}
+
+// The fragment colour at pixel (x, y) under the set-up in force.
+constexpr fragment_colour gouraud_colour(const gouraud_plane& p, std::int32_t x, std::int32_t y, gouraud_setup s) noexcept {
+  return s == gouraud_setup::per_pixel ? gouraud_exact_at(p, x, y) : gouraud_at(p, x, y);
 }
 
 // PRIM.IIP = 0: the whole primitive takes the last vertex's colour.

@@ -25,6 +25,9 @@ const std::vector<option_info>& option_catalogue() {
        "No recording here."},
       {"texture_buffer", {"quarter_page", "per_fragment", "page", "draw_snapshot"},
        "quarter_page: Mikkelsen 2004 section 3.4; draw_snapshot: PCSX2 SW; per_fragment, page: what-ifs. Unconfirmed on HW."},
+      {"gouraud_setup", {"plane_steps", "per_pixel"},
+       "plane_steps: the model's own (no source); per_pixel: DobieStation 3a23544b render_triangle2, Play! (float). "
+       "PCSX2 SW's row set-up is neither. No recording here."},
   };
   return rows;
 }
@@ -55,6 +58,7 @@ std::optional<std::string> set_option(model_options& o, std::string_view name, s
   else if (name == "texture_buffer")
     ok = pick(o.tex_buffer, value, "quarter_page", texture_buffer::quarter_page, "per_fragment", texture_buffer::per_fragment) ||
          pick(o.tex_buffer, value, "page", texture_buffer::page, "draw_snapshot", texture_buffer::draw_snapshot);
+  else if (name == "gouraud_setup") ok = pick(o.setup, value, "plane_steps", gouraud_setup::plane_steps, "per_pixel", gouraud_setup::per_pixel);
   else {
     std::string known;
     for (const auto& row : option_catalogue()) known += (known.empty() ? "" : ", ") + std::string(row.name);
@@ -84,6 +88,7 @@ std::string_view option_value(const model_options& o, std::string_view name) {
     constexpr std::string_view names[] = {"quarter_page", "per_fragment", "page", "draw_snapshot"};
     return names[static_cast<int>(o.tex_buffer)];
   }
+  if (name == "gouraud_setup") return o.setup == gouraud_setup::plane_steps ? "plane_steps" : "per_pixel";
   return {};
 }
 

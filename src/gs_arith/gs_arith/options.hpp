@@ -26,6 +26,17 @@ enum class tfx_rounding { floor, truncate };
 //                the vertex colour has no fraction).
 enum class gouraud_fraction { keep_fraction, truncate_to_8 };
 
+// A Gouraud triangle's colour set-up (docs/evidence.md R9, which names the functions read).
+// plane_steps: one plane per primitive, its start value at the bounding box's top-left pixel and both
+//   steps truncated toward zero to whole 8.7 units, every pixel start + a·dx + b·dy (default; the
+//   model's own choice: no source read sets up a triangle this way, and it lets a pixel far from the
+//   reference lag up to 16 levels per axis).
+// per_pixel: the exact plane at every pixel, truncated toward zero to whole 8.7 units (DobieStation
+//   gsthread.cpp render_triangle2 / render_half_triangle: the colour stays a float per row and pixel and
+//   becomes an integer only at the pixel; Play! interpolates in float on the GPU).
+// PCSX2 SW's row set-up (a float start per row, a truncated step per 4 or 8 pixels) is neither.
+enum class gouraud_setup { plane_steps, per_pixel };
+
 // The blend's ((A − B)·C) >> 7. floor: HW-confirmed by all 486 ps2autotests blend results.
 // truncate (toward zero): refuted by 24 of them; kept as a what-if for the proofs.
 enum class blend_shift { floor, truncate };
@@ -66,6 +77,7 @@ enum class texture_buffer { quarter_page, per_fragment, page, draw_snapshot };
 struct model_options {
   tfx_rounding tfx = tfx_rounding::floor;
   gouraud_fraction gouraud = gouraud_fraction::keep_fraction;
+  gouraud_setup setup = gouraud_setup::plane_steps;
   blend_shift shift = blend_shift::floor;
   dither_decode dither = dither_decode::twos_complement;
   dither_targets dither_on = dither_targets::sixteen_bit_only;

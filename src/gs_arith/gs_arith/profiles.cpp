@@ -14,7 +14,8 @@ const std::vector<profile>& profiles() {
         {"dither_targets", "sixteen_bit_only"},
         {"bilinear", "lerp16_4"},
         {"rgb_only_targets", "thirty_two_bit_only"},
-        {"texture_buffer", "draw_snapshot"}}},
+        {"texture_buffer", "draw_snapshot"},
+        {"gouraud_setup", "plane_steps"}}},
       {"dobiestation", "DobieStation src/core/gsthread.cpp (interpreter: tex_lookup, draw_pixel)",
        {{"tfx_rounding", "floor"},
         {"gouraud_fraction", "truncate_to_8"},
@@ -23,7 +24,8 @@ const std::vector<profile>& profiles() {
         {"dither_targets", "all_formats"},
         {"bilinear", "weighted_sum_4"},
         {"rgb_only_targets", "all_formats"},
-        {"texture_buffer", "per_fragment"}}},
+        {"texture_buffer", "per_fragment"},
+        {"gouraud_setup", "per_pixel"}}},
       {"play", "Play! Source/gs/GSH_Vulkan (GSH_VulkanDrawDesktop.cpp fragment shader, GSH_VulkanDrawUtils.cpp)",
        {{"tfx_rounding", "truncate"},
         {"gouraud_fraction", "keep_fraction"},
@@ -32,7 +34,8 @@ const std::vector<profile>& profiles() {
         {"dither_targets", "sixteen_bit_only"},
         {"bilinear", "weighted_sum_4"},
         {"rgb_only_targets", "all_formats"},
-        {"texture_buffer", "quarter_page"}}},
+        {"texture_buffer", "quarter_page"},
+        {"gouraud_setup", "per_pixel"}}},
   };
   return rows;
 }

@@ -222,7 +222,7 @@ class band_renderer {
 
 // Vertex colours → per-triangle attributes; `uv` picks the 12.4 texture coordinates per corner.
 template <class Colour, class UV>
-std::vector<tri_attr> attributes(const prepared_scene& ps, Colour&& colour, UV&& uv) {
+std::vector<tri_attr> attributes(const prepared_scene& ps, gs::gouraud_setup setup, Colour&& colour, UV&& uv) {
   std::vector<tri_attr> out(ps.triangles.size());
   for (std::size_t t = 0; t < ps.triangles.size(); ++t) {
     const prepared_triangle& tri = ps.triangles[t];
@@ -233,7 +233,7 @@ std::vector<tri_attr> attributes(const prepared_scene& ps, Colour&& colour, UV&&
       const auto [u, v] = uv(tri, k);
       uv16[static_cast<std::size_t>(k)] = {u, v};
     }
-    out[t] = gs::setup_attributes(tri.setup, c, uv16, xy_offset_pixels, xy_offset_pixels);
+    out[t] = gs::setup_attributes(tri.setup, c, uv16, xy_offset_pixels, xy_offset_pixels, setup);
   }
   return out;
 }

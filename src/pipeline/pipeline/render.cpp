@@ -232,7 +232,7 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
     note("2.1 clear 0x00808080", li, "DPB", fb.dpb);
     switch (m) {
       case method::two_pass: {
-        const auto attr = attributes(ps, [&](std::uint32_t v) { return two_pass_colour(lv[v], o.s); }, normal_map_uv);
+        const auto attr = attributes(ps, o.model.setup, [&](std::uint32_t v) { return two_pass_colour(lv[v], o.s); }, normal_map_uv);
         const texture_ref pos = nm_texture(in.pos), neg = nm_texture(in.neg);
         r.draw<two_pass_positive>(&pos, attr, fb.dpb);
         note("2.3 Max(n,0)·l (MODULATE)", li, "DPB", fb.dpb);
@@ -259,13 +259,13 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
       }
       case method::four_pass: {
         const auto pass1 = attributes(
-            ps, [&](std::uint32_t v) { return four_pass_sphere_colour(lv[v]); },
+            ps, o.model.setup, [&](std::uint32_t v) { return four_pass_sphere_colour(lv[v]); },
             [&](const prepared_triangle& t, int k) { return sphere_uv(lv[t.vertex[static_cast<std::size_t>(k)]]); });
         const texture_ref sphere{64, 64, nullptr, nullptr, in.sphere.data(), true, gs::bilinear_mode::nearest, in.memory, in.sphere_at,
                                  in.sphere_texels.get()};
         r.draw<four_pass_sphere>(&sphere, pass1, fb.dpb);
         note("2.3 sphere map · fade (HIGHLIGHT)", li, "DPB", fb.dpb);
-        const auto attr = attributes(ps, flat_white, normal_map_uv);
+        const auto attr = attributes(ps, o.model.setup, flat_white, normal_map_uv);
         const texture_ref x = nm_texture(in.axis[0]), y = nm_texture(in.axis[1]), z = nm_texture(in.axis[2]);
         r.draw<four_pass_x>(&x, attr, fb.dpb);
         note("2.3 R: x multiply (Cs − Cd)·As + Cd", li, "DPB", fb.dpb);
@@ -277,7 +277,7 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
       }
       case method::baseline: {
         auto side = [&](bool negative) {
-          return attributes(ps, [&, negative](std::uint32_t v) { return baseline_colour(lv[v], negative); }, normal_map_uv);
+          return attributes(ps, o.model.setup, [&, negative](std::uint32_t v) { return baseline_colour(lv[v], negative); }, normal_map_uv);
         };
         const auto tl_pos = side(false), tl_neg = side(true);
         const texture_ref pos = nm_texture(in.pos), neg = nm_texture(in.neg);
@@ -314,7 +314,7 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
   r.fill(fb.diff, 0, false);
   const texture_ref diffuse{in.diffuse->width, in.diffuse->height, nullptr, nullptr, in.diffuse->texels.data(), false, filter,
                             in.memory, in.diffuse_at, in.diffuse_texels.get()};
-  r.draw<diffuse_layer>(&diffuse, attributes(ps, flat_white, normal_map_uv), fb.diff);
+  r.draw<diffuse_layer>(&diffuse, attributes(ps, o.model.setup, flat_white, normal_map_uv), fb.diff);
   note("3 diffuse layer", -1, "diffuse", fb.diff);
 
   // Step 4: diffuse × LAB per channel: (Cs − 0)·Ad >> 7 with the LAB channel in the destination

@@ -137,6 +137,24 @@ design make_design() {
                 "Gouraud TRIANGLE, MODULATE, texel 0xFF, Cf = 1 + (16 + 4k)/128 (8.7), scissored to the cell: "
                 "(0xFF * Cf_8.7) >> 14 = 2 keeping the fraction, 1 truncating it");
   }
+  {  // gouraud_setup (evidence.md P12): a ramp whose exact step is just below one 8.7 unit per pixel,
+     // read ~500 pixels from the first vertex (the top-left one: the reference pixel of plane_steps).
+    const int x = 520, y = 16;
+    draw t;
+    t.regs = base;
+    t.regs.PRIM.PRIM = gs::prim_type::TRIANGLE;
+    t.regs.PRIM.IIP = t.regs.PRIM.TME = true;
+    t.regs.TEX0_1 = small_texture(gs::tfx::MODULATE);
+    t.scissor = {x, y, x + cell - 1, y + cell - 1};
+    // Colour 0 at x − 500, 4 at x + 14 (two vertices, one above the other: the cell lies inside): the
+    // step is 4·128/514 = 0.996 units per pixel, 0 along y.
+    t.v = {{x - 500, y - 4, 0x80000000u, 8, 8}, {x + 14, y - 4, 0x80040404u, 8, 8}, {x + 14, y + 28, 0x80040404u, 8, 8}};
+    b.add(t);
+    b.add_patch("gouraud_setup.ramp", "gouraud_setup", x, y,
+                "Gouraud TRIANGLE, MODULATE, texel 0xFF, Cf from 0 to 4 over 514 pixels (0.996 units per pixel), read 501..506 "
+                "pixels from the first vertex: 0 when the step truncates to whole units (plane_steps), Cf_8.7 = 499..504 and "
+                "(0xFF * Cf) >> 14 = 7 from the exact plane (per_pixel)");
+  }
   {  // blend_shift (P3, settled by the recordings; probed anyway): (0 − 0x81)·1 >> 7 + 0x81.
     const int x = 32, y = 16;
     b.add(sprite(base, x, y, cell, cell, 0x80818181u));

@@ -91,7 +91,7 @@ void draw_primitive(mem::local_memory& m, const draw& d, std::optional<mem::text
     for (int x = x0; x < x1; ++x) {
       if (triangle && !inside_triangle(d.v, x, y)) continue;
       const gs::fragment_colour cf =
-          plane ? gs::gouraud_at(*plane, x, y) : gs::fragment_colour::flat(gs::rgba8::from_u32(last.rgba));
+          plane ? gs::gouraud_colour(*plane, x, y, o.setup) : gs::fragment_colour::flat(gs::rgba8::from_u32(last.rgba));
       const auto ux = static_cast<std::uint32_t>(x), uy = static_cast<std::uint32_t>(y);
       const gs::pixel_input in{cf, texel, m.read_pixel(fb, ux, uy), ux, uy};
       m.write_pixel(fb, ux, uy, gs::pixel_pipeline(d.regs, in, o).out);

@@ -145,7 +145,7 @@ std::string s_ranges(std::vector<int> v) {
 
 std::string describe_certificate(const triangle_case& c, const gs::model_options& o) {
   const auto p = paper::pack_normal_from(c.iX, c.iY);
-  const auto light = two_pass::triangle::pixel_light(c);
+  const auto light = two_pass::triangle::pixel_light(c, o.setup);
   const auto r = two_pass::pixel(p, light, o);
   std::string v;
   for (std::size_t k = 0; k < 3; ++k) {
@@ -162,8 +162,9 @@ std::string describe_certificate(const triangle_case& c, const gs::model_options
 }
 
 // --brute-force (two_pass::triangle::brute_force, proofs/triangle_brute_force.hpp): the bound's
-// per-channel statements at full size. The light does not depend on the model options (the Gouraud
-// unit has none; truncate_to_8 is applied after, in the multiply, and adds its 128 units to the
+// per-channel statements at full size, for gouraud_setup=plane_steps (under per_pixel the statement
+// is |L_c − P_c(p)| < 1, the truncation of the exact value itself). The light does not depend on the
+// other model options (truncate_to_8 is applied after, in the multiply, and adds its 128 units to the
 // bound; the cases use no domain option), so the outcome is option-free and the runner checks the
 // cases once, with no variants.
 outcome interpolated_brute_force(const gs::model_options&, const sweep_config& cfg) {
@@ -196,7 +197,7 @@ outcome interpolated_brute_force(const gs::model_options&, const sweep_config& c
   out.figures.push_back(fig("w_outside_triangle", static_cast<std::int64_t>(r.w_outside.count)));
   for (auto at : r.w_outside.first) out.witnesses.push_back(describe(at, "w outside the closed triangle"));
   out.result = out.counterexamples == 0 ? verdict::proven : verdict::refuted;
-  out.note = "brute force of the bound's per-channel statements (A) sigma*L_c(p) < sigma*P_c(p) + W, (B) < sigma*P_c(p) + 1 + a + b, "
+  out.note = "brute force of the bound's per-channel statements under gouraud_setup=plane_steps (A) sigma*L_c(p) < sigma*P_c(p) + W, (B) < sigma*P_c(p) + 1 + a + b, "
              "(C) < sigma*P_c(w) + W, and w in the closed triangle, for both wrap sides, against the exact rational plane, on "
              "lattice triangles of the full window x 4 lights of L_122 (every pixel centre in each closed triangle)";
   return out;
@@ -222,7 +223,7 @@ outcome two_pass_max_s_interpolated(const gs::model_options& o, const sweep_conf
   //     the reference pixel (up to 2047/128 levels per axis), not with the span's 128 pixels.
   if (cfg.brute_force) return interpolated_brute_force(o, cfg);
   const auto& normals = appendix2_normals();
-  const int proven_safe = two_pass::triangle::bound_safe_s(o);
+  const int proven_safe = two_pass::triangle::bound_safe_s(o, cfg.domain.light == domain_options::tolight::attenuated);
   int first_wrap = 128;
   const triangle_case* lowest = nullptr;
   std::vector<int> wrapping_s;
@@ -234,7 +235,7 @@ outcome two_pass_max_s_interpolated(const gs::model_options& o, const sweep_conf
     bool ok = c.iX * c.iX + c.iY * c.iY <= 16358;
     for (const auto& l : c.light) ok = ok && is_packed_light(c.s, l);
     for (int v : c.xy16) ok = ok && v >= 0 && v <= (two_pass::triangle::window_pixels - 1) * 16;
-    const auto r = two_pass::pixel(p, two_pass::triangle::pixel_light(c), o);
+    const auto r = two_pass::pixel(p, two_pass::triangle::pixel_light(c, o.setup), o);
     if (ok && r.dot != r.value) {
       if (c.s < first_wrap) first_wrap = c.s, lowest = &c;
       wrapping_s.push_back(c.s);
@@ -257,23 +258,25 @@ outcome two_pass_max_s_interpolated(const gs::model_options& o, const sweep_conf
     std::size_t near = 0;
     for (std::size_t k = 1; k < 3; ++k)
       if (dist2(k) < dist2(near)) near = k;
-    const auto light = two_pass::triangle::pixel_light(c);
+    const auto light = two_pass::triangle::pixel_light(c, o.setup);
     const int Lc[3] = {light.r.value(), light.g.value(), light.b.value()};
     for (std::size_t ch = 0; ch < 3; ++ch) lowest_lag = std::max(lowest_lag, std::abs(Lc[ch] / 128.0 - 128 - c.light[near][ch]));
   }
   char lag_text[16];
   std::snprintf(lag_text, sizeof lag_text, "%.1f", lowest_lag);
   const bool paper_wraps = std::any_of(two_pass::triangle::certificates().begin(), two_pass::triangle::certificates().end(), [&](const triangle_case& c) {
-    const auto r = two_pass::pixel(paper::pack_normal_from(c.iX, c.iY), two_pass::triangle::pixel_light(c), o);
+    const auto r = two_pass::pixel(paper::pack_normal_from(c.iX, c.iY), two_pass::triangle::pixel_light(c, o.setup), o);
     return c.s == paper_s && r.dot != r.value;
   });
   // How far the bound's own statements can go: the least s of a relaxation witness (real geometry,
-  // real lights in the ball) above the threshold under this option (triangle_relaxation.hpp).
+  // real lights in the ball) above the threshold under this option (triangle_relaxation.hpp). The
+  // witnesses charge the plane_steps lag; per_pixel has none.
+  const bool per_pixel = o.setup == gs::gouraud_setup::per_pixel;
   const two_pass::table t(o);
   int limit = 0;
   double limit_margin = 0;
   for (const auto& w : two_pass::triangle::relaxation_witnesses()) {
-    if (w.gouraud != o.gouraud) continue;
+    if (w.gouraud != o.gouraud || per_pixel) continue;
     const double m = two_pass::triangle::relaxation_margin(w, t, o);
     if (m > 0 && (limit == 0 || w.s < limit)) limit = w.s, limit_margin = m;
   }
@@ -294,6 +297,18 @@ outcome two_pass_max_s_interpolated(const gs::model_options& o, const sweep_conf
                  fig("certificates_not_wrapping", static_cast<std::int64_t>(failed.count)),
                  fig("normals", static_cast<std::int64_t>(normals.size())), fig("bound_limit_s", limit)};
   out.witnesses = std::move(witnesses);
+  const std::string settled = first_wrap > proven_safe + 1 ? "s = " + std::to_string(proven_safe + 1) + ".." +
+                                                                 std::to_string(first_wrap - 1) + " is bracketed, not settled"
+                                                           : std::string("the bound meets the lowest certificate");
+  if (per_pixel) {
+    out.note = "under gouraud_setup=per_pixel (the exact plane at every pixel, truncated to whole 8.7 units) a pixel's light "
+               "is within one unit per channel of a convex combination of the vertex lights, so the bound is the vertex "
+               "lights' ball plus |n|_1 units (two_pass_triangle's lag_window = 1): no s <= " + std::to_string(proven_safe) +
+               " wraps; wraps are certified at s = " + s_ranges(wrapping_s) + " (the lowest, s = " + std::to_string(first_wrap) +
+               ", a flat triangle whose pixels take the vertex light: two-pass.max-s.vertex's witness); " + settled +
+               ". The paper's s = " + std::to_string(paper_s) + (paper_wraps ? " wraps" : " is safe") + " under this set-up.";
+    return for_domain(std::move(out), cfg);
+  }
   out.note = "on whole triangles the paper's s = " + std::to_string(paper_s) +
              (paper_wraps ? " wraps" : " is not shown to wrap") + ": a pixel ~2030 pixels from the plane's reference pixel "
              "misses the truncated fraction of each 8.7 step, up to 16 levels per channel and axis, and that pushes its light "
@@ -302,9 +317,7 @@ outcome two_pass_max_s_interpolated(const gs::model_options& o, const sweep_conf
              " wraps (error bound: one axis's lag, 16 levels, per channel; two axes' only on channels whose plane falls along "
              "both axes, and not on all channels at once, and then weighed against a second point of the vertex lights' "
              "ball that the falling plane passes). " +
-             (first_wrap > proven_safe + 1
-                  ? "s = " + std::to_string(proven_safe + 1) + ".." + std::to_string(first_wrap - 1) + " is bracketed, not settled: "
-                  : std::string("the bound meets the lowest certificate: ")) +
+             settled + ": " +
              "the lowest certificate (s = " + std::to_string(first_wrap) + ") puts its pixel's light " + lag_text +
              " levels from the light of the vertex next to it" +
              (lowest_lag > 2047.0 / 128 ? " (more than one axis's 2047/128: its plane lags along both axes)" : " (one axis's lag)") +

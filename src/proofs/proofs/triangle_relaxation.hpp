@@ -45,7 +45,7 @@ std::span<const relaxation_witness> relaxation_witnesses() noexcept;
 
 // The witness's value above its side's threshold, levels·|n|: relaxation_value + the start error
 // (|n|_1/128: < 1 unit per channel) + truncation_units of the side (truncate_to_8), minus
-// 128·(128 − #neg − e) at the top, 128·(129 − #{n_c >= 0} + e) at the bottom (cannot_wrap's
+// 128·(128 − #neg − e) at the top, 128·(129 − #{n_c > 0} + e) at the bottom (cannot_wrap's
 // comparisons, e = t.alpha_error). Positive: the bound's statements admit a wrap.
 double relaxation_margin(const relaxation_witness& w, const two_pass::table& t, const gs::model_options& o);
 // What relaxation_value must exceed on that side for the bound's statements to admit a wrap:

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <map>
 #include <vector>
 
 #include "gs_arith/gouraud.hpp"
@@ -33,6 +34,7 @@ constexpr triangle_case certificate_table[] = {
     {123, -127, -15, {{{-123, 0, 0}, {-108, -44, 39}, {19, 83, -88}}}, {32552, 0, 0, 32752, 32552, 32752}, 2034, 1},
     {124, -127, -15, {{{-124, 0, 0}, {-109, -49, 33}, {18, 78, -94}}}, {32552, 0, 0, 32752, 32552, 32752}, 2034, 1},
     {125, -127, -15, {{{-125, 0, 0}, {-83, -69, 63}, {60, 74, -80}}}, {32576, 0, 0, 32752, 32576, 32752}, 2035, 2},
+    {126, -127, -15, {{{-125, -15, 0}, {-125, -15, 0}, {-125, -15, 0}}}, {0, 0, 160, 0, 0, 160}, 2, 2},  // flat
 };
 }  // namespace
 
@@ -42,14 +44,14 @@ gs::rgba8 light_colour(const ivec3& l) noexcept {
   return {methods::byte(128 + l[0]), methods::byte(128 + l[1]), methods::byte(128 + l[2]), methods::byte(0x80)};
 }
 
-gs::fragment_colour pixel_light(const triangle_case& c) noexcept {
+gs::fragment_colour pixel_light(const triangle_case& c, gs::gouraud_setup setup) noexcept {
   std::array<gs::gouraud_vertex, 3> v{};
   for (std::size_t k = 0; k < 3; ++k)
     v[k] = {c.xy16[2 * k] + xy_offset_pixels * 16, c.xy16[2 * k + 1] + xy_offset_pixels * 16, light_colour(c.light[k])};
   const auto r = reference_pixel(c.xy16);
   const auto plane = gs::gouraud_triangle(v[0], v[1], v[2], r[0] + xy_offset_pixels, r[1] + xy_offset_pixels);
   if (!plane) return gs::fragment_colour::flat(light_colour(c.light[2]));  // zero area: covers nothing
-  return gs::gouraud_at(*plane, c.px + xy_offset_pixels, c.py + xy_offset_pixels);
+  return gs::gouraud_colour(*plane, c.px + xy_offset_pixels, c.py + xy_offset_pixels, setup);
 }
 
 namespace {
@@ -76,7 +78,7 @@ normal_terms terms(const paper::packed_normal& p) {
 // The largest s (0 .. 127) for which the bound of cannot_wrap holds for this normal: the reach
 // len·s·128 + G grows with s, so that is every s below the least failing one.
 int safe_s(const paper::packed_normal& p, const normal_terms& n, int e, const gs::model_options& o) {
-  const std::int64_t err = gain_units(n.l1, n.least, window_pixels);
+  const std::int64_t err = gain_units(n.l1, n.least, lag_window(o));
   const std::int64_t top = wrap_threshold_units(p, e, 1) - err - truncation_units(p, 1, o),
                      bottom = wrap_threshold_units(p, e, -1) - err - truncation_units(p, -1, o);
   const std::int64_t room = std::min(top, bottom) - 1;  // reach <= room
@@ -107,23 +109,39 @@ std::int64_t two_point_units(const std::array<std::int64_t, 3>& n, unsigned in_d
   return best;
 }
 
+std::int64_t ball_reach_units(const std::array<std::int64_t, 3>& n, int s, int window) {
+  const std::int64_t radius = std::int64_t{128} * s;  // R² <= 2^28, |n|² <= 2^15
+  return isqrt_ceil(radius * radius * (n[0] * n[0] + n[1] * n[1] + n[2] * n[2])) + (n[0] + n[1] + n[2]) * window;
+}
+
 std::int64_t reach_units(const std::array<std::int64_t, 3>& n, int s, int window) {
-  const std::int64_t radius = std::int64_t{128} * s, l1 = n[0] + n[1] + n[2];
-  std::int64_t reach = radius * isqrt_ceil(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]) + l1 * window;  // (i)
+  const std::int64_t radius = std::int64_t{128} * s;
+  std::int64_t reach = ball_reach_units(n, s, window);  // (i)
   const unsigned nonzero = (n[0] != 0) | (n[1] != 0) << 1 | (n[2] != 0) << 2;
   for (unsigned d = 1; d < 8; ++d)
     if ((d & nonzero) == d && d != nonzero) reach = std::max(reach, two_point_units(n, d, radius, window));
   return reach;
 }
 
-bool cannot_wrap(const paper::packed_normal& p, int e, int s, const gs::model_options& o) noexcept {
-  // value < reach/16384 + neg + e, compared without division.
-  const std::int64_t reach = reach_units({std::abs(p.iX), std::abs(p.iY), std::abs(p.iZ)}, s, window_pixels);
-  return reach + truncation_units(p, 1, o) < wrap_threshold_units(p, e, 1) &&
-         reach + truncation_units(p, -1, o) < wrap_threshold_units(p, e, -1);
+std::int64_t light_support(const std::array<std::int64_t, 3>& n, std::span<const ivec3> lights) noexcept {
+  std::int64_t best = 0;
+  for (const auto& l : lights) best = std::max(best, n[0] * std::abs(l[0]) + n[1] * std::abs(l[1]) + n[2] * std::abs(l[2]));
+  return best;
 }
 
-int bound_safe_s(const gs::model_options& o) {
+bool cannot_wrap(const paper::packed_normal& p, int e, int s, const gs::model_options& o, std::span<const ivec3> lights) noexcept {
+  // value < reach/16384 + neg + e, compared without division.
+  const std::array<std::int64_t, 3> n{std::abs(p.iX), std::abs(p.iY), std::abs(p.iZ)};
+  auto fits = [&](std::int64_t reach) {
+    return reach + truncation_units(p, 1, o) < wrap_threshold_units(p, e, 1) &&
+           reach + truncation_units(p, -1, o) < wrap_threshold_units(p, e, -1);
+  };
+  if (o.setup != gs::gouraud_setup::per_pixel) return fits(reach_units(n, s, window_pixels));
+  // the ball first; the light set's support (a scan of it) only where the ball is not enough
+  return fits(ball_reach_units(n, s, 1)) || (!lights.empty() && fits(128 * light_support(n, lights) + n[0] + n[1] + n[2]));
+}
+
+int bound_safe_s(const gs::model_options& o, bool attenuated) {
   // (ii)'s s per normal first (fast, and reach_units <= its reach: θ = 1 is (ii)), then (iii) from
   // there, for the normals whose (ii) s is below the least found so far and that are not safe at
   // that least (reach grows with s, so a normal safe there cannot lower it).
@@ -136,12 +154,20 @@ int bound_safe_s(const gs::model_options& o) {
   std::vector<start> order;
   for (const auto& p : appendix2_normals()) order.push_back({safe_s(p, terms(p), t.alpha_error(p), o), &p, t.alpha_error(p)});
   std::sort(order.begin(), order.end(), [](const start& a, const start& b) { return a.s < b.s; });
+  // The light sets per s, built when per_pixel first asks for one.
+  std::map<int, std::vector<ivec3>> sets;
+  auto lights = [&](int s) -> std::span<const ivec3> {
+    if (o.setup != gs::gouraud_setup::per_pixel) return {};
+    auto it = sets.find(s);
+    if (it == sets.end()) it = sets.emplace(s, attenuated ? attenuated_lights(s) : packed_lights(s)).first;
+    return it->second;
+  };
   int least = 127;
   for (const auto& k : order) {
     if (k.s >= least) break;
-    if (least < 127 && cannot_wrap(*k.p, k.e, least, o)) continue;
+    if (least < 127 && cannot_wrap(*k.p, k.e, least, o, lights(least))) continue;
     int s = k.s;
-    while (s < least && cannot_wrap(*k.p, k.e, s + 1, o)) ++s;
+    while (s < least && cannot_wrap(*k.p, k.e, s + 1, o, lights(s + 1))) ++s;
     least = std::min(least, s);
   }
   return least;

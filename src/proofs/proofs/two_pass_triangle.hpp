@@ -82,6 +82,9 @@ struct triangle_case {
 // none of the 65 weight classes of the top 300 rows of `proofs_triangle_plan survey 84`; the best of
 // the top nine classes is 15999.59, for n = (−87, −73, 59)), and the floors give back less than the
 // 2 (top) or 3 (bottom) that the threshold counts.
+// s = 126: a flat triangle (three equal lights, the first witness of two-pass.max-s.vertex, n =
+// (−127, −15, 5), l = (−125, −15, 0)): every set-up gives its pixels that light exactly, so it wraps
+// under every option; it is the lowest wrap under gouraud_setup=per_pixel, where no pixel lags.
 // tests/proofs replays each through the pipeline's rasteriser (the pixel is covered) and
 // gs::pixel_pipeline.
 std::span<const triangle_case> certificates() noexcept;
@@ -91,9 +94,10 @@ gs::rgba8 light_colour(const ivec3& l) noexcept;
 
 // The pixel's light colour: the plane of gs::gouraud_triangle with the reference pixel the
 // pipeline uses (pipeline/band_renderer.hpp attributes(): the top-left pixel of the triangle's
-// bounding box, ceil of the least x and y), read at the pixel by gs::gouraud_at. Whether the pixel
-// is covered is the rasteriser's business: the tests replay every certificate through it.
-gs::fragment_colour pixel_light(const triangle_case& c) noexcept;
+// bounding box, ceil of the least x and y), read at the pixel under the set-up in force
+// (gs::gouraud_colour: gouraud_at for plane_steps, gouraud_exact_at for per_pixel). Whether the
+// pixel is covered is the rasteriser's business: the tests replay every certificate through it.
+gs::fragment_colour pixel_light(const triangle_case& c, gs::gouraud_setup setup = gs::gouraud_setup::plane_steps) noexcept;
 
 // The error bound. Write P_c for the exact plane of channel c (8.7 units) through the three vertex
 // values, r for the reference pixel and g_c for the exact gradient. gouraud_triangle truncates the
@@ -128,20 +132,27 @@ gs::fragment_colour pixel_light(const triangle_case& c) noexcept;
 // the top, n_c > 0 at the bottom). tests/proofs/triangle_test.cpp checks (i) and (ii) against the
 // exact rational plane on every lattice triangle of a small window and on random full-size ones.
 // With λ_c = L_c/128 − 128 and the floors of the two passes (q_c = floor or ceil of n_c·λ_c/128,
-// two_pass::wrap_search), value <= n·λ/128 + #{n_c < 0} + e and value >= n·λ/128 − #{n_c >= 0} + e,
-// so a normal cannot wrap at s when  (reach + T_top)/16384 + #{n_c < 0} + e < 128  and
-// −(reach + T_bottom)/16384 − #{n_c >= 0} + e > −129 (T = truncation_units of that side), with
+// two_pass::wrap_search), value <= n·λ/128 + #{n_c < 0} + e and value >= n·λ/128 − #{n_c > 0} + e
+// (a zero component's products are 0 whatever its light: tests/proofs checks it on every Appendix 2
+// normal with one), so a normal cannot wrap at s when  (reach + T_top)/16384 + #{n_c < 0} + e < 128  and
+// −(reach + T_bottom)/16384 − #{n_c > 0} + e > −129 (T = truncation_units of that side), with
 // reach = |n|·s·128 + G, G = gain_units, by (i) and
-// (ii) (evaluated exactly in integers: |n| is taken as the ceiling of the square root), or the
+// (ii) (evaluated exactly in integers: |n| is taken as the ceiling of the square root; (i) as ball_reach_units), or the
 // tighter reach_units of (iii) below, which bound_safe_s uses where (ii) alone does not settle s.
+// Under gouraud_setup::per_pixel the light is the exact plane at p truncated toward zero from vertex
+// 0's value, so |E_c| < 1 unit on every channel whatever the gradients, with P(p) in the ball: no
+// case split, n·L(p) − n·centre < R·|n| + m (ball_reach_units with W = 1; lag_window is the W of (ii)).
+constexpr int lag_window(const gs::model_options& o) noexcept {
+  return o.setup == gs::gouraud_setup::per_pixel ? 1 : window_pixels;
+}
 constexpr std::int64_t gain_units(std::int64_t l1, std::int64_t least, int window) noexcept {
   return l1 * window + std::int64_t{window - 1} * (l1 - least);
 }
 // What reach + truncation_units must stay below on a wrap side (side +1: the top, value >= 128;
-// −1: the bottom, value <= −129): 16384·(128 − #{n_c < 0} − e), 16384·(129 − #{n_c >= 0} + e).
+// −1: the bottom, value <= −129): 16384·(128 − #{n_c < 0} − e), 16384·(129 − #{n_c > 0} + e).
 constexpr std::int64_t wrap_threshold_units(const paper::packed_normal& p, int e, int side) noexcept {
-  const int neg = (p.iX < 0) + (p.iY < 0) + (p.iZ < 0);
-  return std::int64_t{16384} * (side > 0 ? 128 - neg - e : 129 - (3 - neg) + e);
+  const int neg = (p.iX < 0) + (p.iY < 0) + (p.iZ < 0), pos = (p.iX > 0) + (p.iY > 0) + (p.iZ > 0);
+  return std::int64_t{16384} * (side > 0 ? 128 - neg - e : 129 - pos + e);
 }
 constexpr std::int64_t truncation_units(const paper::packed_normal& p, int side, const gs::model_options& o) noexcept {
   if (o.gouraud == gs::gouraud_fraction::keep_fraction) return 0;
@@ -170,12 +181,22 @@ constexpr std::int64_t truncation_units(const paper::packed_normal& p, int side,
 // (iii) for one set D (bit c set: c in D) and ball radius R, n_c >= 0: the least bound over the θ grid,
 // rounded up (an integer >= the maximum over v, u in B of the bracket above plus K).
 std::int64_t two_point_units(const std::array<std::int64_t, 3>& n, unsigned in_d, std::int64_t radius, int window);
+// Case (i)'s bound R·|n| + |n|_1·W, R·|n| rounded up exactly (the ceiling of sqrt(R²·|n|²)).
+std::int64_t ball_reach_units(const std::array<std::int64_t, 3>& n, int s, int window);
 // The bound on n·L(p) − n·centre (8.7 units, the Gouraud light's; truncation_units come on top), for a
 // normal with components |n_c| and s: max of case (i) and (iii) over every D.
 std::int64_t reach_units(const std::array<std::int64_t, 3>& n, int s, int window);
-bool cannot_wrap(const paper::packed_normal& p, int e, int s, const gs::model_options& o) noexcept;
-// The largest s such that no normal can wrap for any s' <= s by that bound (0 if none).
-int bound_safe_s(const gs::model_options& o);
+// Under gouraud_setup::per_pixel, P(p) is a convex combination of the three vertex lights, so
+// n·(P(p) − centre) <= 128·light_support: the largest Σ |n_c|·l_c over the light set (packed lights,
+// or the ball's cells under tolight = attenuated_T; both are symmetric under negating a channel, so
+// this serves both wrap sides). Tighter than the ball's R·|n| where no light points along n.
+std::int64_t light_support(const std::array<std::int64_t, 3>& n, std::span<const ivec3> lights) noexcept;
+// `lights`: the light set of s, used under per_pixel (empty: the ball alone).
+bool cannot_wrap(const paper::packed_normal& p, int e, int s, const gs::model_options& o,
+                 std::span<const ivec3> lights = {}) noexcept;
+// The largest s such that no normal can wrap for any s' <= s by that bound (0 if none); `attenuated`:
+// the lights of tolight = attenuated_T.
+int bound_safe_s(const gs::model_options& o, bool attenuated = false);
 
 // The reference pixel r of pixel_light: the ceiling of the least vertex x and of the least y.
 std::array<int, 2> reference_pixel(const std::array<int, 6>& xy16) noexcept;
