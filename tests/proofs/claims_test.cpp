@@ -9,6 +9,7 @@
 #include <map>
 #include <string>
 
+#include "gs_arith/profiles.hpp"
 #include "proofs/claim.hpp"
 #include "proofs/paper_code.hpp"
 #include "proofs/runner.hpp"
@@ -259,7 +260,7 @@ TEST(Claims, TwoPassMaxSInterpolated) {
   EXPECT_EQ(fig(o, "s_max"), 79);
   EXPECT_EQ(fig(o, "first_wrapping_s"), 85);
   EXPECT_EQ(fig(o, "s_max_upper"), 84);
-  EXPECT_EQ(fig(o, "certificates_not_wrapping"), 8);  // the truncate_to_8 rows for s = 84, 85, 86, 89, 90, 91, 98 and 100
+  EXPECT_EQ(fig(o, "certificates_not_wrapping"), 9);  // the truncate_to_8 rows for s = 84, 85, 86, 89, 90, 91, 98, 100, and the per_pixel one
   EXPECT_EQ(o.witnesses.size(), 12u);                  // s = 85, 86, 89, 90, 91, 98, 100, 122..125 and the flat 126
   // The verdict text follows the figures: the bracket is 80..84 and the lowest certificate's s is named.
   EXPECT_NE(o.note.find("s = 80..84 is bracketed"), std::string::npos) << o.note;
@@ -273,7 +274,7 @@ TEST(Claims, TwoPassMaxSInterpolated) {
   EXPECT_EQ(fig(t, "s_max"), 78);
   EXPECT_EQ(fig(t, "first_wrapping_s"), 84);
   EXPECT_EQ(fig(t, "s_max_upper"), 83);
-  EXPECT_EQ(fig(t, "certificates_not_wrapping"), 5);  // the keep_fraction rows for s = 85, 86, 90, 98 and 100
+  EXPECT_EQ(fig(t, "certificates_not_wrapping"), 6);  // the keep_fraction rows for s = 85, 86, 90, 98 and 100, the per_pixel one
   EXPECT_NE(t.note.find("s = 79..83 is bracketed"), std::string::npos) << t.note;
   EXPECT_NE(t.note.find("the lowest s = 84"), std::string::npos) << t.note;
   EXPECT_EQ(fig(t, "bound_limit_s"), 83);
@@ -289,12 +290,27 @@ TEST(Claims, TwoPassMaxSInterpolated) {
   EXPECT_EQ(fig(e, "s_max"), fig(vertex, "s_max"));
   EXPECT_EQ(fig(e, "s_max_upper"), fig(vertex, "s_max"));
   EXPECT_EQ(fig(e, "first_wrapping_s"), fig(vertex, "s_max") + 1);
-  EXPECT_EQ(fig(e, "certificates_not_wrapping"), 19);  // every row but the flat one
+  EXPECT_EQ(fig(e, "certificates_not_wrapping"), 20);  // every row but the flat one
   EXPECT_EQ(fig(e, "bound_limit_s"), 0);               // the relaxation witnesses charge a lag per_pixel has not
   ASSERT_EQ(e.witnesses.size(), 1u);
   EXPECT_EQ(e.witnesses[0].rfind("s = 126: n = (-127, -15, 5)", 0), 0u) << e.witnesses[0];
   EXPECT_NE(e.note.find("the bound meets the lowest certificate"), std::string::npos) << e.note;
   EXPECT_NE(e.note.find("The paper's s = 122 is safe"), std::string::npos) << e.note;
+  // The dobiestation profile (per_pixel with truncate_to_8): the multiply's floor hands a pixel the
+  // integer light of the unit box its exact light lies in, which can sit just outside the packed
+  // shell: safe up to 123 by the bound, and the s = 124 certificate's box m = (−27, −63, −105) has
+  // the plain-int value −129 for n = (24, 59, 111).
+  gs::model_options dobie;
+  ASSERT_FALSE(gs::apply_profile(dobie, "dobiestation").has_value());
+  const auto d = p::run_claim(*p::find_claim("two-pass.max-s.interpolated"), dobie, p::run_config{}).result;
+  EXPECT_EQ(d.result, p::verdict::bound);
+  EXPECT_EQ(fig(d, "s_max"), 123);
+  EXPECT_EQ(fig(d, "s_max_upper"), 123);
+  const auto n = ref::appendix2(24, 59);
+  EXPECT_EQ(n.z, 111);
+  EXPECT_EQ(ref::two_pass_value(n, -27, -63, -105), -129);
+  ASSERT_FALSE(d.witnesses.empty());
+  EXPECT_EQ(d.witnesses[0].rfind("s = 124: n = (24, 59, 111)", 0), 0u) << d.witnesses[0];
 }
 
 TEST(Claims, FourPassChannelExact) {

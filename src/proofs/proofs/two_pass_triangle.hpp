@@ -82,6 +82,12 @@ struct triangle_case {
 // none of the 65 weight classes of the top 300 rows of `proofs_triangle_plan survey 84`; the best of
 // the top nine classes is 15999.59, for n = (−87, −73, 59)), and the floors give back less than the
 // 2 (top) or 3 (bottom) that the threshold counts.
+// s = 124, gouraud_setup=per_pixel with truncate_to_8 only (the dobiestation profile): the exact
+// plane's light at the pixel lies in the unit box of an integer light m = (−27, −63, −105) just
+// outside the packed shell, whose flat value is −129 for n = (24, 59, 111); the multiply's floor hands
+// it m. bench/proofs_triangle_boxes (`124`: 1 088 normals open by the bound; this is the third of the
+// three rows it prints, the other two, for n = (23, 79, ·) and (23, 98, ·), wrap the same way; ~4 min
+// on one core).
 // s = 126: a flat triangle (three equal lights, the first witness of two-pass.max-s.vertex, n =
 // (−127, −15, 5), l = (−125, −15, 0)): every set-up gives its pixels that light exactly, so it wraps
 // under every option; it is the lowest wrap under gouraud_setup=per_pixel, where no pixel lags.
