@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <iterator>
+#include <optional>
 
 #include "gs_arith/alpha_blend.hpp"
 #include "gs_arith/bilinear.hpp"
@@ -229,45 +230,46 @@ RC_GTEST_PROP(GsArithProperty, GouraudSpanMonotone, ()) {
   RC_ASSERT(std::min(c0, c1) * 128 <= next && next <= std::max(c0, c1) * 128);
 }
 
+// A random triangle with 12.4 vertices in a `window`-pixel square, its set-up for a random reference
+// pixel, and a random pixel around it; `rv` carries channel `channel` of the vertex colours.
+struct random_triangle {
+  gs_ref::plane_vertex rv[3];
+  int xr, yr, x, y;
+  std::optional<gs::gouraud_plane> plane;
+};
+random_triangle random_gouraud_triangle(int window, int channel) {
+  random_triangle t;
+  gs::gouraud_vertex gv[3];
+  for (int i = 0; i < 3; ++i) {
+    const int x = *rc::gen::inRange(0, window * 16), y = *rc::gen::inRange(0, window * 16);
+    const std::uint32_t c = *word_gen();
+    gv[i] = {x, y, rgba8::from_u32(c)};
+    t.rv[i] = {x, y, gs_ref::byte(c, channel)};
+  }
+  const auto pixel = [&] { return *rc::gen::inRange(-16, window + 16); };
+  t.xr = pixel(), t.yr = pixel(), t.x = pixel(), t.y = pixel();
+  t.plane = gs::gouraud_triangle(gv[0], gv[1], gv[2], t.xr, t.yr);
+  return t;
+}
+
 // Gouraud triangle setup against the barycentric formulation of the same documented rule, on random
 // triangles with 12.4 vertices anywhere in a 256-pixel window and random pixels around them.
 RC_GTEST_PROP(GsArithProperty, GouraudTriangleMatchesBarycentric, ()) {
-  const auto coord = [] { return *rc::gen::inRange(0, 256 * 16); };
-  gs::gouraud_vertex gv[3];
-  gs_ref::plane_vertex rv[3];
-  for (int i = 0; i < 3; ++i) {
-    const int x = coord(), y = coord();
-    const std::uint32_t c = *word_gen();
-    gv[i] = {x, y, rgba8::from_u32(c)};
-    rv[i] = {x, y, gs_ref::byte(c, 1)};  // the green channel
-  }
-  const auto pixel = [] { return *rc::gen::inRange(-16, 272); };
-  const int xr = pixel(), yr = pixel(), x = pixel(), y = pixel();
-  const auto plane = gs::gouraud_triangle(gv[0], gv[1], gv[2], xr, yr);
-  RC_PRE(gs_ref::plane_det(rv) != 0);
-  RC_ASSERT(plane.has_value());
-  RC_ASSERT(static_cast<long long>(gs::gouraud_at(*plane, x, y).g.value()) == gs_ref::gouraud_plane_at(rv, xr, yr, x, y));
+  const auto t = random_gouraud_triangle(256, 1);  // the green channel
+  RC_PRE(gs_ref::plane_det(t.rv) != 0);
+  RC_ASSERT(t.plane.has_value());
+  RC_ASSERT(static_cast<long long>(gs::gouraud_at(*t.plane, t.x, t.y).g.value()) == gs_ref::gouraud_plane_at(t.rv, t.xr, t.yr, t.x, t.y));
 }
 
-// gouraud_setup = per_pixel against the same barycentric formulation read at the pixel itself, and
-// against plane_steps at the reference pixel (where both are the start value).
+// gouraud_setup = per_pixel against the same barycentric formulation read at the pixel itself (the
+// whole 2048-pixel window), and against plane_steps at the reference pixel (both the start value there).
 RC_GTEST_PROP(GsArithProperty, GouraudExactAtMatchesBarycentric, ()) {
-  const auto coord = [] { return *rc::gen::inRange(0, 2048 * 16); };
-  gs::gouraud_vertex gv[3];
-  gs_ref::plane_vertex rv[3];
-  for (int i = 0; i < 3; ++i) {
-    const int x = coord(), y = coord();
-    const std::uint32_t c = *word_gen();
-    gv[i] = {x, y, rgba8::from_u32(c)};
-    rv[i] = {x, y, gs_ref::byte(c, 0)};  // the red channel
-  }
-  const auto pixel = [] { return *rc::gen::inRange(-16, 2064); };
-  const int xr = pixel(), yr = pixel(), x = pixel(), y = pixel();
-  const auto plane = gs::gouraud_triangle(gv[0], gv[1], gv[2], xr, yr);
-  RC_PRE(gs_ref::plane_det(rv) != 0);
-  RC_ASSERT(plane.has_value());
-  RC_ASSERT(static_cast<long long>(gs::gouraud_exact_at(*plane, x, y).r.value()) == gs_ref::gouraud_exact_at(rv, x, y));
-  RC_ASSERT(gs::gouraud_colour(*plane, xr, yr, gs::gouraud_setup::per_pixel) == gs::gouraud_colour(*plane, xr, yr, gs::gouraud_setup::plane_steps));
+  const auto t = random_gouraud_triangle(2048, 0);  // the red channel
+  RC_PRE(gs_ref::plane_det(t.rv) != 0);
+  RC_ASSERT(t.plane.has_value());
+  RC_ASSERT(static_cast<long long>(gs::gouraud_exact_at(*t.plane, t.x, t.y).r.value()) == gs_ref::gouraud_exact_at(t.rv, t.x, t.y));
+  RC_ASSERT(gs::gouraud_colour(*t.plane, t.xr, t.yr, gs::gouraud_setup::per_pixel) ==
+            gs::gouraud_colour(*t.plane, t.xr, t.yr, gs::gouraud_setup::plane_steps));
 }
 
 }  // namespace

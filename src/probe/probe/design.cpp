@@ -1,6 +1,7 @@
 // probe/design.cpp — the probe's draws and patches (the table in docs/dumps.md, "The option probe").
 #include "probe/design.hpp"
 
+#include <array>
 #include <stdexcept>
 #include <utility>
 
@@ -38,6 +39,18 @@ gs::tex0_reg small_texture(gs::tfx fn) {
   t.TW = fixed::u4::from_wrapped(4);
   t.TH = fixed::u4::from_wrapped(4);
   t.TFX = fn;
+  return t;
+}
+
+// A Gouraud TRIANGLE, MODULATE with the white texel (UV (8, 8) at every vertex), scissored to the cell at (x, y).
+draw gouraud_ramp(const gs::gs_registers& regs, int x, int y, const std::array<vertex, 3>& v) {
+  draw t;
+  t.regs = regs;
+  t.regs.PRIM.PRIM = gs::prim_type::TRIANGLE;
+  t.regs.PRIM.IIP = t.regs.PRIM.TME = true;
+  t.regs.TEX0_1 = small_texture(gs::tfx::MODULATE);
+  t.scissor = {x, y, x + cell - 1, y + cell - 1};
+  t.v.assign(v.begin(), v.end());
   return t;
 }
 
@@ -124,15 +137,8 @@ design make_design() {
   // ---- row y = 16: the 32-bit frame ----------------------------------------------------------------
   {  // gouraud_fraction (evidence.md P2): the 8.7 ramp 1 + 16/128 .. 1 + 44/128 times texel 0xFF.
     const int x = 16, y = 16;
-    draw t;
-    t.regs = base;
-    t.regs.PRIM.PRIM = gs::prim_type::TRIANGLE;
-    t.regs.PRIM.IIP = t.regs.PRIM.TME = true;
-    t.regs.TEX0_1 = small_texture(gs::tfx::MODULATE);
-    t.scissor = {x, y, x + cell - 1, y + cell - 1};
     // Colour 1 at x − 4, 2 at x + 28: the step is exactly 128 / 32 = 4 (8.7) per pixel, no rounding.
-    t.v = {{x - 4, y - 4, 0x80010101u, 8, 8}, {x + 28, y - 4, 0x80020202u, 8, 8}, {x - 4, y + 28, 0x80010101u, 8, 8}};
-    b.add(t);
+    b.add(gouraud_ramp(base, x, y, {{{x - 4, y - 4, 0x80010101u, 8, 8}, {x + 28, y - 4, 0x80020202u, 8, 8}, {x - 4, y + 28, 0x80010101u, 8, 8}}}));
     b.add_patch("gouraud_fraction.ramp", "gouraud_fraction", x, y,
                 "Gouraud TRIANGLE, MODULATE, texel 0xFF, Cf = 1 + (16 + 4k)/128 (8.7), scissored to the cell: "
                 "(0xFF * Cf_8.7) >> 14 = 2 keeping the fraction, 1 truncating it");
@@ -140,16 +146,9 @@ design make_design() {
   {  // gouraud_setup (evidence.md P12): a ramp whose exact step is just below one 8.7 unit per pixel,
      // read ~500 pixels from the first vertex (the top-left one: the reference pixel of plane_steps).
     const int x = 520, y = 16;
-    draw t;
-    t.regs = base;
-    t.regs.PRIM.PRIM = gs::prim_type::TRIANGLE;
-    t.regs.PRIM.IIP = t.regs.PRIM.TME = true;
-    t.regs.TEX0_1 = small_texture(gs::tfx::MODULATE);
-    t.scissor = {x, y, x + cell - 1, y + cell - 1};
     // Colour 0 at x − 500, 4 at x + 14 (two vertices, one above the other: the cell lies inside): the
     // step is 4·128/514 = 0.996 units per pixel, 0 along y.
-    t.v = {{x - 500, y - 4, 0x80000000u, 8, 8}, {x + 14, y - 4, 0x80040404u, 8, 8}, {x + 14, y + 28, 0x80040404u, 8, 8}};
-    b.add(t);
+    b.add(gouraud_ramp(base, x, y, {{{x - 500, y - 4, 0x80000000u, 8, 8}, {x + 14, y - 4, 0x80040404u, 8, 8}, {x + 14, y + 28, 0x80040404u, 8, 8}}}));
     b.add_patch("gouraud_setup.ramp", "gouraud_setup", x, y,
                 "Gouraud TRIANGLE, MODULATE, texel 0xFF, Cf from 0 to 4 over 514 pixels (0.996 units per pixel), read 501..506 "
                 "pixels from the first vertex: 0 when the step truncates to whole units (plane_steps), Cf_8.7 = 499..504 and "
