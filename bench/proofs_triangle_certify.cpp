@@ -1,0 +1,120 @@
+// proofs_triangle_certify — a certified upper bound on the continuous relaxation of
+// two-pass.max-s.interpolated's error bound, class by class: the branch and bound of
+// proofs/triangle_certify.hpp (its header: the sign-constrained dual, why a fixed dual point certifies a
+// whole rectangle of geometries from its four corners, and the exact integer check). Not a benchmark
+// and not a test; reproducible (no randomness). A class that closes is proven safe at S and every
+// s <= S by the bound's statements (the ball of radius s lies in that of S, the threshold does not
+// depend on s).
+//
+//   proofs_triangle_certify S [truncate_to_8] survey [FIRST [COUNT]] [MIN_CELL_LOG2 [MAX_CELLS]]
+//       the classes (|n| sorted, side threshold) bound_safe_s's reach leaves open at S, most open
+//       first (the order of proofs_triangle_dual's survey before its screen), classes FIRST ..
+//       FIRST + COUNT − 1: one line each (closed or open, rectangles, seconds, the largest certified
+//       bound among the closed rectangles, the best attained value in an open one)
+//   proofs_triangle_certify S [truncate_to_8] class W0 W1 W2 THRESHOLD128 [MIN_CELL_LOG2 [MAX_CELLS]]
+//       one class given directly (THRESHOLD128 = 128·relaxation_threshold)
+// MIN_CELL_LOG2 (default −4): rectangles narrower than 2^MIN_CELL_LOG2 pixels stay open; MAX_CELLS
+// (default 2 000 000) per class. Shard the survey by FIRST/COUNT; run it under `nice` on one core.
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <map>
+#include <tuple>
+#include <vector>
+
+#include "proofs_search_args.hpp"
+#include "proofs/domains.hpp"
+#include "proofs/two_pass.hpp"
+#include "proofs/two_pass_triangle.hpp"
+#include "proofs/triangle_certify.hpp"
+
+namespace p = gsdot3::proofs;
+namespace tt = gsdot3::proofs::two_pass::triangle;
+namespace tc = gsdot3::proofs::two_pass::triangle::certify;
+
+namespace {
+constexpr std::int64_t box = 2048;  // the families' box (bench/proofs_triangle_dual's reduction)
+
+struct open_class {
+  std::int64_t gap;  // reach + truncation − wrap threshold, units (the bound's shortfall)
+  std::array<int, 3> w;
+  std::int64_t threshold128;
+};
+
+// Every (|n| sorted, side threshold) whose reach_units leaves a side open at s, most open first.
+std::vector<open_class> open_classes(int s, const gs::model_options& o) {
+  const p::two_pass::table t(o);
+  std::map<std::tuple<int, int, int, std::int64_t>, std::int64_t> open;
+  for (const auto& nm : p::appendix2_normals()) {
+    std::array<int, 3> a{std::abs(nm.iX), std::abs(nm.iY), std::abs(nm.iZ)};
+    std::sort(a.begin(), a.end());
+    const std::int64_t reach = tt::reach_units({a[0], a[1], a[2]}, s, tt::window_pixels);
+    const int e = t.alpha_error(nm);
+    for (int side : {1, -1}) {
+      const std::int64_t over = reach + tt::truncation_units(nm, side, o) - tt::wrap_threshold_units(nm, e, side);
+      if (over < 0) continue;
+      const std::int64_t th128 = tt::wrap_threshold_units(nm, e, side) - tt::truncation_units(nm, side, o) - (a[0] + a[1] + a[2]);
+      auto& g = open[{a[0], a[1], a[2], th128}];
+      g = std::max(g, over);
+    }
+  }
+  std::vector<open_class> out;
+  for (const auto& [k, gap] : open) out.push_back({gap, {std::get<0>(k), std::get<1>(k), std::get<2>(k)}, std::get<3>(k)});
+  std::stable_sort(out.begin(), out.end(), [](const open_class& x, const open_class& y) { return x.gap > y.gap; });
+  return out;
+}
+
+// Runs one class and prints its line; true if every rectangle closed.
+bool run(const tc::problem& pr, std::int64_t min_cell, std::int64_t max_cells, const char* label) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const tc::outcome r = tc::certify_class(pr, box, min_cell, max_cells);
+  const double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const double th = static_cast<double>(pr.threshold128) / 128;
+  std::printf("%s|n| = (%d, %d, %d) threshold %.4f: %s, %lld rectangles (%lld closed), %.2f s, largest certified bound %.4f (margin %+.4f)",
+              label, pr.w[0], pr.w[1], pr.w[2], th, r.open_count == 0 ? "CLOSED" : "OPEN", static_cast<long long>(r.cells),
+              static_cast<long long>(r.closed), sec, static_cast<double>(r.worst_closed), static_cast<double>(r.worst_closed) - th);
+  if (r.open_count) std::printf(", %lld open, best attained there %.4f (margin %+.4f)", static_cast<long long>(r.open_count), r.best_attained, r.best_attained - th);
+  std::printf("\n");
+  for (const auto& c : r.open)
+    std::printf("  open: %s p = %d pattern %02o u [%.6f, %.6f] v [%.6f, %.6f] bound %.4f attained %.4f\n", tc::family_names[c.family], c.p,
+                c.pattern, double(c.u0) / tc::coord_one, double(c.u1) / tc::coord_one, double(c.v0) / tc::coord_one,
+                double(c.v1) / tc::coord_one, static_cast<double>(c.bound), c.attained);
+  std::fflush(stdout);
+  return r.open_count == 0;
+}
+
+std::int64_t min_cell_of(int log2) { return log2 >= -tc::coord_bits ? std::max<std::int64_t>(1, std::int64_t{1} << (tc::coord_bits + log2)) : 1; }
+}  // namespace
+
+int main(int argc, char** argv) {
+  const char* usage = " (survey [FIRST [COUNT]] | class W0 W1 W2 THRESHOLD128) [MIN_CELL_LOG2 [MAX_CELLS]]";
+  const auto args = gsdot3::bench::parse_search_args(argc, argv, "proofs_triangle_certify", usage);
+  const int n = argc - args.next;
+  char** a = argv + args.next;
+  if (n >= 1 && std::strcmp(a[0], "survey") == 0) {
+    const int first = n > 1 ? std::atoi(a[1]) : 0, count = n > 2 ? std::atoi(a[2]) : 1 << 30;
+    const std::int64_t min_cell = min_cell_of(n > 3 ? std::atoi(a[3]) : -4), max_cells = n > 4 ? std::atoll(a[4]) : 2000000;
+    const auto classes = open_classes(args.s, args.o);
+    const int last = std::min<int>(static_cast<int>(classes.size()), first + count);
+    std::printf("s = %d (%s): %zu open classes; certifying %d .. %d\n", args.s, args.option_name(), classes.size(), first, last - 1);
+    int closed = 0;
+    for (int i = first; i < last; ++i) {
+      const auto& c = classes[static_cast<std::size_t>(i)];
+      char label[48];
+      std::snprintf(label, sizeof label, "#%d (over by %lld units) ", i, static_cast<long long>(c.gap));
+      closed += run({c.w, args.s, c.threshold128}, min_cell, max_cells, label);
+    }
+    std::printf("s = %d (%s): classes %d .. %d: %d closed, %d open\n", args.s, args.option_name(), first, last - 1, closed, last - first - closed);
+    return 0;
+  }
+  if (n >= 5 && std::strcmp(a[0], "class") == 0) {
+    const tc::problem pr{{std::atoi(a[1]), std::atoi(a[2]), std::atoi(a[3])}, args.s, std::atoll(a[4])};
+    const std::int64_t min_cell = min_cell_of(n > 5 ? std::atoi(a[5]) : -4), max_cells = n > 6 ? std::atoll(a[6]) : 2000000;
+    return run(pr, min_cell, max_cells, "") ? 0 : 1;
+  }
+  std::fprintf(stderr, "usage: proofs_triangle_certify S [truncate_to_8]%s\n", usage);
+  return 2;
+}
