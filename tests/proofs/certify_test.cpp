@@ -6,6 +6,7 @@
 // geometries against their attained values, and a certified class against random general triangles.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -93,14 +94,126 @@ TEST(TriangleCertify, WeakDualityOnRandomRectanglesAndLights) {
       for (int c = 0; c < 3; ++c)
         if (pr.w[c] == 0) pi &= ~(3u << (2 * c));  // the duplicate patterns certify_cell skips (y_c = 0)
       if (!bound[pi].feasible) continue;
+      // A primal ascent inside the point's pattern region: moves of the lights kept while the value
+      // rises and the pattern stays (the points where a wrong dual would show).
+      double val = value(gv, pix, l, pr);
+      std::normal_distribution<double> step(0, 1);
+      for (int it = 0; it < (q % 4 == 0 ? 300 : 0); ++it) {
+        lights m = l;
+        const double h = 2.0 / (1 + it / 30);
+        for (auto& lk : m) {
+          for (double& c : lk) c += h * step(rng);
+          const double nl = std::sqrt(lk[0] * lk[0] + lk[1] * lk[1] + lk[2] * lk[2]);
+          if (nl > pr.s)
+            for (double& c : lk) c *= pr.s / nl;
+        }
+        unsigned pm = pattern_of(gv, m);
+        for (int c = 0; c < 3; ++c)
+          if (pr.w[c] == 0) pm &= ~(3u << (2 * c));
+        if (const double vm = value(gv, pix, m, pr); pm == pi && vm > val) l = m, val = vm;
+      }
       ++points;
-      const double val = value(gv, pix, l, pr);
       EXPECT_LE(val, static_cast<double>(bound[pi].levels) + 1e-9 * std::fabs(val))
           << "family " << f << " p " << pix << " pattern " << pi << " u " << u << " v " << v;
     }
   }
   EXPECT_GT(feasible, 60 * 40);  // the search's y passes the exact check almost always
   EXPECT_GT(points, 60 * 300);
+}
+
+// Weak duality where it is tight: the relaxation witnesses' lights (attained values above the wrap
+// threshold) at geometries of small rectangles around theirs, which are members of F1 with box 2047
+// ((0, u), (v, 0), (A, A), p = (A, A), u = 2047).
+TEST(TriangleCertify, WeakDualityAroundTheWitnesses) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> unit(0, 1);
+  std::normal_distribution<double> noise(0, 0.02);
+  int points = 0;
+  for (const auto& wit : tt::relaxation_witnesses()) {
+    const auto nm = p::paper::pack_normal_from(wit.iX, wit.iY);
+    const tc::problem pr{{std::abs(nm.iX), std::abs(nm.iY), std::abs(nm.iZ)}, wit.s, 0};
+    ASSERT_EQ(wit.at.vertex[0][1], 2047);
+    const std::int64_t u = 2047 * tc::coord_one, v = std::llround(wit.at.vertex[1][0] * tc::coord_one);
+    double closest = -1e30;
+    for (int e = -4; e <= 4; ++e) {
+      const std::int64_t h = std::int64_t{1} << (tc::coord_bits + e);
+      const tc::corners g = tc::family_cell(0, 2, u - h, u, v - h / 2, v + h / 2, 2047);
+      std::array<tc::check, 64> bound{};
+      for (unsigned pi : tc::patterns(pr)) bound[pi] = tc::check_dual(pr, g, pi, tc::to_grid(pr, tc::search_dual(pr, g, pi, nullptr), 2));
+      for (int q = 0; q < 100; ++q) {
+        const std::int64_t gu = u - static_cast<std::int64_t>(unit(rng) * double(h)), gv = v - h / 2 + static_cast<std::int64_t>(unit(rng) * double(h));
+        const geometry x = to_pixels(tc::family_member(0, gu, gv, 2047));
+        lights l = wit.at.light;
+        for (auto& lk : l)
+          for (double& c : lk) c += noise(rng);
+        const unsigned pi = pattern_of(x, l);
+        ASSERT_TRUE(bound[pi].feasible) << e << " " << pi;
+        const double val = value(x, 2, l, pr);
+        ++points;
+        closest = std::max(closest, val - static_cast<double>(bound[pi].levels));
+        EXPECT_LE(val, static_cast<double>(bound[pi].levels)) << "rectangle 2^" << e << " pattern " << pi;
+      }
+    }
+    EXPECT_GT(closest, -10) << "the points come near the bound";
+  }
+  EXPECT_EQ(points, 2 * 9 * 100);
+}
+
+// check_dual against the same sums in long double, exact here: coordinates on a 2^-4 pixel grid and
+// |y| <= 200 keep every product and sum below 2^64.
+TEST(TriangleCertify, ExactCheckAgreesWithLongDoubleOnAGrid) {
+  std::mt19937 rng(11);
+  std::uniform_int_distribution<int> weight(0, 127), fam(0, tc::family_count - 1), vertex(0, 2), grid(0, 2048 * 16);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  int feasible = 0, infeasible = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    const tc::problem pr{{weight(rng), weight(rng), weight(rng)}, 1 + trial % 127, 0};
+    const int f = fam(rng), pix = vertex(rng);
+    std::int64_t c[4];
+    for (auto& x : c) x = std::int64_t{grid(rng)} << (tc::coord_bits - 4);
+    if (trial % 3 == 0) c[1] = c[0], c[3] = c[2];  // one geometry
+    const tc::corners g = tc::family_cell(f, pix, std::min(c[0], c[1]), std::max(c[0], c[1]), std::min(c[2], c[3]), std::max(c[2], c[3]), 2048);
+    const unsigned pi = static_cast<unsigned>(rng() % 64);
+    tc::dual_real y = trial % 2 ? tc::search_dual(pr, g, pi, nullptr) : tc::dual_real{};
+    const double noise = trial % 4 < 2 ? 0 : std::ldexp(1.0, -static_cast<int>(rng() % 30));
+    for (std::size_t k = 0; k < 3; ++k)
+      for (std::size_t ch = 0; ch < 3; ++ch) y[k][ch] = std::clamp(y[k][ch] + noise * 100 * unit(rng), -200.0, 200.0);
+    const tc::dual_grid Y = tc::to_grid(pr, y, pix);
+    bool ok = true;
+    long double lag = 0;
+    for (const auto& V : g.at) {
+      long double sum = 0;
+      for (std::size_t ch = 0; ch < 3; ++ch)
+        for (std::size_t ax = 0; ax < 2; ++ax) {
+          long double kappa = 0, m = 0;
+          for (std::size_t k = 0; k < 3; ++k) {
+            kappa += static_cast<long double>(Y[k][ch]) * static_cast<long double>(V[static_cast<std::size_t>(pix)][ax] - V[k][ax]);
+            m += static_cast<long double>(Y[k][ch]) * static_cast<long double>(V[k][ax]) / 0x1p44L;
+          }
+          const bool charged = pi >> (2 * ch + ax) & 1;
+          if (charged ? kappa < 0 : kappa > 0) ok = false;
+          if (charged && m > 0) sum += m / 128;
+        }
+      lag = std::max(lag, sum);
+    }
+    long double norms = 0;
+    for (const auto& yk : Y) {
+      long double n2 = 0;
+      for (std::int64_t v : yk) n2 += static_cast<long double>(v) * static_cast<long double>(v);
+      norms += std::sqrt(n2) / 0x1p24L;
+    }
+    const tc::check k = tc::check_dual(pr, g, pi, Y);
+    ASSERT_EQ(k.feasible, ok) << trial;
+    (ok ? feasible : infeasible)++;
+    if (ok) {
+      const long double expect = pr.s * norms + lag;
+      // above by at most the three square roots' rounding up (2^-24 each, times s)
+      EXPECT_GE(k.levels, expect - 1e-9L) << trial;
+      EXPECT_LE(k.levels, expect + pr.s * 3 * 0x1p-24L + 1e-9L) << trial;
+    }
+  }
+  EXPECT_GT(feasible, 300);
+  EXPECT_GT(infeasible, 300);
 }
 
 TEST(TriangleCertify, ExactCheckOfTheTrivialDualIsItsClosedForm) {
