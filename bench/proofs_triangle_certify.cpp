@@ -6,18 +6,24 @@
 // s <= S by the bound's statements (the ball of radius s lies in that of S, the threshold does not
 // depend on s).
 //
-//   proofs_triangle_certify S [truncate_to_8] survey [FIRST [COUNT]] [MIN_CELL_LOG2 [MAX_CELLS]]
+//   proofs_triangle_certify S [truncate_to_8] survey [FIRST [COUNT]] [MIN_CELL_LOG2 [MAX_CELLS [BOX]]]
 //       the classes (|n| sorted, side threshold) bound_safe_s's reach leaves open at S, most open
 //       first (the order of proofs_triangle_dual's survey before its screen), classes FIRST ..
 //       FIRST + COUNT − 1: one line each (closed or open, rectangles, seconds, the largest certified
 //       bound among the closed rectangles, the best attained value in an open one)
-//   proofs_triangle_certify S [truncate_to_8] class W0 W1 W2 THRESHOLD128 [MIN_CELL_LOG2 [MAX_CELLS]]
+//   proofs_triangle_certify S [truncate_to_8] class W0 W1 W2 THRESHOLD128 [MIN_CELL_LOG2 [MAX_CELLS [BOX]]]
 //       one class given directly (THRESHOLD128 = 128·relaxation_threshold)
 // MIN_CELL_LOG2 (default −4): rectangles narrower than 2^MIN_CELL_LOG2 pixels stay open; MAX_CELLS
 // (default 2 000 000) per class. Shard the survey by FIRST/COUNT; run it under `nice` on one core.
+// BOX (default 2048, bench/proofs_triangle_dual's families): the families' box side A in pixels.
+// 2047 is enough: the claim's vertices lie in 0 .. 2047 (12.4 window coordinates 0 .. 2047·16), so
+// after the reduction's translation (least vertex coordinate = r, moved by less than a pixel) every
+// vertex coordinate lies in [0, max − min] ⊂ [0, 2047], and its scaling (λ, μ >= 1) reaches A = 2047;
+// the bound's own statements use a, b <= W − 1 = 2047 likewise. A smaller box lowers the relaxation.
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -36,7 +42,6 @@ namespace tt = gsdot3::proofs::two_pass::triangle;
 namespace tc = gsdot3::proofs::two_pass::triangle::certify;
 
 namespace {
-constexpr std::int64_t box = 2048;  // the families' box (bench/proofs_triangle_dual's reduction)
 
 struct open_class {
   std::int64_t gap;  // reach + truncation − wrap threshold, units (the bound's shortfall)
@@ -68,7 +73,7 @@ std::vector<open_class> open_classes(int s, const gs::model_options& o) {
 }
 
 // Runs one class and prints its line; true if every rectangle closed.
-bool run(const tc::problem& pr, std::int64_t min_cell, std::int64_t max_cells, const char* label) {
+bool run(const tc::problem& pr, std::int64_t box, std::int64_t min_cell, std::int64_t max_cells, const char* label) {
   const auto t0 = std::chrono::steady_clock::now();
   const tc::outcome r = tc::certify_class(pr, box, min_cell, max_cells);
   const double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -78,10 +83,24 @@ bool run(const tc::problem& pr, std::int64_t min_cell, std::int64_t max_cells, c
               static_cast<long long>(r.closed), sec, static_cast<double>(r.worst_closed), static_cast<double>(r.worst_closed) - th);
   if (r.open_count) std::printf(", %lld open, best attained there %.4f (margin %+.4f)", static_cast<long long>(r.open_count), r.best_attained, r.best_attained - th);
   std::printf("\n");
-  for (const auto& c : r.open)
-    std::printf("  open: %s p = %d pattern %02o u [%.6f, %.6f] v [%.6f, %.6f] bound %.4f attained %.4f\n", tc::family_names[c.family], c.p,
+  auto print = [](const char* what, const tc::open_cell& c) {
+    std::printf("  %s: %s p = %d pattern %02o u [%.6f, %.6f] v [%.6f, %.6f] bound %.4f attained %.4f\n", what, tc::family_names[c.family], c.p,
                 c.pattern, double(c.u0) / tc::coord_one, double(c.u1) / tc::coord_one, double(c.v0) / tc::coord_one,
                 double(c.v1) / tc::coord_one, static_cast<double>(c.bound), c.attained);
+  };
+  if (r.exceeds) {
+    const auto& c = r.witness;
+    print("the relaxation exceeds the threshold at the centre of", c);
+    const auto V = tc::family_member(c.family, (c.u0 + c.u1) / 2, (c.v0 + c.v1) / 2, box);
+    std::printf("    vertices (%.9f, %.9f), (%.9f, %.9f), (%.9f, %.9f), p = vertex %d; lights (levels, folded):\n", double(V[0][0]) / tc::coord_one,
+                double(V[0][1]) / tc::coord_one, double(V[1][0]) / tc::coord_one, double(V[1][1]) / tc::coord_one, double(V[2][0]) / tc::coord_one,
+                double(V[2][1]) / tc::coord_one, c.p);
+    for (const auto& yk : c.y) {
+      const double nk = std::sqrt(yk[0] * yk[0] + yk[1] * yk[1] + yk[2] * yk[2]);
+      std::printf("      (%.9f, %.9f, %.9f)\n", nk > 0 ? pr.s * yk[0] / nk : 0, nk > 0 ? pr.s * yk[1] / nk : 0, nk > 0 ? pr.s * yk[2] / nk : 0);
+    }
+  }
+  for (const auto& c : r.open) print("open", c);
   std::fflush(stdout);
   return r.open_count == 0;
 }
@@ -90,22 +109,24 @@ std::int64_t min_cell_of(int log2) { return log2 >= -tc::coord_bits ? std::max<s
 }  // namespace
 
 int main(int argc, char** argv) {
-  const char* usage = " (survey [FIRST [COUNT]] | class W0 W1 W2 THRESHOLD128) [MIN_CELL_LOG2 [MAX_CELLS]]";
+  const char* usage = " (survey [FIRST [COUNT]] | class W0 W1 W2 THRESHOLD128) [MIN_CELL_LOG2 [MAX_CELLS [BOX]]]";
   const auto args = gsdot3::bench::parse_search_args(argc, argv, "proofs_triangle_certify", usage);
   const int n = argc - args.next;
   char** a = argv + args.next;
   if (n >= 1 && std::strcmp(a[0], "survey") == 0) {
     const int first = n > 1 ? std::atoi(a[1]) : 0, count = n > 2 ? std::atoi(a[2]) : 1 << 30;
     const std::int64_t min_cell = min_cell_of(n > 3 ? std::atoi(a[3]) : -4), max_cells = n > 4 ? std::atoll(a[4]) : 2000000;
+    const std::int64_t box = n > 5 ? std::atoll(a[5]) : 2048;
     const auto classes = open_classes(args.s, args.o);
     const int last = std::min<int>(static_cast<int>(classes.size()), first + count);
-    std::printf("s = %d (%s): %zu open classes; certifying %d .. %d\n", args.s, args.option_name(), classes.size(), first, last - 1);
+    std::printf("s = %d (%s), box %lld: %zu open classes; certifying %d .. %d\n", args.s, args.option_name(), static_cast<long long>(box),
+                classes.size(), first, last - 1);
     int closed = 0;
     for (int i = first; i < last; ++i) {
       const auto& c = classes[static_cast<std::size_t>(i)];
       char label[48];
       std::snprintf(label, sizeof label, "#%d (over by %lld units) ", i, static_cast<long long>(c.gap));
-      closed += run({c.w, args.s, c.threshold128}, min_cell, max_cells, label);
+      closed += run({c.w, args.s, c.threshold128}, box, min_cell, max_cells, label);
     }
     std::printf("s = %d (%s): classes %d .. %d: %d closed, %d open\n", args.s, args.option_name(), first, last - 1, closed, last - first - closed);
     return 0;
@@ -113,7 +134,7 @@ int main(int argc, char** argv) {
   if (n >= 5 && std::strcmp(a[0], "class") == 0) {
     const tc::problem pr{{std::atoi(a[1]), std::atoi(a[2]), std::atoi(a[3])}, args.s, std::atoll(a[4])};
     const std::int64_t min_cell = min_cell_of(n > 5 ? std::atoi(a[5]) : -4), max_cells = n > 6 ? std::atoll(a[6]) : 2000000;
-    return run(pr, min_cell, max_cells, "") ? 0 : 1;
+    return run(pr, n > 7 ? std::atoll(a[7]) : 2048, min_cell, max_cells, "") ? 0 : 1;
   }
   std::fprintf(stderr, "usage: proofs_triangle_certify S [truncate_to_8]%s\n", usage);
   return 2;

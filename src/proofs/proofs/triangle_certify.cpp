@@ -343,12 +343,21 @@ outcome certify_class(const problem& pr, std::int64_t box, std::int64_t min_cell
   for (int f = 0; f < family_count; ++f)
     for (int p = 0; p < 3; ++p)
       for (unsigned pi : patterns(pr)) {
+        // y_p = w: s·|w| plus every charged axis lagged in full, feasible everywhere; it closes the
+        // patterns with few charged axes without a search.
+        dual_real t{};
+        for (int ch = 0; ch < 3; ++ch) t[static_cast<std::size_t>(p)][static_cast<std::size_t>(ch)] = pr.w[static_cast<std::size_t>(ch)];
+        const dual_grid trivial = to_grid(pr, t, p);
         std::vector<pending> stack{{0, A, 0, A, {}, false}};
         while (!stack.empty()) {
           const pending c = stack.back();
           stack.pop_back();
           if (++out.cells > max_cells) return out.open_count += 1, out;
           const corners g = family_cell(f, p, c.u0, c.u1, c.v0, c.v1, box);
+          if (const check k = check_dual(pr, g, pi, trivial); k.below) {  // no search needed
+            ++out.closed, out.worst_closed = std::max(out.worst_closed, k.levels);
+            continue;
+          }
           const dual_real y = search_dual(pr, g, pi, c.has_warm ? &c.warm : nullptr);
           const check k = check_dual(pr, g, pi, to_grid(pr, y, p));
           if (k.feasible && k.below) {
@@ -361,8 +370,11 @@ outcome certify_class(const problem& pr, std::int64_t box, std::int64_t min_cell
             for (std::size_t q = 0; q < 3; ++q) v[q] = {px(V[q][0]), px(V[q][1])};
             const double a = attained(pr, v, p, y);
             ++out.open_count, out.best_attained = std::max(out.best_attained, a);
-            if (out.open.size() < max_open) out.open.push_back({f, p, pi, c.u0, c.u1, c.v0, c.v1, k.feasible ? k.levels : -1, a});
-            if (a * 128 > static_cast<double>(pr.threshold128)) return out;  // the relaxation itself exceeds: no certificate exists
+            if (out.open.size() < max_open) out.open.push_back({f, p, pi, c.u0, c.u1, c.v0, c.v1, k.feasible ? k.levels : -1, a, y});
+            if (a * 128 > static_cast<double>(pr.threshold128)) {  // the relaxation itself exceeds: no certificate exists
+              out.exceeds = true, out.witness = {f, p, pi, c.u0, c.u1, c.v0, c.v1, k.feasible ? k.levels : -1, a, y};
+              return out;
+            }
             continue;
           }
           const std::int64_t um = (c.u0 + c.u1) / 2, vm = (c.v0 + c.v1) / 2;

@@ -120,6 +120,7 @@ struct open_cell {
   std::int64_t u0, u1, v0, v1;
   long double bound;
   double attained;
+  dual_real y;  // the rectangle's dual: its lights s·y_k/|y_k| attain `attained` at the centre
 };
 struct outcome {
   std::int64_t cells = 0, closed = 0;  // rectangles examined, closed
@@ -127,6 +128,8 @@ struct outcome {
   std::int64_t open_count = 0;
   long double worst_closed = -1e30L;   // the largest certified bound among the closed rectangles
   double best_attained = -1e30;        // over the open rectangles' centres
+  bool exceeds = false;                // stopped at an open rectangle whose attained value is above the threshold
+  open_cell witness{};                 // that rectangle (the relaxation admits a wrap at its centre)
 };
 outcome certify_class(const problem& pr, std::int64_t box, std::int64_t min_cell, std::int64_t max_cells, std::size_t max_open = 8);
 
