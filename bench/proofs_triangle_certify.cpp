@@ -47,12 +47,13 @@ struct open_class {
   std::int64_t gap;  // reach + truncation − wrap threshold, units (the bound's shortfall)
   std::array<int, 3> w;
   std::int64_t threshold128;
+  int iX, iY, side;  // one normal and side of the class
 };
 
 // Every (|n| sorted, side threshold) whose reach_units leaves a side open at s, most open first.
 std::vector<open_class> open_classes(int s, const gs::model_options& o) {
   const p::two_pass::table t(o);
-  std::map<std::tuple<int, int, int, std::int64_t>, std::int64_t> open;
+  std::map<std::tuple<int, int, int, std::int64_t>, std::array<std::int64_t, 4>> open;  // gap, iX, iY, side
   for (const auto& nm : p::appendix2_normals()) {
     std::array<int, 3> a{std::abs(nm.iX), std::abs(nm.iY), std::abs(nm.iZ)};
     std::sort(a.begin(), a.end());
@@ -62,12 +63,13 @@ std::vector<open_class> open_classes(int s, const gs::model_options& o) {
       const std::int64_t over = reach + tt::truncation_units(nm, side, o) - tt::wrap_threshold_units(nm, e, side);
       if (over < 0) continue;
       const std::int64_t th128 = tt::wrap_threshold_units(nm, e, side) - tt::truncation_units(nm, side, o) - (a[0] + a[1] + a[2]);
-      auto& g = open[{a[0], a[1], a[2], th128}];
-      g = std::max(g, over);
+      auto [it, fresh] = open.try_emplace({a[0], a[1], a[2], th128}, std::array<std::int64_t, 4>{over, nm.iX, nm.iY, side});
+      if (!fresh && over > it->second[0]) it->second = {over, nm.iX, nm.iY, side};
     }
   }
   std::vector<open_class> out;
-  for (const auto& [k, gap] : open) out.push_back({gap, {std::get<0>(k), std::get<1>(k), std::get<2>(k)}, std::get<3>(k)});
+  for (const auto& [k, g] : open)
+    out.push_back({g[0], {std::get<0>(k), std::get<1>(k), std::get<2>(k)}, std::get<3>(k), int(g[1]), int(g[2]), int(g[3])});
   std::stable_sort(out.begin(), out.end(), [](const open_class& x, const open_class& y) { return x.gap > y.gap; });
   return out;
 }
@@ -124,8 +126,9 @@ int main(int argc, char** argv) {
     int closed = 0;
     for (int i = first; i < last; ++i) {
       const auto& c = classes[static_cast<std::size_t>(i)];
-      char label[48];
-      std::snprintf(label, sizeof label, "#%d (over by %lld units) ", i, static_cast<long long>(c.gap));
+      char label[96];
+      std::snprintf(label, sizeof label, "#%d (n = pack(%d, %d) %s, over by %lld units) ", i, c.iX, c.iY, c.side > 0 ? "top" : "bottom",
+                    static_cast<long long>(c.gap));
       closed += run({c.w, args.s, c.threshold128}, box, min_cell, max_cells, label);
     }
     std::printf("s = %d (%s): classes %d .. %d: %d closed, %d open\n", args.s, args.option_name(), first, last - 1, closed, last - first - closed);

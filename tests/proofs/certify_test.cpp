@@ -13,6 +13,8 @@
 #include <random>
 
 #include "proofs/paper_code.hpp"
+#include "proofs/two_pass.hpp"
+#include "proofs/two_pass_triangle.hpp"
 #include "proofs/triangle_certify.hpp"
 #include "proofs/triangle_relaxation.hpp"
 
@@ -308,4 +310,24 @@ TEST(TriangleCertify, ACertifiedClassHoldsOnRandomGeneralTriangles) {
   EXPECT_LT(best * 128, static_cast<double>(pr.threshold128));
   // above what equal lights s·w/|w| attain without any lag: the search's lights use the lag
   EXPECT_GT(best, pr.s * std::sqrt(67.0 * 67 + 73 * 73 + 81 * 81));
+}
+
+TEST(TriangleCertify, TheWitnessesClassesDoNotClose) {
+  // Each relaxation witness is a point of the relaxation above its threshold (relaxation_margin, the
+  // ledger's figure): the branch and bound of its class must stop there open, never report it closed.
+  for (const auto& wit : tt::relaxation_witnesses()) {
+    gs::model_options o{};
+    o.gouraud = wit.gouraud;
+    const p::two_pass::table t(o);
+    ASSERT_GT(tt::relaxation_margin(wit, t, o), 0);
+    const auto nm = p::paper::pack_normal_from(wit.iX, wit.iY);
+    const int e = t.alpha_error(nm);
+    const int l1 = std::abs(nm.iX) + std::abs(nm.iY) + std::abs(nm.iZ);
+    const tc::problem pr{{std::abs(nm.iX), std::abs(nm.iY), std::abs(nm.iZ)}, wit.s,
+                         tt::wrap_threshold_units(nm, e, wit.side) - tt::truncation_units(nm, wit.side, o) - l1};
+    const tc::outcome r = tc::certify_class(pr, 2048, std::int64_t{1} << (tc::coord_bits - 2), 200000);
+    EXPECT_GT(r.open_count, 0);
+    EXPECT_TRUE(r.exceeds);
+    EXPECT_GT(r.witness.attained * 128, static_cast<double>(pr.threshold128));
+  }
 }
