@@ -332,7 +332,8 @@ double attained(const problem& pr, const std::array<std::array<double, 2>, 3>& v
   return relaxation_value(x, {double(pr.w[0]), double(pr.w[1]), double(pr.w[2])}, pr.s);
 }
 
-outcome certify_class(const problem& pr, std::int64_t box, std::int64_t min_cell, std::int64_t max_cells, std::size_t max_open) {
+outcome certify_class(const problem& pr, std::int64_t box, std::int64_t min_cell, std::int64_t max_cells, std::size_t max_open,
+                      std::vector<closed_cell>* record) {
   outcome out;
   struct pending {
     std::int64_t u0, u1, v0, v1;
@@ -354,14 +355,19 @@ outcome certify_class(const problem& pr, std::int64_t box, std::int64_t min_cell
           stack.pop_back();
           if (++out.cells > max_cells) return out.open_count += 1, out;
           const corners g = family_cell(f, p, c.u0, c.u1, c.v0, c.v1, box);
-          if (const check k = check_dual(pr, g, pi, trivial); k.below) {  // no search needed
+          auto close = [&](const check& k, const dual_grid& Y) {
             ++out.closed, out.worst_closed = std::max(out.worst_closed, k.levels);
+            if (record) record->push_back({f, p, pi, c.u0, c.u1, c.v0, c.v1, Y});
+          };
+          if (const check k = check_dual(pr, g, pi, trivial); k.below) {  // no search needed
+            close(k, trivial);
             continue;
           }
           const dual_real y = search_dual(pr, g, pi, c.has_warm ? &c.warm : nullptr);
-          const check k = check_dual(pr, g, pi, to_grid(pr, y, p));
+          const dual_grid Y = to_grid(pr, y, p);
+          const check k = check_dual(pr, g, pi, Y);
           if (k.feasible && k.below) {
-            ++out.closed, out.worst_closed = std::max(out.worst_closed, k.levels);
+            close(k, Y);
             continue;
           }
           if (c.u1 - c.u0 <= min_cell && c.v1 - c.v0 <= min_cell) {

@@ -131,6 +131,14 @@ struct outcome {
   bool exceeds = false;                // stopped at an open rectangle whose attained value is above the threshold
   open_cell witness{};                 // that rectangle (the relaxation admits a wrap at its centre)
 };
-outcome certify_class(const problem& pr, std::int64_t box, std::int64_t min_cell, std::int64_t max_cells, std::size_t max_open = 8);
+// One closed rectangle and the grid dual that closed it: what a stored certificate would hold.
+struct closed_cell {
+  int family, p;
+  unsigned pattern;
+  std::int64_t u0, u1, v0, v1;
+  dual_grid y;
+};
+outcome certify_class(const problem& pr, std::int64_t box, std::int64_t min_cell, std::int64_t max_cells, std::size_t max_open = 8,
+                      std::vector<closed_cell>* record = nullptr);
 
 }  // namespace gsdot3::proofs::two_pass::triangle::certify
