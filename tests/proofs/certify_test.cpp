@@ -94,7 +94,7 @@ TEST(TriangleCertify, WeakDualityOnRandomRectanglesAndLights) {
       for (std::size_t k = 0; k < 3; ++k) l[k] = light(rng, yy[k], pr.s);
       unsigned pi = pattern_of(gv, l);
       for (int c = 0; c < 3; ++c)
-        if (pr.w[c] == 0) pi &= ~(3u << (2 * c));  // the duplicate patterns certify_cell skips (y_c = 0)
+        if (pr.w[c] == 0) pi &= ~(3u << (2 * c));  // the duplicates patterns() leaves out (y_c = 0)
       if (!bound[pi].feasible) continue;
       // A primal ascent inside the point's pattern region: moves of the lights kept while the value
       // rises and the pattern stays (the points where a wrong dual would show).

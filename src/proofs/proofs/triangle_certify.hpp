@@ -36,7 +36,7 @@
 // its signs hold on the rectangle iff they hold at the corners. Degenerate triangles (inside a
 // rectangle) need nothing: at every nondegenerate one the bound holds, and there is no 1/det.
 // A channel with w_c = 0 gets y_{·,c} = 0: κ = m = 0, so its per-axis terms vanish for every t, and
-// the patterns that differ only on it are one (certify_cell skips the duplicates).
+// the patterns that differ only on it are one (patterns() lists one of them).
 //
 // Rigour: y is found in doubles (any y gives a bound), then rounded to the grid y·2^dual_bits in
 // integers with y_p = w − Σ_{k≠p} y_k exactly; vertex coordinates are integers in 2^-coord_bits pixel
@@ -110,7 +110,8 @@ std::vector<unsigned> patterns(const problem& pr);
 double attained(const problem& pr, const std::array<std::array<double, 2>, 3>& v, int p, const dual_real& y);
 
 // The branch and bound of one class over every family, p and pattern: a rectangle closes when
-// check_dual of the searched y is feasible and below; otherwise it splits in four, down to
+// check_dual of y_p = w (no search), or else of the searched y (warm-started from the parent's), is
+// feasible and below; otherwise it splits in four, down to
 // min_cell (2^-coord_bits pixel), below which it stays open (with the attained value at its centre).
 // It stops at the first open rectangle whose attained value exceeds the threshold (the relaxation
 // admits a wrap there: no dual can close it) and after max_cells rectangles (counted open).
