@@ -331,3 +331,19 @@ TEST(TriangleCertify, TheWitnessesClassesDoNotClose) {
     EXPECT_GT(r.witness.attained * 128, static_cast<double>(pr.threshold128));
   }
 }
+
+TEST(TriangleCertify, TheRelaxationExceedsAt82UnderTruncate) {
+  // The point `proofs_triangle_certify 82 truncate_to_8 survey 0 100000 -2 2000000 2047` stops at for
+  // class #70 (bottom of pack(60, 67)), box 2047, lights as printed (9 decimals): relaxation_margin,
+  // the ledger's figure, is positive, so s = 82 under truncate_to_8 is beyond the relaxation.
+  const tt::relaxation_witness w{82, 60, 67, -1, gs::gouraud_fraction::truncate_to_8,
+                                 {{{{0, 908.930969238}, {2046.875061035, 0}, {2047, 2047}}}, {{2047, 2047}},
+                                  {{{54.099679694, 58.197268064, 20.255928686}, {45.209490612, 49.307079039, -47.422715183},
+                                    {29.217300325, 33.314888958, 68.996141453}}}}};
+  gs::model_options o{};
+  o.gouraud = w.gouraud;
+  const p::two_pass::table t(o);
+  const double margin = tt::relaxation_margin(w, t, o);
+  EXPECT_GT(margin, 0.015);
+  EXPECT_LT(margin, 0.02);
+}
