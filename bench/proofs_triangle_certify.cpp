@@ -1,0 +1,170 @@
+// proofs_triangle_certify — a certified upper bound on the continuous relaxation of
+// two-pass.max-s.interpolated's error bound, class by class: the branch and bound of
+// proofs/triangle_certify.hpp (its header: the sign-constrained dual, why a fixed dual point certifies a
+// whole rectangle of geometries from its four corners, and the exact integer check). Not a benchmark
+// and not a test; reproducible (no randomness). A class that closes is proven safe at S and every
+// s <= S by the bound's statements (the ball of radius s lies in that of S, the threshold does not
+// depend on s).
+//
+//   proofs_triangle_certify S [truncate_to_8] survey [FIRST [COUNT]] [MIN_CELL_LOG2 [MAX_CELLS [BOX]]]
+//       the classes (|n| sorted, side threshold) bound_safe_s's reach leaves open at S, most open
+//       first (the order of proofs_triangle_dual's survey before its screen), classes FIRST ..
+//       FIRST + COUNT − 1: one line each (closed or open, rectangles, seconds, the largest certified
+//       bound among the closed rectangles, the best attained value in an open one)
+//   proofs_triangle_certify S [truncate_to_8] class W0 W1 W2 THRESHOLD128 [MIN_CELL_LOG2 [MAX_CELLS [BOX]]]
+//       one class given directly (THRESHOLD128 = 128·relaxation_threshold)
+// MIN_CELL_LOG2 (default −4): rectangles narrower than 2^MIN_CELL_LOG2 pixels stay open; MAX_CELLS
+// (default 2 000 000) per class. Shard the survey by FIRST/COUNT; run it under `nice` on one core.
+// BOX (default 2048, bench/proofs_triangle_dual's families): the families' box side A in pixels.
+// 2047 is enough: the claim's vertices lie in 0 .. 2047 (12.4 window coordinates 0 .. 2047·16), so
+// after the reduction's translation (least vertex coordinate = r, moved by less than a pixel) every
+// vertex coordinate lies in [0, max − min] ⊂ [0, 2047], and its scaling (λ, μ >= 1) reaches A = 2047;
+// the bound's own statements use a, b <= W − 1 = 2047 likewise. A smaller box lowers the relaxation.
+//
+// Measured (one core, nice, this machine shared; default MIN_CELL_LOG2 −4 unless given):
+//   `83 survey`: all 1 218 classes closed, 22.8 s: s_max >= 83 under keep_fraction.
+//   `84 survey`: 1 939 of 2 071 closed, 132 stop where the relaxation exceeds (e.g. pack(−73, −67) top).
+//   `80 truncate_to_8 survey`: 446 of 446 closed, 9.8 s; `81 truncate_to_8 survey`: 1 358 of 1 358
+//   closed, 24.2 s: s_max >= 81 under truncate_to_8.
+//   `82 truncate_to_8 survey 0 100000 -2 2000000 2047`: 3 008 of 3 010 closed, 58.6 s; the relaxation
+//   exceeds for pack(60, 67) bottom (+0.0174 levels·|n|) and pack(61, 66) bottom (+0.0041), so no
+//   argument from the bound's statements alone proves s = 82 there (box 2048: also pack(62, 65), +0.0021).
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <map>
+#include <tuple>
+#include <vector>
+
+#include "proofs_search_args.hpp"
+#include "proofs/domains.hpp"
+#include "proofs/two_pass.hpp"
+#include "proofs/two_pass_triangle.hpp"
+#include "proofs/triangle_certify.hpp"
+
+namespace p = gsdot3::proofs;
+namespace tt = gsdot3::proofs::two_pass::triangle;
+namespace tc = gsdot3::proofs::two_pass::triangle::certify;
+
+namespace {
+
+struct open_class {
+  std::int64_t gap;  // reach + truncation − wrap threshold, units (the bound's shortfall)
+  std::array<int, 3> w;
+  std::int64_t threshold128;
+  int iX, iY, side;  // one normal and side of the class
+};
+
+// Every (|n| sorted, side threshold) whose reach_units leaves a side open at s, most open first.
+std::vector<open_class> open_classes(int s, const gs::model_options& o) {
+  const p::two_pass::table t(o);
+  std::map<std::tuple<int, int, int, std::int64_t>, std::array<std::int64_t, 4>> open;  // gap, iX, iY, side
+  for (const auto& nm : p::appendix2_normals()) {
+    std::array<int, 3> a{std::abs(nm.iX), std::abs(nm.iY), std::abs(nm.iZ)};
+    std::sort(a.begin(), a.end());
+    const std::int64_t reach = tt::reach_units({a[0], a[1], a[2]}, s, tt::window_pixels);
+    const int e = t.alpha_error(nm);
+    for (int side : {1, -1}) {
+      const std::int64_t over = reach + tt::truncation_units(nm, side, o) - tt::wrap_threshold_units(nm, e, side);
+      if (over < 0) continue;
+      const std::int64_t th128 = tt::wrap_threshold_units(nm, e, side) - tt::truncation_units(nm, side, o) - (a[0] + a[1] + a[2]);
+      auto [it, fresh] = open.try_emplace({a[0], a[1], a[2], th128}, std::array<std::int64_t, 4>{over, nm.iX, nm.iY, side});
+      if (!fresh && over > it->second[0]) it->second = {over, nm.iX, nm.iY, side};
+    }
+  }
+  std::vector<open_class> out;
+  for (const auto& [k, g] : open)
+    out.push_back({g[0], {std::get<0>(k), std::get<1>(k), std::get<2>(k)}, std::get<3>(k), int(g[1]), int(g[2]), int(g[3])});
+  std::stable_sort(out.begin(), out.end(), [](const open_class& x, const open_class& y) { return x.gap > y.gap; });
+  return out;
+}
+
+double recheck_seconds = 0;  // the stored-certificate cost, summed over the classes run
+std::int64_t recheck_cells = 0, searched_cells = 0;
+
+// Runs one class and prints its line; true if every rectangle closed.
+bool run(const tc::problem& pr, std::int64_t box, std::int64_t min_cell, std::int64_t max_cells, const char* label) {
+  const auto t0 = std::chrono::steady_clock::now();
+  std::vector<tc::closed_cell> cert;
+  const tc::outcome r = tc::certify_class(pr, box, min_cell, max_cells, 8, &cert);
+  const double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  // What re-checking a stored certificate would cost: check_dual over the closing (rectangle, y).
+  const auto t1 = std::chrono::steady_clock::now();
+  std::size_t rechecked = 0;
+  for (const auto& c : cert) rechecked += tc::check_dual(pr, tc::family_cell(c.family, c.p, c.u0, c.u1, c.v0, c.v1, box), c.pattern, c.y).below;
+  recheck_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
+  recheck_cells += static_cast<std::int64_t>(cert.size());
+  for (const auto& c : cert)  // the y_p = w closings need no stored y
+    searched_cells += c.y[static_cast<std::size_t>((c.p + 1) % 3)] != tc::dual_grid::value_type{} ||
+                      c.y[static_cast<std::size_t>((c.p + 2) % 3)] != tc::dual_grid::value_type{};
+  if (rechecked != cert.size()) std::printf("RECHECK FAILED: %zu of %zu\n", cert.size() - rechecked, cert.size());
+  const double th = static_cast<double>(pr.threshold128) / 128;
+  std::printf("%s|n| = (%d, %d, %d) threshold %.4f: %s, %lld rectangles (%lld closed), %.2f s, largest certified bound %.4f (margin %+.4f)",
+              label, pr.w[0], pr.w[1], pr.w[2], th, r.open_count == 0 ? "CLOSED" : "OPEN", static_cast<long long>(r.cells),
+              static_cast<long long>(r.closed), sec, static_cast<double>(r.worst_closed), static_cast<double>(r.worst_closed) - th);
+  if (r.open_count) std::printf(", %lld open, best attained there %.4f (margin %+.4f)", static_cast<long long>(r.open_count), r.best_attained, r.best_attained - th);
+  std::printf("\n");
+  auto print = [](const char* what, const tc::open_cell& c) {
+    std::printf("  %s: %s p = %d pattern %02o u [%.6f, %.6f] v [%.6f, %.6f] bound %.4f attained %.4f\n", what, tc::family_names[c.family], c.p,
+                c.pattern, double(c.u0) / tc::coord_one, double(c.u1) / tc::coord_one, double(c.v0) / tc::coord_one,
+                double(c.v1) / tc::coord_one, static_cast<double>(c.bound), c.attained);
+  };
+  if (r.exceeds) {
+    const auto& c = r.witness;
+    print("the relaxation exceeds the threshold at the centre of", c);
+    const auto V = tc::family_member(c.family, (c.u0 + c.u1) / 2, (c.v0 + c.v1) / 2, box);
+    std::printf("    vertices (%.9f, %.9f), (%.9f, %.9f), (%.9f, %.9f), p = vertex %d; lights (levels, folded):\n", double(V[0][0]) / tc::coord_one,
+                double(V[0][1]) / tc::coord_one, double(V[1][0]) / tc::coord_one, double(V[1][1]) / tc::coord_one, double(V[2][0]) / tc::coord_one,
+                double(V[2][1]) / tc::coord_one, c.p);
+    for (const auto& yk : c.y) {
+      const double nk = std::sqrt(yk[0] * yk[0] + yk[1] * yk[1] + yk[2] * yk[2]);
+      std::printf("      (%.9f, %.9f, %.9f)\n", nk > 0 ? pr.s * yk[0] / nk : 0, nk > 0 ? pr.s * yk[1] / nk : 0, nk > 0 ? pr.s * yk[2] / nk : 0);
+    }
+  }
+  for (const auto& c : r.open) print("open", c);
+  std::fflush(stdout);
+  return r.open_count == 0;
+}
+
+std::int64_t min_cell_of(int log2) { return log2 >= -tc::coord_bits ? std::max<std::int64_t>(1, std::int64_t{1} << (tc::coord_bits + log2)) : 1; }
+}  // namespace
+
+int main(int argc, char** argv) {
+  const char* usage = " (survey [FIRST [COUNT]] | class W0 W1 W2 THRESHOLD128) [MIN_CELL_LOG2 [MAX_CELLS [BOX]]]";
+  const auto args = gsdot3::bench::parse_search_args(argc, argv, "proofs_triangle_certify", usage);
+  const int n = argc - args.next;
+  char** a = argv + args.next;
+  if (n >= 1 && std::strcmp(a[0], "survey") == 0) {
+    const int first = n > 1 ? std::atoi(a[1]) : 0, count = n > 2 ? std::atoi(a[2]) : 1 << 30;
+    const std::int64_t min_cell = min_cell_of(n > 3 ? std::atoi(a[3]) : -4), max_cells = n > 4 ? std::atoll(a[4]) : 2000000;
+    const std::int64_t box = n > 5 ? std::atoll(a[5]) : 2048;
+    const auto classes = open_classes(args.s, args.o);
+    const int last = std::min<int>(static_cast<int>(classes.size()), first + count);
+    std::printf("s = %d (%s), box %lld: %zu open classes; certifying %d .. %d\n", args.s, args.option_name(), static_cast<long long>(box),
+                classes.size(), first, last - 1);
+    int closed = 0;
+    for (int i = first; i < last; ++i) {
+      const auto& c = classes[static_cast<std::size_t>(i)];
+      char label[96];
+      std::snprintf(label, sizeof label, "#%d (n = pack(%d, %d) %s, over by %lld units) ", i, c.iX, c.iY, c.side > 0 ? "top" : "bottom",
+                    static_cast<long long>(c.gap));
+      closed += run({c.w, args.s, c.threshold128}, box, min_cell, max_cells, label);
+    }
+    std::printf("s = %d (%s): classes %d .. %d: %d closed, %d open; re-checking the %lld closing (rectangle, y) pairs alone takes %.3f s "
+                "(%lld of them with a searched y, the others y_p = w)\n",
+                args.s, args.option_name(), first, last - 1, closed, last - first - closed, static_cast<long long>(recheck_cells), recheck_seconds,
+                static_cast<long long>(searched_cells));
+    return 0;
+  }
+  if (n >= 5 && std::strcmp(a[0], "class") == 0) {
+    const tc::problem pr{{std::atoi(a[1]), std::atoi(a[2]), std::atoi(a[3])}, args.s, std::atoll(a[4])};
+    const std::int64_t min_cell = min_cell_of(n > 5 ? std::atoi(a[5]) : -4), max_cells = n > 6 ? std::atoll(a[6]) : 2000000;
+    return run(pr, n > 7 ? std::atoll(a[7]) : 2048, min_cell, max_cells, "") ? 0 : 1;
+  }
+  std::fprintf(stderr, "usage: proofs_triangle_certify S [truncate_to_8]%s\n", usage);
+  return 2;
+}
