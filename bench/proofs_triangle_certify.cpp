@@ -36,52 +36,15 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <map>
-#include <tuple>
 #include <vector>
 
 #include "proofs_search_args.hpp"
-#include "proofs/domains.hpp"
-#include "proofs/two_pass.hpp"
-#include "proofs/two_pass_triangle.hpp"
+#include "proofs/relaxation_classes.hpp"
 #include "proofs/triangle_certify.hpp"
 
-namespace p = gsdot3::proofs;
-namespace tt = gsdot3::proofs::two_pass::triangle;
 namespace tc = gsdot3::proofs::two_pass::triangle::certify;
 
 namespace {
-
-struct open_class {
-  std::int64_t gap;  // reach + truncation − wrap threshold, units (the bound's shortfall)
-  std::array<int, 3> w;
-  std::int64_t threshold128;
-  int iX, iY, side;  // one normal and side of the class
-};
-
-// Every (|n| sorted, side threshold) whose reach_units leaves a side open at s, most open first.
-std::vector<open_class> open_classes(int s, const gs::model_options& o) {
-  const p::two_pass::table t(o);
-  std::map<std::tuple<int, int, int, std::int64_t>, std::array<std::int64_t, 4>> open;  // gap, iX, iY, side
-  for (const auto& nm : p::appendix2_normals()) {
-    std::array<int, 3> a{std::abs(nm.iX), std::abs(nm.iY), std::abs(nm.iZ)};
-    std::sort(a.begin(), a.end());
-    const std::int64_t reach = tt::reach_units({a[0], a[1], a[2]}, s, tt::window_pixels);
-    const int e = t.alpha_error(nm);
-    for (int side : {1, -1}) {
-      const std::int64_t over = reach + tt::truncation_units(nm, side, o) - tt::wrap_threshold_units(nm, e, side);
-      if (over < 0) continue;
-      const std::int64_t th128 = tt::wrap_threshold_units(nm, e, side) - tt::truncation_units(nm, side, o) - (a[0] + a[1] + a[2]);
-      auto [it, fresh] = open.try_emplace({a[0], a[1], a[2], th128}, std::array<std::int64_t, 4>{over, nm.iX, nm.iY, side});
-      if (!fresh && over > it->second[0]) it->second = {over, nm.iX, nm.iY, side};
-    }
-  }
-  std::vector<open_class> out;
-  for (const auto& [k, g] : open)
-    out.push_back({g[0], {std::get<0>(k), std::get<1>(k), std::get<2>(k)}, std::get<3>(k), int(g[1]), int(g[2]), int(g[3])});
-  std::stable_sort(out.begin(), out.end(), [](const open_class& x, const open_class& y) { return x.gap > y.gap; });
-  return out;
-}
 
 double recheck_seconds = 0;  // the stored-certificate cost, summed over the classes run
 std::int64_t recheck_cells = 0, searched_cells = 0;
@@ -142,7 +105,7 @@ int main(int argc, char** argv) {
     const int first = n > 1 ? std::atoi(a[1]) : 0, count = n > 2 ? std::atoi(a[2]) : 1 << 30;
     const std::int64_t min_cell = min_cell_of(n > 3 ? std::atoi(a[3]) : -4), max_cells = n > 4 ? std::atoll(a[4]) : 2000000;
     const std::int64_t box = n > 5 ? std::atoll(a[5]) : 2048;
-    const auto classes = open_classes(args.s, args.o);
+    const auto classes = tc::open_classes(args.s, args.o);
     const int last = std::min<int>(static_cast<int>(classes.size()), first + count);
     std::printf("s = %d (%s), box %lld: %zu open classes; certifying %d .. %d\n", args.s, args.option_name(), static_cast<long long>(box),
                 classes.size(), first, last - 1);

@@ -125,7 +125,7 @@ TEST(TriangleCertify, WeakDualityOnRandomRectanglesAndLights) {
 
 // Weak duality where it is tight: the relaxation witnesses' lights (attained values above the wrap
 // threshold) at geometries of small rectangles around theirs, which are members of F1 with box 2047
-// ((0, u), (v, 0), (A, A), p = (A, A), u = 2047).
+// ((0, u), (v, 0), (A, A), p = (A, A)); a rectangle reaching past the box is moved inside it.
 TEST(TriangleCertify, WeakDualityAroundTheWitnesses) {
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> unit(0, 1);
@@ -134,16 +134,21 @@ TEST(TriangleCertify, WeakDualityAroundTheWitnesses) {
   for (const auto& wit : tt::relaxation_witnesses()) {
     const auto nm = p::paper::pack_normal_from(wit.iX, wit.iY);
     const tc::problem pr{{std::abs(nm.iX), std::abs(nm.iY), std::abs(nm.iZ)}, wit.s, 0};
-    ASSERT_EQ(wit.at.vertex[0][1], 2047);
-    const std::int64_t u = 2047 * tc::coord_one, v = std::llround(wit.at.vertex[1][0] * tc::coord_one);
+    ASSERT_EQ(wit.at.vertex[0][0], 0);
+    ASSERT_EQ(wit.at.vertex[1][1], 0);
+    ASSERT_EQ(wit.at.vertex[2][0], 2047);
+    ASSERT_EQ(wit.at.vertex[2][1], 2047);
+    const std::int64_t box = 2047 * tc::coord_one;
+    const std::int64_t u_at = std::llround(wit.at.vertex[0][1] * tc::coord_one), v_at = std::llround(wit.at.vertex[1][0] * tc::coord_one);
     double closest = -1e30;
     for (int e = -4; e <= 4; ++e) {
       const std::int64_t h = std::int64_t{1} << (tc::coord_bits + e);
-      const tc::corners g = tc::family_cell(0, 2, u - h, u, v - h / 2, v + h / 2, 2047);
+      const std::int64_t u = std::min(u_at + h / 2, box), v = std::min(v_at + h / 2, box);  // the rectangles' top corners
+      const tc::corners g = tc::family_cell(0, 2, u - h, u, v - h, v, 2047);
       std::array<tc::check, 64> bound{};
       for (unsigned pi : tc::patterns(pr)) bound[pi] = tc::check_dual(pr, g, pi, tc::to_grid(pr, tc::search_dual(pr, g, pi, nullptr), 2));
       for (int q = 0; q < 100; ++q) {
-        const std::int64_t gu = u - static_cast<std::int64_t>(unit(rng) * double(h)), gv = v - h / 2 + static_cast<std::int64_t>(unit(rng) * double(h));
+        const std::int64_t gu = u - static_cast<std::int64_t>(unit(rng) * double(h)), gv = v - static_cast<std::int64_t>(unit(rng) * double(h));
         const geometry x = to_pixels(tc::family_member(0, gu, gv, 2047));
         lights l = wit.at.light;
         for (auto& lk : l)
@@ -336,10 +341,12 @@ TEST(TriangleCertify, TheRelaxationExceedsAt82UnderTruncate) {
   // The point `proofs_triangle_certify 82 truncate_to_8 survey 0 100000 -2 2000000 2047` stops at for
   // class #70 (bottom of pack(60, 67)), box 2047, lights as printed (9 decimals): relaxation_margin,
   // the ledger's figure, is positive, so s = 82 under truncate_to_8 is beyond the relaxation.
-  const tt::relaxation_witness w{82, 60, 67, -1, gs::gouraud_fraction::truncate_to_8,
-                                 {{{{0, 908.930969238}, {2046.875061035, 0}, {2047, 2047}}}, {{2047, 2047}},
-                                  {{{54.099679694, 58.197268064, 20.255928686}, {45.209490612, 49.307079039, -47.422715183},
-                                    {29.217300325, 33.314888958, 68.996141453}}}}};
+  // It is the truncate_to_8 row of relaxation_witnesses().
+  const auto rows = tt::relaxation_witnesses();
+  const auto it = std::find_if(rows.begin(), rows.end(), [](const tt::relaxation_witness& r) { return r.s == 82; });
+  ASSERT_NE(it, rows.end());
+  const tt::relaxation_witness& w = *it;
+  EXPECT_EQ(w.gouraud, gs::gouraud_fraction::truncate_to_8);
   gs::model_options o{};
   o.gouraud = w.gouraud;
   const p::two_pass::table t(o);

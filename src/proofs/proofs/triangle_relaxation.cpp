@@ -12,16 +12,18 @@ namespace gsdot3::proofs::two_pass::triangle {
 namespace {
 // One witness per gouraud_fraction value, at the lowest s found: keep_fraction, the top side of
 // n = (−89, −65, 65) (the normal of the s = 85 certificates), printed by `proofs_triangle_dual 84 -89 -65 4 150`
-// (its `survey 83` finds no class above its threshold on the corner family at s = 83);
-// truncate_to_8, the bottom side of n = (61, 66, 91) (the normal of the s = 84 certificate), by
-// `proofs_triangle_dual 83 truncate_to_8 61 66 4 150` (−6.2 at s = 82). Lights to three decimals, as printed.
+// (lights to three decimals, as printed; proofs/relaxation_classes.hpp certifies s = 83);
+// truncate_to_8, the bottom side of n = pack(60, 67), where `proofs_triangle_certify 82 truncate_to_8
+// survey 0 100000 -2 2000000 2047` stops (class #70; lights to nine decimals, as printed; 0.017 levels·|n|
+// over; s = 81 is certified).
 constexpr relaxation_witness witness_table[] = {
     {84, -89, -65, 1, gs::gouraud_fraction::keep_fraction,
      {{{{0, 2047}, {848.51, 0}, {2047, 2047}}}, {{2047, 2047}},
       {{{-47.824, 48.849, 48.812}, {17.108, 58.162, 58.142}, {70.091, 32.732, 32.740}}}}},
-    {83, 61, 66, -1, gs::gouraud_fraction::truncate_to_8,
-     {{{{0, 2047}, {885.05, 0}, {2047, 2047}}}, {{2047, 2047}},
-      {{{46.640, 49.562, -47.512}, {55.623, 58.562, 19.119}, {30.440, 33.423, 69.608}}}}},
+    {82, 60, 67, -1, gs::gouraud_fraction::truncate_to_8,
+     {{{{0, 908.930969238}, {2046.875061035, 0}, {2047, 2047}}}, {{2047, 2047}},
+      {{{54.099679694, 58.197268064, 20.255928686}, {45.209490612, 49.307079039, -47.422715183},
+        {29.217300325, 33.314888958, 68.996141453}}}}},
 };
 
 double cross(double ax, double ay, double bx, double by) { return ax * by - ay * bx; }

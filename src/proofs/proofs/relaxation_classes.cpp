@@ -1,0 +1,50 @@
+#include "proofs/relaxation_classes.hpp"
+
+#include <algorithm>
+#include <cstdlib>
+#include <map>
+#include <tuple>
+
+#include "proofs/domains.hpp"
+#include "proofs/triangle_certify.hpp"
+#include "proofs/two_pass.hpp"
+#include "proofs/two_pass_triangle.hpp"
+
+namespace gsdot3::proofs::two_pass::triangle::certify {
+
+std::vector<open_class> open_classes(int s, const gs::model_options& o) {
+  const two_pass::table t(o);
+  std::map<std::tuple<int, int, int, std::int64_t>, std::array<std::int64_t, 4>> open;  // gap, iX, iY, side
+  for (const auto& nm : appendix2_normals()) {
+    std::array<int, 3> a{std::abs(nm.iX), std::abs(nm.iY), std::abs(nm.iZ)};
+    std::sort(a.begin(), a.end());
+    const std::int64_t reach = reach_units({a[0], a[1], a[2]}, s, window_pixels);
+    const int e = t.alpha_error(nm);
+    for (int side : {1, -1}) {
+      const std::int64_t over = reach + truncation_units(nm, side, o) - wrap_threshold_units(nm, e, side);
+      if (over < 0) continue;
+      const std::int64_t th128 = wrap_threshold_units(nm, e, side) - truncation_units(nm, side, o) - (a[0] + a[1] + a[2]);
+      auto [it, fresh] = open.try_emplace({a[0], a[1], a[2], th128}, std::array<std::int64_t, 4>{over, nm.iX, nm.iY, side});
+      if (!fresh && over > it->second[0]) it->second = {over, nm.iX, nm.iY, side};
+    }
+  }
+  std::vector<open_class> out;
+  for (const auto& [k, g] : open)
+    out.push_back({g[0], {std::get<0>(k), std::get<1>(k), std::get<2>(k)}, std::get<3>(k), int(g[1]), int(g[2]), int(g[3])});
+  std::stable_sort(out.begin(), out.end(), [](const open_class& x, const open_class& y) { return x.gap > y.gap; });
+  return out;
+}
+
+bool relaxation_certified(int s, const gs::model_options& o) {
+  constexpr std::int64_t box = 2048, min_cell = coord_one / 16, max_cells = 2000000;
+  for (const auto& c : open_classes(s, o))
+    if (certify_class({c.w, s, c.threshold128}, box, min_cell, max_cells, 1).open_count != 0) return false;
+  return true;
+}
+
+int certified_relaxation_s(const gs::model_options& o) noexcept {
+  if (o.setup != gs::gouraud_setup::plane_steps) return 0;
+  return o.gouraud == gs::gouraud_fraction::keep_fraction ? 83 : 81;
+}
+
+}  // namespace gsdot3::proofs::two_pass::triangle::certify

@@ -1,0 +1,38 @@
+// proofs/relaxation_classes.hpp — the step from the error bound (i)–(iii) of two_pass_triangle.hpp to
+// the s two-pass.max-s.interpolated proves under gouraud_setup = plane_steps: the classes (|n| sorted,
+// wrap-side threshold) the bound's reach_units leaves open at s, each certified by triangle_certify's
+// branch and bound on the continuous relaxation of the bound's own statements. A class that closes is
+// safe at s and at every s' <= s (the ball of radius s' lies in that of s; the threshold does not
+// depend on s), so every normal of every class is, and the normals the bound settles were safe anyway.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "gs_arith/options.hpp"
+
+namespace gsdot3::proofs::two_pass::triangle::certify {
+
+struct open_class {
+  std::int64_t gap;            // reach + truncation − wrap threshold, 8.7·n units (the bound's shortfall)
+  std::array<int, 3> w;        // |n| sorted
+  std::int64_t threshold128;   // 128·relaxation_threshold
+  int iX, iY, side;            // one normal and side of the class (the one the bound misses by most)
+};
+// Every class whose reach_units leaves a side open at s, most open first.
+std::vector<open_class> open_classes(int s, const gs::model_options& o);
+
+// Whether certify_class closes every open class at s (box 2048, rectangles down to 1/16 pixel, at most
+// 2 000 000 per class); stops at the first class that does not close.
+bool relaxation_certified(int s, const gs::model_options& o);
+
+// The s the claim takes as certified, per gouraud_fraction (plane_steps; 0 under per_pixel, whose bound
+// needs no relaxation): 83 under keep_fraction, 81 under truncate_to_8 (bench/proofs_triangle_certify
+// `83 survey`: 1 218 classes, 22.8 s; `81 truncate_to_8 survey`: 1 358 classes, 24.2 s, one core).
+// Too slow for prove's budget, so prove takes these values and ctest proofs_certify_survey (label
+// exhaustive) re-runs relaxation_certified at them under every option variant of the claim, and checks
+// that s + 1 does not certify (the relaxation exceeds there: 84, and 82 under truncate_to_8).
+int certified_relaxation_s(const gs::model_options& o) noexcept;
+
+}  // namespace gsdot3::proofs::two_pass::triangle::certify
