@@ -4,6 +4,7 @@
 // branch and bound on the continuous relaxation of the bound's own statements. A class that closes is
 // safe at s and at every s' <= s (the ball of radius s' lies in that of s; the threshold does not
 // depend on s), so every normal of every class is, and the normals the bound settles were safe anyway.
+// The relaxation's lights are the whole ball |l| <= s, so it covers tolight = attenuated_T too.
 #pragma once
 
 #include <array>
@@ -31,7 +32,8 @@ bool relaxation_certified(int s, const gs::model_options& o);
 // needs no relaxation): 83 under keep_fraction, 81 under truncate_to_8 (bench/proofs_triangle_certify
 // `83 survey`: 1 218 classes, 22.8 s; `81 truncate_to_8 survey`: 1 358 classes, 24.2 s, one core).
 // Too slow for prove's budget, so prove takes these values and ctest proofs_certify_survey (label
-// exhaustive) re-runs relaxation_certified at them under every option variant of the claim, and checks
+// exhaustive) re-runs relaxation_certified at them (the open classes are the same under every value of
+// tfx_rounding and blend_shift, which it checks too), and checks
 // that s + 1 does not certify (the relaxation exceeds there: 84, and 82 under truncate_to_8).
 int certified_relaxation_s(const gs::model_options& o) noexcept;
 
