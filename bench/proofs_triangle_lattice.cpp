@@ -13,7 +13,9 @@
 // so yX = −128·(e1 + D1)/(K + 1), yZ − yX = 128·(e2 + D2)/(K + 1), xZ = 128·D2 − (yZ − yX),
 // xY = yX + 128·D1: yX and yZ − yX are multiples of 128/(K + 1) pixels, which is where a plan's real
 // optimum (proofs_triangle_plan) can miss the lattice by most of a level. The pixel is the bottom row
-// y_p = floor(yZ), where the lag channels keep X_c + yX/128 and the third X_3 + K·(y_p − yX)/128, so
+// y_p = floor(yZ) (no triangle of the window covers row 2047, tests/proofs/triangle_test.cpp, so
+// where yZ = 2047 a covered pixel gets K·|n_3|/128 less; proofs_triangle_free_x counts row 2046),
+// where the lag channels keep X_c + yX/128 and the third X_3 + K·(y_p − yX)/128, so
 //   F = |n_A|·(X_A + yX/128) + |n_B|·(X_B + yX/128) + |n_3|·(X_3 + K·(y_p − yX)/128).
 // Under truncate_to_8 the multiply sees the light's integer level, floor(L_c/128): folded, that is
 // ceil of the folded level where σ_c = −1 (a gain of up to one level) and floor where σ_c = +1, so
