@@ -47,6 +47,7 @@
 #include <vector>
 
 #include "proofs_search_args.hpp"
+#include "proofs_triangle_thirds.hpp"
 #include "proofs_triangle_score.hpp"
 #include "proofs/domains.hpp"
 
@@ -101,30 +102,13 @@ int main(int argc, char** argv) {
   const double wa = std::abs(n[ca]), wb = std::abs(n[cb]), w3 = std::abs(n[c]);
   int sg[3];
   for (int ch = 0; ch < 3; ++ch) sg[ch] = (n[ch] >= 0 ? 1 : -1) * side;
-  auto seen = [&](std::size_t ch, double level) {  // as proofs_triangle_lattice
-    if (!truncate) return level;
-    const double r = std::round(level);
-    if (std::fabs(level - r) < 1e-6) return r;
-    return sg[ch] < 0 ? std::ceil(level) : std::floor(level);
-  };
+  auto seen = [&](std::size_t ch, double level) { return gsdot3::bench::seen_level(level, truncate, sg[ch]); };
+
   const p::two_pass::table t(args.o);
   const double threshold = static_cast<double>(tt::wrap_threshold_units(nm, t.alpha_error(nm), side)) / 128;  // F must pass it
 
-  // the packed values of the third channel for given A, B values (folded: any sign), tabulated
-  const int side_len = 2 * s + 1;
-  std::vector<std::vector<int>> thirds(static_cast<std::size_t>(side_len * side_len));
-  for (int a = -s; a <= s; ++a)
-    for (int b = -s; b <= s; ++b)
-      for (int v = -s; v <= s; ++v) {
-        p::ivec3 l{};
-        l[ca] = a, l[cb] = b, l[c] = v;
-        if (p::is_packed_light(s, l)) thirds[static_cast<std::size_t>((a + s) * side_len + (b + s))].push_back(v);
-      }
-  auto third_values = [&](int a, int b) -> const std::vector<int>& {
-    static const std::vector<int> none;
-    if (a < -s || b < -s || a > s || b > s) return none;
-    return thirds[static_cast<std::size_t>((a + s) * side_len + (b + s))];
-  };
+  const gsdot3::bench::packed_thirds third_values(s, c);  // the third channel's packed values for A, B
+
   constexpr double W = 2047, row = pixel_row;
   // Stage 1: (X, Z, K) by F_β (see the header).
   struct xzk {
