@@ -91,8 +91,10 @@ struct triangle_case {
 // sign pattern whose threshold is 16000) reaches F 15996.31 at best (n = (−63, −67, 89), third
 // channel 2; 15996.51 with Z at each of the 256 positions of (2046, 2047]², `84 -67 -63 1 2 15996
 // 40 1 1 10 1`), and the exact scorer 127 (n = (−73, −87, 59), with its neighbours and sign
-// patterns). A wrap needs F > 16000: the floors give back less than the 2 (top) or 3 (bottom) that
-// the threshold counts. Under truncate_to_8 at s = 83 the same runs (`83 truncate_to_8 IX IY SIDE
+// patterns); so do the same runs for one normal of each of the 55 (|n| class, third channel) pairs of
+// the 249 rows of `proofs_triangle_plan survey 84 400` with a positive margin (F_β >= 15990 for 16
+// of them, a stage-2 F >= 15990 for 3). A wrap needs F > 16000: the floors give back less than the
+// 2 (top) or 3 (bottom) that the threshold counts. Under truncate_to_8 at s = 83 the same runs (`83 truncate_to_8 IX IY SIDE
 // THIRD 15900 40 1 1 2000` for (61, 66, −1), (60, 67, −1), (−67, −63, 1), (−63, −67, 1), (−89, −65,
 // 1)) reach F 15944 at best (n = (60, 67, 91), bottom; exact value 127).
 // tests/proofs replays each through the pipeline's rasteriser (the pixel is covered) and
