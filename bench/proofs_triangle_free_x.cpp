@@ -222,8 +222,12 @@ int main(int argc, char** argv) {
       }
     }
   }
+  if (overall.sc.px < 0) {
+    std::printf("s = %d (%s): no wrap, no case scored\n", s, args.option_name());
+    return 1;
+  }
   std::printf("s = %d (%s): no wrap, best wrap-side value %d (smooth %.3f) at (%d, %d), side %+d; its case:\n", s, args.option_name(),
               overall.sc.value, overall.sc.smooth, overall.sc.px, overall.sc.py, overall.side);
-  if (overall.sc.px >= 0) bench::print_certificate_row(overall.c, overall.sc, args.option_name(), "best");
+  bench::print_certificate_row(overall.c, overall.sc, args.option_name(), "best");
   return 1;
 }
