@@ -13,7 +13,9 @@
 // so yX = −128·(e1 + D1)/(K + 1), yZ − yX = 128·(e2 + D2)/(K + 1), xZ = 128·D2 − (yZ − yX),
 // xY = yX + 128·D1: yX and yZ − yX are multiples of 128/(K + 1) pixels, which is where a plan's real
 // optimum (proofs_triangle_plan) can miss the lattice by most of a level. The pixel is the bottom row
-// y_p = floor(yZ), where the lag channels keep X_c + yX/128 and the third X_3 + K·(y_p − yX)/128, so
+// y_p = floor(yZ) (no triangle of the window covers row 2047, tests/proofs/triangle_test.cpp, so
+// where yZ = 2047 a covered pixel gets K·|n_3|/128 less; proofs_triangle_free_x counts row 2046),
+// where the lag channels keep X_c + yX/128 and the third X_3 + K·(y_p − yX)/128, so
 //   F = |n_A|·(X_A + yX/128) + |n_B|·(X_B + yX/128) + |n_3|·(X_3 + K·(y_p − yX)/128).
 // Under truncate_to_8 the multiply sees the light's integer level, floor(L_c/128): folded, that is
 // ceil of the folded level where σ_c = −1 (a gain of up to one level) and floor where σ_c = +1, so
@@ -30,6 +32,7 @@
 #include <vector>
 
 #include "proofs_search_args.hpp"
+#include "proofs_triangle_thirds.hpp"
 #include "proofs/domains.hpp"
 #include "proofs/paper_code.hpp"
 
@@ -64,28 +67,11 @@ int main(int argc, char** argv) {
   const std::size_t c = static_cast<std::size_t>(c3), ca = (c + 1) % 3, cb = (c + 2) % 3;
   const double wa = std::abs(n[ca]), wb = std::abs(n[cb]), w3 = std::abs(n[c]);
   // a channel's folded level at the pixel as the multiply sees it
-  auto seen = [&](std::size_t ch, double level) {
-    if (!truncate) return level;
-    const double r = std::round(level);
-    if (std::fabs(level - r) < 1e-6) return r;
-    return (n[ch] >= 0 ? side : -side) < 0 ? std::ceil(level) : std::floor(level);
-  };
+  auto seen = [&](std::size_t ch, double level) { return gsdot3::bench::seen_level(level, truncate, (n[ch] >= 0 ? side : -side)); };
+
   constexpr double W = 2047;
-  // the packed values of the third channel for given A, B values (folded: any sign), tabulated
-  const int side_len = 2 * s + 1;
-  std::vector<std::vector<int>> thirds(static_cast<std::size_t>(side_len * side_len));
-  for (int a = -s; a <= s; ++a)
-    for (int b = -s; b <= s; ++b)
-      for (int v = -s; v <= s; ++v) {
-        p::ivec3 l{};
-        l[ca] = a, l[cb] = b, l[c] = v;
-        if (p::is_packed_light(s, l)) thirds[static_cast<std::size_t>((a + s) * side_len + (b + s))].push_back(v);
-      }
-  auto third_values = [&](int a, int b) -> const std::vector<int>& {
-    static const std::vector<int> none;
-    if (a < -s || b < -s || a > s || b > s) return none;
-    return thirds[static_cast<std::size_t>((a + s) * side_len + (b + s))];
-  };
+  const gsdot3::bench::packed_thirds third_values(s, c);  // the third channel's packed values for A, B
+
   std::vector<lattice_case> found;
   for (const auto& x : p::packed_lights(s)) {
     // an upper bound on F for this X: yX <= W, and the third channel at most s + W/128 (one axis's lag),

@@ -4,7 +4,10 @@
 // (src/proofs/proofs/two_pass_triangle.cpp).
 #pragma once
 
+#include <cstddef>
 #include <cstdio>
+#include <set>
+#include <utility>
 
 #include "pipeline/raster.hpp"
 #include "proofs/paper_code.hpp"
@@ -54,6 +57,47 @@ inline scored score_near_vertices(const proofs::two_pass::triangle::triangle_cas
         if (best.px < 0 || v > best.value || (v == best.value && sm > best.smooth)) best = {sm, v, x, y};
       }
   }
+  return best;
+}
+
+// A case, its score and its wrap side; `better` ranks scores as score_near_vertices does.
+struct found {
+  proofs::two_pass::triangle::triangle_case c{};
+  scored sc;
+  int side = 1;
+};
+inline bool better(const scored& x, const scored& y) { return x.value > y.value || (x.value == y.value && x.smooth > y.smooth); }
+
+// The case under a sign pattern: n_x negated if fx = −1, n_y if fy = −1, the wrap side if fs = −1;
+// channel c of every light is negated where σ_c = sign n_c · side changes, so every folded value
+// σ_c·(L_c − 128) and the geometry stay as they are (the GS's truncations toward zero are odd) and
+// only the floors and the alpha error move.
+inline proofs::two_pass::triangle::triangle_case flipped(proofs::two_pass::triangle::triangle_case c, int fx, int fy, int fs) {
+  const int f[3] = {fx * fs, fy * fs, fs};
+  c.iX *= fx, c.iY *= fy;
+  for (auto& l : c.light)
+    for (std::size_t ch = 0; ch < 3; ++ch) l[ch] *= f[ch];
+  return c;
+}
+
+// The best score of case c (wrap side `side`, pixels near the vertices in `vertices`) over the
+// Appendix 2 normals within ±nr of its own (same signs) and, with `signs`, every sign pattern.
+inline found explore(const proofs::two_pass::triangle::triangle_case& c, int side, int nr, bool signs, const gs::model_options& o,
+                     const proofs::two_pass::table& t, const std::set<std::pair<int, int>>& normals, unsigned vertices = 4) {
+  found best{c, score_near_vertices(c, o, t, side, 2, vertices), side};
+  for (int fs = 1; fs >= (signs ? -1 : 1); fs -= 2)
+    for (int fy = 1; fy >= (signs ? -1 : 1); fy -= 2)
+      for (int fx = 1; fx >= (signs ? -1 : 1); fx -= 2)
+        for (int dy = -nr; dy <= nr; ++dy)
+          for (int dx = -nr; dx <= nr; ++dx) {
+            auto q = c;
+            q.iX += dx, q.iY += dy;
+            if (q.iX * c.iX <= 0 || q.iY * c.iY <= 0) continue;
+            q = flipped(q, fx, fy, fs);
+            if ((fx == 1 && fy == 1 && fs == 1 && dx == 0 && dy == 0) || !normals.count({q.iX, q.iY})) continue;
+            const scored sc = score_near_vertices(q, o, t, side * fs, 2, vertices);
+            if (better(sc, best.sc)) best = {q, sc, side * fs};
+          }
   return best;
 }
 

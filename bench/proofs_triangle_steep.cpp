@@ -76,43 +76,6 @@ steep_args parse(int argc, char** argv, int next) {
   }
   return a;
 }
-struct found {
-  tt::triangle_case c{};
-  bench::scored sc;
-  int side = 1;
-};
-bool better(const bench::scored& x, const bench::scored& y) { return x.value > y.value || (x.value == y.value && x.smooth > y.smooth); }
-
-// The case under a sign pattern: n_x negated if fx = −1, n_y if fy = −1, the wrap side if fs = −1;
-// channel c of every light is negated where σ_c = sign n_c · side changes.
-tt::triangle_case flipped(tt::triangle_case c, int fx, int fy, int fs) {
-  const int f[3] = {fx * fs, fy * fs, fs};
-  c.iX *= fx, c.iY *= fy;
-  for (auto& l : c.light)
-    for (std::size_t ch = 0; ch < 3; ++ch) l[ch] *= f[ch];
-  return c;
-}
-
-// The best score of case c (wrap side `side`) over the normals within ±nr of its own (same signs)
-// and, with `signs`, every sign pattern.
-found explore(const tt::triangle_case& c, int side, const steep_args& a, const gs::model_options& o, const p::two_pass::table& t,
-              const std::set<std::pair<int, int>>& normals) {
-  found best{c, bench::score_near_vertices(c, o, t, side, 2, 4), side};
-  for (int fs = 1; fs >= (a.signs ? -1 : 1); fs -= 2)
-    for (int fy = 1; fy >= (a.signs ? -1 : 1); fy -= 2)
-      for (int fx = 1; fx >= (a.signs ? -1 : 1); fx -= 2)
-        for (int dy = -a.nr; dy <= a.nr; ++dy)
-          for (int dx = -a.nr; dx <= a.nr; ++dx) {
-            tt::triangle_case q = c;
-            q.iX += dx, q.iY += dy;
-            if (q.iX * c.iX <= 0 || q.iY * c.iY <= 0) continue;
-            q = flipped(q, fx, fy, fs);
-            if ((fx == 1 && fy == 1 && fs == 1 && dx == 0 && dy == 0) || !normals.count({q.iX, q.iY})) continue;
-            const bench::scored sc = bench::score_near_vertices(q, o, t, side * fs, 2, 4);
-            if (better(sc, best.sc)) best = {q, sc, side * fs};
-          }
-  return best;
-}
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -127,7 +90,7 @@ int main(int argc, char** argv) {
   const int c3 = a.third, ca = (c3 + 1) % 3, cb = (c3 + 2) % 3;
   std::set<std::pair<int, int>> normals;
   for (const auto& m : p::appendix2_normals()) normals.insert({m.iX, m.iY});
-  found best;
+  bench::found best;
   long long evaluated = 0, explored = 0;
   for (int yZ16 = max124; yZ16 >= max124 - 48; yZ16 -= 16)
     for (int yX16 = a.yx_lo * 16; yX16 <= a.yx_hi * 16; ++yX16)
@@ -162,13 +125,13 @@ int main(int argc, char** argv) {
                           lz[ca] -= sg[ca] * d2, lz[cb] -= sg[cb] * d2, lz[c3] += e2;
                           if (!p::is_packed_light(s, lx) || !p::is_packed_light(s, ly) || !p::is_packed_light(s, lz)) continue;
                           const tt::triangle_case c{s, a.iX, a.iY, {lx, ly, lz}, {0, yX16, xY16, 0, xZ16, yZ16}, 0, 0};
-                          found f{c, bench::score_near_vertices(c, args.o, t, a.side, 2, 4), a.side};
+                          bench::found f{c, bench::score_near_vertices(c, args.o, t, a.side, 2, 4), a.side};
                           ++evaluated;
                           if (f.sc.value < 128 && f.sc.smooth >= a.min_smooth && (a.nr > 0 || a.signs)) {
-                            f = explore(c, a.side, a, args.o, t, normals);
+                            f = bench::explore(c, a.side, a.nr, a.signs != 0, args.o, t, normals);
                             ++explored;
                           }
-                          if (better(f.sc, best.sc)) best = f;
+                          if (bench::better(f.sc, best.sc)) best = f;
                           if (f.sc.value >= 128) {
                             bench::print_certificate_row(f.c, f.sc, args.option_name());
                             std::printf("(side %+d; %lld cases evaluated, %lld explored)\n", f.side, evaluated, explored);

@@ -636,3 +636,51 @@ TEST(Triangle, RelaxationIsAnUpperBoundOnEveryCertificatesPixel) {
   }
   EXPECT_EQ(checked, 2 * static_cast<int>(tt::certificates().size()));
 }
+
+namespace {
+// Covered pixels of the triangle on the window's last row (y = w − 1) and last column (x = w − 1),
+// for a window of w pixels whose vertices lie in 0 .. (w − 1)·16.
+// `row` = w − 2 counts the row above instead (which triangles do cover).
+int last_row_or_column_covered(const std::array<int, 6>& xy16, int w, int row = -1) {
+  const auto setup = pl::setup_triangle({pl::xy124{xy16[0], xy16[1]}, pl::xy124{xy16[2], xy16[3]}, pl::xy124{xy16[4], xy16[5]}});
+  if (setup.area2 == 0) return 0;
+  if (row < 0) row = w - 1;
+  int covered = 0;
+  for (int k = 0; k < w; ++k) covered += pl::covers(setup, k, row) + pl::covers(setup, row, k);
+  return covered;
+}
+}  // namespace
+
+TEST(Triangle, NoTriangleOfTheWindowCoversItsLastRowOrColumn) {
+  // bench/proofs_triangle_free_x puts its pixel on row 2046: with every vertex y <= w − 1, a pixel
+  // centre on row w − 1 lies on the triangle's boundary, on a bottom edge or at the lowest vertex,
+  // which is also on a right edge, and the fill rule covers neither (the same for column w − 1 with
+  // right edges). Every triangle of three distinct points of a 9 × 9 lattice (1/4 pixel apart, so the
+  // pixel centres themselves are vertices) in a 3-pixel window, and random full-size triangles with
+  // a vertex at or near the window's last row or column.
+  std::vector<std::array<int, 2>> pts;
+  for (int y = 0; y <= 32; y += 4)
+    for (int x = 0; x <= 32; x += 4) pts.push_back({x, y});
+  long triangles = 0, covered = 0, above = 0;
+  for (std::size_t a = 0; a < pts.size(); ++a)
+    for (std::size_t b = a + 1; b < pts.size(); ++b)
+      for (std::size_t c = b + 1; c < pts.size(); ++c) {
+        ++triangles;
+        const std::array<int, 6> xy16{pts[a][0], pts[a][1], pts[b][0], pts[b][1], pts[c][0], pts[c][1]};
+        covered += last_row_or_column_covered(xy16, 3);
+        above += last_row_or_column_covered(xy16, 3, 1);
+      }
+  EXPECT_EQ(triangles, 81 * 80 * 79 / 6);
+  EXPECT_EQ(covered, 0);
+  EXPECT_GT(above, 10000);
+  std::mt19937_64 rng(84);
+  constexpr int max124 = (tt::window_pixels - 1) * 16;
+  std::uniform_int_distribution<int> coord(0, max124), near(max124 - 48, max124);
+  long rows = 0;
+  for (int t = 0; t < 2000; ++t) {
+    const std::array<int, 6> xy16{coord(rng), coord(rng), coord(rng), near(rng), near(rng), t % 2 ? max124 : near(rng)};
+    EXPECT_EQ(last_row_or_column_covered(xy16, tt::window_pixels), 0) << "case " << t;
+    rows += last_row_or_column_covered(xy16, tt::window_pixels, tt::window_pixels - 2) > 0;  // the row above is covered
+  }
+  EXPECT_GT(rows, 500);
+}

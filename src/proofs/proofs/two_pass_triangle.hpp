@@ -77,11 +77,26 @@ struct triangle_case {
 // -1 2 16000 40`: the construction's integer data in the limit of its windows, best F 16049 against
 // 16000) and its first steep command with neighbouring normals, `proofs_triangle_steep 84
 // truncate_to_8 60 67 -1 2 -53 -62 -19 6 25 828 832 1 60 200 2 0 124.5` (7 cases): n = (61, 66, 91).
-// Under keep_fraction no lattice case of the construction reaches the threshold at s = 84 in the
-// limit of its windows (a search result, not a proof: proofs_triangle_lattice finds F >= 16000 for
-// none of the 65 weight classes of the top 300 rows of `proofs_triangle_plan survey 84`; the best of
-// the top nine classes is 15999.59, for n = (−87, −73, 59)), and the floors give back less than the
-// 2 (top) or 3 (bottom) that the threshold counts.
+// Under keep_fraction no case of the construction reaches the threshold at s = 84 (search results,
+// not a proof). proofs_triangle_lattice finds F >= 16000 for none of the 65 weight classes of the
+// top 300 rows of `proofs_triangle_plan survey 84` (the best of the top nine classes 15999.59, n =
+// (−87, −73, 59)), and its F counts a pixel on row 2047, which no triangle of the window covers
+// (tests/proofs/triangle_test.cpp): on row 2046 the third channel gets K·|n_3|/128 levels·|n| less.
+// bench/proofs_triangle_free_x frees every x step in (−1, 1) (Y's and Z's lights per channel, the
+// lag planes no longer equal) and puts the pixel on row 2046: `84 IX IY SIDE THIRD 15990 40 1 1 2000`
+// with THIRD = 0, 1, 2 for (IX, IY, SIDE) = (−73, −87, 1), (−69, −88, 1), (−63, −67, 1), (−63, −72,
+// 1), (−64, −66, 1), (−64, −71, 1), (−71, −85, 1), (−65, −65, 1), (−65, −89, 1), (−67, −86, 1),
+// (60, 67, −1), (61, 66, −1) (the |n| classes (59, 73, 87), (62, 69, 88), (63, 67, 89), (63, 72,
+// 85), (64, 66, 89), (64, 71, 85), (65, 65, 89), (67, 67, 86), (60, 67, 91), (61, 66, 91), each at a
+// sign pattern whose threshold is 16000) reaches F 15996.31 at best (n = (−63, −67, 89), third
+// channel 2; 15996.51 with Z at each of the 256 positions of (2046, 2047]², `84 -67 -63 1 2 15996
+// 40 1 1 10 1`), and the exact scorer 127 (n = (−73, −87, 59), with its neighbours and sign
+// patterns); so do the same runs for one normal of each of the 55 (|n| class, third channel) pairs of
+// the 249 rows of `proofs_triangle_plan survey 84 400` with a positive margin (F_β >= 15990 for 16
+// of them, a stage-2 F >= 15990 for 3). A wrap needs F > 16000: the floors give back less than the
+// 2 (top) or 3 (bottom) that the threshold counts. Under truncate_to_8 at s = 83 the same runs (`83 truncate_to_8 IX IY SIDE
+// THIRD 15900 40 1 1 2000` for (61, 66, −1), (60, 67, −1), (−67, −63, 1), (−63, −67, 1), (−89, −65,
+// 1)) reach F 15944 at best (n = (60, 67, 91), bottom; exact value 127).
 // s = 124, gouraud_setup=per_pixel with truncate_to_8 only (the dobiestation profile): the exact
 // plane's light at the pixel lies in the unit box of an integer light m = (−27, −63, −105) just
 // outside the packed shell, whose flat value is −129 for n = (24, 59, 111); the multiply's floor hands
