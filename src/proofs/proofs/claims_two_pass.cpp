@@ -335,7 +335,7 @@ outcome two_pass_max_s_interpolated(const gs::model_options& o, const sweep_conf
              " levels from the light of the vertex next to it" +
              (lowest_lag > 2047.0 / 128 ? " (more than one axis's 2047/128: its plane lags along both axes)" : " (one axis's lag)") +
              "; the searches (bench/proofs_triangle_two_axis, bench/proofs_triangle_anneal, bench/proofs_triangle_corner, "
-             "bench/proofs_triangle_steep with bench/proofs_triangle_plan, bench/proofs_triangle_lattice) found no wrap below " +
+             "bench/proofs_triangle_steep with bench/proofs_triangle_plan, bench/proofs_triangle_lattice, bench/proofs_triangle_free_x) found no wrap below " +
              std::to_string(first_wrap) + "." + limit_text +
              (limit > 0 ? std::string(", so s = ") + std::to_string(limit) + " and above can only be settled with the lattice (integer "
                                                       "lights, 12.4 vertices, the truncation itself, the floors)"
