@@ -103,8 +103,8 @@ int main(int argc, char** argv) {
   char** a = argv + args.next;
   if (n >= 1 && std::strcmp(a[0], "survey") == 0) {
     const int first = n > 1 ? std::atoi(a[1]) : 0, count = n > 2 ? std::atoi(a[2]) : 1 << 30;
-    const std::int64_t min_cell = min_cell_of(n > 3 ? std::atoi(a[3]) : -4), max_cells = n > 4 ? std::atoll(a[4]) : 2000000;
-    const std::int64_t box = n > 5 ? std::atoll(a[5]) : 2048;
+    const std::int64_t min_cell = min_cell_of(n > 3 ? std::atoi(a[3]) : tc::survey_min_cell_log2), max_cells = n > 4 ? std::atoll(a[4]) : tc::survey_max_cells;
+    const std::int64_t box = n > 5 ? std::atoll(a[5]) : tc::survey_box;
     const auto classes = tc::open_classes(args.s, args.o);
     const int last = std::min<int>(static_cast<int>(classes.size()), first + count);
     std::printf("s = %d (%s), box %lld: %zu open classes; certifying %d .. %d\n", args.s, args.option_name(), static_cast<long long>(box),
@@ -125,8 +125,8 @@ int main(int argc, char** argv) {
   }
   if (n >= 5 && std::strcmp(a[0], "class") == 0) {
     const tc::problem pr{{std::atoi(a[1]), std::atoi(a[2]), std::atoi(a[3])}, args.s, std::atoll(a[4])};
-    const std::int64_t min_cell = min_cell_of(n > 5 ? std::atoi(a[5]) : -4), max_cells = n > 6 ? std::atoll(a[6]) : 2000000;
-    return run(pr, n > 7 ? std::atoll(a[7]) : 2048, min_cell, max_cells, "") ? 0 : 1;
+    const std::int64_t min_cell = min_cell_of(n > 5 ? std::atoi(a[5]) : tc::survey_min_cell_log2), max_cells = n > 6 ? std::atoll(a[6]) : tc::survey_max_cells;
+    return run(pr, n > 7 ? std::atoll(a[7]) : tc::survey_box, min_cell, max_cells, "") ? 0 : 1;
   }
   std::fprintf(stderr, "usage: proofs_triangle_certify S [truncate_to_8]%s\n", usage);
   return 2;

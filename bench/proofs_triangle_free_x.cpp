@@ -74,20 +74,17 @@ tt::triangle_case rotated(const tt::triangle_case& c, int k, unsigned& z_bit) {
 
 int main(int argc, char** argv) {
   const auto args = bench::parse_search_args(argc, argv, "proofs_triangle_free_x", " IX IY SIDE THIRD [F_MIN] [TOP] [NR SIGNS] [XZK_TOP] [ZFINE]");
+  const auto st = gsdot3::bench::parse_steep_args(argc, argv, args, "proofs_triangle_free_x",
+                                                  "IX IY SIDE THIRD [F_MIN] [TOP] [NR SIGNS] [XZK_TOP] [ZFINE]", 10);
   const int at = args.next;
-  if (argc < at + 4) {
-    std::fprintf(stderr, "usage: proofs_triangle_free_x S [truncate_to_8] IX IY SIDE THIRD [F_MIN] [TOP] [NR SIGNS] [XZK_TOP] [ZFINE]\n");
-    return 2;
-  }
-  const int s = args.s, iX = std::atoi(argv[at]), iY = std::atoi(argv[at + 1]), side = std::atoi(argv[at + 2]), c3 = std::atoi(argv[at + 3]);
-  const double f_min = argc > at + 4 ? std::atof(argv[at + 4]) : 0;
-  const int top = argc > at + 5 ? std::atoi(argv[at + 5]) : 10;
+  const int s = args.s, iX = st.iX, iY = st.iY, side = st.side, c3 = st.third, top = st.top;
+  const double f_min = st.f_min;
   const int nr = argc > at + 6 ? std::atoi(argv[at + 6]) : 0, signs = argc > at + 7 ? std::atoi(argv[at + 7]) : 0;
   const std::size_t xzk_top = argc > at + 8 ? static_cast<std::size_t>(std::atoi(argv[at + 8])) : 2000;
   const bool zfine = argc > at + 9 && std::atoi(argv[at + 9]) != 0;
   const bool truncate = args.o.gouraud == gs::gouraud_fraction::truncate_to_8;
-  if ((side != 1 && side != -1) || c3 < 0 || c3 > 2 || top < 1 || nr < 0 || (signs != 0 && signs != 1)) {
-    std::fprintf(stderr, "proofs_triangle_free_x: SIDE 1 or -1, THIRD 0..2, TOP >= 1, NR >= 0, SIGNS 0 or 1\n");
+  if (nr < 0 || (signs != 0 && signs != 1)) {
+    std::fprintf(stderr, "proofs_triangle_free_x: NR >= 0, SIGNS 0 or 1\n");
     return 2;
   }
   std::set<std::pair<int, int>> normals;

@@ -49,19 +49,10 @@ struct lattice_case {
 
 int main(int argc, char** argv) {
   const auto args = gsdot3::bench::parse_search_args(argc, argv, "proofs_triangle_lattice", " IX IY SIDE THIRD [F_MIN] [TOP]");
-  const int at = args.next;
-  if (argc < at + 4) {
-    std::fprintf(stderr, "usage: proofs_triangle_lattice S [truncate_to_8] IX IY SIDE THIRD [F_MIN] [TOP]\n");
-    return 2;
-  }
-  const int s = args.s, iX = std::atoi(argv[at]), iY = std::atoi(argv[at + 1]), side = std::atoi(argv[at + 2]), c3 = std::atoi(argv[at + 3]);
-  const double f_min = argc > at + 4 ? std::atof(argv[at + 4]) : 0;
-  const int top = argc > at + 5 ? std::atoi(argv[at + 5]) : 20;
+  const auto st = gsdot3::bench::parse_steep_args(argc, argv, args, "proofs_triangle_lattice", "IX IY SIDE THIRD [F_MIN] [TOP]", 20);
+  const int s = args.s, iX = st.iX, iY = st.iY, side = st.side, c3 = st.third, top = st.top;
+  const double f_min = st.f_min;
   const bool truncate = args.o.gouraud == gs::gouraud_fraction::truncate_to_8;
-  if ((side != 1 && side != -1) || c3 < 0 || c3 > 2 || top < 1) {
-    std::fprintf(stderr, "proofs_triangle_lattice: SIDE 1 or -1, THIRD 0..2, TOP >= 1\n");
-    return 2;
-  }
   const auto nm = p::paper::pack_normal_from(iX, iY);
   const int n[3] = {nm.iX, nm.iY, nm.iZ};
   const std::size_t c = static_cast<std::size_t>(c3), ca = (c + 1) % 3, cb = (c + 2) % 3;

@@ -269,21 +269,20 @@ outcome two_pass_max_s_interpolated(const gs::model_options& o, const sweep_conf
   }
   char lag_text[16];
   std::snprintf(lag_text, sizeof lag_text, "%.1f", lowest_lag);
-  const bool paper_wraps = std::any_of(two_pass::triangle::certificates().begin(), two_pass::triangle::certificates().end(), [&](const triangle_case& c) {
-    const auto r = two_pass::pixel(paper::pack_normal_from(c.iX, c.iY), two_pass::triangle::pixel_light(c, o.setup), o);
-    return c.s == paper_s && r.dot != r.value;
-  });
+  const bool paper_wraps = std::find(wrapping_s.begin(), wrapping_s.end(), paper_s) != wrapping_s.end();
   // How far the bound's own statements can go: the least s of a relaxation witness (real geometry,
   // real lights in the ball) above the threshold under this option (triangle_relaxation.hpp). The
   // witnesses charge the plane_steps lag; per_pixel has none.
   const bool per_pixel = o.setup == gs::gouraud_setup::per_pixel;
-  const two_pass::table t(o);
   int limit = 0;
   double limit_margin = 0;
-  for (const auto& w : two_pass::triangle::relaxation_witnesses()) {
-    if (w.gouraud != o.gouraud || per_pixel) continue;
-    const double m = two_pass::triangle::relaxation_margin(w, t, o);
-    if (m > 0 && (limit == 0 || w.s < limit)) limit = w.s, limit_margin = m;
+  if (!per_pixel) {
+    const two_pass::table t(o);
+    for (const auto& w : two_pass::triangle::relaxation_witnesses()) {
+      if (w.gouraud != o.gouraud) continue;
+      const double m = two_pass::triangle::relaxation_margin(w, t, o);
+      if (m > 0 && (limit == 0 || w.s < limit)) limit = w.s, limit_margin = m;
+    }
   }
   std::string limit_text;
   if (limit > 0) {

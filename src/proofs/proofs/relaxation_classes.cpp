@@ -7,6 +7,7 @@
 
 #include "proofs/domains.hpp"
 #include "proofs/triangle_certify.hpp"
+#include "proofs/triangle_relaxation.hpp"
 #include "proofs/two_pass.hpp"
 #include "proofs/two_pass_triangle.hpp"
 
@@ -23,7 +24,7 @@ std::vector<open_class> open_classes(int s, const gs::model_options& o) {
     for (int side : {1, -1}) {
       const std::int64_t over = reach + truncation_units(nm, side, o) - wrap_threshold_units(nm, e, side);
       if (over < 0) continue;
-      const std::int64_t th128 = wrap_threshold_units(nm, e, side) - truncation_units(nm, side, o) - (a[0] + a[1] + a[2]);
+      const std::int64_t th128 = relaxation_threshold_units(nm, e, side, o);
       auto [it, fresh] = open.try_emplace({a[0], a[1], a[2], th128}, std::array<std::int64_t, 4>{over, nm.iX, nm.iY, side});
       if (!fresh && over > it->second[0]) it->second = {over, nm.iX, nm.iY, side};
     }
@@ -36,9 +37,9 @@ std::vector<open_class> open_classes(int s, const gs::model_options& o) {
 }
 
 bool relaxation_certified(int s, const gs::model_options& o) {
-  constexpr std::int64_t box = 2048, min_cell = coord_one / 16, max_cells = 2000000;
+  constexpr std::int64_t min_cell = coord_one >> -survey_min_cell_log2;
   for (const auto& c : open_classes(s, o))
-    if (certify_class({c.w, s, c.threshold128}, box, min_cell, max_cells, 1).open_count != 0) return false;
+    if (certify_class({c.w, s, c.threshold128}, survey_box, min_cell, survey_max_cells, 1).open_count != 0) return false;
   return true;
 }
 

@@ -24,8 +24,12 @@ struct open_class {
 // Every class whose reach_units leaves a side open at s, most open first.
 std::vector<open_class> open_classes(int s, const gs::model_options& o);
 
-// Whether certify_class closes every open class at s (box 2048, rectangles down to 1/16 pixel, at most
-// 2 000 000 per class); stops at the first class that does not close.
+// The branch and bound's settings for the ledger (and bench/proofs_triangle_certify's defaults): the
+// families' box side (pixels), the narrowest rectangle (1/16 pixel), the rectangles per class.
+inline constexpr std::int64_t survey_box = 2048, survey_max_cells = 2000000;
+inline constexpr int survey_min_cell_log2 = -4;
+// Whether certify_class closes every open class at s with those settings; stops at the first class
+// that does not close.
 bool relaxation_certified(int s, const gs::model_options& o);
 
 // The s the claim takes as certified, per gouraud_fraction (plane_steps; 0 under per_pixel, whose bound

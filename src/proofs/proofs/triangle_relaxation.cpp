@@ -65,9 +65,12 @@ double relaxation_margin(const relaxation_witness& w, const two_pass::table& t, 
   return relaxation_value(w.at, n, w.s) - relaxation_threshold(p, t.alpha_error(p), w.side, o);
 }
 
+std::int64_t relaxation_threshold_units(const paper::packed_normal& p, int e, int side, const gs::model_options& o) noexcept {
+  return wrap_threshold_units(p, e, side) - truncation_units(p, side, o) - (std::abs(p.iX) + std::abs(p.iY) + std::abs(p.iZ));
+}
+
 double relaxation_threshold(const paper::packed_normal& p, int e, int side, const gs::model_options& o) noexcept {
-  const double l1 = std::abs(p.iX) + std::abs(p.iY) + std::abs(p.iZ);
-  return static_cast<double>(wrap_threshold_units(p, e, side) - truncation_units(p, side, o)) / 128 - l1 / 128;
+  return static_cast<double>(relaxation_threshold_units(p, e, side, o)) / 128;
 }
 
 }  // namespace gsdot3::proofs::two_pass::triangle
