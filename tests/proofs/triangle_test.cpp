@@ -516,6 +516,41 @@ TEST(Triangle, PerPixelSafeSIsWhatTheBallOrTheLightSupportGives) {
   EXPECT_FALSE(tt::cannot_wrap(w, t.alpha_error(w), 126, o, p::packed_lights(126)));
 }
 
+TEST(Triangle, PerPixelTruncatedSafeSIsWhatTheInequalityGives) {
+  // The dobiestation profile (per_pixel with truncate_to_8): the same inequality in doubles with the
+  // multiply's floor adding up to one level on each channel against the side (n_c < 0 at the top,
+  // > 0 at the bottom). Every normal is safe at bound_safe_s = 123 that way, and some normal is not
+  // at 124 (where the certificate of two_pass_triangle.cpp wraps).
+  gs::model_options o{};
+  o.setup = gs::gouraud_setup::per_pixel;
+  o.gouraud = gs::gouraud_fraction::truncate_to_8;
+  const p::two_pass::table t(o);
+  const int s_max = tt::bound_safe_s(o);
+  EXPECT_EQ(s_max, 123);
+  const auto at = p::packed_lights(s_max), above = p::packed_lights(s_max + 1);
+  bool fails_above = false;
+  for (const auto& nm : p::appendix2_normals()) {
+    const double n[3] = {double(std::abs(nm.iX)), double(std::abs(nm.iY)), double(std::abs(nm.iZ))};
+    const double l1 = n[0] + n[1] + n[2], len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    const int neg = (nm.iX < 0) + (nm.iY < 0) + (nm.iZ < 0), pos = (nm.iX > 0) + (nm.iY > 0) + (nm.iZ > 0);
+    const int e = t.alpha_error(nm);
+    double top_cut = 0, bottom_cut = 0;
+    for (int c : {nm.iX, nm.iY, nm.iZ}) (c < 0 ? top_cut : bottom_cut) += 128.0 * std::abs(c);
+    auto safe = [&](double reach) {
+      return (reach + top_cut) / 16384 + neg + e < 128 && -(reach + bottom_cut) / 16384 - pos + e > -129;
+    };
+    auto safe_at = [&](int s, const std::vector<p::ivec3>& lights) {
+      if (safe(128.0 * s * len + l1)) return true;
+      double support = 0;
+      for (const auto& l : lights) support = std::max(support, n[0] * std::abs(l[0]) + n[1] * std::abs(l[1]) + n[2] * std::abs(l[2]));
+      return safe(128 * support + l1);
+    };
+    EXPECT_TRUE(safe_at(s_max, at)) << nm.iX << " " << nm.iY;
+    fails_above = fails_above || !safe_at(s_max + 1, above);
+  }
+  EXPECT_TRUE(fails_above);
+}
+
 TEST(Triangle, AZeroNormalComponentAddsNothingWhateverItsLight) {
   // The bottom threshold counts #{n_c > 0}, not #{n_c >= 0}: a zero component's two products are 0
   // whatever its light. Every Appendix 2 normal with a zero x or y, that channel's light over every
