@@ -15,13 +15,18 @@
 //       one class given directly (THRESHOLD128 = 128·relaxation_threshold)
 // MIN_CELL_LOG2 (default −4): rectangles narrower than 2^MIN_CELL_LOG2 pixels stay open; MAX_CELLS
 // (default 2 000 000) per class. Shard the survey by FIRST/COUNT; run it under `nice` on one core.
-// BOX (default 2048, bench/proofs_triangle_dual's families): the families' box side A in pixels.
-// 2047 is enough: the claim's vertices lie in 0 .. 2047 (12.4 window coordinates 0 .. 2047·16), so
+// BOX (default survey_box = 2047; bench/proofs_triangle_dual's families use 2048): the families' box
+// side A in pixels. 2047 is enough: the claim's vertices lie in 0 .. 2047 (12.4 window coordinates 0 .. 2047·16), so
 // after the reduction's translation (least vertex coordinate = r, moved by less than a pixel) every
 // vertex coordinate lies in [0, max − min] ⊂ [0, 2047], and its scaling (λ, μ >= 1) reaches A = 2047;
 // the bound's own statements use a, b <= W − 1 = 2047 likewise. A smaller box lowers the relaxation.
 //
-// Measured (one core, nice, this machine shared; default MIN_CELL_LOG2 −4 unless given):
+// Measured (one core, nice, this machine shared; default MIN_CELL_LOG2 −4 unless given), with the
+// thresholds of two_pass_triangle.hpp (the floors give back 16383/16384 or 127/128 of a level, the truncation 127 units):
+//   `83 survey`: all 2 183 classes closed, 38.1 s; `82 truncate_to_8 survey`: all 2 965 closed, 57.6 s
+//   (with BOX 2048 one stays open); `83 truncate_to_8 survey`: 4 967 of 5 270 closed, 303 stop where the
+//   relaxation exceeds (the first, pack(67, 73) bottom, +0.018 levels·|n|), 131 s.
+// Earlier, with the thresholds before it (a whole level per floor and per truncation) and BOX 2048:
 //   `83 survey`: all 1 218 classes closed, 22.8 s: s_max >= 83 under keep_fraction.
 //   `84 survey`: 1 939 of 2 071 closed, 132 stop where the relaxation exceeds (e.g. pack(−73, −67) top).
 //   `80 truncate_to_8 survey`: 446 of 446 closed, 9.8 s; `81 truncate_to_8 survey`: 1 358 of 1 358

@@ -288,7 +288,7 @@ int main(int argc, char** argv) {
       std::sort(a.begin(), a.end());
       const std::int64_t reach = tt::reach_units({a[0], a[1], a[2]}, s, tt::window_pixels);
       const int e = t.alpha_error(nm);
-      const std::int64_t top = tt::wrap_threshold_units(nm, e, 1), bottom = tt::wrap_threshold_units(nm, e, -1);
+      const std::int64_t top = tt::wrap_threshold_units(nm, e, 1, args.o), bottom = tt::wrap_threshold_units(nm, e, -1, args.o);
       const auto th = thresholds(nm, t, args.o);
       if (reach + tt::truncation_units(nm, 1, args.o) >= top) open.emplace(std::tuple{a[0], a[1], a[2], th.top}, std::tuple{reach - top, nm.iX, nm.iY});
       if (reach + tt::truncation_units(nm, -1, args.o) >= bottom) open.emplace(std::tuple{a[0], a[1], a[2], th.bottom}, std::tuple{reach - bottom, nm.iX, nm.iY});

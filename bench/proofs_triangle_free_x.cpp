@@ -102,7 +102,7 @@ int main(int argc, char** argv) {
   auto seen = [&](std::size_t ch, double level) { return gsdot3::bench::seen_level(level, truncate, sg[ch]); };
 
   const p::two_pass::table t(args.o);
-  const double threshold = static_cast<double>(tt::wrap_threshold_units(nm, t.alpha_error(nm), side)) / 128;  // F must pass it
+  const double threshold = static_cast<double>(tt::wrap_threshold_units(nm, t.alpha_error(nm), side, args.o)) / 128;  // F must pass it
 
   const gsdot3::bench::packed_thirds third_values(s, c);  // the third channel's packed values for A, B
 

@@ -1,10 +1,10 @@
 // The certified relaxation step of two-pass.max-s.interpolated (proofs/relaxation_classes.hpp), re-run
-// in full: prove takes certified_relaxation_s (83 under keep_fraction, 81 under truncate_to_8) because
+// in full: prove takes certified_relaxation_s (83 under keep_fraction, 82 under truncate_to_8) because
 // the branch and bound over every open class takes ~23 s per gouraud_fraction value. Here the open
 // classes at that s are the same under every value of the claim's other options (so certifying them
 // once per gouraud_fraction covers every option combination), every one of them closes, and s + 1 does
 // not close (the relaxation itself exceeds the wrap threshold there: relaxation_witnesses() has a
-// point at 84 and at 82).
+// point at 84 and at 83).
 #include <gtest/gtest.h>
 
 #include <set>

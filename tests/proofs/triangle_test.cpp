@@ -471,15 +471,18 @@ TEST(Triangle, BoundedSafeSIsWhatTheInequalityGivesForTheWorstNormal) {
     bool fails_above = false;
     for (const auto& nm : p::appendix2_normals()) {
       const double n[3] = {double(std::abs(nm.iX)), double(std::abs(nm.iY)), double(std::abs(nm.iZ))};
-      const int neg = (nm.iX < 0) + (nm.iY < 0) + (nm.iZ < 0), e = t.alpha_error(nm);
+      const int neg = (nm.iX < 0) + (nm.iY < 0) + (nm.iZ < 0), pos = (nm.iX > 0) + (nm.iY > 0) + (nm.iZ > 0), e = t.alpha_error(nm);
+      // a floor or ceiling of one product gives back at most g of a level (FloorsGiveBackAtMostG)
+      const double gb = g == gs::gouraud_fraction::truncate_to_8 ? 127.0 / 128 : 16383.0 / 16384;
       // truncate_to_8: the multiply's light is at most 127/128 level above the Gouraud light on the
-      // channels whose σ is −1 (n_c < 0 at the top, n_c > 0 at the bottom), bounded here by 1 level
+      // channels whose σ is −1 (n_c < 0 at the top, n_c > 0 at the bottom; TruncateToEightGivesBack
+      // AtMost127Units checks the 127)
       double top_cut = 0, bottom_cut = 0;
       if (g == gs::gouraud_fraction::truncate_to_8)
-        for (int c : {nm.iX, nm.iY, nm.iZ}) (c < 0 ? top_cut : bottom_cut) += 128.0 * std::abs(c);
+        for (int c : {nm.iX, nm.iY, nm.iZ}) (c < 0 ? top_cut : bottom_cut) += 127.0 * std::abs(c);
       auto safe = [&](int s) {
         const double reach = reach_double(n, s);
-        return (reach + top_cut) / 16384 + neg + e < 128 && -(reach + bottom_cut) / 16384 - (3 - neg) + e > -129;
+        return (reach + top_cut) / 16384 + neg * gb + e < 128 && -(reach + bottom_cut) / 16384 - pos * gb + e > -129;
       };
       EXPECT_TRUE(safe(s_max)) << nm.iX << " " << nm.iY;
       fails_above = fails_above || !safe(s_max + 1);
@@ -504,7 +507,8 @@ TEST(Triangle, PerPixelSafeSIsWhatTheBallOrTheLightSupportGives) {
     const double l1 = n[0] + n[1] + n[2];
     const int neg = (nm.iX < 0) + (nm.iY < 0) + (nm.iZ < 0), pos = (nm.iX > 0) + (nm.iY > 0) + (nm.iZ > 0);
     const int e = t.alpha_error(nm);
-    auto safe = [&](double reach) { return reach / 16384 + neg + e < 128 && -reach / 16384 - pos + e > -129; };
+    constexpr double gb = 16383.0 / 16384;  // what one product's floor gives back (FloorsGiveBackAtMostG)
+    auto safe = [&](double reach) { return reach / 16384 + neg * gb + e < 128 && -reach / 16384 - pos * gb + e > -129; };
     if (safe(128.0 * 125 * std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]) + l1)) continue;
     double support = 0;
     for (const auto& l : lights) support = std::max(support, n[0] * std::abs(l[0]) + n[1] * std::abs(l[1]) + n[2] * std::abs(l[2]));
@@ -518,7 +522,7 @@ TEST(Triangle, PerPixelSafeSIsWhatTheBallOrTheLightSupportGives) {
 
 TEST(Triangle, PerPixelTruncatedSafeSIsWhatTheInequalityGives) {
   // The dobiestation profile (per_pixel with truncate_to_8): the same inequality in doubles with the
-  // multiply's floor adding up to one level on each channel against the side (n_c < 0 at the top,
+  // multiply's floor adding up to 127/128 level on each channel against the side (n_c < 0 at the top,
   // > 0 at the bottom). Every normal is safe at bound_safe_s = 123 that way, and some normal is not
   // at 124 (where the certificate of two_pass_triangle.cpp wraps).
   gs::model_options o{};
@@ -535,9 +539,10 @@ TEST(Triangle, PerPixelTruncatedSafeSIsWhatTheInequalityGives) {
     const int neg = (nm.iX < 0) + (nm.iY < 0) + (nm.iZ < 0), pos = (nm.iX > 0) + (nm.iY > 0) + (nm.iZ > 0);
     const int e = t.alpha_error(nm);
     double top_cut = 0, bottom_cut = 0;
-    for (int c : {nm.iX, nm.iY, nm.iZ}) (c < 0 ? top_cut : bottom_cut) += 128.0 * std::abs(c);
+    for (int c : {nm.iX, nm.iY, nm.iZ}) (c < 0 ? top_cut : bottom_cut) += 127.0 * std::abs(c);
     auto safe = [&](double reach) {
-      return (reach + top_cut) / 16384 + neg + e < 128 && -(reach + bottom_cut) / 16384 - pos + e > -129;
+      constexpr double gb = 127.0 / 128;  // what one product's floor gives back (FloorsGiveBackAtMostG)
+      return (reach + top_cut) / 16384 + neg * gb + e < 128 && -(reach + bottom_cut) / 16384 - pos * gb + e > -129;
     };
     auto safe_at = [&](int s, const std::vector<p::ivec3>& lights) {
       if (safe(128.0 * s * len + l1)) return true;
@@ -549,6 +554,70 @@ TEST(Triangle, PerPixelTruncatedSafeSIsWhatTheInequalityGives) {
     fails_above = fails_above || !safe_at(s_max + 1, above);
   }
   EXPECT_TRUE(fails_above);
+}
+
+TEST(Triangle, FloorsGiveBackAtMostG) {
+  // The bound's value statement (two_pass_triangle.hpp, floor_slack_units): with M_c the light the
+  // multiply sees, 16384·(value − e) − Σ n_c·(M_c − 16384) lies in [−G·#{n_c > 0}, G·#{n_c < 0}], G =
+  // 16384 − floor_slack_units = 16383 (keep_fraction) or 16256 (truncate_to_8). Every Appendix 2
+  // normal against random 15-bit lights and the two extreme ones, through the model's two-pass
+  // value; the upper end comes within a level of being reached (the statement is not loose).
+  std::mt19937 rng(1313);
+  std::uniform_int_distribution<int> unit(0, 0x7FFF);
+  for (auto g : {gs::gouraud_fraction::keep_fraction, gs::gouraud_fraction::truncate_to_8}) {
+    gs::model_options o{};
+    o.gouraud = g;
+    const p::two_pass::table t(o);
+    const std::int64_t G = 16384 - tt::floor_slack_units(o);
+    EXPECT_EQ(G, g == gs::gouraud_fraction::keep_fraction ? 16383 : 16256);
+    std::int64_t closest_top = std::numeric_limits<std::int64_t>::max(), closest_bottom = closest_top;
+    std::int64_t cases = 0;
+    for (const auto& nm : p::appendix2_normals()) {
+      const int n[3] = {nm.iX, nm.iY, nm.iZ};
+      const int neg = (n[0] < 0) + (n[1] < 0) + (n[2] < 0), pos = (n[0] > 0) + (n[1] > 0) + (n[2] > 0);
+      const int e = t.alpha_error(nm);
+      for (int k = 0; k < 6; ++k) {
+        int L[3];
+        for (int& v : L) v = k == 0 ? 0 : k == 1 ? 0x7FFF : unit(rng);
+        const gs::fragment_colour cf{gs::gouraud_channel::from_wrapped(L[0]), gs::gouraud_channel::from_wrapped(L[1]),
+                                     gs::gouraud_channel::from_wrapped(L[2]), gs::gouraud_channel::from_wrapped(0x4000)};
+        const int value = p::two_pass::pixel(nm, cf, o).value;
+        std::int64_t d = std::int64_t{16384} * (value - e);
+        for (int c = 0; c < 3; ++c) {
+          const int M = g == gs::gouraud_fraction::truncate_to_8 ? (L[c] >> 7) << 7 : L[c];
+          d -= std::int64_t{n[c]} * (M - 16384);
+        }
+        ASSERT_LE(d, G * neg) << nm.iX << " " << nm.iY << " " << L[0] << " " << L[1] << " " << L[2];
+        ASSERT_GE(d, -G * pos) << nm.iX << " " << nm.iY << " " << L[0] << " " << L[1] << " " << L[2];
+        closest_top = std::min(closest_top, G * neg - d);
+        closest_bottom = std::min(closest_bottom, d + G * pos);
+        ++cases;
+      }
+    }
+    EXPECT_EQ(cases, std::int64_t{6} * static_cast<std::int64_t>(p::appendix2_normals().size()));
+    EXPECT_LT(closest_top, 16384);
+    EXPECT_LT(closest_bottom, 16384);
+  }
+}
+
+TEST(Triangle, TruncateToEightGivesBackAtMost127Units) {
+  // The bound's truncation_units: under truncate_to_8 the multiply sees the Gouraud light with its
+  // fraction cut, 128·floor(L/128), and L is a whole number of 8.7 units, so the cut is 0 .. 127 units,
+  // never 128. Every 15-bit Gouraud value through gs::integer_part (modulate_channel's input under
+  // truncate_to_8); and the largest
+  // cut, 127, is what truncation_units charges per unit of |n_c| against the side.
+  int most = -1;
+  for (int L = 0; L <= 0x7FFF; ++L) {
+    const int seen = 128 * static_cast<int>(gs::integer_part(gs::gouraud_channel::from_wrapped(L)).value());
+    ASSERT_LE(seen, L);
+    most = std::max(most, L - seen);
+  }
+  EXPECT_EQ(most, 127);
+  gs::model_options o{};
+  o.gouraud = gs::gouraud_fraction::truncate_to_8;
+  const auto nm = p::paper::pack_normal_from(60, 67);  // all three components > 0: every channel is against the bottom
+  EXPECT_EQ(tt::truncation_units(nm, -1, o), 127 * (nm.iX + nm.iY + nm.iZ));
+  EXPECT_EQ(tt::truncation_units(nm, 1, o), 0);
 }
 
 TEST(Triangle, AZeroNormalComponentAddsNothingWhateverItsLight) {
@@ -628,12 +697,17 @@ TEST(Triangle, RelaxationWitnessesLieInTheRelaxationAndExceedTheirThresholds) {
     EXPECT_NEAR(tt::relaxation_value(w.at, n, w.s), value, 1e-6) << w.s;
     const double l1 = n[0] + n[1] + n[2];
     const int neg = (nm.iX < 0) + (nm.iY < 0) + (nm.iZ < 0);
-    // truncate_to_8: up to one level more on the channels against the side (n_c < 0 at the top, > 0 at the bottom)
+    // truncate_to_8: up to 127/128 level more on the channels against the side (n_c < 0 at the top,
+    // > 0 at the bottom), and there each product's floor gives back at most 127/128 (16383/16384 under
+    // keep_fraction) of the level the threshold's count charges: 1/128 (1/16384) of |n|·level back per
+    // channel counted
+    const bool truncate = w.gouraud == gs::gouraud_fraction::truncate_to_8;
     double against = 0;
-    for (int c : {nm.iX, nm.iY, nm.iZ}) against += w.side * c < 0 ? std::abs(c) : 0;
+    int counted = 0;
+    for (int c : {nm.iX, nm.iY, nm.iZ}) against += w.side * c < 0 ? std::abs(c) : 0, counted += w.side * c < 0;
     const int e = t.alpha_error(nm);
-    const double threshold = w.side > 0 ? 128.0 * (128 - neg - e) : 128.0 * (129 - (3 - neg) + e);
-    const double margin = value + l1 / 128 + (w.gouraud == gs::gouraud_fraction::truncate_to_8 ? against : 0) - threshold;
+    const double threshold = (w.side > 0 ? 128.0 * (128 - neg - e) : 128.0 * (129 - (3 - neg) + e)) + counted * (truncate ? 1.0 : 1.0 / 128);
+    const double margin = value + l1 / 128 + (truncate ? against * 127 / 128 : 0) - threshold;
     EXPECT_NEAR(tt::relaxation_margin(w, t, o), margin, 1e-6);
     // well above the doubles' rounding (~1e-9 here): the s = 82 truncate_to_8 row by 0.017, the s = 84 one by 77
     EXPECT_GT(margin, 0.01) << "s = " << w.s << ": the witness should clear its threshold by more than its rounding";

@@ -22,7 +22,7 @@ std::vector<open_class> open_classes(int s, const gs::model_options& o) {
     const std::int64_t reach = reach_units({a[0], a[1], a[2]}, s, window_pixels);
     const int e = t.alpha_error(nm);
     for (int side : {1, -1}) {
-      const std::int64_t over = reach + truncation_units(nm, side, o) - wrap_threshold_units(nm, e, side);
+      const std::int64_t over = reach + truncation_units(nm, side, o) - wrap_threshold_units(nm, e, side, o);
       if (over < 0) continue;
       const std::int64_t th128 = relaxation_threshold_units(nm, e, side, o);
       auto [it, fresh] = open.try_emplace({a[0], a[1], a[2], th128}, std::array<std::int64_t, 4>{over, nm.iX, nm.iY, side});
@@ -45,7 +45,7 @@ bool relaxation_certified(int s, const gs::model_options& o) {
 
 int certified_relaxation_s(const gs::model_options& o) noexcept {
   if (o.setup != gs::gouraud_setup::plane_steps) return 0;
-  return o.gouraud == gs::gouraud_fraction::keep_fraction ? 83 : 81;
+  return o.gouraud == gs::gouraud_fraction::keep_fraction ? 83 : 82;
 }
 
 }  // namespace gsdot3::proofs::two_pass::triangle::certify

@@ -25,20 +25,24 @@ struct open_class {
 std::vector<open_class> open_classes(int s, const gs::model_options& o);
 
 // The branch and bound's settings for the ledger (and bench/proofs_triangle_certify's defaults): the
-// families' box side (pixels), the narrowest rectangle (1/16 pixel), the rectangles per class.
-inline constexpr std::int64_t survey_box = 2048, survey_max_cells = 2000000;
+// families' box side (pixels), the narrowest rectangle (1/16 pixel), the rectangles per class. A box of
+// 2047 covers the claim's domain: its vertices lie in 0 .. 2047 pixels (12.4 window coordinates 0 ..
+// 2047·16), so after the family reduction's translation (the least vertex coordinate onto r, by less
+// than a pixel) every vertex coordinate and the pixel's offset from r lie in [0, max − min] ⊂ [0, 2047],
+// and its scaling (λ, μ >= 1) stops at 2047. 2048 leaves one class open at s = 82 under truncate_to_8.
+inline constexpr std::int64_t survey_box = 2047, survey_max_cells = 2000000;
 inline constexpr int survey_min_cell_log2 = -4;
 // Whether certify_class closes every open class at s with those settings; stops at the first class
 // that does not close.
 bool relaxation_certified(int s, const gs::model_options& o);
 
 // The s the claim takes as certified, per gouraud_fraction (plane_steps; 0 under per_pixel, whose bound
-// needs no relaxation): 83 under keep_fraction, 81 under truncate_to_8 (bench/proofs_triangle_certify
-// `83 survey`: 1 218 classes, 22.8 s; `81 truncate_to_8 survey`: 1 358 classes, 24.2 s, one core).
+// needs no relaxation): 83 under keep_fraction, 82 under truncate_to_8 (bench/proofs_triangle_certify
+// `83 survey`: 2 183 classes, 38.1 s; `82 truncate_to_8 survey`: 2 965 classes, 57.6 s, one core).
 // Too slow for prove's budget, so prove takes these values and ctest proofs_certify_survey (label
 // exhaustive) re-runs relaxation_certified at them (the open classes are the same under every value of
 // tfx_rounding and blend_shift, which it checks too), and checks
-// that s + 1 does not certify (the relaxation exceeds there: 84, and 82 under truncate_to_8).
+// that s + 1 does not certify (the relaxation exceeds there: 84, and 83 under truncate_to_8).
 int certified_relaxation_s(const gs::model_options& o) noexcept;
 
 }  // namespace gsdot3::proofs::two_pass::triangle::certify

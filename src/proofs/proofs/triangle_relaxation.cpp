@@ -13,17 +13,17 @@ namespace {
 // One witness per gouraud_fraction value, at the lowest s found: keep_fraction, the top side of
 // n = (−89, −65, 65) (the normal of the s = 85 certificates), printed by `proofs_triangle_dual 84 -89 -65 4 150`
 // (lights to three decimals, as printed; proofs/relaxation_classes.hpp certifies s = 83);
-// truncate_to_8, the bottom side of n = pack(60, 67), where `proofs_triangle_certify 82 truncate_to_8
-// survey 0 100000 -2 2000000 2047` stops (class #70; lights to nine decimals, as printed; 0.017 levels·|n|
-// over; s = 81 is certified).
+// truncate_to_8, the bottom side of n = pack(67, 73), where `proofs_triangle_certify 83 truncate_to_8
+// survey 0 100000 -4 2000000 2047` stops first (class #0 of 303 that stop; lights to nine decimals, as
+// printed; 0.018 levels·|n| over; s = 82 is certified).
 constexpr relaxation_witness witness_table[] = {
     {84, -89, -65, 1, gs::gouraud_fraction::keep_fraction,
      {{{{0, 2047}, {848.51, 0}, {2047, 2047}}}, {{2047, 2047}},
       {{{-47.824, 48.849, 48.812}, {17.108, 58.162, 58.142}, {70.091, 32.732, 32.740}}}}},
-    {82, 60, 67, -1, gs::gouraud_fraction::truncate_to_8,
-     {{{{0, 908.930969238}, {2046.875061035, 0}, {2047, 2047}}}, {{2047, 2047}},
-      {{{54.099679694, 58.197268064, 20.255928686}, {45.209490612, 49.307079039, -47.422715183},
-        {29.217300325, 33.314888958, 68.996141453}}}}},
+    {83, 67, 73, -1, gs::gouraud_fraction::truncate_to_8,
+     {{{{0, 1177.393569946}, {2046.968765259, 0}, {2047, 2047}}}, {{2047, 2047}},
+      {{{51.410199816, 54.828195204, 35.211650993}, {44.616643406, 48.034638802, -50.902147365},
+        {28.624454028, 32.042449548, 71.013534334}}}}},
 };
 
 double cross(double ax, double ay, double bx, double by) { return ax * by - ay * bx; }
@@ -66,7 +66,7 @@ double relaxation_margin(const relaxation_witness& w, const two_pass::table& t, 
 }
 
 std::int64_t relaxation_threshold_units(const paper::packed_normal& p, int e, int side, const gs::model_options& o) noexcept {
-  return wrap_threshold_units(p, e, side) - truncation_units(p, side, o) - (std::abs(p.iX) + std::abs(p.iY) + std::abs(p.iZ));
+  return wrap_threshold_units(p, e, side, o) - truncation_units(p, side, o) - (std::abs(p.iX) + std::abs(p.iY) + std::abs(p.iZ));
 }
 
 double relaxation_threshold(const paper::packed_normal& p, int e, int side, const gs::model_options& o) noexcept {

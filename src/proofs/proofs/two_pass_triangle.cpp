@@ -80,8 +80,8 @@ normal_terms terms(const paper::packed_normal& p) {
 // len·s·128 + G grows with s, so that is every s below the least failing one.
 int safe_s(const paper::packed_normal& p, const normal_terms& n, int e, const gs::model_options& o) {
   const std::int64_t err = gain_units(n.l1, n.least, lag_window(o));
-  const std::int64_t top = wrap_threshold_units(p, e, 1) - err - truncation_units(p, 1, o),
-                     bottom = wrap_threshold_units(p, e, -1) - err - truncation_units(p, -1, o);
+  const std::int64_t top = wrap_threshold_units(p, e, 1, o) - err - truncation_units(p, 1, o),
+                     bottom = wrap_threshold_units(p, e, -1, o) - err - truncation_units(p, -1, o);
   const std::int64_t room = std::min(top, bottom) - 1;  // reach <= room
   if (room < 0) return 0;
   return static_cast<int>(std::min<std::int64_t>(127, room / (n.len * 128)));
@@ -134,8 +134,8 @@ bool cannot_wrap(const paper::packed_normal& p, int e, int s, const gs::model_op
   // value < reach/16384 + neg + e, compared without division.
   const std::array<std::int64_t, 3> n{std::abs(p.iX), std::abs(p.iY), std::abs(p.iZ)};
   auto fits = [&](std::int64_t reach) {
-    return reach + truncation_units(p, 1, o) < wrap_threshold_units(p, e, 1) &&
-           reach + truncation_units(p, -1, o) < wrap_threshold_units(p, e, -1);
+    return reach + truncation_units(p, 1, o) < wrap_threshold_units(p, e, 1, o) &&
+           reach + truncation_units(p, -1, o) < wrap_threshold_units(p, e, -1, o);
   };
   if (o.setup != gs::gouraud_setup::per_pixel) return fits(reach_units(n, s, window_pixels));
   // the ball first; the light set's support (a scan of it) only where the ball is not enough

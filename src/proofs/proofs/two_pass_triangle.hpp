@@ -148,15 +148,20 @@ gs::fragment_colour pixel_light(const triangle_case& c, gs::gouraud_setup setup 
 // combination of the vertex values, inside the ball |l| <= s around 128 per channel. The clamp to
 // 0 .. 0x7FFF only moves each L_c towards [0, 32640], where every P_c lies (each bound above holds
 // channel by channel). With gouraud_fraction = truncate_to_8 the multiply sees 128·floor(L_c/128),
-// which is <= L_c and > L_c − 128: it only lowers σ_c·L_c where σ_c = +1 and raises it by less than
-// 128 units where σ_c = −1, so the wrap side adds truncation_units = 128·Σ_{σ_c < 0} |n_c| (n_c < 0 at
+// which is <= L_c and, L_c being a whole number of 8.7 units, >= L_c − 127: it only lowers σ_c·L_c
+// where σ_c = +1 and raises it by at most 127 units where σ_c = −1, so the wrap side adds
+// truncation_units = 127·Σ_{σ_c < 0} |n_c| (n_c < 0 at
 // the top, n_c > 0 at the bottom). tests/proofs/triangle_test.cpp checks (i) and (ii) against the
 // exact rational plane on every lattice triangle of a small window and on random full-size ones.
-// With λ_c = L_c/128 − 128 and the floors of the two passes (q_c = floor or ceil of n_c·λ_c/128,
-// two_pass::wrap_search), value <= n·λ/128 + #{n_c < 0} + e and value >= n·λ/128 − #{n_c > 0} + e
-// (a zero component's products are 0 whatever its light: tests/proofs checks it on every Appendix 2
-// normal with one), so a normal cannot wrap at s when  (reach + T_top)/16384 + #{n_c < 0} + e < 128  and
-// −(reach + T_bottom)/16384 − #{n_c > 0} + e > −129 (T = truncation_units of that side), with
+// With λ_c = M_c/128 − 128 for the light M_c the multiply sees (L_c, or 128·floor(L_c/128) under
+// truncate_to_8) and the floors of the two passes (q_c = floor or ceil of n_c·λ_c/128,
+// two_pass::wrap_search), value <= n·λ/128 + #{n_c < 0}·g + e and value >= n·λ/128 − #{n_c > 0}·g + e
+// with g = 16383/16384: n_c·λ_c/128 = n_c·(M_c − 16384)/16384 and n_c·M_c is a whole number, so a
+// floor or a ceiling moves it by at most 16383/16384; under truncate_to_8 n_c·M_c is a multiple of 128
+// and g = 127/128 (floor_slack_units; tests/proofs checks both ends on the model's value). A zero
+// component's products are 0 whatever its light (tests/proofs checks it on every Appendix 2 normal
+// with one). So a normal cannot wrap at s when  (reach + T_top)/16384 + #{n_c < 0}·g + e < 128  and
+// −(reach + T_bottom)/16384 − #{n_c > 0}·g + e > −129 (T = truncation_units of that side), with
 // reach = |n|·s·128 + G, G = gain_units, by (i) and
 // (ii) (evaluated exactly in integers: |n| is taken as the ceiling of the square root; (i) as ball_reach_units), or the
 // tighter reach_units of (iii) below, which bound_safe_s uses where (ii) alone does not settle s.
@@ -169,18 +174,26 @@ constexpr int lag_window(const gs::model_options& o) noexcept {
 constexpr std::int64_t gain_units(std::int64_t l1, std::int64_t least, int window) noexcept {
   return l1 * window + std::int64_t{window - 1} * (l1 - least);
 }
+// What a floor or ceiling of one channel's product gives back below a whole level, 1/16384 level units
+// taken off 16384·g: 1 (keep_fraction: n_c·M_c a whole number) or 128 (truncate_to_8: a multiple of 128).
+constexpr std::int64_t floor_slack_units(const gs::model_options& o) noexcept {
+  return o.gouraud == gs::gouraud_fraction::keep_fraction ? 1 : 128;
+}
 // What reach + truncation_units must stay below on a wrap side (side +1: the top, value >= 128;
-// −1: the bottom, value <= −129): 16384·(128 − #{n_c < 0} − e), 16384·(129 − #{n_c > 0} + e).
-constexpr std::int64_t wrap_threshold_units(const paper::packed_normal& p, int e, int side) noexcept {
+// −1: the bottom, value <= −129): 16384·(128 − e) − 16384·g·#{n_c < 0} and 16384·(129 + e) −
+// 16384·g·#{n_c > 0}, i.e. 16384·(128 − #{n_c < 0} − e) and 16384·(129 − #{n_c > 0} + e) plus
+// floor_slack_units per channel counted.
+constexpr std::int64_t wrap_threshold_units(const paper::packed_normal& p, int e, int side, const gs::model_options& o) noexcept {
   const int neg = (p.iX < 0) + (p.iY < 0) + (p.iZ < 0), pos = (p.iX > 0) + (p.iY > 0) + (p.iZ > 0);
-  return std::int64_t{16384} * (side > 0 ? 128 - neg - e : 129 - pos + e);
+  const int counted = side > 0 ? neg : pos;
+  return std::int64_t{16384} * (side > 0 ? 128 - neg - e : 129 - pos + e) + floor_slack_units(o) * counted;
 }
 constexpr std::int64_t truncation_units(const paper::packed_normal& p, int side, const gs::model_options& o) noexcept {
   if (o.gouraud == gs::gouraud_fraction::keep_fraction) return 0;
   std::int64_t sum = 0;
   for (int n : {p.iX, p.iY, p.iZ})
     if (side * n < 0) sum += n < 0 ? -n : n;
-  return 128 * sum;
+  return 127 * sum;
 }
 // (iii) The curvature, for case (ii). Write D for the set of channels aligned on both axes. Each
 // channel statement holds on its own (the argument of (i) is channel by channel, w is the same for
