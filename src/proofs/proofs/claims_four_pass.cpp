@@ -65,7 +65,11 @@ sum_acc sum_sweep(const std::vector<ivec3>& lights, const std::vector<ivec3>& no
   // cell. For a fixed sphere vector a the z product is monotone in b_z (the table checks it: floor or
   // truncation of a_z·b/128), so over a run the sum's extremes are at the run's ends; only a run whose
   // extreme wraps or improves the running min / max is walked pair by pair (for the count and the
-  // first indices).
+  // first indices). Runs are grouped in blocks of consecutive cells with the range of each
+  // component: where all three products are monotone, the sum over a block lies between the sums of
+  // each product's smaller and larger end value, and a block inside [−128, 127] and the running
+  // extremes is skipped whole. Nothing is added inside a skipped block, so the running extremes
+  // do not move there and every run in it would have been skipped: the result is the run-by-run one.
   struct cell {
     int x, y, z0;
     std::uint32_t first, count;
@@ -79,23 +83,47 @@ sum_acc sum_sweep(const std::vector<ivec3>& lights, const std::vector<ivec3>& no
     else
       cells.push_back({b[0], b[1], b[2], j, 1});
   }
+  struct block {
+    std::size_t begin, end;
+    int x0, x1, y0, y1, z0, z1;
+  };
+  constexpr std::size_t block_cells = 32;
+  std::vector<block> blocks;
+  for (std::size_t b = 0; b < cells.size(); b += block_cells) {
+    block k{b, std::min(cells.size(), b + block_cells), 128, -129, 128, -129, 128, -129};
+    for (std::size_t c = k.begin; c < k.end; ++c) {
+      const auto& e = cells[c];
+      k.x0 = std::min(k.x0, e.x), k.x1 = std::max(k.x1, e.x), k.y0 = std::min(k.y0, e.y), k.y1 = std::max(k.y1, e.y);
+      k.z0 = std::min(k.z0, e.z0), k.z1 = std::max(k.z1, e.z0 + static_cast<int>(e.count) - 1);
+    }
+    blocks.push_back(k);
+  }
   const std::uint64_t nn = normals.size();
   return sweep<sum_acc>(lights.size(), cfg, [&](sum_acc& acc, std::uint64_t lo, std::uint64_t hi) {
     for (auto i = lo; i < hi; ++i) {
       const auto *rx = t.row(lights[i][0]), *ry = t.row(lights[i][1]), *rz = t.row(lights[i][2]);
       const bool monotone = t.monotone(lights[i][2]);
-      for (const auto& c : cells) {
-        const int partial = rx[c.x] + ry[c.y];
-        const std::int16_t* z = rz + c.z0;
-        if (monotone) {
-          const int e0 = partial + z[0], e1 = partial + z[c.count - 1];
-          const int lo_s = std::min(e0, e1), hi_s = std::max(e0, e1);
-          if (lo_s >= acc.sum.min && hi_s <= acc.sum.max && lo_s >= -128 && hi_s <= 127) continue;
+      const bool all_monotone = monotone && t.monotone(lights[i][0]) && t.monotone(lights[i][1]);
+      auto inside = [&](int lo_s, int hi_s) { return lo_s >= acc.sum.min && hi_s <= acc.sum.max && lo_s >= -128 && hi_s <= 127; };
+      for (const auto& k : blocks) {
+        if (all_monotone) {
+          const int lo_s = std::min(rx[k.x0], rx[k.x1]) + std::min(ry[k.y0], ry[k.y1]) + std::min(rz[k.z0], rz[k.z1]);
+          const int hi_s = std::max(rx[k.x0], rx[k.x1]) + std::max(ry[k.y0], ry[k.y1]) + std::max(rz[k.z0], rz[k.z1]);
+          if (inside(lo_s, hi_s)) continue;
         }
-        for (std::uint32_t k = 0; k < c.count; ++k) {
-          const int s = partial + z[k];
-          if (s < acc.sum.min || s > acc.sum.max) acc.sum.add(s, i * nn + c.first + k);
-          if (s < -128 || s > 127) acc.wraps.add(i * nn + c.first + k);
+        for (std::size_t ci = k.begin; ci < k.end; ++ci) {
+          const cell& c = cells[ci];
+          const int partial = rx[c.x] + ry[c.y];
+          const std::int16_t* z = rz + c.z0;
+          if (monotone) {
+            const int e0 = partial + z[0], e1 = partial + z[c.count - 1];
+            if (inside(std::min(e0, e1), std::max(e0, e1))) continue;
+          }
+          for (std::uint32_t q = 0; q < c.count; ++q) {
+            const int s = partial + z[q];
+            if (s < acc.sum.min || s > acc.sum.max) acc.sum.add(s, i * nn + c.first + q);
+            if (s < -128 || s > 127) acc.wraps.add(i * nn + c.first + q);
+          }
         }
       }
     }

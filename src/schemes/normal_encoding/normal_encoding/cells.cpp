@@ -67,18 +67,22 @@ farthest_point farthest(vec3 d, std::vector<halfspace> h) {
 
 namespace {
 
+// The running worst cell. Ties (equal angles, e.g. mirror-image cells) go to the least code in
+// lexicographic order, and the first NaN cell is the least such code, so the result does not depend on
+// how the codes are split between threads.
+bool before(const code& a, const code& b) noexcept { return std::lexicographical_compare(a.c, a.c + 3, b.c, b.c + 3); }
 struct acc {
   worst_case w;
   double sup_rad = -1, upper_rad = -1;
   vec3 d{};  // the decoded direction of the worst cell
   void add_nonfinite(code q, vec3 p) {
-    if (w.nonfinite_cells++ == 0) {
+    if (w.nonfinite_cells++ == 0 || before(q, w.nonfinite_q)) {
       w.nonfinite_q = q;
       w.nonfinite_n = p;
     }
   }
   void add(code q, vec3 dn, double a, vec3 p, double upper) {
-    if (a > sup_rad) {
+    if (a > sup_rad || (a == sup_rad && before(q, w.q))) {
       sup_rad = a;
       w.q = q;
       w.n = p;
@@ -88,12 +92,12 @@ struct acc {
   }
   void merge(const acc& later) {
     w.cells += later.w.cells;
-    if (later.w.nonfinite_cells > 0 && w.nonfinite_cells == 0) {
+    if (later.w.nonfinite_cells > 0 && (w.nonfinite_cells == 0 || before(later.w.nonfinite_q, w.nonfinite_q))) {
       w.nonfinite_q = later.w.nonfinite_q;
       w.nonfinite_n = later.w.nonfinite_n;
     }
     w.nonfinite_cells += later.w.nonfinite_cells;
-    if (later.sup_rad > sup_rad) {
+    if (later.sup_rad > sup_rad || (later.sup_rad == sup_rad && later.sup_rad >= 0 && before(later.w.q, w.q))) {
       sup_rad = later.sup_rad;
       w.q = later.w.q;
       w.n = later.w.n;
@@ -503,7 +507,7 @@ worst_case cell_worst_case(const method& m, int bits, unsigned threads, double t
       });
     pool.clear();
     acc all;
-    for (const auto& p : parts) all.merge(p);  // ties: the order of the parts, fixed by t
+    for (const auto& p : parts) all.merge(p);
     return all;
   };
   acc all = run(0, lambert_family(m.id) ? 1e-4 : tolerance_rad);
