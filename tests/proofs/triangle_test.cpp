@@ -561,12 +561,16 @@ TEST(Triangle, FloorsGiveBackAtMostG) {
   // multiply sees, 16384·(value − e) − Σ n_c·(M_c − 16384) lies in [−G·#{n_c > 0}, G·#{n_c < 0}], G =
   // 16384 − floor_slack_units = 16383 (keep_fraction) or 16256 (truncate_to_8). Every Appendix 2
   // normal against random 15-bit lights and the two extreme ones, through the model's two-pass
-  // value; the upper end comes within a level of being reached (the statement is not loose).
+  // value, under every tfx_rounding × blend_shift (the claim's other options); each end comes within a
+  // level of being reached (the statement is not loose).
   std::mt19937 rng(1313);
   std::uniform_int_distribution<int> unit(0, 0x7FFF);
-  for (auto g : {gs::gouraud_fraction::keep_fraction, gs::gouraud_fraction::truncate_to_8}) {
+  for (int combo = 0; combo < 8; ++combo) {
+    const auto g = combo & 1 ? gs::gouraud_fraction::truncate_to_8 : gs::gouraud_fraction::keep_fraction;
     gs::model_options o{};
     o.gouraud = g;
+    o.tfx = combo & 2 ? gs::tfx_rounding::truncate : gs::tfx_rounding::floor;
+    o.shift = combo & 4 ? gs::blend_shift::truncate : gs::blend_shift::floor;
     const p::two_pass::table t(o);
     const std::int64_t G = 16384 - tt::floor_slack_units(o);
     EXPECT_EQ(G, g == gs::gouraud_fraction::keep_fraction ? 16383 : 16256);
