@@ -319,7 +319,7 @@ outcome two_pass_max_s_interpolated(const gs::model_options& o, const sweep_conf
                 " the continuous relaxation of its per-channel statements (real vertices, real lights in the ball) is certified "
                 "below the wrap threshold: a dual with the alignment signs as constraints over rectangles of the five geometry "
                 "families, checked in exact integers (proofs/triangle_certify.hpp; run by ctest proofs_certify_survey, not by "
-                "prove: ~23 s)"
+                "prove: ~40 s under keep_fraction, ~60 s under truncate_to_8)"
           : std::string();
   out.note = "on whole triangles the paper's s = " + std::to_string(paper_s) +
              (paper_wraps ? " wraps" : " is not shown to wrap") + ": a pixel ~2030 pixels from the plane's reference pixel "
@@ -337,7 +337,8 @@ outcome two_pass_max_s_interpolated(const gs::model_options& o, const sweep_conf
              "bench/proofs_triangle_steep with bench/proofs_triangle_plan, bench/proofs_triangle_lattice, bench/proofs_triangle_free_x) found no wrap below " +
              std::to_string(first_wrap) + "." + limit_text +
              (limit > 0 ? std::string(", so s = ") + std::to_string(limit) + " and above can only be settled with the lattice (integer "
-                                                      "lights, 12.4 vertices, the truncation itself, the floors)"
+                                                      "lights, the whole-unit steps' lattice of gradients, 12.4 vertices; the floors' and the "
+                                                      "truncation's integer slack are in the bound already)"
                         : std::string());
   return for_domain(std::move(out), cfg);
 }
