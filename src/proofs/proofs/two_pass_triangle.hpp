@@ -174,8 +174,9 @@ constexpr int lag_window(const gs::model_options& o) noexcept {
 constexpr std::int64_t gain_units(std::int64_t l1, std::int64_t least, int window) noexcept {
   return l1 * window + std::int64_t{window - 1} * (l1 - least);
 }
-// What a floor or ceiling of one channel's product gives back below a whole level, 1/16384 level units
-// taken off 16384·g: 1 (keep_fraction: n_c·M_c a whole number) or 128 (truncate_to_8: a multiple of 128).
+// 16384·(1 − g): by how much, in 1/16384 level, a floor or ceiling of one channel's product stays short
+// of moving it a whole level: 1 (keep_fraction: n_c·M_c a whole number) or 128 (truncate_to_8: a
+// multiple of 128).
 constexpr std::int64_t floor_slack_units(const gs::model_options& o) noexcept {
   return o.gouraud == gs::gouraud_fraction::keep_fraction ? 1 : 128;
 }
