@@ -60,6 +60,10 @@ int plain_value(const ref::normal& n, const int L[3], bool truncate_to_8) {
   }
   return v;
 }
+
+// What one product's floor or ceiling gives back at most, in levels: n_c·M_c is a whole number
+// (16383/16384), a multiple of 128 under truncate_to_8 (127/128). FloorsGiveBackAtMostG checks it.
+double floor_give_back(gs::gouraud_fraction g) { return g == gs::gouraud_fraction::truncate_to_8 ? 127.0 / 128 : 16383.0 / 16384; }
 }  // namespace
 
 TEST(Triangle, EveryCertificateWrapsThroughTheRasteriserAndThePixelPipeline) {
@@ -472,8 +476,7 @@ TEST(Triangle, BoundedSafeSIsWhatTheInequalityGivesForTheWorstNormal) {
     for (const auto& nm : p::appendix2_normals()) {
       const double n[3] = {double(std::abs(nm.iX)), double(std::abs(nm.iY)), double(std::abs(nm.iZ))};
       const int neg = (nm.iX < 0) + (nm.iY < 0) + (nm.iZ < 0), pos = (nm.iX > 0) + (nm.iY > 0) + (nm.iZ > 0), e = t.alpha_error(nm);
-      // a floor or ceiling of one product gives back at most g of a level (FloorsGiveBackAtMostG)
-      const double gb = g == gs::gouraud_fraction::truncate_to_8 ? 127.0 / 128 : 16383.0 / 16384;
+      const double gb = floor_give_back(g);
       // truncate_to_8: the multiply's light is at most 127/128 level above the Gouraud light on the
       // channels whose σ is −1 (n_c < 0 at the top, n_c > 0 at the bottom; TruncateToEightGivesBack
       // AtMost127Units checks the 127)
@@ -507,7 +510,7 @@ TEST(Triangle, PerPixelSafeSIsWhatTheBallOrTheLightSupportGives) {
     const double l1 = n[0] + n[1] + n[2];
     const int neg = (nm.iX < 0) + (nm.iY < 0) + (nm.iZ < 0), pos = (nm.iX > 0) + (nm.iY > 0) + (nm.iZ > 0);
     const int e = t.alpha_error(nm);
-    constexpr double gb = 16383.0 / 16384;  // what one product's floor gives back (FloorsGiveBackAtMostG)
+    const double gb = floor_give_back(o.gouraud);
     auto safe = [&](double reach) { return reach / 16384 + neg * gb + e < 128 && -reach / 16384 - pos * gb + e > -129; };
     if (safe(128.0 * 125 * std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]) + l1)) continue;
     double support = 0;
@@ -541,7 +544,7 @@ TEST(Triangle, PerPixelTruncatedSafeSIsWhatTheInequalityGives) {
     double top_cut = 0, bottom_cut = 0;
     for (int c : {nm.iX, nm.iY, nm.iZ}) (c < 0 ? top_cut : bottom_cut) += 127.0 * std::abs(c);
     auto safe = [&](double reach) {
-      constexpr double gb = 127.0 / 128;  // what one product's floor gives back (FloorsGiveBackAtMostG)
+      const double gb = floor_give_back(o.gouraud);
       return (reach + top_cut) / 16384 + neg * gb + e < 128 && -(reach + bottom_cut) / 16384 - pos * gb + e > -129;
     };
     auto safe_at = [&](int s, const std::vector<p::ivec3>& lights) {
@@ -608,8 +611,8 @@ TEST(Triangle, TruncateToEightGivesBackAtMost127Units) {
   // The bound's truncation_units: under truncate_to_8 the multiply sees the Gouraud light with its
   // fraction cut, 128·floor(L/128), and L is a whole number of 8.7 units, so the cut is 0 .. 127 units,
   // never 128. Every 15-bit Gouraud value through gs::integer_part (modulate_channel's input under
-  // truncate_to_8); and the largest
-  // cut, 127, is what truncation_units charges per unit of |n_c| against the side.
+  // truncate_to_8); and the largest cut, 127, is what truncation_units charges per unit of |n_c|
+  // against the side.
   int most = -1;
   for (int L = 0; L <= 0x7FFF; ++L) {
     const int seen = 128 * static_cast<int>(gs::integer_part(gs::gouraud_channel::from_wrapped(L)).value());
@@ -710,10 +713,10 @@ TEST(Triangle, RelaxationWitnessesLieInTheRelaxationAndExceedTheirThresholds) {
     int counted = 0;
     for (int c : {nm.iX, nm.iY, nm.iZ}) against += w.side * c < 0 ? std::abs(c) : 0, counted += w.side * c < 0;
     const int e = t.alpha_error(nm);
-    const double threshold = (w.side > 0 ? 128.0 * (128 - neg - e) : 128.0 * (129 - (3 - neg) + e)) + counted * (truncate ? 1.0 : 1.0 / 128);
+    const double threshold = (w.side > 0 ? 128.0 * (128 - neg - e) : 128.0 * (129 - (3 - neg) + e)) + counted * 128 * (1 - floor_give_back(w.gouraud));
     const double margin = value + l1 / 128 + (truncate ? against * 127 / 128 : 0) - threshold;
     EXPECT_NEAR(tt::relaxation_margin(w, t, o), margin, 1e-6);
-    // well above the doubles' rounding (~1e-9 here): the s = 82 truncate_to_8 row by 0.017, the s = 84 one by 77
+    // well above the doubles' rounding (~1e-9 here): the s = 83 truncate_to_8 row by 0.018, the s = 84 one by 77
     EXPECT_GT(margin, 0.01) << "s = " << w.s << ": the witness should clear its threshold by more than its rounding";
     // and the bound itself cannot settle that normal at that s (else the witness would say nothing)
     EXPECT_FALSE(tt::cannot_wrap(nm, t.alpha_error(nm), w.s, o)) << w.s;

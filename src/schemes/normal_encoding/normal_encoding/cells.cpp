@@ -97,7 +97,7 @@ struct acc {
       w.nonfinite_n = later.w.nonfinite_n;
     }
     w.nonfinite_cells += later.w.nonfinite_cells;
-    if (later.sup_rad > sup_rad || (later.sup_rad == sup_rad && later.sup_rad >= 0 && before(later.w.q, w.q))) {
+    if (later.sup_rad > sup_rad || (later.sup_rad == sup_rad && before(later.w.q, w.q))) {
       sup_rad = later.sup_rad;
       w.q = later.w.q;
       w.n = later.w.n;
