@@ -10,7 +10,8 @@
 //       the classes (|n| sorted, side threshold) bound_safe_s's reach leaves open at S, most open
 //       first (the order of proofs_triangle_dual's survey before its screen), classes FIRST ..
 //       FIRST + COUNT − 1: one line each (closed or open, rectangles, seconds, the largest certified
-//       bound among the closed rectangles, the best attained value in an open one)
+//       bound among the closed rectangles, the best attained value in an open one), then the Appendix 2
+//       normals of the classes left open (a wrap at S needs one of them)
 //   proofs_triangle_certify S [truncate_to_8] class W0 W1 W2 THRESHOLD128 [MIN_CELL_LOG2 [MAX_CELLS [BOX]]]
 //       one class given directly (THRESHOLD128 = 128·relaxation_threshold)
 // MIN_CELL_LOG2 (default −4): rectangles narrower than 2^MIN_CELL_LOG2 pixels stay open; MAX_CELLS
@@ -25,7 +26,12 @@
 // thresholds of two_pass_triangle.hpp (the floors give back 16383/16384 or 127/128 of a level, the truncation 127 units):
 //   `83 survey`: all 2 183 classes closed, 38.1 s; `82 truncate_to_8 survey`: all 2 965 closed, 57.6 s
 //   (with BOX 2048 one stays open); `83 truncate_to_8 survey`: 4 967 of 5 270 closed, 303 stop where the
-//   relaxation exceeds (the first, pack(67, 73) bottom, +0.018 levels·|n|), 131 s.
+//   relaxation exceeds (the first, pack(67, 73) bottom, +0.018 levels·|n|), 131 s; they hold 1 042 normals.
+//   `84 survey` (another machine, 2 cores, the other busy): 3 696 of 3 851 closed, 155 stop where the
+//   relaxation exceeds (the first, pack(−73, −67) top, +0.026), 140 s; they hold 557 normals. The value
+//   printed is where the branch and bound first meets the excess, not the relaxation's supremum: class
+//   (67, 73, 81) given directly with its threshold raised by 32 levels·|n| still exceeds (F1, Y and Z
+//   within 1/16 pixel of one column, v -> 2047).
 // Earlier, with the thresholds before it (a whole level per floor and per truncation) and BOX 2048:
 //   `83 survey`: all 1 218 classes closed, 22.8 s: s_max >= 83 under keep_fraction.
 //   `84 survey`: 1 939 of 2 071 closed, 132 stop where the relaxation exceeds (e.g. pack(−73, −67) top).
@@ -115,13 +121,21 @@ int main(int argc, char** argv) {
     std::printf("s = %d (%s), box %lld: %zu open classes; certifying %d .. %d\n", args.s, args.option_name(), static_cast<long long>(box),
                 classes.size(), first, last - 1);
     int closed = 0;
+    std::vector<tc::open_class> open;
     for (int i = first; i < last; ++i) {
       const auto& c = classes[static_cast<std::size_t>(i)];
       char label[96];
       std::snprintf(label, sizeof label, "#%d (n = pack(%d, %d) %s, over by %lld units) ", i, c.iX, c.iY, c.side > 0 ? "top" : "bottom",
                     static_cast<long long>(c.gap));
-      closed += run({c.w, args.s, c.threshold128}, box, min_cell, max_cells, label);
+      if (run({c.w, args.s, c.threshold128}, box, min_cell, max_cells, label))
+        ++closed;
+      else
+        open.push_back(c);
     }
+    const auto normals = tc::normals_in(open, args.s, args.o);
+    std::printf("the %zu normals of the classes left open (pack(iX, iY)):", normals.size());
+    for (std::size_t k = 0; k < normals.size(); ++k) std::printf("%s(%d, %d)", k % 12 ? " " : "\n  ", normals[k].iX, normals[k].iY);
+    std::printf("\n");
     std::printf("s = %d (%s): classes %d .. %d: %d closed, %d open; re-checking the %lld closing (rectangle, y) pairs alone takes %.3f s "
                 "(%lld of them with a searched y, the others y_p = w)\n",
                 args.s, args.option_name(), first, last - 1, closed, last - first - closed, static_cast<long long>(recheck_cells), recheck_seconds,

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <map>
+#include <set>
 #include <tuple>
 
 #include "proofs/domains.hpp"
@@ -43,9 +44,41 @@ bool relaxation_certified(int s, const gs::model_options& o) {
   return true;
 }
 
+std::vector<open_class> uncertified_classes(int s, const gs::model_options& o) {
+  constexpr std::int64_t min_cell = coord_one >> -survey_min_cell_log2;
+  std::vector<open_class> out;
+  for (const auto& c : open_classes(s, o))
+    if (certify_class({c.w, s, c.threshold128}, survey_box, min_cell, survey_max_cells, 1).open_count != 0) out.push_back(c);
+  return out;
+}
+
+std::vector<paper::packed_normal> normals_in(const std::vector<open_class>& classes, int s, const gs::model_options& o) {
+  std::set<std::tuple<int, int, int, std::int64_t>> keys;
+  for (const auto& c : classes) keys.insert({c.w[0], c.w[1], c.w[2], c.threshold128});
+  const two_pass::table t(o);
+  std::vector<paper::packed_normal> out;
+  for (const auto& nm : appendix2_normals()) {
+    std::array<int, 3> a{std::abs(nm.iX), std::abs(nm.iY), std::abs(nm.iZ)};
+    std::sort(a.begin(), a.end());
+    const std::int64_t reach = reach_units({a[0], a[1], a[2]}, s, window_pixels);
+    const int e = t.alpha_error(nm);
+    bool in = false;
+    for (int side : {1, -1})
+      in = in || (reach + truncation_units(nm, side, o) - wrap_threshold_units(nm, e, side, o) >= 0 &&
+                  keys.count({a[0], a[1], a[2], relaxation_threshold_units(nm, e, side, o)}) != 0);
+    if (in) out.push_back(nm);
+  }
+  return out;
+}
+
 int certified_relaxation_s(const gs::model_options& o) noexcept {
   if (o.setup != gs::gouraud_setup::plane_steps) return 0;
   return o.gouraud == gs::gouraud_fraction::keep_fraction ? 83 : 82;
+}
+
+next_s_survey uncertified_next_s(const gs::model_options& o) noexcept {
+  if (o.setup != gs::gouraud_setup::plane_steps) return {};
+  return o.gouraud == gs::gouraud_fraction::keep_fraction ? next_s_survey{84, 3851, 155, 557} : next_s_survey{83, 5270, 303, 1042};
 }
 
 }  // namespace gsdot3::proofs::two_pass::triangle::certify

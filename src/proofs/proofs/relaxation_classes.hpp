@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "gs_arith/options.hpp"
+#include "proofs/paper_code.hpp"
 
 namespace gsdot3::proofs::two_pass::triangle::certify {
 
@@ -44,5 +45,26 @@ bool relaxation_certified(int s, const gs::model_options& o);
 // tfx_rounding and blend_shift, which it checks too), and checks
 // that s + 1 does not certify (the relaxation exceeds there: 84, and 83 under truncate_to_8).
 int certified_relaxation_s(const gs::model_options& o) noexcept;
+
+// The classes of open_classes(s, o) that certify_class, with the survey's settings, does not close
+// (it stops each at its first rectangle whose attained value is above the threshold, or at
+// survey_max_cells), in open_classes' order; every other class is safe at s.
+std::vector<open_class> uncertified_classes(int s, const gs::model_options& o);
+// The Appendix 2 normals with a wrap side in one of `classes` (|n| sorted and threshold128 as
+// open_classes keys them) whose bound leaves that side open at s, in appendix2_normals' order.
+std::vector<paper::packed_normal> normals_in(const std::vector<open_class>& classes, int s, const gs::model_options& o);
+
+// At s_next = certified_relaxation_s + 1, where the relaxation itself exceeds (relaxation_witnesses):
+// how many classes open_classes lists, how many of them stay uncertified and how many normals those
+// hold, so that a wrap at s_next needs one of those normals (plane_steps; zeros under per_pixel). Measured by bench/proofs_triangle_certify
+// (`84 survey`: 155 of 3 851 classes stop, 140 s; `83 truncate_to_8 survey`: 303 of 5 270, 131 s;
+// one core) and re-derived by ctest proofs_certify_next_s, under every tfx_rounding × blend_shift;
+// prove takes the stored values.
+struct next_s_survey {
+  int s = 0;
+  int classes = 0, uncertified = 0;
+  std::int64_t normals = 0;
+};
+next_s_survey uncertified_next_s(const gs::model_options& o) noexcept;
 
 }  // namespace gsdot3::proofs::two_pass::triangle::certify
