@@ -14,9 +14,13 @@
 
 namespace gsdot3::proofs::two_pass::triangle::certify {
 
-std::vector<open_class> open_classes(int s, const gs::model_options& o) {
+namespace {
+using class_key = std::tuple<int, int, int, std::int64_t>;  // |n| sorted, threshold128
+// Every (normal, wrap side) whose bound reach_units leaves open at s: f(normal, side, its class, over),
+// over = reach + truncation − wrap threshold >= 0 (8.7·n units).
+template <class F>
+void for_each_open_side(int s, const gs::model_options& o, F&& f) {
   const two_pass::table t(o);
-  std::map<std::tuple<int, int, int, std::int64_t>, std::array<std::int64_t, 4>> open;  // gap, iX, iY, side
   for (const auto& nm : appendix2_normals()) {
     std::array<int, 3> a{std::abs(nm.iX), std::abs(nm.iY), std::abs(nm.iZ)};
     std::sort(a.begin(), a.end());
@@ -24,12 +28,18 @@ std::vector<open_class> open_classes(int s, const gs::model_options& o) {
     const int e = t.alpha_error(nm);
     for (int side : {1, -1}) {
       const std::int64_t over = reach + truncation_units(nm, side, o) - wrap_threshold_units(nm, e, side, o);
-      if (over < 0) continue;
-      const std::int64_t th128 = relaxation_threshold_units(nm, e, side, o);
-      auto [it, fresh] = open.try_emplace({a[0], a[1], a[2], th128}, std::array<std::int64_t, 4>{over, nm.iX, nm.iY, side});
-      if (!fresh && over > it->second[0]) it->second = {over, nm.iX, nm.iY, side};
+      if (over >= 0) f(nm, side, class_key{a[0], a[1], a[2], relaxation_threshold_units(nm, e, side, o)}, over);
     }
   }
+}
+}  // namespace
+
+std::vector<open_class> open_classes(int s, const gs::model_options& o) {
+  std::map<class_key, std::array<std::int64_t, 4>> open;  // gap, iX, iY, side
+  for_each_open_side(s, o, [&](const paper::packed_normal& nm, int side, const class_key& k, std::int64_t over) {
+    auto [it, fresh] = open.try_emplace(k, std::array<std::int64_t, 4>{over, nm.iX, nm.iY, side});
+    if (!fresh && over > it->second[0]) it->second = {over, nm.iX, nm.iY, side};
+  });
   std::vector<open_class> out;
   for (const auto& [k, g] : open)
     out.push_back({g[0], {std::get<0>(k), std::get<1>(k), std::get<2>(k)}, std::get<3>(k), int(g[1]), int(g[2]), int(g[3])});
@@ -37,37 +47,35 @@ std::vector<open_class> open_classes(int s, const gs::model_options& o) {
   return out;
 }
 
-bool relaxation_certified(int s, const gs::model_options& o) {
+namespace {
+// certify_class with the survey's settings closes the class at s
+bool closes(const open_class& c, int s) {
   constexpr std::int64_t min_cell = coord_one >> -survey_min_cell_log2;
+  return certify_class({c.w, s, c.threshold128}, survey_box, min_cell, survey_max_cells, 1).open_count == 0;
+}
+}  // namespace
+
+bool relaxation_certified(int s, const gs::model_options& o) {
   for (const auto& c : open_classes(s, o))
-    if (certify_class({c.w, s, c.threshold128}, survey_box, min_cell, survey_max_cells, 1).open_count != 0) return false;
+    if (!closes(c, s)) return false;
   return true;
 }
 
 std::vector<open_class> uncertified_classes(int s, const gs::model_options& o) {
-  constexpr std::int64_t min_cell = coord_one >> -survey_min_cell_log2;
   std::vector<open_class> out;
   for (const auto& c : open_classes(s, o))
-    if (certify_class({c.w, s, c.threshold128}, survey_box, min_cell, survey_max_cells, 1).open_count != 0) out.push_back(c);
+    if (!closes(c, s)) out.push_back(c);
   return out;
 }
 
 std::vector<paper::packed_normal> normals_in(const std::vector<open_class>& classes, int s, const gs::model_options& o) {
-  std::set<std::tuple<int, int, int, std::int64_t>> keys;
+  std::set<class_key> keys;
   for (const auto& c : classes) keys.insert({c.w[0], c.w[1], c.w[2], c.threshold128});
-  const two_pass::table t(o);
   std::vector<paper::packed_normal> out;
-  for (const auto& nm : appendix2_normals()) {
-    std::array<int, 3> a{std::abs(nm.iX), std::abs(nm.iY), std::abs(nm.iZ)};
-    std::sort(a.begin(), a.end());
-    const std::int64_t reach = reach_units({a[0], a[1], a[2]}, s, window_pixels);
-    const int e = t.alpha_error(nm);
-    bool in = false;
-    for (int side : {1, -1})
-      in = in || (reach + truncation_units(nm, side, o) - wrap_threshold_units(nm, e, side, o) >= 0 &&
-                  keys.count({a[0], a[1], a[2], relaxation_threshold_units(nm, e, side, o)}) != 0);
-    if (in) out.push_back(nm);
-  }
+  for_each_open_side(s, o, [&](const paper::packed_normal& nm, int, const class_key& k, std::int64_t) {
+    // both sides of one normal can be open: list it once
+    if (keys.count(k) != 0 && (out.empty() || out.back().iX != nm.iX || out.back().iY != nm.iY)) out.push_back(nm);
+  });
   return out;
 }
 
