@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cstdlib>
 #include <set>
 #include <tuple>
@@ -74,7 +75,8 @@ TEST(CertifyNextS, WhatStaysUncertifiedIsWhatProveReports) {
         if (t == gs::tfx_rounding::floor && b == gs::blend_shift::floor) continue;
         const gs::model_options v = with(g, t, b);
         EXPECT_EQ(keys(tc::open_classes(stored.s, v)), keys(all)) << "the classes move with tfx_rounding / blend_shift";
-        EXPECT_EQ(codes(tc::normals_in(open, stored.s, v)), codes(tc::normals_in(open, stored.s, o))) << "the normals move with tfx_rounding / blend_shift";
+        EXPECT_EQ(codes(tc::normals_in(open, stored.s, v)), codes(tc::normals_in(open, stored.s, o)))
+            << "the normals move with tfx_rounding / blend_shift";
       }
   }
   gs::model_options per_pixel;

@@ -56,10 +56,10 @@ std::vector<paper::packed_normal> normals_in(const std::vector<open_class>& clas
 
 // At s_next = certified_relaxation_s + 1, where the relaxation itself exceeds (relaxation_witnesses):
 // how many classes open_classes lists, how many of them stay uncertified and how many normals those
-// hold, so that a wrap at s_next needs one of those normals (plane_steps; zeros under per_pixel). Measured by bench/proofs_triangle_certify
-// (`84 survey`: 155 of 3 851 classes stop, 140 s; `83 truncate_to_8 survey`: 303 of 5 270, 131 s;
-// one core) and re-derived by ctest proofs_certify_next_s, under every tfx_rounding × blend_shift;
-// prove takes the stored values.
+// hold, so that a wrap at s_next needs one of those normals (plane_steps; zeros under per_pixel).
+// Measured by bench/proofs_triangle_certify (`84 survey`: 155 of 3 851 classes stop, 557 normals,
+// 140 s; `83 truncate_to_8 survey`: 303 of 5 270, 1 042 normals, 131 s; one core) and re-derived by
+// ctest proofs_certify_next_s under every tfx_rounding × blend_shift; prove takes the stored values.
 struct next_s_survey {
   int s = 0;
   int classes = 0, uncertified = 0;
