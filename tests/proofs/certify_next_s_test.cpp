@@ -58,7 +58,8 @@ TEST(CertifyNextS, WhatStaysUncertifiedIsWhatProveReports) {
     ASSERT_EQ(stored.s, tc::certified_relaxation_s(o) + 1);
     const auto open = tc::uncertified_classes(stored.s, o);
     EXPECT_EQ(static_cast<int>(open.size()), stored.uncertified) << "s = " << stored.s;
-    EXPECT_EQ(static_cast<std::int64_t>(tc::normals_in(open, stored.s, o).size()), stored.normals) << "s = " << stored.s;
+    const auto normals = codes(tc::normals_in(open, stored.s, o));
+    EXPECT_EQ(static_cast<std::int64_t>(normals.size()), stored.normals) << "s = " << stored.s;
     const auto all = tc::open_classes(stored.s, o);
     EXPECT_EQ(static_cast<int>(all.size()), stored.classes) << "s = " << stored.s;
     EXPECT_LT(open.size(), all.size()) << "the relaxation certifies none of the classes at s = " << stored.s;
@@ -75,7 +76,7 @@ TEST(CertifyNextS, WhatStaysUncertifiedIsWhatProveReports) {
         if (t == gs::tfx_rounding::floor && b == gs::blend_shift::floor) continue;
         const gs::model_options v = with(g, t, b);
         EXPECT_EQ(keys(tc::open_classes(stored.s, v)), keys(all)) << "the classes move with tfx_rounding / blend_shift";
-        EXPECT_EQ(codes(tc::normals_in(open, stored.s, v)), codes(tc::normals_in(open, stored.s, o)))
+        EXPECT_EQ(codes(tc::normals_in(open, stored.s, v)), normals)
             << "the normals move with tfx_rounding / blend_shift";
       }
   }

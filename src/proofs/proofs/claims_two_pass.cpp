@@ -293,9 +293,9 @@ outcome two_pass_max_s_interpolated(const gs::model_options& o, const sweep_conf
                  " levels·|n| over the threshold; two_pass_triangle's relaxation_witnesses)";
   }
   // What the relaxation leaves at the bracketed s (stored; ctest proofs_certify_next_s re-derives it).
-  const auto next = two_pass::triangle::certify::uncertified_next_s(o);
+  auto next = two_pass::triangle::certify::uncertified_next_s(o);
   const bool next_bracketed = next.s == proven_safe + 1 && next.s < first_wrap;
-  const int next_classes = next_bracketed ? next.classes : 0;
+  if (!next_bracketed) next = {};
   outcome out;
   out.result = paper_wraps ? verdict::refuted : verdict::bound;
   out.domain_size = normals.size() * static_cast<std::uint64_t>(proven_safe + 1) + two_pass::triangle::certificates().size();
@@ -305,8 +305,8 @@ outcome two_pass_max_s_interpolated(const gs::model_options& o, const sweep_conf
                  fig("certificates_not_wrapping", static_cast<std::int64_t>(failed.count)),
                  fig("normals", static_cast<std::int64_t>(normals.size())), fig("bound_limit_s", limit),
                  fig("bound_s_max", bound_safe), fig("relaxation_certified_s", certified),
-                 fig("s_max_upper_classes", next_classes), fig("s_max_upper_classes_uncertified", next_bracketed ? next.uncertified : 0),
-                 fig("s_max_upper_normals", next_bracketed ? next.normals : 0)};
+                 fig("s_max_upper_classes", next.classes), fig("s_max_upper_classes_uncertified", next.uncertified),
+                 fig("s_max_upper_normals", next.normals)};
   out.witnesses = std::move(witnesses);
   const std::string settled = first_wrap > proven_safe + 1 ? "s = " + s_ranges({proven_safe + 1, first_wrap - 1}) + " is bracketed, not settled"
                                                            : std::string("the bound meets the lowest certificate");
@@ -337,7 +337,7 @@ outcome two_pass_max_s_interpolated(const gs::model_options& o, const sweep_conf
              "point of the vertex lights' ball that the falling plane passes) proves s <= " + std::to_string(bound_safe) +
              " for every normal" + certified_text + ". " + settled +
              (next_bracketed ? " (at s = " + std::to_string(next.s) + " the relaxation certifies all but " + std::to_string(next.uncertified) +
-                                   " of the " + std::to_string(next_classes) + " classes the bound leaves open, ctest proofs_certify_next_s: "
+                                   " of the " + std::to_string(next.classes) + " classes the bound leaves open, ctest proofs_certify_next_s: "
                                    "a wrap there needs one of their " + std::to_string(next.normals) + " normals, of the " +
                                    std::to_string(normals.size()) + ")"
                              : std::string()) +
