@@ -9,6 +9,8 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
+#include <stdexcept>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -132,13 +134,17 @@ void run(const args& a, context& ctx) {
   if (!a.expect.empty() && (!disp.frame || disp.frame->width == 0 || disp.frame->height == 0))
     throw usage_error("--expect: the dump displays no frame to compare");
   if (bufs.empty() && !disp.frame) return;
-  std::error_code ec;
-  std::filesystem::create_directories(a.out, ec);
-  if (ec) throw usage_error("--out " + a.out + ": " + ec.message());
+  std::optional<pipeline::staged_directory> out;  // the PNGs appear together or not at all
+  try {
+    out.emplace(a.out);
+  } catch (const std::runtime_error& e) {
+    throw usage_error("--out: " + std::string(e.what()));
+  }
+  int compared = 0;
   if (disp.frame && disp.frame->width > 0 && disp.frame->height > 0) {
-    const auto file = std::filesystem::path(a.out) / "display.png";
+    const auto file = out->path() / "display.png";
     write_picture(file, picture(m, disp.frame->buffer, disp.frame->x, disp.frame->y, disp.frame->width, disp.frame->height));
-    if (!a.expect.empty()) ctx.exit_code = compare_pngs(file.string(), a.expect, a.heat, 10, std::cout) == 0 ? 0 : 1;
+    if (!a.expect.empty()) compared = compare_pngs(file.string(), a.expect, a.heat, 10, std::cout) == 0 ? 0 : 1;
   }
   for (const auto& b : bufs) {
     unsigned h = a.height;
@@ -147,12 +153,18 @@ void run(const args& a, context& ctx) {
         if (t.bitbltbuf.DBP.value() == static_cast<int>(b.fbp * 32) && t.bitbltbuf.DBW.value() == static_cast<int>(b.fbw))
           h = std::max(h, static_cast<unsigned>(t.trxpos.DSAY.value() + t.trxreg.RRH.value()));
     if (h == 0) throw usage_error("--buffer " + b.text + ": no transfer wrote it; give --height");
-    const auto file = std::filesystem::path(a.out) /
+    const auto file = out->path() /
                       ("buffer_" + std::to_string(b.fbp) + "_" + std::to_string(b.fbw) + "_" +
                        std::string(mem::name_of(b.psm)) + ".png");
     const mem::buffer buf{fixed::uint<14>::from_wrapped(b.fbp * 32), fixed::uint<6>::from_wrapped(b.fbw), b.psm};
     write_picture(file, picture(m, buf, 0, 0, 64 * b.fbw, h));
   }
+  try {
+    out->commit();
+  } catch (const std::runtime_error& e) {
+    throw usage_error("--out: " + std::string(e.what()));
+  }
+  ctx.exit_code = compared;
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -26,6 +27,26 @@ void write_png(const std::filesystem::path& file, const image& img);
 // Writes `bytes` to FILE.tmp and renames it to FILE, so a reader never sees half a file; throws
 // std::runtime_error "FILE: why" (the temporary is removed) when either step fails.
 void write_file_atomically(const std::filesystem::path& file, std::string_view bytes);
+
+// A command's output folder, written completely or not at all: the files go into a fresh sibling
+// folder (path()); commit() renames it to `target`, or, when `target` exists, renames each file into
+// it (replacing the file of that name whole; the names in `last` at the end, e.g. the page whose
+// presence says the report is complete). Files of `target` the run did not write are kept. Destroyed
+// without commit() (an error, an exception), the sibling is removed and `target` is untouched.
+// Throws std::runtime_error "TARGET: why" when the folder cannot be made or moved.
+class staged_directory {
+ public:
+  explicit staged_directory(std::filesystem::path target);
+  ~staged_directory();
+  staged_directory(const staged_directory&) = delete;
+  staged_directory& operator=(const staged_directory&) = delete;
+  const std::filesystem::path& path() const noexcept { return staging_; }
+  void commit(const std::vector<std::string>& last = {});
+
+ private:
+  std::filesystem::path target_, staging_;
+  bool committed_ = false;
+};
 
 // The texels of an 8-bit PNG texture (power-of-two sides 8..1024, as the loaders above check): RGB
 // (alpha stripped), or grey when `grey` is set and the file is grey. Used by `gsdot3 pvr-bump`.

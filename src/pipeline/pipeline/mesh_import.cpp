@@ -16,6 +16,7 @@
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
+#include "pipeline/asset_folder.hpp"
 #include "pipeline/child_process.hpp"
 #include "pipeline/mesh_repair.hpp"
 
@@ -116,6 +117,9 @@ std::optional<texture_ref> find_normal_map(const aiScene& s, const std::vector<s
         }
       } else {
         std::replace(name.begin(), name.end(), '\\', '/');  // Windows exporters
+        if (const std::string why = outside_folder(dir, name); !why.empty())
+          throw std::runtime_error("the material's normal map " + name + " is " + why +
+                                   "; only files in the mesh's folder or below it are read");
         t.file = dir / std::filesystem::path(name);
       }
       found = std::move(t);
@@ -290,7 +294,11 @@ imported_mesh import_mesh(const std::filesystem::path& file, const import_option
     bytes = run_in_child(
         [&] {
           Assimp::Importer imp;
+          auto* io = new confined_io(file.parent_path());
+          imp.SetIOHandler(io);  // owned by imp
           const aiScene* s = imp.ReadFile(file.string(), import_flags);
+          if (!io->refused().empty())
+            throw std::runtime_error("refers to " + io->refused() + "; only files in the mesh's folder or below it are read");
           std::string ext = file.extension().string();
           if (!ext.empty()) ext.erase(0, 1);
           return serialise(from_scene(scene_or_error(s, imp, file.string()), file.string(), file.parent_path(), format_of(s, ext), options));

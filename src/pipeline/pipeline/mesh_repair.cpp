@@ -31,6 +31,15 @@ bool degenerate(glm::vec3 a, glm::vec3 b, glm::vec3 c) {
   return !(glm::length(glm::cross(e1, e2)) > 1e-7f * scale * scale);
 }
 
+// v / |v| computed on v scaled by its largest component first: glm::normalize squares the components,
+// and a node transform that scales by 1e-20 makes those squares denormal (found by
+// fuzz/mesh_from_scene: a normal of length 0.92 came out; regression-tangent-not-orthogonal).
+// A zero or non-finite v gives a non-finite result, which the callers drop.
+glm::vec3 unit_scaled(glm::vec3 v) {
+  const float m = std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
+  return glm::normalize(v / m);
+}
+
 glm::vec3 face_normal(glm::vec3 a, glm::vec3 b, glm::vec3 c) { return glm::normalize(glm::cross(b - a, c - a)); }
 
 float corner_angle(glm::vec3 p, glm::vec3 a, glm::vec3 b) {
@@ -272,15 +281,15 @@ mesh build_mesh(const std::vector<source_mesh>& meshes, const std::vector<source
       bool ill_conditioned = false;
       for (std::size_t i = 0; i < 3; ++i) {
         const tangent_corner& c = tc[t + i];
-        const glm::vec3 n = glm::normalize(nm * c.normal);
+        const glm::vec3 n = unit_scaled(nm * c.normal);
         const glm::vec3 tm = m3 * tan[t + i].tangent;
         const glm::vec3 bt = m3 * (glm::cross(c.normal, tan[t + i].tangent) * tan[t + i].sign);
         // Exactly, m3·t is orthogonal to the transformed normal; what is left after the projection
         // is only rounding when the transform is ill-conditioned (found by fuzz/mesh_from_scene:
         // a tangent normalised from a residual along n came out as −n).
-        const glm::vec3 tt = tm - n * glm::dot(n, tm);
-        ill_conditioned = ill_conditioned || !(glm::length(tt) > 1e-3f * glm::length(tm));
-        k[i] = {glm::vec3(in.transform * glm::vec4(c.position, 1.0f)), n, glm::normalize(tt), c.uv,
+        const glm::vec3 tm1 = unit_scaled(tm), tt = tm1 - n * glm::dot(n, tm1);
+        ill_conditioned = ill_conditioned || !(glm::length(tt) > 1e-3f);
+        k[i] = {glm::vec3(in.transform * glm::vec4(c.position, 1.0f)), n, unit_scaled(tt), c.uv,
                 glm::dot(glm::cross(n, tt), bt) < 0.0f ? -1.0f : 1.0f};
       }
       if (mirrored) std::swap(k[1], k[2]);

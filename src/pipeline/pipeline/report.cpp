@@ -1,6 +1,7 @@
 // pipeline/report.cpp — statistics, images and the HTML/JSON report (see report.hpp).
 #include "pipeline/report.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <fstream>
@@ -118,6 +119,17 @@ nlohmann::json to_json(const error_stats& s) {
           {"within_1", s.within_1}, {"wrap_errors", s.wraps}};
 }
 
+// Why a frame shows no pixel of the mesh, and what to try: a black frame with "RMSE 0" would say
+// nothing of the methods.
+std::string nothing_drawn(const scene& s, const prepared_scene& front) {
+  const std::size_t n = s.model.triangles.size();
+  return "the frame shows no pixel of the mesh: of its " + std::to_string(n) + " triangle(s) " +
+         std::to_string(front.culled_back) + " face away from the camera (back faces are culled), " +
+         std::to_string(front.dropped_outside) + " lie outside the view, " +
+         std::to_string(front.triangles.size()) + " are drawn but cover no pixel centre; try another --view AZIMUTH,ELEVATION "
+         "(e.g. --view 180,0), a larger --size, or check the file's winding (front faces are counter-clockwise)";
+}
+
 }  // namespace
 
 error_stats compare(const std::vector<std::vector<std::uint8_t>>& dot, const std::vector<std::vector<float>>& ref) {
@@ -143,25 +155,24 @@ report_summary write_report(const scene& s, const report_request& r) {
   namespace fs = std::filesystem;
   auto say = [&](const std::string& m) { if (r.progress) r.progress(m); };
   std::error_code ec;
-  fs::create_directories(r.out_dir, ec);
-  if (ec || !fs::is_directory(r.out_dir)) throw std::runtime_error(r.out_dir.string() + ": cannot create the output directory");
-  report_summary sum;
-  sum.html = r.out_dir / "report.html";
-  sum.json = r.out_dir / "report.json";
-  fs::remove(sum.html, ec);
-  fs::remove(sum.json, ec);
-  {  // fail early, before minutes of work, if the directory is not writable
+  if (fs::is_directory(r.out_dir, ec)) {  // fail early, before minutes of work, if it cannot be written into
     const fs::path probe = r.out_dir / ".gsdot3-write-test";
     std::ofstream p(probe);
     if (!p) throw std::runtime_error(r.out_dir.string() + ": the output directory is not writable");
     p.close();
     fs::remove(probe, ec);
   }
+  staged_directory staged(r.out_dir);  // nothing reaches out_dir unless the whole report is written
+  const fs::path& dir = staged.path();
+  report_summary sum;
+  sum.html = r.out_dir / "report.html";
+  sum.json = r.out_dir / "report.json";
   const int w = s.width, h = s.height;
 
   say("preparing the scene (" + std::to_string(s.model.triangles.size()) + " triangles, " + std::to_string(w) + "x" +
       std::to_string(h) + ")");
   const prepared_scene front = prepare(s, 0.0f, r.options.specular);
+  if (front.triangles.empty()) throw std::runtime_error(nothing_drawn(s, front));
 
   std::vector<frame> frames;
   for (method m : r.methods) {
@@ -173,6 +184,8 @@ report_summary write_report(const scene& s, const report_request& r) {
   say("rendering the float reference");
   const auto t0 = std::chrono::steady_clock::now();
   const std::vector<std::int32_t>& visible = frames.front().visible_triangle;
+  if (std::none_of(visible.begin(), visible.end(), [](std::int32_t t) { return t >= 0; }))
+    throw std::runtime_error(nothing_drawn(s, front));
   const reference_frame ref = render_reference(s, front, visible, r.options.bilinear, r.options.specular_power);
   sum.reference_seconds = seconds_since(t0);
   sum.normalisation = compare(ref.unnormalised, ref.renormalised);
@@ -192,9 +205,9 @@ report_summary write_report(const scene& s, const report_request& r) {
   if (!r.input_json.empty()) j["input"] = nlohmann::json::parse(r.input_json);
   j["units"] = "dot products in 1/128 (a DPB byte 0x80 + d stands for d/128)";
   j["reference"] = {{"seconds", sum.reference_seconds}, {"normalisation_error", to_json(sum.normalisation)}};
-  write_png(r.out_dir / "reference-lit.png", rgb_image(w, h, ref.colour));
+  write_png(dir / "reference-lit.png", rgb_image(w, h, ref.colour));
   for (std::size_t l = 0; l < s.lights.size(); ++l)
-    write_png(r.out_dir / ("reference-dot-light" + std::to_string(l) + ".png"), grey_image(w, h, reference_bytes(ref.renormalised[l])));
+    write_png(dir / ("reference-dot-light" + std::to_string(l) + ".png"), grey_image(w, h, reference_bytes(ref.renormalised[l])));
 
   for (std::size_t k = 0; k < frames.size(); ++k) {
     method_result& mr = sum.methods[k];
@@ -204,11 +217,11 @@ report_summary write_report(const scene& s, const report_request& r) {
     j["methods"][nm] = {{"frame_seconds", mr.seconds},
                         {"vs_renormalised", to_json(mr.vs_renormalised)},
                         {"vs_unnormalised", to_json(mr.vs_unnormalised)}};
-    write_png(r.out_dir / (nm + "-lit.png"), rgb_image(w, h, frames[k].colour));
+    write_png(dir / (nm + "-lit.png"), rgb_image(w, h, frames[k].colour));
     for (std::size_t l = 0; l < s.lights.size(); ++l) {
       const std::string dot = nm + "-dot-light" + std::to_string(l) + ".png", err = nm + "-error-light" + std::to_string(l) + ".png";
-      write_png(r.out_dir / dot, grey_image(w, h, frames[k].dot[l]));
-      write_png(r.out_dir / err, error_map(w, h, [&](std::size_t i) { return dot_value(frames[k].dot[l][i]); }, ref.renormalised[l]));
+      write_png(dir / dot, grey_image(w, h, frames[k].dot[l]));
+      write_png(dir / err, error_map(w, h, [&](std::size_t i) { return dot_value(frames[k].dot[l][i]); }, ref.renormalised[l]));
     }
   }
 
@@ -228,14 +241,14 @@ report_summary write_report(const scene& s, const report_request& r) {
                         {"compared_with", sm->non_negative ? "max(reference, 0)" : "reference"},
                         {"vs_renormalised", to_json(sr.vs_renormalised)},
                         {"vs_unnormalised", to_json(sr.vs_unnormalised)}};
-    write_png(r.out_dir / (nm + "-lit.png"), rgb_image(w, h, sf.colour));
+    write_png(dir / (nm + "-lit.png"), rgb_image(w, h, sf.colour));
     for (std::size_t l = 0; l < s.lights.size(); ++l) {
       const std::string dot = nm + "-dot-light" + std::to_string(l) + ".png", err = nm + "-error-light" + std::to_string(l) + ".png";
       std::vector<float> against = ref.renormalised[l];
       if (sm->non_negative)
         for (float& v : against) v = std::isnan(v) ? v : std::max(v, 0.0f);
-      write_png(r.out_dir / dot, grey_image(w, h, reference_bytes(sf.dot[l])));
-      write_png(r.out_dir / err, error_map(w, h, [&](std::size_t i) { return static_cast<double>(sf.dot[l][i]); }, against));
+      write_png(dir / dot, grey_image(w, h, reference_bytes(sf.dot[l])));
+      write_png(dir / err, error_map(w, h, [&](std::size_t i) { return static_cast<double>(sf.dot[l][i]); }, against));
     }
     sum.schemes.push_back(sr);
     page.scheme_dots.emplace_back(nm, sf.dot);
@@ -249,14 +262,14 @@ report_summary write_report(const scene& s, const report_request& r) {
     say("rendering the back views for the side-by-side");
     const prepared_scene back = prepare(s, 180.0f, r.options.specular);
     auto lit = [&](const prepared_scene& ps, method m) { return rgb_image(w, h, render(s, ps, m, r.options).colour); };
-    write_png(r.out_dir / "side-by-side.png", montage(lit(front, method::two_pass), lit(front, method::four_pass),
+    write_png(dir / "side-by-side.png", montage(lit(front, method::two_pass), lit(front, method::four_pass),
                                                       lit(back, method::two_pass), lit(back, method::four_pass)));
   }
 
   // GS local memory (gs_memory): the PSMCT32 DPB page read as the PSMT8 texture of the post filter,
   // and whether the memory path gives the frames above bit for bit.
-  write_png(r.out_dir / "memory-psmct32-as-psmt8.png", page_overlay_image(gs::mem::psm::PSMCT32, gs::mem::psm::PSMT8, "channel", 4));
-  write_png(r.out_dir / "memory-psmct32-as-psmz32.png", page_overlay_image(gs::mem::psm::PSMCT32, gs::mem::psm::PSMZ32, "pixel", 4));
+  write_png(dir / "memory-psmct32-as-psmt8.png", page_overlay_image(gs::mem::psm::PSMCT32, gs::mem::psm::PSMT8, "channel", 4));
+  write_png(dir / "memory-psmct32-as-psmz32.png", page_overlay_image(gs::mem::psm::PSMCT32, gs::mem::psm::PSMZ32, "pixel", 4));
   j["options"]["memory_path"] = r.options.memory_path;
   j["options"]["dpb_clear"] = std::string(name(r.options.dpb_clear));
   j["memory"]["pictures"] = {"memory-psmct32-as-psmt8.png", "memory-psmct32-as-psmz32.png"};
@@ -271,8 +284,8 @@ report_summary write_report(const scene& s, const report_request& r) {
     traced.trace = &trace;
     render(s, front, sum.methods.front().m, traced);
     const dpb_pictures dpb = post_filter_dpb_pictures(trace, w, h, traced.dpb_clear == dpb_clear_mode::z_trick);
-    write_png(r.out_dir / "memory-dpb-psmct32.png", dpb.display);
-    write_png(r.out_dir / "memory-dpb-as-psmt8.png", dpb.as_psmt8);
+    write_png(dir / "memory-dpb-psmct32.png", dpb.display);
+    write_png(dir / "memory-dpb-as-psmt8.png", dpb.as_psmt8);
     j["memory"]["dpb_pictures"] = {{"method", std::string(name(sum.methods.front().m))},
                                    {"files", {"memory-dpb-psmct32.png", "memory-dpb-as-psmt8.png"}}};
   }
@@ -286,12 +299,15 @@ report_summary write_report(const scene& s, const report_request& r) {
           f.colour == frames[k].colour && f.dot == frames[k].dot;
     }
   }
-  write_file_atomically(sum.json, j.dump(2) + "\n");
+  write_file_atomically(dir / "report.json", j.dump(2) + "\n");
   if (r.write_html) {
     say("writing the page and the inspector's per-pixel data");
     page.report_json = j.dump(2);
-    write_report_page(r.out_dir, page);  // last: the page's presence means the report is complete
+    write_report_page(dir, page);
+  } else {
+    fs::remove(sum.html, ec);  // a previous run's page would describe other frames
   }
+  staged.commit({"report.json", "report.html"});  // last: the page's presence means the report is complete
   return sum;
 }
 

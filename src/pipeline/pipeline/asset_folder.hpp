@@ -1,0 +1,35 @@
+// pipeline/asset_folder.hpp — the files a mesh may read: its own folder and what lies below it.
+// glTF 2.0 resolves a URI relative to the file that holds it (glTF 2.0 specification, section 3.3
+// "URIs": relative paths; data: URIs embed the bytes); a model downloaded from the web must not read
+// /etc/passwd as vertex data or fetch from a server. Every file assimp opens goes through
+// confined_io (Importer::SetIOHandler), and the material's normal-map file through inside_folder.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include <assimp/DefaultIOSystem.h>
+
+namespace gsdot3::pipeline {
+
+// The reason `reference` (a path as a file names it, or as assimp composed it from the folder and a
+// URI) may not be read from `folder`, or "" when it may: an absolute path or a "..", once resolved
+// (symbolic links included), outside the folder, or a URI scheme other than a plain file path
+// ("http:", "file:"; data: URIs never reach a file system and are decoded by the importer).
+std::string outside_folder(const std::filesystem::path& folder, const std::string& reference);
+
+// assimp's standard file access, refusing what outside_folder refuses; the first refusal is kept so
+// that the import's error names it (assimp's own message would only say a buffer was missing).
+class confined_io : public Assimp::DefaultIOSystem {
+ public:
+  explicit confined_io(std::filesystem::path folder) : folder_(std::move(folder)) {}
+  bool Exists(const char* file) const override;
+  Assimp::IOStream* Open(const char* file, const char* mode = "rb") override;
+  const std::string& refused() const noexcept { return refused_; }
+
+ private:
+  std::filesystem::path folder_;
+  mutable std::string refused_;
+};
+
+}  // namespace gsdot3::pipeline
