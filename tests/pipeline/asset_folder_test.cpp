@@ -68,8 +68,10 @@ TEST(AssetFolder, GltfBuffersOutsideTheFilesFolderAreRefused) {
 
   EXPECT_EQ(import_mesh(dir / "model" / "relative.gltf").model.triangles.size(), 1u);
   EXPECT_EQ(import_mesh(dir / "model" / "data.gltf").model.triangles.size(), 1u);
-  for (const char* f : {"absolute.gltf", "dotdot.gltf", "deeper_dotdot.gltf"})
+  for (const char* f : {"dotdot.gltf", "deeper_dotdot.gltf"})
     expect_error([&] { import_mesh(dir / "model" / f); }, "outside the file's folder");
+  // assimp composes "model//DIR/outside.bin", which is looked for below model/ and is not there.
+  expect_error([&] { import_mesh(dir / "model" / "absolute.gltf"); }, "could not open referenced file");
   expect_error([&] { import_mesh(dir / "model" / "http.gltf"); }, "URI scheme (http:)");
   fs::remove_all(dir);
 }
@@ -77,15 +79,16 @@ TEST(AssetFolder, GltfBuffersOutsideTheFilesFolderAreRefused) {
 TEST(AssetFolder, OutsideFolderJudgesTheResolvedPath) {
   const fs::path dir = gsdot3::test::fresh_temp_dir("gsdot3-asset-folder");
   fs::create_directories(dir / "m" / "maps");
-  EXPECT_EQ(outside_folder(dir / "m", "maps/n.png"), "");
-  EXPECT_EQ(outside_folder(dir / "m", "maps/../n.png"), "");  // still inside
-  EXPECT_NE(outside_folder(dir / "m", "../n.png"), "");
+  const std::string m = (dir / "m").string();
+  EXPECT_EQ(outside_folder(dir / "m", m + "/maps/n.png"), "");
+  EXPECT_EQ(outside_folder(dir / "m", m + "/maps/../n.png"), "");  // still inside
+  EXPECT_EQ(outside_folder(dir / "m", m + "//etc/passwd"), "");     // opened as m/etc/passwd
+  EXPECT_NE(outside_folder(dir / "m", m + "/../n.png"), "");
   EXPECT_NE(outside_folder(dir / "m", "/etc/passwd"), "");
-  EXPECT_NE(outside_folder(dir / "m", (dir / "m").string() + "//etc/passwd"), "");  // as assimp composes it
-  EXPECT_NE(outside_folder(dir / "m", "file:///etc/passwd"), "");
-  EXPECT_NE(outside_folder(dir / "m", "C:/textures/n.png"), "");
+  EXPECT_NE(outside_folder(dir / "m", m + "/file:///etc/passwd"), "");
+  EXPECT_NE(outside_folder(dir / "m", m + "/C:/textures/n.png"), "");
   fs::create_directory_symlink("/etc", dir / "m" / "link");  // a link out of the folder is outside
-  EXPECT_NE(outside_folder(dir / "m", "link/passwd"), "");
+  EXPECT_NE(outside_folder(dir / "m", m + "/link/passwd"), "");
   fs::remove_all(dir);
 }
 

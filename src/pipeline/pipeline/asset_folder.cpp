@@ -26,14 +26,16 @@ std::string outside_folder(const std::filesystem::path& folder, const std::strin
   namespace fs = std::filesystem;
   std::error_code ec;
   const fs::path root = fs::weakly_canonical(fs::absolute(folder.empty() ? fs::path(".") : folder, ec), ec);
-  std::string rest = reference;  // assimp composes "folder/uri": judge the uri part
+  // The scheme is judged on what the file named: assimp composes "folder/" + the URI.
+  std::string named = reference;
   const std::string prefix = folder.empty() ? std::string() : folder.string() + "/";
-  if (!prefix.empty() && rest.compare(0, prefix.size(), prefix) == 0) rest.erase(0, prefix.size());
-  if (has_scheme(rest)) return "a URI scheme (" + rest.substr(0, rest.find(':') + 1) + ") other than a relative path";
-  const fs::path p = fs::path(rest).is_absolute() ? fs::path(rest) : root / fs::path(rest);  // "folder//etc/x": /etc/x
-  const fs::path resolved = fs::weakly_canonical(p, ec);
+  if (!prefix.empty() && named.compare(0, prefix.size(), prefix) == 0) named.erase(0, prefix.size());
+  named.erase(0, named.find_first_not_of('/'));
+  if (has_scheme(named)) return "a URI scheme (" + named.substr(0, named.find(':') + 1) + ") other than a relative path";
+  // The rest as the operating system opens the path: "a//b" is "a/b", ".." and links resolved.
+  const fs::path resolved = fs::weakly_canonical(fs::absolute(fs::path(reference), ec), ec);
   if (ec) return "a path that cannot be resolved";
-  const auto [r, q] = std::mismatch(root.begin(), root.end(), resolved.begin(), resolved.end());
+  const auto r = std::mismatch(root.begin(), root.end(), resolved.begin(), resolved.end()).first;
   if (r != root.end()) return "a path outside the file's folder (" + resolved.string() + ")";
   return "";
 }

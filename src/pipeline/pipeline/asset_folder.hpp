@@ -12,10 +12,12 @@
 
 namespace gsdot3::pipeline {
 
-// The reason `reference` (a path as a file names it, or as assimp composed it from the folder and a
-// URI) may not be read from `folder`, or "" when it may: an absolute path or a "..", once resolved
-// (symbolic links included), outside the folder, or a URI scheme other than a plain file path
-// ("http:", "file:"; data: URIs never reach a file system and are decoded by the importer).
+// The reason the path `reference` (as assimp composes it, "folder/" + the URI, or as the caller
+// joins folder and a material's file name) may not be opened, or "" when it may: resolved as the
+// operating system opens it (relative to the working directory, "a//b" as "a/b", ".." and symbolic
+// links followed), it lies outside `folder`; or the name has a URI scheme ("http:", "file:"; data:
+// URIs never reach a file system, the importer decodes them). An absolute glTF URI composed under
+// the folder ("folder//etc/passwd") is looked for there and never reaches the absolute location.
 std::string outside_folder(const std::filesystem::path& folder, const std::string& reference);
 
 // assimp's standard file access, refusing what outside_folder refuses; the first refusal is kept so

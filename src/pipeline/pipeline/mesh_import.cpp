@@ -117,7 +117,7 @@ std::optional<texture_ref> find_normal_map(const aiScene& s, const std::vector<s
         }
       } else {
         std::replace(name.begin(), name.end(), '\\', '/');  // Windows exporters
-        if (const std::string why = outside_folder(dir, name); !why.empty())
+        if (const std::string why = outside_folder(dir, (dir / name).string()); !why.empty())
           throw std::runtime_error("the material's normal map " + name + " is " + why +
                                    "; only files in the mesh's folder or below it are read");
         t.file = dir / std::filesystem::path(name);

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <stdexcept>
 
@@ -151,6 +152,19 @@ error_stats compare(const std::vector<std::vector<float>>& x, const std::vector<
   return a.done();
 }
 
+std::string normalisation_warning(const error_stats& n) {
+  if (!(n.rmse > normalisation_warning_rmse)) return "";
+  char figures[96];
+  std::snprintf(figures, sizeof figures, "RMSE %.1f, max %.1f", n.rmse, n.max_abs);
+  return std::string("the float reference's own normalisation error is large (") + figures +
+         " /128): the vertices' tangent-space light vectors differ so much across each triangle that their "
+         "interpolation, which every method here draws with (per vertex, as the paper's do), is far from the "
+         "per-pixel vector, so the methods' errors against the renormalised reference are mostly this, not "
+         "fixed-point error (compare them with the unnormalised reference); four-pass interpolates sphere-map "
+         "coordinates instead, which stay unit length, so it comes out brighter. The usual cause is one smooth "
+         "normal per corner across hard edges (a cube): give the file split normals, or --normals flat when it has none";
+}
+
 report_summary write_report(const scene& s, const report_request& r) {
   namespace fs = std::filesystem;
   auto say = [&](const std::string& m) { if (r.progress) r.progress(m); };
@@ -189,6 +203,8 @@ report_summary write_report(const scene& s, const report_request& r) {
   const reference_frame ref = render_reference(s, front, visible, r.options.bilinear, r.options.specular_power);
   sum.reference_seconds = seconds_since(t0);
   sum.normalisation = compare(ref.unnormalised, ref.renormalised);
+  sum.warning = normalisation_warning(sum.normalisation);
+  if (!sum.warning.empty()) say(sum.warning);
 
   say("writing images to " + r.out_dir.string());
   nlohmann::json j;
@@ -204,7 +220,8 @@ report_summary write_report(const scene& s, const report_request& r) {
     j["options"]["model"][std::string(opt.name)] = std::string(gs::option_value(r.options.model, opt.name));
   if (!r.input_json.empty()) j["input"] = nlohmann::json::parse(r.input_json);
   j["units"] = "dot products in 1/128 (a DPB byte 0x80 + d stands for d/128)";
-  j["reference"] = {{"seconds", sum.reference_seconds}, {"normalisation_error", to_json(sum.normalisation)}};
+  j["reference"] = {{"seconds", sum.reference_seconds}, {"normalisation_error", to_json(sum.normalisation)},
+                    {"warning", sum.warning}};
   write_png(dir / "reference-lit.png", rgb_image(w, h, ref.colour));
   for (std::size_t l = 0; l < s.lights.size(); ++l)
     write_png(dir / ("reference-dot-light" + std::to_string(l) + ".png"), grey_image(w, h, reference_bytes(ref.renormalised[l])));

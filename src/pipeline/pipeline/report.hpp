@@ -55,12 +55,23 @@ struct report_summary {
   std::vector<scheme_result> schemes;
   double reference_seconds = 0;
   error_stats normalisation;  // unnormalised − renormalised reference
+  // Why the frames disagree with the renormalised reference for a reason other than fixed-point
+  // arithmetic (normalisation_warning), or empty.
+  std::string warning;
   std::filesystem::path html, json;
 };
 
-// Renders, compares and writes everything into out_dir (created if missing). Throws
-// std::runtime_error (one line) when the directory cannot be written; report.html / report.json are
-// written last, to temporary names renamed when complete, after any old ones are removed.
+// The RMSE (1/128 units) of the float reference's own normalisation error above which the report
+// says that interpolating per-vertex vectors, not the methods' arithmetic, dominates their error:
+// the largest RMSE of a GS method against the unnormalised reference on the embedded scene is
+// about 2, so above 4 most of a method's error against the renormalised one is normalisation.
+inline constexpr double normalisation_warning_rmse = 4.0;
+std::string normalisation_warning(const error_stats& normalisation);
+
+// Renders, compares and writes everything into a staged folder that becomes out_dir only when all
+// is written (staged_directory: nothing half written; files of out_dir it does not write are kept).
+// Throws std::runtime_error (one line) when the directory cannot be written or the frame shows no
+// pixel of the mesh (with what to try).
 report_summary write_report(const scene& s, const report_request& r);
 
 }  // namespace gsdot3::pipeline
