@@ -3,6 +3,9 @@
 // projected dP/du of the triangles edge-connected to it around its vertex with the same UV
 // orientation. Each test states which triangles group at each corner and why; the expected vectors
 // are computed here from the construction (face axes, projections), never from the code under test.
+// Cross-check, by hand once (not in ctest: it needs node): the same seven meshes through the npm
+// package mikktspace 1.1.1 (a WASM build of the reference mikktspace.c, genTangSpaceDefault) give
+// the same tangent on all 147 corners within 0.02° (float rounding) and the same sign on every one.
 #include <gtest/gtest.h>
 
 #include <array>
