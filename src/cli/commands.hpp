@@ -24,6 +24,7 @@ struct usage_error : std::runtime_error {
 void add_alu_command(CLI::App& app, context& ctx);
 void add_normal_encoding_command(CLI::App& app, context& ctx);
 void add_mem_command(CLI::App& app, context& ctx);
+void add_mesh_info_command(CLI::App& app, context& ctx);  // a mesh file as the importer reads it
 void add_prove_command(CLI::App& app, context& ctx);
 void add_pvr_bump_command(CLI::App& app, context& ctx);  // seed 004 bump textures
 void add_render_command(CLI::App& app, context& ctx);  // render and report

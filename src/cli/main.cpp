@@ -13,6 +13,7 @@ int main(int argc, char** argv) {
   gsdot3::cli::add_alu_command(app, ctx);
   gsdot3::cli::add_normal_encoding_command(app, ctx);
   gsdot3::cli::add_mem_command(app, ctx);
+  gsdot3::cli::add_mesh_info_command(app, ctx);
   gsdot3::cli::add_prove_command(app, ctx);
   gsdot3::cli::add_pvr_bump_command(app, ctx);
   gsdot3::cli::add_render_command(app, ctx);

@@ -8,9 +8,11 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "import_options.hpp"
 #include "scene_options.hpp"
 #include "gs_arith/options.hpp"
 #include "gs_arith/profiles.hpp"
+#include "pipeline/mesh_export.hpp"
 #include "pipeline/mesh_import.hpp"
 #include "pipeline/report.hpp"
 #include "pipeline/scene_input.hpp"
@@ -23,7 +25,8 @@ struct render_args {
   std::string out = "gsdot3-out", method = "all", mesh, normal_map, size = "512x448", filter = "nearest", path = "cached";
   std::string camera, height_map;
   std::string profile;
-  std::string normals = "smooth", uv_projection, tangents = "auto", normal_map_y = "up", view;
+  std::string normal_map_y = "up", view, export_mesh;
+  import_args import;
   float bump = 0.05f;
   std::vector<std::string> lights, model_options;
   int s = 122, threads = 2;
@@ -149,17 +152,7 @@ scene_setup setup(const render_args& a) {
   std::vector<float> eye;
   if (!a.camera.empty()) eye = parse_floats("--camera", a.camera, 3);
 
-  pipeline::import_options import;
-  if (a.normals != "smooth" && a.normals != "flat") throw usage_error("--normals: expected flat or smooth, got '" + a.normals + "'");
-  import.normals = a.normals == "flat" ? pipeline::normals_mode::flat : pipeline::normals_mode::smooth;
-  if (!a.uv_projection.empty()) {
-    if (a.uv_projection == "box") import.uvs = pipeline::uv_projection::box;
-    else if (a.uv_projection == "sphere") import.uvs = pipeline::uv_projection::sphere;
-    else if (a.uv_projection == "planar") import.uvs = pipeline::uv_projection::planar;
-    else throw usage_error("--uv-projection: expected box, sphere or planar, got '" + a.uv_projection + "'");
-  }
-  if (a.tangents != "auto" && a.tangents != "mikktspace") throw usage_error("--tangents: expected auto or mikktspace, got '" + a.tangents + "'");
-  import.tangents = a.tangents == "auto" ? pipeline::tangent_mode::automatic : pipeline::tangent_mode::mikktspace;
+  const pipeline::import_options import = parse_import_options(a.import);
 
   if (!a.normal_map.empty() && !a.height_map.empty()) throw usage_error("--normal-map and --height-map exclude each other");
   if (!a.height_map.empty() && !(a.bump > 0.0f && a.bump <= 100.0f)) throw usage_error("--bump: expected a strength in (0, 100]");
@@ -191,6 +184,14 @@ scene_setup setup(const render_args& a) {
 void run(const render_args& a, bool html, context& ctx) {
   const scene_setup st = setup(a);
   const pipeline::scene_input& in = st.in;
+  if (!a.export_mesh.empty()) {
+    try {
+      pipeline::export_mesh_glb(in.s.model, a.export_mesh);
+    } catch (const std::runtime_error& e) {
+      throw usage_error(e.what());
+    }
+    progress("wrote " + a.export_mesh + " (the mesh as drawn: centred and scaled to its unit bounding sphere)");
+  }
   pipeline::report_request req;
   req.out_dir = a.out;
   req.methods = st.methods;
@@ -227,10 +228,7 @@ void add_options(CLI::App* cmd, render_args& a) {
   cmd->add_option("--mesh", a.mesh,
                   "mesh file read by assimp: OBJ, glTF 2.0 (.gltf, .glb), PLY, FBX, Collada, ...; all its meshes merged with "
                   "their node transforms; default: the embedded head");
-  cmd->add_option("--normals", a.normals, "normals generated for a mesh without them: smooth (angle-weighted) | flat")->capture_default_str();
-  cmd->add_option("--uv-projection", a.uv_projection, "generate UVs for a mesh without them: box | sphere | planar");
-  cmd->add_option("--tangents", a.tangents, "auto (the file's tangents, e.g. glTF TANGENT, else MikkTSpace) | mikktspace (always computed)")
-      ->capture_default_str();
+  add_import_options(cmd, a.import);
   cmd->add_option("--normal-map", a.normal_map,
                   "tangent-space normal map, PNG, JPEG or TGA of any size (resampled to power-of-two sides 8..1024), quantised "
                   "to 256 entries; default: the mesh material's (glTF normalTexture, MTL norm/bump), else the procedural one");
@@ -271,10 +269,15 @@ std::function<scene_setup()> add_scene_options(CLI::App* cmd) {
   return [a] { return setup(*a); };
 }
 
+constexpr const char* export_mesh_help =
+    "also write the mesh the renderer drew (centred and scaled to its unit bounding sphere, as drawn) as OUT.glb: "
+    "NORMAL, TANGENT (w = handedness) and TEXCOORD_0, for Blender or any glTF viewer";
+
 void add_render_command(CLI::App& app, context& ctx) {
   auto args = std::make_shared<render_args>();
   auto* render = app.add_subcommand("render", "Render the scene with each method through the GS model; PNGs + report.json");
   render->add_option("--out", args->out, "output directory (created if missing)")->capture_default_str();
+  render->add_option("--export-mesh", args->export_mesh, export_mesh_help);
   add_options(render, *args);
   render->callback([args, &ctx] { run(*args, false, ctx); });
 
@@ -282,6 +285,7 @@ void add_render_command(CLI::App& app, context& ctx) {
   auto* report = app.add_subcommand(
       "report", "Render and compare with the float dot product; writes report.html (+ PNGs, report.json) and prints its path");
   report->add_option("--out", rargs->out, "output directory (created if missing)")->capture_default_str();
+  report->add_option("--export-mesh", rargs->export_mesh, export_mesh_help);
   add_options(report, *rargs);
   report->callback([rargs, &ctx] { run(*rargs, true, ctx); });
 }

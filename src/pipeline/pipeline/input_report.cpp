@@ -21,17 +21,23 @@ std::string escape(const std::string& text) {
 
 }  // namespace
 
+std::string mesh_json(const import_report& r) {
+  const nlohmann::json j = {
+      {"file", r.file}, {"format", r.format}, {"meshes", r.meshes}, {"instances", r.instances}, {"triangles", r.triangles},
+      {"dropped", {{"points", r.dropped_points}, {"lines", r.dropped_lines}, {"zero_area_triangles", r.dropped_degenerate}}},
+      {"duplicate_triangles", {{"found", r.duplicate_triangles}, {"action", r.duplicates_dropped ? "drop" : "keep"}}},
+      {"normals", {{"source", r.normals}, {"generated_positions", r.normals_generated},
+                   {"renormalised_positions", r.normals_renormalised}, {"replaced_positions", r.normals_replaced}}},
+      {"uvs", r.uvs},
+      {"tangents", {{"source", r.tangents}, {"convention", "MikkTSpace (glTF 2.0)"},
+                    {"zero_uv_area_triangles", r.zero_uv_area_triangles}, {"fallback_corners", r.fallback_tangent_corners}}}};
+  return j.dump();
+}
+
 std::string input_json(const input_summary& s) {
   nlohmann::json j;
   if (s.mesh) {
-    const import_report& r = *s.mesh;
-    j["mesh"] = {{"file", r.file}, {"format", r.format}, {"meshes", r.meshes}, {"instances", r.instances}, {"triangles", r.triangles},
-                 {"dropped", {{"points", r.dropped_points}, {"lines", r.dropped_lines}, {"zero_area_triangles", r.dropped_degenerate}}},
-                 {"normals", {{"source", r.normals}, {"generated_positions", r.normals_generated},
-                              {"renormalised_positions", r.normals_renormalised}, {"replaced_positions", r.normals_replaced}}},
-                 {"uvs", r.uvs},
-                 {"tangents", {{"source", r.tangents}, {"convention", "MikkTSpace (glTF 2.0)"},
-                               {"zero_uv_area_triangles", r.zero_uv_area_triangles}, {"fallback_corners", r.fallback_tangent_corners}}}};
+    j["mesh"] = nlohmann::json::parse(mesh_json(*s.mesh));
   } else {
     j["mesh"] = {{"file", nullptr}, {"format", "embedded procedural head"}};
   }

@@ -22,6 +22,7 @@ struct input_summary {
 };
 
 std::string input_json(const input_summary& s);  // a JSON object, one line
+std::string mesh_json(const import_report& r);    // its "mesh" object (also gsdot3 mesh-info's)
 std::string input_html(const input_summary& s);  // <h2>Input</h2> and a small table
 
 }  // namespace gsdot3::pipeline

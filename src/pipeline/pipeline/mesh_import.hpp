@@ -20,11 +20,13 @@ namespace gsdot3::pipeline {
 enum class normals_mode { smooth, flat };               // for meshes without normals
 enum class uv_projection { none, box, sphere, planar };  // for meshes without UVs; none: refuse
 enum class tangent_mode { automatic, mikktspace };       // automatic: the file's tangents when it has them
+enum class duplicates_mode { drop, keep };              // triangles drawn twice (mesh_duplicates.hpp)
 
 struct import_options {
   normals_mode normals = normals_mode::smooth;
   uv_projection uvs = uv_projection::none;
   tangent_mode tangents = tangent_mode::automatic;
+  duplicates_mode duplicates = duplicates_mode::drop;
 };
 
 // The material's normal map: a file beside the mesh, or an image embedded in it (.glb).
@@ -50,6 +52,8 @@ struct import_report {
   std::string uvs = "file";                // file | box projection | sphere projection | planar projection
   std::string tangents = "MikkTSpace (computed)";  // or "file (TANGENT)"
   std::size_t zero_uv_area_triangles = 0, fallback_tangent_corners = 0;
+  std::size_t duplicate_triangles = 0;     // same positions and winding as an earlier triangle
+  bool duplicates_dropped = true;          // import_options::duplicates
   std::vector<std::string> notices;        // one line each, in the order they arose
 };
 

@@ -12,6 +12,7 @@
 #include <glm/mat3x3.hpp>
 #include <glm/matrix.hpp>
 
+#include "pipeline/mesh_duplicates.hpp"
 #include "pipeline/mikktspace.hpp"
 
 namespace gsdot3::pipeline {
@@ -313,6 +314,8 @@ mesh build_mesh(const std::vector<source_mesh>& meshes, const std::vector<source
                                                 : "file (TANGENT) for " + std::to_string(meshes_file_tangents) +
                                                       " meshes, MikkTSpace (computed) for " + std::to_string(meshes_mikk);
   mesh out = weld(all);
+  report.duplicates_dropped = options.duplicates == duplicates_mode::drop;
+  report.duplicate_triangles = find_duplicate_triangles(out, report.duplicates_dropped);
   report.triangles = out.triangles.size();
   validate(out);
   return out;

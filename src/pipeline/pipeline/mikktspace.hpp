@@ -1,7 +1,7 @@
 // pipeline/mikktspace.hpp — per-corner tangent frames in the MikkTSpace convention (M. Mikkelsen,
-// "Simulation of Wrinkled Surfaces Revisited", 2008, and the description on mikktspace.com), the
-// convention glTF 2.0 prescribes and normal-map bakers (Blender, Substance, xNormal) bake against.
-// Written from the algorithm's description; no code of the reference implementation is used.
+// "Simulation of Wrinkled Surfaces Revisited", 2008), the convention glTF 2.0 prescribes and
+// normal-map bakers (Blender, Substance, xNormal) bake against. The behaviour follows the reference
+// implementation, mikktspace.c (github mmikk/MikkTSpace), read for its rules; no code of it is used.
 #pragma once
 
 #include <cstddef>
@@ -24,25 +24,37 @@ struct corner_tangent {
 };
 
 struct mikktspace_result {
-  std::vector<corner_tangent> corners;   // one per input corner
+  std::vector<corner_tangent> corners;     // one per input corner
   std::size_t zero_uv_area_triangles = 0;  // triangles whose UVs span no area (no direction of their own)
   std::size_t fallback_corners = 0;        // corners no triangle gave a direction: a fixed frame from the normal
 };
 
-// The algorithm, as described:
-// 1. Corners with bit-identical position, normal and UV are one vertex (seams stay split).
-// 2. Each triangle with non-zero UV area gives its direction of increasing u (dP/du) and its UV
-//    orientation (the sign of its UV area: mirrored UVs have the opposite sign).
-// 3. At each vertex, the triangles of one orientation form a group; the group's tangent is the
-//    sum of the triangles' dP/du projected into the vertex normal's plane and normalised, each
-//    weighted by the triangle's angle at the vertex (also measured in that plane), then normalised.
-//    The sign is +1 for a positive UV area, −1 for a negative one.
-// 4. A triangle with zero UV area takes, at each corner, the vertex's group with the larger total
-//    weight (if any other triangle there has a direction); else the corner gets the fallback frame:
-//    the unit vector orthogonal to the normal nearest to x (or y when the normal is near ±x), sign +1.
-// Simplification against the reference implementation: it splits a vertex's triangles into groups
-// by edge connectivity as well as orientation; here a vertex's triangles of one orientation are one
-// group even if they do not share edges (only non-manifold "bow-tie" vertices differ).
+// The algorithm, as mikktspace.c's genTangSpace (default angular threshold 180°, from
+// genTangSpaceDefault) does it for triangles:
+// 1. Corners with equal position, normal and UV are one vertex (GenerateSharedVerticesIndexList).
+// 2. Each triangle with non-zero UV area has its unit directions of increasing u and v (dP/du,
+//    dP/dv, negated on a triangle with negative UV area) and its orientation, the sign of its UV area
+//    (InitTriInfo); one with zero UV area has none and groups with any neighbour ("group with any").
+// 3. Two triangles are neighbours across an edge whose two vertices they share, traversed in
+//    opposite directions; an edge of more than two triangles pairs them in triangle order
+//    (BuildNeighborsFast).
+// 4. At each vertex, a group is the triangles reached from a triangle through neighbours across the
+//    edges at that vertex, all of one orientation; a zero-UV-area triangle takes the orientation of
+//    the first group that reaches it (Build4RuleGroups, AssignRecur). So a vertex's triangles that
+//    share no edge there (a bow-tie vertex, or faces of a cube whose UVs meet only at a corner) are
+//    separate groups, as are the two sides of a mirrored UV seam.
+// 5. A corner's tangent is the sum over the triangles of its group whose projected dP/du and dP/dv
+//    are not both opposite to its own triangle's (cosine > cos 180°; GenerateTSpaces) of dP/du
+//    projected into the vertex normal's plane and normalised, each weighted by the triangle's angle
+//    at the vertex measured in that plane, then normalised (EvalTspace). The sign is +1 for a group
+//    of positive UV area, −1 for negative.
+// 6. A triangle with two equal positions takes, at each corner, the frame of the first other
+//    triangle's corner at the same vertex (DegenEpilogue).
+// Where the reference leaves a corner without a direction (a zero-UV-area triangle no group reached,
+// or a group whose sum is zero) it returns (1, 0, 0) unprojected; here the corner gets the unit
+// vector orthogonal to the normal nearest to x (or y when the normal is near ±x), the renderer
+// needing an orthogonal frame, with the reference's sign (−1 unreached, else the group's).
+// Faces are triangles here (the importer triangulates): the reference's quad rules do not arise.
 mikktspace_result mikktspace_tangents(const std::vector<tangent_corner>& corners);
 
 }  // namespace gsdot3::pipeline
