@@ -29,3 +29,11 @@ textured = env + [(0x06, tex0), (0x14, 1 << 5), (0x08, 1 | 1 << 2), (0, 6 | 1 <<
 fog = env + [(0, 6 | 1 << 5), (5, xyz(0, 0)), (5, xyz(32, 32))]
 for name, w in [('draw_sprite', sprite), ('draw_strip_xyz3', tri), ('draw_textured_clut', textured), ('draw_fog_skipped', fog)]:
     open('fuzz/corpus/dump_reader/' + name + '.gs', 'wb').write(dump(ad(w)))
+# The reader's PCSX2 leniencies (issue 29), one seed each from the draw_sprite dump: the last packet
+# (the vsync) cut, a transfer path byte 4, a screenshot size that is not w x h x 4, an A+D write to 0x7F.
+base = dump(ad(sprite))
+open('fuzz/corpus/dump_reader/lenient_truncated_last.gs', 'wb').write(base[:-1])
+at = len(base) - 2 - 6 - len(ad(sprite))  # the transfer's type byte
+open('fuzz/corpus/dump_reader/lenient_path4.gs', 'wb').write(base[:at + 1] + bytes([4]) + base[at + 2:])
+open('fuzz/corpus/dump_reader/lenient_screenshot.gs', 'wb').write(base[:40] + struct.pack('<I', 12) + base[44:])
+open('fuzz/corpus/dump_reader/lenient_unused_register.gs', 'wb').write(dump(ad(sprite + [(0x7F, 1)])))

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "commands.hpp"
+#include "dump_notes.hpp"
 #include "gs_packets/dump.hpp"
 #include "gs_packets/state.hpp"
 
@@ -80,8 +81,11 @@ void run(const std::string& file) {
       if (e.what == pk::gif_event::kind::image) image_qwords += e.data.size() / 16;
     }
     std::cout << "path " << i << ": " << tags << " GIF tags (PACKED " << flg[0] << ", REGLIST " << flg[1] << ", IMAGE "
-              << flg[2] << "), " << writes << " register writes, " << image_qwords << " IMAGE qwords\n";
+              << flg[2] << "), " << writes << " register writes (" << paths[i].unused_writes << " to unused addresses), "
+              << image_qwords << " IMAGE qwords\n";
   }
+  std::cout << "notices " << d.notices.size() << "\n";
+  print_dump_notes(file, d, paths);
 }
 
 }  // namespace

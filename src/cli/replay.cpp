@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "dump_notes.hpp"
 #include "image_compare.hpp"
 #include "gs_memory/address.hpp"
 #include "gs_memory/psm_names.hpp"
@@ -112,6 +113,7 @@ void run(const args& a, context& ctx) {
   mem::local_memory m;
   gs::packets::interpreter it(m, {.skip_unmodelled = a.skip_unmodelled});
   try {
+    print_dump_notes(a.file, d, gs::dump::decode_paths(d));
     it.replay(d);
   } catch (const gs::dump::dump_error& e) {
     throw usage_error(a.file + ": " + e.what());

@@ -176,9 +176,22 @@ TEST(Dump, MalformedDumpsGiveOneLineErrors) {
   bad[13] = bad[14] = bad[15] = 0;
   EXPECT_EQ(error_of(bad).rfind("byte 58: state size 100 does not fit the version 8 layout (version 8 has 4194760)", 0), 0u) << error_of(bad);
   bad = good;
-  bad.resize(good.size() - 3);  // the readFIFO2 size is cut
-  EXPECT_EQ(error_of(bad), "byte " + std::to_string(good.size() - 4) +
-                               ": readFIFO2 size of 4 bytes runs past the end of the dump (1 left)");
+  bad[8] = 99;  // the header's state_version differs from the blob's (8): the blob's is used
+  EXPECT_EQ(error_of(bad), "no error");
+  bad = good;
+  bad[58] = 99;  // the blob's version 99 (and the header's, below): refused as PCSX2's Defrost refuses it
+  bad[8] = 99;
+  EXPECT_EQ(error_of(bad), "byte 58: state version 99: GS: Savestate version is incompatible.  Load aborted. "
+                           "(PCSX2's GSState::Defrost loads versions 0..9)");
+  bad = good;
+  bad[16] = 60;  // serial (6 bytes) at 60: outside the 50-byte header
+  EXPECT_EQ(error_of(bad), "byte 8: serial at 60 (+6) lies outside the header of 50 bytes: GSDump header is corrupted. "
+                           "(PCSX2 GSDumpFile::ReadFile)");
+  bad = good;
+  const std::size_t transfer_at = 58 + 4194760 + 8192;
+  bad.resize(transfer_at + 3);  // a transfer header cut: refused (ReadFile's GET_WORD fails)
+  EXPECT_EQ(error_of(bad), "byte " + std::to_string(transfer_at + 2) +
+                               ": transfer size of 4 bytes runs past the end of the dump (1 left)");
   bad = good;
   bad.push_back(9);
   EXPECT_EQ(error_of(bad), "byte " + std::to_string(good.size()) + ": unknown packet type 9 (0..3)");
@@ -188,6 +201,85 @@ TEST(Dump, MalformedDumpsGiveOneLineErrors) {
   EXPECT_EQ(error_of(write_dump(d)), "byte " + std::to_string(58 + 4194760 + 8192 + 6) + " (path 1 transfer at byte " +
                                           std::to_string(58 + 4194760 + 8192) +
                                           "): qword 0: GIF tag NLOOP 5 needs 5 data qwords, 0 left");
+}
+
+// The leniencies of PCSX2's reader (dump.hpp's notices), one each, with the byte offsets worked out
+// from sample(): header 8..58, state 58.., registers, then the transfer (70 bytes), the registers
+// packet (8193), the vsync (2), the readFIFO2 (5).
+
+TEST(DumpLeniency, TruncatedLastPacketIsDropped) {
+  const auto good = write_dump(sample());
+  auto bad = good;
+  bad.resize(good.size() - 3);  // the readFIFO2's u32 cut
+  const gs_dump d = read_dump(bad);
+  ASSERT_EQ(d.notices.size(), 1u);
+  EXPECT_EQ(d.notices[0].name, "truncated_last_packet");
+  EXPECT_EQ(d.notices[0].offset, good.size() - 5);
+  EXPECT_EQ(describe(d.notices[0]), "byte " + std::to_string(good.size() - 5) +
+                                        ": truncated_last_packet: the last packet needs 4 bytes, the dump has 1; dropped, "
+                                        "as PCSX2's GSDumpFile::ReadFile does");
+  EXPECT_EQ(d.packets.size(), 3u);
+  // A transfer whose data is cut: dropped too, the packets before it kept.
+  bad = good;
+  bad.resize(58 + 4194760 + 8192 + 6 + 20);
+  const gs_dump t = read_dump(bad);
+  ASSERT_EQ(t.notices.size(), 1u);
+  EXPECT_EQ(t.notices[0].offset, 58u + 4194760 + 8192);
+  EXPECT_TRUE(t.packets.empty());
+}
+
+TEST(DumpLeniency, ScreenshotOfTheWrongSizeIsIgnored) {
+  auto bad = write_dump(sample());
+  bad[40] = 7;  // screenshot_size 7, not 2 x 1 x 4
+  const gs_dump d = read_dump(bad);
+  ASSERT_EQ(d.notices.size(), 1u);
+  EXPECT_EQ(d.notices[0].name, "screenshot_ignored");
+  EXPECT_EQ(d.notices[0].offset, 28u);
+  EXPECT_TRUE(d.screenshot.empty());
+  EXPECT_EQ(d.screenshot_width, 0u);
+  EXPECT_EQ(d.packets.size(), 4u);
+  EXPECT_NO_THROW(write_dump(d));
+}
+
+TEST(DumpLeniency, TransferPathAbove3IsSkipped) {
+  auto bad = write_dump(sample());
+  const std::size_t transfer_at = 58 + 4194760 + 8192;
+  bad[transfer_at + 1] = 4;
+  const gs_dump d = read_dump(bad);
+  ASSERT_EQ(d.notices.size(), 1u);
+  EXPECT_EQ(d.notices[0].name, "transfer_path_skipped");
+  EXPECT_EQ(d.notices[0].offset, transfer_at);
+  ASSERT_EQ(d.packets.size(), 3u);
+  EXPECT_EQ(d.packets[0].type, packet_type::registers);
+  EXPECT_NO_THROW(decode_paths(d));
+}
+
+TEST(DumpLeniency, HeaderStateVersionDiffering) {
+  auto bad = write_dump(sample());
+  bad[8] = 7;
+  const gs_dump d = read_dump(bad);
+  ASSERT_EQ(d.notices.size(), 1u);
+  EXPECT_EQ(d.notices[0].name, "state_version_differs");
+  EXPECT_EQ(d.notices[0].offset, 58u);
+  EXPECT_EQ(d.state_version, 8u);
+}
+
+TEST(DumpLeniency, UnusedRegisterWritesAreCounted) {
+  gs_dump d = sample();
+  pk::packet_builder pb;
+  const std::pair<std::uint8_t, std::uint64_t> w[] = {{0x3F, 0}, {0x7F, 5}, {0x7F, 6}, {0x20, 1}};
+  pb.ad(w, true);
+  d.packets = {{packet_type::transfer, 2, 0, 0, pb.bytes(), 0}};
+  const auto paths = decode_paths(read_dump(write_dump(d)));
+  EXPECT_EQ(paths[2].unused_writes, 3u);  // 0x7F twice, 0x20 (no GS register has either)
+  EXPECT_EQ(paths[2].first_unused_address, 0x7Fu);
+  EXPECT_EQ(paths[2].first_unused_offset, 58u + 4194760 + 8192 + 6 + 32);  // the tag, the TEXFLUSH write, then 0x7F
+}
+
+TEST(Dump, CompressionByExtensionIgnoresCase) {
+  EXPECT_EQ(compression_for("a.GS.XZ"), compression::xz);
+  EXPECT_EQ(compression_for("a.gs.Zst"), compression::zstd);
+  EXPECT_EQ(compression_for("a.GS"), compression::none);
 }
 
 TEST(Dump, PacketsContinueAcrossTransfers) {

@@ -3,12 +3,16 @@
 #include <lzma.h>
 #include <zstd.h>
 
+#include <cctype>
+#include <string>
+
 #include "gs_packets/dump.hpp"
 
 namespace gs::dump {
 
 compression compression_for(const std::filesystem::path& file) {
-  const auto ext = file.extension();
+  std::string ext = file.extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   if (ext == ".xz") return compression::xz;
   if (ext == ".zst") return compression::zstd;
   return compression::none;

@@ -4,6 +4,7 @@
 #include <iterator>
 #include <system_error>
 
+#include "gs_packets/gs_registers.hpp"
 #include "gs_packets/state.hpp"
 
 namespace gs::dump {
@@ -45,20 +46,43 @@ std::uint32_t le32(std::span<const std::uint8_t> s, std::size_t at) {
          (std::uint32_t{s[at + 3]} << 24);
 }
 
-void check_state(const gs_dump& d, std::size_t at) {
+// GSState::Defrost: "if (version > STATE_VERSION) { Console.Error(\"GS: Savestate version is incompatible.
+// Load aborted.\"); return -1; }", STATE_VERSION 9 in the newest GSState.h.
+constexpr std::uint32_t pcsx2_state_version_max = 9;
+
+void check_state(gs_dump& d, std::size_t at) {
   if (d.state.size() < 4)
     throw dump_error("byte " + std::to_string(at) + ": state size " + std::to_string(d.state.size()) +
                      " is too small for the state version u32");
   const std::uint32_t blob_version = le32(d.state, 0);
-  if (blob_version != d.state_version)
-    throw dump_error("byte " + std::to_string(at) + ": state blob version " + std::to_string(blob_version) +
-                     " differs from the header's state_version " + std::to_string(d.state_version));
+  if (blob_version != d.state_version) {
+    d.notices.push_back({"state_version_differs", at,
+                         "the header's state_version " + std::to_string(d.state_version) + " differs from the blob's " +
+                             std::to_string(blob_version) + "; the blob's is used, as PCSX2's GSState::Defrost does"});
+    d.state_version = blob_version;
+  }
+  if (d.state_version > pcsx2_state_version_max)
+    throw dump_error("byte " + std::to_string(at) + ": state version " + std::to_string(d.state_version) +
+                     ": GS: Savestate version is incompatible.  Load aborted. (PCSX2's GSState::Defrost loads versions "
+                     "0.." + std::to_string(pcsx2_state_version_max) + ")");
   // Versions 8 and 9 are the ones PCSX2 writes now: their size is checked (older blobs are read and,
   // when their size fits their layout, decoded by the interpreter).
   if ((d.state_version == 8 || d.state_version == 9) && !state_layout(d.state_version, d.state.size()))
     throw dump_error("byte " + std::to_string(at) + ": state size " + std::to_string(d.state.size()) +
                      " does not fit the version " + std::to_string(d.state_version) + " layout (version 8 has " +
                      std::to_string(state_size_v8) + ")");
+}
+
+// The body of a packet read, or a notice when the dump ends inside it (PCSX2 drops that last packet).
+bool take_body(reader& r, gs_dump& d, std::size_t n, std::uint64_t packet_at, std::span<const std::uint8_t>& body) {
+  if (n > r.left()) {
+    d.notices.push_back({"truncated_last_packet", packet_at,
+                         "the last packet needs " + std::to_string(n) + " bytes, the dump has " + std::to_string(r.left()) +
+                             "; dropped, as PCSX2's GSDumpFile::ReadFile does"});
+    return false;
+  }
+  body = r.take(n, "packet");
+  return true;
 }
 
 }  // namespace
@@ -116,18 +140,23 @@ gs_dump read_dump(std::span<const std::uint8_t> bytes) {
     d.screenshot_width = le32(h, 20);
     d.screenshot_height = le32(h, 24);
     const std::uint32_t shot_offset = le32(h, 28), shot_size = le32(h, 32);
-    auto within = [&](std::uint32_t off, std::uint32_t size, const char* what) {
-      if (std::uint64_t{off} + size > header_size)
-        throw dump_error("byte " + std::to_string(header_at) + ": " + what + " at " + std::to_string(off) + " (+" +
-                         std::to_string(size) + ") lies outside the header of " + std::to_string(header_size) + " bytes");
-    };
-    within(serial_offset, serial_size, "serial");
-    within(shot_offset, shot_size, "screenshot");
-    if (std::uint64_t{d.screenshot_width} * d.screenshot_height * 4 != shot_size)
-      throw dump_error("byte " + std::to_string(header_at) + ": screenshot size " + std::to_string(shot_size) + " is not " +
-                       std::to_string(d.screenshot_width) + "x" + std::to_string(d.screenshot_height) + "x4");
-    d.serial.assign(h.begin() + serial_offset, h.begin() + serial_offset + serial_size);
-    d.screenshot.assign(h.begin() + shot_offset, h.begin() + shot_offset + shot_size);
+    auto inside = [&](std::uint32_t off, std::uint32_t size) { return std::uint64_t{off} + size <= header_size; };
+    if (serial_size > 0 && !inside(serial_offset, serial_size))
+      throw dump_error("byte " + std::to_string(header_at) + ": serial at " + std::to_string(serial_offset) + " (+" +
+                       std::to_string(serial_size) + ") lies outside the header of " + std::to_string(header_size) +
+                       " bytes: GSDump header is corrupted. (PCSX2 GSDumpFile::ReadFile)");
+    if (serial_size > 0) d.serial.assign(h.begin() + serial_offset, h.begin() + serial_offset + serial_size);
+    const std::uint64_t shot_expected = std::uint64_t{d.screenshot_width} * d.screenshot_height * 4;
+    if (shot_expected == shot_size && inside(shot_offset, shot_size)) {
+      d.screenshot.assign(h.begin() + shot_offset, h.begin() + shot_offset + shot_size);
+    } else {
+      d.notices.push_back({"screenshot_ignored", header_at + 20,
+                           "screenshot " + std::to_string(d.screenshot_width) + "x" + std::to_string(d.screenshot_height) +
+                               " with " + std::to_string(shot_size) + " bytes at " + std::to_string(shot_offset) +
+                               " (header of " + std::to_string(header_size) + " bytes) is not width x height x 4 within "
+                               "the header; ignored, as PCSX2's GSDumpFile::ReadFile does"});
+      d.screenshot_width = d.screenshot_height = 0;
+    }
     const std::size_t state_at = r.at();
     const auto s = r.take(state_size, "state");
     d.state.assign(s.begin(), s.end());
@@ -148,28 +177,42 @@ gs_dump read_dump(std::span<const std::uint8_t> bytes) {
     packet p;
     p.offset = r.at();
     const std::uint8_t type = r.u8("packet type");
+    std::span<const std::uint8_t> body;
+    bool skip = false;
     switch (type) {
       case 0: {
         p.type = packet_type::transfer;
         p.path = r.u8("transfer path");
-        if (p.path > 3) throw dump_error("byte " + std::to_string(p.offset) + ": transfer path " + std::to_string(p.path) + " (0..3)");
         const std::uint32_t size = r.u32("transfer size");
-        const auto data = r.take(size, "transfer data");
-        p.data.assign(data.begin(), data.end());
+        if (!take_body(r, d, size, p.offset, body)) return d;
+        p.data.assign(body.begin(), body.end());
+        if (p.path > 3) {
+          d.notices.push_back({"transfer_path_skipped", p.offset,
+                               "transfer path " + std::to_string(p.path) + " (0..3) with " + std::to_string(size) +
+                                   " bytes; skipped, as PCSX2's GSDumpReplayer does"});
+          skip = true;
+        }
         break;
       }
-      case 1: p.type = packet_type::vsync; p.field = r.u8("vsync field"); break;
-      case 2: p.type = packet_type::read_fifo2; p.size = r.u32("readFIFO2 size"); break;
-      case 3: {
+      case 1:
+        p.type = packet_type::vsync;
+        if (!take_body(r, d, 1, p.offset, body)) return d;
+        p.field = body[0];
+        break;
+      case 2:
+        p.type = packet_type::read_fifo2;
+        if (!take_body(r, d, 4, p.offset, body)) return d;
+        p.size = le32(body, 0);
+        break;
+      case 3:
         p.type = packet_type::registers;
-        const auto data = r.take(privileged_bytes, "registers packet");
-        p.data.assign(data.begin(), data.end());
+        if (!take_body(r, d, privileged_bytes, p.offset, body)) return d;
+        p.data.assign(body.begin(), body.end());
         break;
-      }
       default:
         throw dump_error("byte " + std::to_string(p.offset) + ": unknown packet type " + std::to_string(type) + " (0..3)");
     }
-    d.packets.push_back(std::move(p));
+    if (!skip) d.packets.push_back(std::move(p));
   }
   return d;
 }
@@ -178,7 +221,7 @@ std::vector<path_stream> decode_paths(const gs_dump& d) {
   std::vector<path_stream> paths(4);
   std::vector<std::vector<std::pair<std::size_t, const packet*>>> starts(4);  // (stream byte, packet)
   for (const packet& p : d.packets) {
-    if (p.type != packet_type::transfer) continue;
+    if (p.type != packet_type::transfer || p.path > 3) continue;
     starts[p.path].emplace_back(paths[p.path].bytes.size(), &p);
     paths[p.path].bytes.insert(paths[p.path].bytes.end(), p.data.begin(), p.data.end());
   }
@@ -197,10 +240,18 @@ std::vector<path_stream> decode_paths(const gs_dump& d) {
       const std::size_t at = 16 * std::size_t{e.offset};
       while (k + 1 < starts[i].size() && starts[i][k + 1].first <= at) ++k;
       paths[i].file_offsets.push_back(starts[i][k].second->offset + 6 + (at - starts[i][k].first));
+      if (e.what == packets::gif_event::kind::reg_write && !packets::gs_register_name_of(e.address)) {
+        if (paths[i].unused_writes++ == 0) {
+          paths[i].first_unused_address = e.address;
+          paths[i].first_unused_offset = paths[i].file_offsets.back();
+        }
+      }
     }
   }
   return paths;
 }
+
+std::string describe(const notice& n) { return "byte " + std::to_string(n.offset) + ": " + n.name + ": " + n.text; }
 
 gs_dump load_dump(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);

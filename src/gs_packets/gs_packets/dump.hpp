@@ -50,6 +50,23 @@ struct packet {
   std::uint64_t offset = 0;           // byte offset of the type byte in the (uncompressed) dump; set by read
 };
 
+// What read_dump accepted that a strict reader would refuse, as PCSX2 accepts it (one per leniency):
+//   truncated_last_packet  the last packet's body runs past the end: dropped (PCSX2 GSDumpFile::ReadFile:
+//                          "Dropping last packet of N bytes (we only have M bytes)"); a cut packet header
+//                          is refused, as ReadFile returns false there
+//   screenshot_ignored     screenshot fields that are not width × height × 4 bytes within the header:
+//                          the screenshot is dropped (ReadFile never reads them; GetPreviewImageFromDump
+//                          shows no preview for them)
+//   transfer_path_skipped  a transfer whose path byte is above 3: skipped (GSDumpReplayerCpuStep's
+//                          switch on the path has no case for it)
+//   state_version_differs  the header's state_version differs from the blob's: the blob's is used
+//                          (ReadFile does not read the header's; GSState::Defrost reads the blob's)
+struct notice {
+  std::string name;
+  std::uint64_t offset = 0;  // byte of the dump (uncompressed) it is about
+  std::string text;
+};
+
 struct gs_dump {
   bool new_layout = true;
   std::uint32_t crc = 0;
@@ -60,13 +77,19 @@ struct gs_dump {
   std::vector<std::uint8_t> state;
   std::vector<std::uint8_t> privileged = std::vector<std::uint8_t>(privileged_bytes, 0);
   std::vector<packet> packets;
+  std::vector<notice> notices;  // set by read_dump; not written
 };
 
 // Serialises in the new layout (old-layout dumps are read, not written). Throws dump_error when the
 // dump cannot be represented (screenshot size ≠ width × height × 4, registers not 8 KiB).
 std::vector<std::uint8_t> write_dump(const gs_dump& d);
-// Parses either layout; malformed input throws dump_error with one line naming the byte offset.
+// Parses either layout; malformed input throws dump_error with one line naming the byte offset. What
+// PCSX2 refuses is refused with its reason: a state version above 9 ("GS: Savestate version is
+// incompatible.  Load aborted.", GSState::Defrost, STATE_VERSION 9), a serial outside the header
+// ("GSDump header is corrupted.", ReadFile). What it accepts is read, with a notice (above).
 gs_dump read_dump(std::span<const std::uint8_t> bytes);
+// One line for a notice: "byte N: NAME: text".
+std::string describe(const notice& n);
 
 // The GIF stream of each path: the path's transfers in order, concatenated (a packet may continue
 // from one transfer into the next), decoded. A GIF fault throws dump_error naming the transfer
@@ -75,12 +98,19 @@ struct path_stream {
   std::vector<std::uint8_t> bytes;
   std::vector<packets::gif_event> events;  // image data points into bytes
   std::vector<std::uint64_t> file_offsets;  // per event: the byte of the dump its qword starts at
+  // Register writes to an address no GS register has (gs_registers.hpp; e.g. A+D to 0x7F): PCSX2's
+  // GSState gives them a null handler; counted here, with the first one's address and dump byte.
+  std::size_t unused_writes = 0;
+  std::uint8_t first_unused_address = 0;
+  std::uint64_t first_unused_offset = 0;
 };
 std::vector<path_stream> decode_paths(const gs_dump& d);
 
 // Compression, as PCSX2 writes it: the whole file as one xz (LZMA2, CRC64) or zstd stream.
 enum class compression { none, xz, zstd };
-compression compression_for(const std::filesystem::path& file);  // by extension: .xz, .zst, else none
+// By extension, compared case-insensitively (PCSX2 GSDumpFile::OpenGSDump: StringUtil::EndsWithNoCase):
+// .xz, .zst, else none.
+compression compression_for(const std::filesystem::path& file);
 std::vector<std::uint8_t> compress(std::span<const std::uint8_t> raw, compression c);
 // Recognises the xz (FD 37 7A 58 5A 00) and zstd (28 B5 2F FD) magic numbers; anything else is raw.
 std::vector<std::uint8_t> decompress(std::span<const std::uint8_t> file);

@@ -13,7 +13,9 @@
 #include "gs_packets/builder.hpp"
 #include "gs_packets/gs_registers.hpp"
 #include "gs_packets/packed.hpp"
+#include "gs_packets/packetiser.hpp"
 #include "gs_packets/state.hpp"
+#include "gs_packets/video_mode.hpp"
 #include "pipeline/band_renderer.hpp"
 #include "pipeline/pass_table.hpp"
 
@@ -39,15 +41,10 @@ constexpr std::uint64_t scissor_reg(const scissor& r) {
 constexpr std::uint64_t tex1(bool linear) { return 1u | (std::uint64_t{linear} << 5) | (std::uint64_t{linear} << 6); }
 
 // Privileged registers (GS User's Manual): PMODE EN1 0, EN2 1, CRTMD 2-4 (always 001), MMOD 5,
-// AMOD 6, SLBG 7, ALP 8-15; DISPFB FBP 0-8, FBW 9-14, PSM 15-19, DBX 32-42, DBY 43-53; DISPLAY
-// DX 0-11, DY 12-22, MAGH 23-26, MAGV 27-28, DW 32-43, DH 44-54.
+// AMOD 6, SLBG 7, ALP 8-15; DISPFB FBP 0-8, FBW 9-14, PSM 15-19, DBX 32-42, DBY 43-53. DISPLAY1 and
+// the video mode's registers: gs_packets/video_mode.hpp.
 constexpr std::uint64_t pmode_circuit1() { return 1u | (1u << 2) | (1u << 5) | (0xFFu << 8); }
 constexpr std::uint64_t dispfb(std::uint32_t fbp, std::uint32_t fbw) { return fbp | (std::uint64_t{fbw} << 9); }
-constexpr std::uint64_t display(int width, int height) {
-  const auto magh = static_cast<std::uint64_t>(std::clamp(2560 / width - 1, 0, 15));
-  const auto dw = static_cast<std::uint64_t>(width) * (magh + 1) - 1;
-  return (magh << 23) | (dw << 32) | (static_cast<std::uint64_t>(height - 1) << 44);
-}
 
 std::uint64_t rgbaq(gs::rgba8 c) { return gs::encode(gs::rgbaq_reg{c, 0x3F800000u}); }  // Q = 1.0
 
@@ -362,11 +359,12 @@ frame_packets build_frame_packets(const scene& s, const prepared_scene& ps, meth
   fp.sprites = g.sprites_written;
   fp.PMODE = pmode_circuit1();
   fp.DISPFB1 = dispfb(OUT, b.fbw);
-  fp.DISPLAY1 = display(ps.width, ps.height);
+  fp.width = ps.width;
+  fp.height = ps.height;
   return fp;
 }
 
-gs::dump::gs_dump frame_dump(const frame_packets& fp) {
+gs::dump::gs_dump frame_dump(const frame_packets& fp, const dump_layout& layout) {
   gs::dump::gs_dump d;
   d.new_layout = true;
   d.state_version = gs::dump::state_version_written;
@@ -376,13 +374,18 @@ gs::dump::gs_dump frame_dump(const frame_packets& fp) {
     for (std::uint32_t b = 0; b < 8; ++b) d.privileged[offset + b] = static_cast<std::uint8_t>(v >> (8 * b));
   };
   put(PMODE_offset, fp.PMODE);
+  put(pk::SMODE1_offset, pk::encode(pk::smode1_for(layout.video)));
+  put(pk::SMODE2_offset, pk::smode2_for(layout.video));
+  put(pk::SYNCV_offset, pk::encode(pk::syncv_for(layout.video)));
   put(DISPFB1_offset, fp.DISPFB1);
-  put(DISPLAY1_offset, fp.DISPLAY1);
-  gs::dump::packet transfer;
-  transfer.type = gs::dump::packet_type::transfer;
-  transfer.path = 2;  // PATH3
-  transfer.data = fp.gif;
-  d.packets.push_back(std::move(transfer));
+  put(DISPLAY1_offset, pk::display_for(layout.video, fp.width, fp.height));
+  for (std::vector<std::uint8_t>& packet : pk::split_gif_packets(fp.gif, layout.max_packet_bytes)) {
+    gs::dump::packet transfer;
+    transfer.type = gs::dump::packet_type::transfer;
+    transfer.path = 2;  // PATH3
+    transfer.data = std::move(packet);
+    d.packets.push_back(std::move(transfer));
+  }
   gs::dump::packet regs;
   regs.type = gs::dump::packet_type::registers;
   regs.data = d.privileged;

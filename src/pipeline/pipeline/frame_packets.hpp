@@ -32,6 +32,8 @@
 #include <vector>
 
 #include "gs_packets/dump.hpp"
+#include "gs_packets/packetiser.hpp"
+#include "gs_packets/video_mode.hpp"
 #include "pipeline/gs_inputs.hpp"
 #include "pipeline/prepare.hpp"
 #include "pipeline/render.hpp"
@@ -43,8 +45,9 @@ struct frame_packets {
   std::vector<std::uint8_t> gif;        // the stream (GIF PATH3), little-endian qwords
   buffer_layout buffers;
   // Privileged registers so the displayed frame is the output buffer: PMODE (circuit 1, ALP = 0xFF),
-  // DISPFB1 (FBP, FBW, PSMCT32), DISPLAY1 (DW, DH from the frame size, MAGH so DW + 1 <= 2560).
-  std::uint64_t PMODE = 0, DISPFB1 = 0, DISPLAY1 = 0;
+  // DISPFB1 (FBP, FBW, PSMCT32); DISPLAY1 (from the frame size) and the video mode: frame_dump.
+  std::uint64_t PMODE = 0, DISPFB1 = 0;
+  int width = 0, height = 0;
   std::size_t triangles = 0, sprites = 0;  // primitives written
 };
 
@@ -56,10 +59,19 @@ frame_packets build_frame_packets(const scene& s, const prepared_scene& ps, meth
 // ps2sdk and Linux's arch/mips/include/asm/mach-ps2/gs-registers.h, read with the search tool).
 inline constexpr std::uint32_t PMODE_offset = 0x0000, DISPFB1_offset = 0x0070, DISPLAY1_offset = 0x0080;
 
+// How the dump packs the frame: the video mode its privileged registers set (gs_packets/video_mode.hpp;
+// NTSC by default) and the largest GIF packet (gs_packets/packetiser.hpp; 1 MiB by default).
+struct dump_layout {
+  gs::packets::video_mode video = gs::packets::video_mode::ntsc;
+  std::size_t max_packet_bytes = gs::packets::default_max_packet_bytes;
+};
+
 // The frame as a PCSX2 GS dump (new layout, state version 8: gs_packets/state.hpp): serial
 // "gsdot3", no screenshot, a zeroed state blob (memory 0, PRMODECONT.AC = 1, Q = 1.0), the
-// privileged registers above; packets: the stream as one PATH3 transfer (path index 2), then a
-// registers packet and a vsync (field 0), as PCSX2's GSDumpBase::VSync writes them.
-gs::dump::gs_dump frame_dump(const frame_packets& fp);
+// privileged registers above plus SMODE1, SMODE2, SYNCV and DISPLAY1 for the video mode; packets: the
+// stream cut into GIF packets of at most max_packet_bytes (split_gif_packets: whole primitives, EOP on
+// each packet's last tag), one PATH3 transfer (path index 2) each, then a registers packet and a vsync
+// (field 0), as PCSX2's GSDumpBase::VSync writes them.
+gs::dump::gs_dump frame_dump(const frame_packets& fp, const dump_layout& layout = {});
 
 }  // namespace gsdot3::pipeline

@@ -6,6 +6,8 @@
 
 #include "gs_arith/registers.hpp"
 #include "gs_memory/memory_registers.hpp"
+#include "gs_packets/packetiser.hpp"
+#include "gs_packets/video_mode.hpp"
 #include "gs_packets/gs_registers.hpp"
 #include "gs_packets/state.hpp"
 #include "probe/design.hpp"
@@ -100,10 +102,14 @@ gs::dump::gs_dump probe_dump() {
     for (int b = 0; b < 8; ++b) d.privileged[offset + static_cast<std::size_t>(b)] = static_cast<std::uint8_t>(v >> (8 * b));
   };
   put(0x0000, r.PMODE);
+  // The NTSC video mode's SMODE1 and SYNCV (gs_packets/video_mode.hpp): with SMODE1 = 0 PCSX2 reports VESA.
+  put(gs::packets::SMODE1_offset, gs::packets::encode(gs::packets::smode1_for(gs::packets::video_mode::ntsc)));
   put(0x0020, r.SMODE2);
+  put(gs::packets::SYNCV_offset, gs::packets::encode(gs::packets::syncv_for(gs::packets::video_mode::ntsc)));
   put(0x0070, r.DISPFB1);
   put(0x0080, r.DISPLAY1);
-  d.packets.push_back({gs::dump::packet_type::transfer, 2, 0, 0, probe_packets().bytes(), 0});
+  for (auto& packet : gs::packets::split_gif_packets(probe_packets().bytes()))
+    d.packets.push_back({gs::dump::packet_type::transfer, 2, 0, 0, std::move(packet), 0});
   d.packets.push_back({gs::dump::packet_type::registers, 0, 0, 0, d.privileged, 0});
   d.packets.push_back({gs::dump::packet_type::vsync, 0, 1, 0, {}, 0});
   return d;
