@@ -108,8 +108,9 @@ gs_inputs place_inputs(const gs_inputs& direct, std::uint32_t first) {
   if (!direct.sphere.empty()) in.sphere_at = place(64, 64, gs::mem::psm::PSMCT32);
   palettes_page();
   if (next + 32 * 4 > gs::mem::memory_blocks)
-    throw texture_does_not_fit("memory path: the frame buffers leave " + std::to_string(gs::mem::memory_blocks / 32 - std::min(next / 32, 512u)) +
-                               " pages of the GS's 512 for the textures (4 are needed to stream them): use a smaller --size");
+    throw texture_does_not_fit("memory path: the frame buffers, palettes and sphere map leave " +
+                               std::to_string(gs::mem::memory_blocks / 32 - std::min(next / 32, 512u)) +
+                               " of the GS's 512 pages to stream the textures through (4 are needed): use a smaller --size");
   in.window_first = next / 32;
   in.diffuse_bytes = bytes_of(direct.diffuse->texels);
   return in;
