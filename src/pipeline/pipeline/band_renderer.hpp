@@ -20,6 +20,7 @@
 #include "pipeline/pass_table.hpp"
 #include "pipeline/prepare.hpp"
 #include "pipeline/render.hpp"
+#include "pipeline/texture_stream.hpp"
 
 namespace gsdot3::pipeline::detail {
 
@@ -228,6 +229,21 @@ class band_renderer {
   std::vector<fragment> frags_;
   std::size_t ops_ = 0;
 };
+
+// A triangle pass with a normal-map or diffuse texture: one draw, or on the memory path with the
+// texture streamed (`stream` set, texture_stream.hpp's argument for why it is the same frame) one
+// draw per piece over its rectangle, after the piece's uploads into `memory`, with the piece's TEX0.
+template <const pass_regs& Pass, class FB>
+void draw_textured(band_renderer& r, gs::mem::local_memory* memory, texture_streamer* stream, const stream_texture& streamed,
+                   texture_ref tex, const std::vector<tri_attr>& attr, const FB& target) {
+  if (stream == nullptr) return r.draw<Pass>(&tex, attr, target);
+  for (const stream_piece& p : stream->next_pass(streamed)) {
+    upload_piece(*memory, streamed, p);
+    tex.at = p.at;
+    tex.texel_at = &stream->addresses(streamed, p.at);
+    r.draw<Pass>(&tex, attr, target, &p.area);
+  }
+}
 
 // Vertex colours → per-triangle attributes; `uv` picks the 12.4 texture coordinates per corner.
 template <class Colour, class UV>

@@ -123,7 +123,7 @@ class stream {
       data.clear();
     };
     for (const prepared_triangle& t : ps_.triangles) {
-      if (only != nullptr && !reaches(t, *only)) continue;
+      if (only != nullptr && !may_cover(t, *only)) continue;
       for (int k = 0; k < 3; ++k) {
         const gs::rgba8 c = colour(t, k);
         const auto [u, v] = uv(t, k);
@@ -190,14 +190,6 @@ class stream {
         }
         sprites(p, colour, rs);
       }
-  }
-
-  // Whether a triangle's pixels (within a pixel of its vertices' bounding box) can be in rectangle r.
-  static bool reaches(const prepared_triangle& t, const scissor& r) {
-    const auto& v = t.setup.v;
-    const int x0 = ceil_124(std::min({v[0].x, v[1].x, v[2].x})) - 1, x1 = ceil_124(std::max({v[0].x, v[1].x, v[2].x})) + 1;
-    const int y0 = ceil_124(std::min({v[0].y, v[1].y, v[2].y})) - 1, y1 = ceil_124(std::max({v[0].y, v[1].y, v[2].y})) + 1;
-    return x0 < r.x1 && r.x0 < x1 && y0 < r.y1 && r.y0 < y1;
   }
 
   const scissor& area() const { return area_; }

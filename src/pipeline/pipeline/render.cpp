@@ -25,7 +25,9 @@
 //   LAB" of the z-trick-psmz32 mode. The normal map (PSMT8), the sphere map and the diffuse texture
 //   (PSMCT32) are uploaded by host -> local transfers and every texel is read from memory; the
 //   palettes (incl. the ILP) are uploaded as CSM1 images and loaded into the CLUT buffer by TEX0.CLD
-//   (upload_inputs: the GIF packets of gs_inputs.hpp, run through gs_packets' interpreter). Both paths
+//   (upload_inputs: the GIF packets of gs_inputs.hpp, run through gs_packets' interpreter); a normal
+//   map and diffuse texture too big for the memory beside the buffers stream per pass in pieces
+//   (texture_stream.hpp, draw_textured; the memory path then draws on one thread). Both paths
 //   run the depth test through gs::depth_test.
 // The register sets and vertex values of the passes are pass_table.hpp's, which frame_packets.cpp
 // writes as the GIF packet stream of the same frame.
@@ -189,26 +191,6 @@ void copy_lab(const frame_buffers<memory_view>& fb, const scissor& area) {
     gs::mem::local_to_local(*fb.memory, c->BITBLTBUF, c->TRXPOS, c->TRXREG, lab_copy::TRXDIR);
 }
 
-// A triangle pass with a normal-map or diffuse texture: one draw, or on the memory path with the
-// texture streamed (gs_inputs.hpp, texture_stream.hpp's argument for why it is the same frame) one
-// draw per piece over its rectangle, after the piece's uploads, with the piece's TEX0.
-template <const pass_regs& Pass, class FB>
-void draw_textured(band_renderer& r, const frame_buffers<FB>& fb, const gs_inputs& in, const stream_texture& streamed,
-                   texture_ref tex, const std::vector<tri_attr>& attr, const FB& target) {
-  if constexpr (in_memory(FB{})) {
-    if (in.stream) {
-      for (const stream_piece& p : in.stream->next_pass(streamed)) {
-        upload_piece(*fb.memory, streamed, p);
-        tex.at = p.at;
-        tex.texel_at = &in.stream->addresses(streamed, p.at);
-        r.draw<Pass>(&tex, attr, target, &p.area);
-      }
-      return;
-    }
-  }
-  r.draw<Pass>(&tex, attr, target);
-}
-
 template <class FB>
 std::size_t render_band(const scene& s, const prepared_scene& ps, method m, const render_options& o, const gs_inputs& in,
                         scissor band, frame_buffers<FB>& fb, frame& result) {
@@ -255,9 +237,9 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
       case method::two_pass: {
         const auto attr = attributes(ps, o.model.setup, [&](std::uint32_t v) { return two_pass_colour(lv[v], o.s); }, normal_map_uv);
         const texture_ref pos = nm_texture(in.pos), neg = nm_texture(in.neg);
-        draw_textured<two_pass_positive>(r, fb, in, nm_stream, pos, attr, fb.dpb);
+        draw_textured<two_pass_positive>(r, fb.memory, in.stream.get(), nm_stream, pos, attr, fb.dpb);
         note("2.3 Max(n,0)·l (MODULATE)", li, "DPB", fb.dpb);
-        draw_textured<two_pass_negative>(r, fb, in, nm_stream, neg, attr, fb.dpb);
+        draw_textured<two_pass_negative>(r, fb.memory, in.stream.get(), nm_stream, neg, attr, fb.dpb);
         note("2.3 − Max(−n,0)·l (MODULATE, Cd − Cs)", li, "DPB", fb.dpb);
         // 2.4a: n'_a into R, G and B: the DPB read as PSMT8H (its own alpha byte) through a grey CLUT.
         if constexpr (in_memory(FB{})) {
@@ -288,11 +270,11 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
         note("2.3 sphere map · fade (HIGHLIGHT)", li, "DPB", fb.dpb);
         const auto attr = attributes(ps, o.model.setup, flat_white, normal_map_uv);
         const texture_ref x = nm_texture(in.axis[0]), y = nm_texture(in.axis[1]), z = nm_texture(in.axis[2]);
-        draw_textured<four_pass_x>(r, fb, in, nm_stream, x, attr, fb.dpb);
+        draw_textured<four_pass_x>(r, fb.memory, in.stream.get(), nm_stream, x, attr, fb.dpb);
         note("2.3 R: x multiply (Cs − Cd)·As + Cd", li, "DPB", fb.dpb);
-        draw_textured<four_pass_y>(r, fb, in, nm_stream, y, attr, fb.dpb);
+        draw_textured<four_pass_y>(r, fb.memory, in.stream.get(), nm_stream, y, attr, fb.dpb);
         note("2.3 G: y multiply (Cs − Cd)·As + Cd", li, "DPB", fb.dpb);
-        draw_textured<four_pass_z>(r, fb, in, nm_stream, z, attr, fb.dpb);
+        draw_textured<four_pass_z>(r, fb.memory, in.stream.get(), nm_stream, z, attr, fb.dpb);
         note("2.3 B: z multiply (Cs − Cd)·As + Cd", li, "DPB", fb.dpb);
         break;
       }
@@ -302,13 +284,13 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
         };
         const auto tl_pos = side(false), tl_neg = side(true);
         const texture_ref pos = nm_texture(in.pos), neg = nm_texture(in.neg);
-        draw_textured<baseline_add>(r, fb, in, nm_stream, pos, tl_pos, fb.dpb); // NM_pos·TL_pos
+        draw_textured<baseline_add>(r, fb.memory, in.stream.get(), nm_stream, pos, tl_pos, fb.dpb); // NM_pos·TL_pos
         note("2.3 + NM_pos·TL_pos", li, "DPB", fb.dpb);
-        draw_textured<baseline_add>(r, fb, in, nm_stream, neg, tl_neg, fb.dpb); // NM_neg·TL_neg
+        draw_textured<baseline_add>(r, fb.memory, in.stream.get(), nm_stream, neg, tl_neg, fb.dpb); // NM_neg·TL_neg
         note("2.3 + NM_neg·TL_neg", li, "DPB", fb.dpb);
-        draw_textured<baseline_subtract>(r, fb, in, nm_stream, neg, tl_pos, fb.dpb);  // −NM_neg·TL_pos
+        draw_textured<baseline_subtract>(r, fb.memory, in.stream.get(), nm_stream, neg, tl_pos, fb.dpb);  // −NM_neg·TL_pos
         note("2.3 − NM_neg·TL_pos", li, "DPB", fb.dpb);
-        draw_textured<baseline_subtract>(r, fb, in, nm_stream, pos, tl_neg, fb.dpb);  // −NM_pos·TL_neg
+        draw_textured<baseline_subtract>(r, fb.memory, in.stream.get(), nm_stream, pos, tl_neg, fb.dpb);  // −NM_pos·TL_neg
         note("2.3 − NM_pos·TL_neg", li, "DPB", fb.dpb);
         break;
       }
@@ -335,7 +317,7 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
   r.fill(fb.diff, 0, false);
   const texture_ref diffuse{in.diffuse->width, in.diffuse->height, nullptr, nullptr, in.diffuse->texels.data(), false, filter,
                             in.memory, in.diffuse_at, in.diffuse_texels.get()};
-  draw_textured<diffuse_layer>(r, fb, in, diffuse_texels, diffuse, attributes(ps, o.model.setup, flat_white, normal_map_uv), fb.diff);
+  draw_textured<diffuse_layer>(r, fb.memory, in.stream.get(), diffuse_texels, diffuse, attributes(ps, o.model.setup, flat_white, normal_map_uv), fb.diff);
   note("3 diffuse layer", -1, "diffuse", fb.diff);
 
   // Step 4: diffuse × LAB per channel: (Cs − 0)·Ad >> 7 with the LAB channel in the destination

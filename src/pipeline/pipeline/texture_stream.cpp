@@ -53,6 +53,13 @@ std::vector<std::uint32_t> strides(const stream_texture& t) {
 
 }  // namespace
 
+bool may_cover(const prepared_triangle& t, const scissor& r) {
+  const auto& v = t.setup.v;
+  const int x0 = ceil_124(std::min({v[0].x, v[1].x, v[2].x})) - 1, x1 = ceil_124(std::max({v[0].x, v[1].x, v[2].x})) + 1;
+  const int y0 = ceil_124(std::min({v[0].y, v[1].y, v[2].y})) - 1, y1 = ceil_124(std::max({v[0].y, v[1].y, v[2].y})) + 1;
+  return x0 < r.x1 && r.x0 < x1 && y0 < r.y1 && r.y0 < y1;
+}
+
 void host_transfer(gs::packets::packet_builder& out, const gs::mem::buffer& b, int w, int h, std::span<const std::uint8_t> data) {
   namespace reg = gs::packets::reg;
   gs::mem::bitbltbuf_reg blt;
@@ -120,12 +127,8 @@ bool texture_streamer::placeable(const stream_texture& t, const std::vector<std:
 void texture_streamer::split(const stream_texture& t, const scissor& a, const std::vector<std::uint32_t>& tris,
                              std::vector<leaf>& out) {
   std::vector<std::uint32_t> in;
-  for (std::uint32_t i : tris) {
-    const auto& v = ps_.triangles[i].setup.v;
-    const int x0 = ceil_124(std::min({v[0].x, v[1].x, v[2].x})), x1 = ceil_124(std::max({v[0].x, v[1].x, v[2].x})) + 1;
-    const int y0 = ceil_124(std::min({v[0].y, v[1].y, v[2].y})), y1 = ceil_124(std::max({v[0].y, v[1].y, v[2].y})) + 1;
-    if (x0 < a.x1 && a.x0 < x1 && y0 < a.y1 && a.y0 < y1) in.push_back(i);
-  }
+  for (std::uint32_t i : tris)
+    if (may_cover(ps_.triangles[i], a)) in.push_back(i);
   std::vector<std::array<int, 2>> cells = cells_in(t, a, in);
   if (cells.empty()) return;
   if (placeable(t, cells)) {

@@ -54,6 +54,9 @@ struct texture_does_not_fit : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// Whether a triangle's pixels (within a pixel of its vertices' bounding box) can be in rectangle r.
+bool may_cover(const prepared_triangle& t, const scissor& r);
+
 // A streamed texture: its texels packed as the transfer sends them (PSMT8 one byte, PSMCT32 four,
 // row-major), and an id that tells textures apart in the window.
 struct stream_texture {
