@@ -47,6 +47,8 @@ void add_dump_command(CLI::App& app, context& ctx) {
       fp = pipeline::build_frame_packets(st.in.s, ps, st.methods[0], st.options);
     } catch (const std::invalid_argument& e) {
       throw usage_error(e.what());
+    } catch (const pipeline::texture_does_not_fit& e) {
+      throw usage_error(e.what());
     }
     std::cerr << "gsdot3: writing " << *out << "\n";
     gs::dump::gs_dump d;

@@ -20,6 +20,7 @@
 #include "pipeline/pass_table.hpp"
 #include "pipeline/prepare.hpp"
 #include "pipeline/render.hpp"
+#include "pipeline/texture_stream.hpp"
 
 namespace gsdot3::pipeline::detail {
 
@@ -114,9 +115,10 @@ class band_renderer {
     }
   }
 
-  // A triangle pass with ZTST = GEQUAL and ZMSK = 1.
+  // A triangle pass with ZTST = GEQUAL and ZMSK = 1; with `clip` only its pixels in that rectangle
+  // (SCISSOR_1 of a streamed texture's piece, pipeline/texture_stream.hpp).
   template <const pass_regs& Pass, class FB>
-  [[gnu::flatten]] void draw(const texture_ref* tex, const std::vector<tri_attr>& attr, const FB& fb) {
+  [[gnu::flatten]] void draw(const texture_ref* tex, const std::vector<tri_attr>& attr, const FB& fb, const scissor* clip = nullptr) {
     constexpr gs::gs_registers regs = Pass.registers();
     auto shade = [&](std::size_t t, int x, int y) {
       const tri_attr& a = attr[t];
@@ -128,12 +130,20 @@ class band_renderer {
       ++ops_;
     };
     if (o_.path == raster_path::cached) {
-      for (const fragment& f : frags_) shade(static_cast<std::size_t>(f.tri), f.x, f.y);
+      if (clip == nullptr) {
+        for (const fragment& f : frags_) shade(static_cast<std::size_t>(f.tri), f.x, f.y);
+      } else {
+        for (const fragment& f : frags_)
+          if (f.x >= clip->x0 && f.x < clip->x1 && f.y >= clip->y0 && f.y < clip->y1) shade(static_cast<std::size_t>(f.tri), f.x, f.y);
+      }
       return;
     }
+    const scissor area = clip == nullptr ? band_
+                                         : scissor{std::max(band_.x0, clip->x0), std::max(band_.y0, clip->y0),
+                                                   std::min(band_.x1, clip->x1), std::min(band_.y1, clip->y1)};
     for (std::size_t t = 0; t < ps_.triangles.size(); ++t) {
       const prepared_triangle& tri = ps_.triangles[t];
-      rasterise_triangle(tri.setup, band_, [&](int x, int y) {
+      rasterise_triangle(tri.setup, area, [&](int x, int y) {
         if (passes_later_depth_test(tri, x, y)) shade(t, x, y);
       });
     }
@@ -219,6 +229,21 @@ class band_renderer {
   std::vector<fragment> frags_;
   std::size_t ops_ = 0;
 };
+
+// A triangle pass with a normal-map or diffuse texture: one draw, or on the memory path with the
+// texture streamed (`stream` set, texture_stream.hpp's argument for why it is the same frame) one
+// draw per piece over its rectangle, after the piece's uploads into `memory`, with the piece's TEX0.
+template <const pass_regs& Pass, class FB>
+void draw_textured(band_renderer& r, gs::mem::local_memory* memory, texture_streamer* stream, const stream_texture& streamed,
+                   texture_ref tex, const std::vector<tri_attr>& attr, const FB& target) {
+  if (stream == nullptr) return r.draw<Pass>(&tex, attr, target);
+  for (const stream_piece& p : stream->next_pass(streamed)) {
+    upload_piece(*memory, streamed, p);
+    tex.at = p.at;
+    tex.texel_at = &stream->addresses(streamed, p.at);
+    r.draw<Pass>(&tex, attr, target, &p.area);
+  }
+}
 
 // Vertex colours → per-triangle attributes; `uv` picks the 12.4 texture coordinates per corner.
 template <class Colour, class UV>

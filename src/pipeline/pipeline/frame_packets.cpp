@@ -107,9 +107,10 @@ class stream {
   }
   void texflush() { set(address("TEXFLUSH"), 0); }
 
-  // Every prepared triangle, PACKED {RGBAQ, UV, XYZ2} per vertex, PRE = 1.
+  // Every prepared triangle, PACKED {RGBAQ, UV, XYZ2} per vertex, PRE = 1; with `only` just those whose
+  // pixels can reach that rectangle (a streamed texture's piece: the others draw nothing in it).
   template <class Colour, class UV>
-  void triangles(const pass_regs& p, bool gouraud, Colour&& colour, UV&& uv) {
+  void triangles(const pass_regs& p, bool gouraud, Colour&& colour, UV&& uv, const scissor* only = nullptr) {
     flush();
     const gs::prim_reg prim{gs::prim_type::TRIANGLE, gouraud, p.TME, false, p.ABE, false, true, false, false};
     static constexpr unsigned regs[] = {pk::desc::RGBAQ, pk::desc::UV, pk::desc::XYZ2};
@@ -119,6 +120,7 @@ class stream {
       data.clear();
     };
     for (const prepared_triangle& t : ps_.triangles) {
+      if (only != nullptr && !may_cover(t, *only)) continue;
       for (int k = 0; k < 3; ++k) {
         const gs::rgba8 c = colour(t, k);
         const auto [u, v] = uv(t, k);
@@ -214,8 +216,9 @@ frame_packets build_frame_packets(const scene& s, const prepared_scene& ps, meth
   if (!b.fits())
     throw std::invalid_argument("frame packets: four " + std::to_string(ps.width) + "x" + std::to_string(ps.height) +
                                 " PSMCT32 buffers do not fit in the GS's 4 MiB");
-  const gs_inputs in = place_inputs(make_inputs(s, m, o), b.first_texture_block());
+  gs_inputs in = place_inputs(make_inputs(s, m, o), b.first_texture_block());
   const scissor area = detail::band_renderer::drawn_area(ps, {0, 0, ps.width, ps.height});
+  start_stream(in, ps, o, area);
   stream g(ps, b, area);
   const std::uint32_t DPB = b.dpb(), LAB = b.lab(), OUT = b.output();
 
@@ -248,9 +251,34 @@ frame_packets build_frame_packets(const scene& s, const prepared_scene& ps, meth
   g.triangles(step1_ambient, false, [&](const prepared_triangle&, int) { return ambient; }, nm_uv);
 
   const bool linear = o.bilinear;
-  const auto& nm = *in.nm;
-  auto nm_texture = [&](const pass_regs& p, int palette) {
-    g.texture(p, in.nm_at, nm.width, nm.height, in.cbp[static_cast<std::size_t>(palette)], false, linear);
+  const stream_texture nm_stream = normal_map_stream(in), diffuse_texels = diffuse_stream(in);
+  // A pass drawing the normal map (through palette cbp) or the diffuse texture into fbp: its
+  // TEX0_1, TEX1_1, CLAMP_1, FRAME_1 ... and triangles; with the texture streamed, per piece its
+  // uploads and TEXFLUSH, SCISSOR_1 = the piece, TEX0_1 with the piece's TBP0 / TBW (the CLUT loaded
+  // by the first) and the triangles that reach the piece.
+  auto textured = [&](const pass_regs& p, std::uint32_t fbp, std::optional<std::uint32_t> cbp, const stream_texture& t,
+                      const gs::mem::buffer& at, auto&& colour, auto&& uv) {
+    if (!in.stream) {
+      g.texture(p, at, t.width, t.height, cbp, false, linear);
+      g.target(fbp, p);
+      g.triangles(p, true, colour, uv);
+      return;
+    }
+    g.target(fbp, p);
+    bool first = true;
+    for (const stream_piece& piece : in.stream->next_pass(t)) {
+      g.flush();
+      add_piece_uploads(g.out, t, piece);
+      if (!piece.uploads.empty()) g.texflush();
+      g.clip(piece.area);
+      g.texture(p, piece.at, t.width, t.height, cbp, false, linear, nullptr, first);
+      first = false;
+      g.triangles(p, true, colour, uv, &piece.area);
+    }
+    g.clip(g.frame());
+  };
+  auto nm_pass = [&](const pass_regs& p, int palette, auto&& colour) {
+    textured(p, DPB, in.cbp[static_cast<std::size_t>(palette)], nm_stream, in.nm_at, colour, nm_uv);
   };
   auto white_vertex = [](const prepared_triangle&, int) { return white; };
   enum { pos, neg, axis_x, axis_y, axis_z, ilp, grey, alpha_index };
@@ -271,10 +299,8 @@ frame_packets build_frame_packets(const scene& s, const prepared_scene& ps, meth
     switch (m) {
       case method::two_pass: {
         auto c = [&](const prepared_triangle& t, int k) { return two_pass_colour(at(t, k), o.s); };
-        nm_texture(two_pass_positive, pos);
-        draw(two_pass_positive, c, nm_uv);
-        nm_texture(two_pass_negative, neg);
-        draw(two_pass_negative, c, nm_uv);
+        nm_pass(two_pass_positive, pos, c);
+        nm_pass(two_pass_negative, neg, c);
         // 2.4a: the DPB read as PSMT8H through the grey CLUT, 1:1.
         g.clip(area);
         g.depth(depth_always, z_masked);
@@ -291,24 +317,17 @@ frame_packets build_frame_packets(const scene& s, const prepared_scene& ps, meth
         draw(four_pass_sphere, [&](const prepared_triangle& t, int k) { return four_pass_sphere_colour(at(t, k)); },
              [&](const prepared_triangle& t, int k) { return sphere_uv(at(t, k)); });
         const pass_regs* axis[3] = {&four_pass_x, &four_pass_y, &four_pass_z};
-        for (int a = 0; a < 3; ++a) {
-          nm_texture(*axis[a], axis_x + a);
-          draw(*axis[a], white_vertex, nm_uv);
-        }
+        for (int a = 0; a < 3; ++a) nm_pass(*axis[a], axis_x + a, white_vertex);
         break;
       }
       case method::baseline: {
         auto side = [&](bool negative) {
           return [&, negative](const prepared_triangle& t, int k) { return baseline_colour(at(t, k), negative); };
         };
-        nm_texture(baseline_add, pos);
-        draw(baseline_add, side(false), nm_uv);  // NM_pos·TL_pos
-        nm_texture(baseline_add, neg);
-        draw(baseline_add, side(true), nm_uv);  // NM_neg·TL_neg
-        nm_texture(baseline_subtract, neg);
-        draw(baseline_subtract, side(false), nm_uv);  // −NM_neg·TL_pos
-        nm_texture(baseline_subtract, pos);
-        draw(baseline_subtract, side(true), nm_uv);  // −NM_pos·TL_neg
+        nm_pass(baseline_add, pos, side(false));       // NM_pos·TL_pos
+        nm_pass(baseline_add, neg, side(true));        // NM_neg·TL_neg
+        nm_pass(baseline_subtract, neg, side(false));  // −NM_neg·TL_pos
+        nm_pass(baseline_subtract, pos, side(true));   // −NM_pos·TL_neg
         break;
       }
     }
@@ -333,9 +352,7 @@ frame_packets build_frame_packets(const scene& s, const prepared_scene& ps, meth
   g.area_sprite(step1_ambient, gs::rgba8{});
   g.clip(g.frame());
   g.depth(depth_gequal, z_masked);
-  g.texture(diffuse_layer, in.diffuse_at, in.diffuse->width, in.diffuse->height, std::nullopt, false, linear);
-  g.target(DPB, diffuse_layer);
-  g.triangles(diffuse_layer, true, white_vertex, nm_uv);
+  textured(diffuse_layer, DPB, std::nullopt, diffuse_texels, in.diffuse_at, white_vertex, nm_uv);
 
   // Step 4: the LAB copied into the output by the renderer's transfer; per channel the LAB byte
   // moved into the output's alpha, then diffuse (the DPB) × alpha into that channel.

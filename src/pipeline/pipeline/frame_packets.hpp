@@ -5,7 +5,11 @@
 //
 // The stream (context 1 throughout, PRMODECONT.AC = 1, XYOFFSET_1 = 2048.0 in both axes):
 // 1. environment: PRMODECONT, XYOFFSET_1, SCISSOR_1 (the frame), DTHE = 0, PABE = 0, FBA_1 = 0;
-// 2. uploads (gs_inputs.hpp: BITBLTBUF, TRXPOS, TRXREG, TRXDIR + IMAGE), then TEXFLUSH;
+// 2. uploads (gs_inputs.hpp: BITBLTBUF, TRXPOS, TRXREG, TRXDIR + IMAGE), then TEXFLUSH; a normal map
+//    and diffuse texture that do not fit beside the frame buffers are streamed instead: each pass
+//    drawing them is written per piece (texture_stream.hpp) as its page uploads, TEXFLUSH,
+//    SCISSOR_1 = the piece's rectangle, TEX0_1 with the piece's TBP0 / TBW and the triangles that
+//    reach the rectangle;
 // 3. clears, as flat sprites over the frame: the DPB to 0x00808080, the LAB to 0, and the output
 //    and the Z buffer to 0 by one sprite (ZTST = ALWAYS, ZMSK = 0);
 // 4. step 1 (Z and ambient: TRIANGLE, ZTST = GEQUAL, Z written), per light steps 2.1-2.6, step 3
@@ -51,7 +55,8 @@ struct frame_packets {
   std::size_t triangles = 0, sprites = 0;  // primitives written
 };
 
-// Throws std::invalid_argument for what is not written (above) or does not fit in the 4 MiB.
+// Throws std::invalid_argument for what is not written (above) or whose buffers do not fit in the
+// 4 MiB, texture_does_not_fit when the textures cannot stream beside them.
 frame_packets build_frame_packets(const scene& s, const prepared_scene& ps, method m, const render_options& o);
 
 // The privileged-register block of a dump (8 KiB, the GS's 0x12000000..0x12001FFF) with PMODE at

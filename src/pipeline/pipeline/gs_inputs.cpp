@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <string>
 #include <thread>
 #include <utility>
 
@@ -21,22 +22,6 @@ std::vector<std::uint8_t> bytes_of(const std::vector<std::uint32_t>& words) {
   for (std::size_t i = 0; i < words.size(); ++i)
     for (std::size_t k = 0; k < 4; ++k) b[4 * i + k] = static_cast<std::uint8_t>(words[i] >> (8 * k));
   return b;
-}
-
-// Host -> local transfer of a w × h image packed as `data` into buffer b.
-void transfer(gs::packets::packet_builder& out, const gs::mem::buffer& b, int w, int h, std::span<const std::uint8_t> data) {
-  namespace reg = gs::packets::reg;
-  gs::mem::bitbltbuf_reg blt;
-  blt.DBP = b.BP;
-  blt.DBW = b.BW;
-  blt.DPSM = b.PSM;
-  const gs::mem::trxreg_reg size{fixed::uint<12>::from_wrapped(w), fixed::uint<12>::from_wrapped(h)};
-  const std::pair<std::uint8_t, std::uint64_t> writes[] = {{reg::BITBLTBUF, gs::mem::encode(blt)},
-                                                          {reg::TRXPOS, gs::mem::encode(gs::mem::trxpos_reg{})},
-                                                          {reg::TRXREG, gs::mem::encode(size)},
-                                                          {reg::TRXDIR, gs::mem::encode(gs::mem::trxdir_reg{})}};
-  out.ad(writes);
-  out.image(data);
 }
 
 gs::clut_buffer index_in_alpha() {
@@ -107,27 +92,53 @@ gs_inputs place_inputs(const gs_inputs& direct, std::uint32_t first) {
     const std::uint32_t pages = bw * 64 / pg.w * ((static_cast<std::uint32_t>(h) + pg.h - 1) / pg.h);
     const gs::mem::buffer b{fixed::uint<14>::from_wrapped(next), fixed::uint<6>::from_wrapped(bw), p};
     next += 32 * pages;
-    if (next > gs::mem::memory_blocks) throw std::invalid_argument("memory path: the textures do not fit in the GS's 4 MiB");
     return b;
+  };
+  auto palettes_page = [&] {
+    const gs::mem::buffer page = place(64, 32, gs::mem::psm::PSMCT32);  // one page: 8 CLUTs of 4 blocks
+    for (std::size_t k = 0; k < in.cbp.size(); ++k) in.cbp[k] = static_cast<std::uint32_t>(page.BP.value()) + 4 * static_cast<std::uint32_t>(k);
   };
   in.nm_at = place(direct.nm->width, direct.nm->height, gs::mem::psm::PSMT8);
   if (!direct.sphere.empty()) in.sphere_at = place(64, 64, gs::mem::psm::PSMCT32);
   in.diffuse_at = place(direct.diffuse->width, direct.diffuse->height, gs::mem::psm::PSMCT32);
-  const gs::mem::buffer page = place(64, 32, gs::mem::psm::PSMCT32);  // one page: 8 CLUTs of 4 blocks
-  for (std::size_t k = 0; k < in.cbp.size(); ++k) in.cbp[k] = static_cast<std::uint32_t>(page.BP.value()) + 4 * static_cast<std::uint32_t>(k);
+  palettes_page();
+  if (next <= gs::mem::memory_blocks) return in;
+  in = direct;  // streamed: the normal map and the diffuse texture go through the window
+  next = first;
+  if (!direct.sphere.empty()) in.sphere_at = place(64, 64, gs::mem::psm::PSMCT32);
+  palettes_page();
+  if (next + 32 * 4 > gs::mem::memory_blocks)
+    throw texture_does_not_fit("memory path: the frame buffers, palettes and sphere map leave " +
+                               std::to_string(gs::mem::memory_blocks / 32 - std::min(next / 32, 512u)) +
+                               " of the GS's 512 pages to stream the textures through (4 are needed): use a smaller --size");
+  in.window_first = next / 32;
+  in.diffuse_bytes = bytes_of(direct.diffuse->texels);
   return in;
 }
 
+void start_stream(gs_inputs& in, const prepared_scene& ps, const render_options& o, const scissor& area) {
+  if (in.window_first == 0) return;
+  const gs::bilinear_mode filter = o.bilinear ? o.model.bilinear : gs::bilinear_mode::nearest;
+  in.stream = std::make_shared<texture_streamer>(ps, o.model.setup, filter, area, in.window_first, gs::mem::memory_blocks / 32);
+}
+stream_texture normal_map_stream(const gs_inputs& in) {
+  return {1, "normal map", gs::mem::psm::PSMT8, in.nm->width, in.nm->height, in.nm->index};
+}
+stream_texture diffuse_stream(const gs_inputs& in) {
+  return {2, "diffuse texture", gs::mem::psm::PSMCT32, in.diffuse->width, in.diffuse->height, in.diffuse_bytes};
+}
+
 void add_uploads(gs::packets::packet_builder& b, const gs_inputs& in) {
-  transfer(b, in.nm_at, in.nm->width, in.nm->height, in.nm->index);
-  if (!in.sphere.empty()) transfer(b, in.sphere_at, 64, 64, bytes_of(in.sphere));
-  transfer(b, in.diffuse_at, in.diffuse->width, in.diffuse->height, bytes_of(in.diffuse->texels));
+  const bool resident = in.window_first == 0;
+  if (resident) host_transfer(b, in.nm_at, in.nm->width, in.nm->height, in.nm->index);
+  if (!in.sphere.empty()) host_transfer(b, in.sphere_at, 64, 64, bytes_of(in.sphere));
+  if (resident) host_transfer(b, in.diffuse_at, in.diffuse->width, in.diffuse->height, bytes_of(in.diffuse->texels));
   const auto all = palettes(in);
   for (std::size_t k = 0; k < all.size(); ++k) {
     std::vector<std::uint32_t> image(256);
     for (unsigned p = 0; p < 256; ++p) image[p] = (*all[k])[gs::csm1_position(gs::u8::from_wrapped(p))].to_u32();
     const gs::mem::buffer at{fixed::uint<14>::from_wrapped(in.cbp[k]), fixed::uint<6>::from_wrapped(1), gs::mem::psm::PSMCT32};
-    transfer(b, at, 16, 16, bytes_of(image));
+    host_transfer(b, at, 16, 16, bytes_of(image));
   }
 }
 
@@ -137,19 +148,16 @@ gs_inputs upload_inputs(gs::mem::local_memory& m, const gs_inputs& direct, std::
     auto addresses = [](const gs::mem::buffer& b, int w, int h) {
       return std::make_shared<const gs::mem::texel_addresses>(b.PSM, b.BW.value(), static_cast<std::uint32_t>(w), static_cast<std::uint32_t>(h));
     };
-    in.nm_texels = addresses(in.nm_at, direct.nm->width, direct.nm->height);
+    if (in.window_first == 0) in.nm_texels = addresses(in.nm_at, direct.nm->width, direct.nm->height);
     if (!direct.sphere.empty()) in.sphere_texels = addresses(in.sphere_at, 64, 64);
-    in.diffuse_texels = addresses(in.diffuse_at, direct.diffuse->width, direct.diffuse->height);
+    if (in.window_first == 0) in.diffuse_texels = addresses(in.diffuse_at, direct.diffuse->width, direct.diffuse->height);
   };
   std::jthread helper;  // joins when it goes out of scope, also when an upload below throws
   if (parallel) helper = std::jthread(tables);
   else tables();
   gs::packets::packet_builder b;
   add_uploads(b, in);
-  const std::vector<std::uint8_t> bytes = b.bytes();
-  gs::packets::interpreter gs(m);
-  for (const gs::packets::gif_event& e : gs::packets::decode_gif(bytes)) gs.apply(e, 16 * std::uint64_t{e.offset});
-  if (!gs.unmodelled_features().empty()) throw std::logic_error("memory path upload: " + gs.unmodelled_features().front().what);
+  interpret(m, b);
   in.memory = &m;
   const auto all = palettes(in);
   for (std::size_t k = 0; k < all.size(); ++k) {

@@ -19,6 +19,7 @@
 #include "pipeline/raster.hpp"
 #include "pipeline/render.hpp"
 #include "pipeline/scene.hpp"
+#include "pipeline/texture_stream.hpp"
 
 namespace gsdot3::pipeline {
 
@@ -74,6 +75,12 @@ struct gs_inputs {
   const gs::mem::local_memory* memory = nullptr;
   // and the byte address of every texel of the three textures (gs_memory/fast_address.hpp).
   std::shared_ptr<const gs::mem::texel_addresses> nm_texels, sphere_texels, diffuse_texels;
+  // Streamed (the normal map and the diffuse texture do not fit beside the frame buffers with the
+  // rest, texture_stream.hpp): the window's first page (0: every texture placed above), the diffuse
+  // texels as the transfers send them, and the streamer (start_stream) the passes take pieces from.
+  std::uint32_t window_first = 0;
+  std::vector<std::uint8_t> diffuse_bytes;
+  std::shared_ptr<texture_streamer> stream;
 };
 
 // The eight palettes in upload order: pos, neg, axis x, y, z, ilp, grey, alpha_index.
@@ -83,11 +90,18 @@ std::array<const gs::clut_buffer*, 8> palettes(const gs_inputs& in);
 gs_inputs make_inputs(const scene& s, method m, const render_options& o);
 // Places the textures from block `first` on: the normal map (PSMT8, an even TBW), the sphere map
 // and the diffuse texture (PSMCT32), then one PSMCT32 page holding the eight palettes as 16×16 CSM1
-// images of 4 blocks each. Throws std::invalid_argument when they pass the end of the 4 MiB.
+// images of 4 blocks each. When that passes the end of the 4 MiB: the sphere map and the palettes
+// only, and the normal map and the diffuse texture streamed through the pages after them (the
+// window, window_first); texture_does_not_fit when fewer than 4 pages are left for it (one bilinear
+// pixel fetches up to 4).
 gs_inputs place_inputs(const gs_inputs& direct, std::uint32_t first);
-// The transfers of a placed input set: per image BITBLTBUF (DBP, DBW, DPSM), TRXPOS = 0, TRXREG
-// (RRW, RRH), TRXDIR = 0 as A+D writes, then the pixels as IMAGE data; palette entry i at
-// gs::csm1_position(i) of its image.
+// The streamer of a streamed input set (nothing otherwise): the triangles of ps over the drawn
+// `area`, sampled as o says; the normal map and the diffuse texture as streamed textures.
+void start_stream(gs_inputs& in, const prepared_scene& ps, const render_options& o, const scissor& area);
+stream_texture normal_map_stream(const gs_inputs& in);
+stream_texture diffuse_stream(const gs_inputs& in);
+// The transfers of a placed input set (host_transfer each, the streamed textures left to their
+// passes); palette entry i at gs::csm1_position(i) of its image.
 void add_uploads(gs::packets::packet_builder& b, const gs_inputs& placed);
 // place_inputs, add_uploads interpreted into m (gs::packets::interpreter), then every palette loaded
 // back from m by TEX0 (PSMT8, CBP, CLD = 1) through gs_memory's load_clut; the textures' texel

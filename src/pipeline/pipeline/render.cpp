@@ -25,7 +25,9 @@
 //   LAB" of the z-trick-psmz32 mode. The normal map (PSMT8), the sphere map and the diffuse texture
 //   (PSMCT32) are uploaded by host -> local transfers and every texel is read from memory; the
 //   palettes (incl. the ILP) are uploaded as CSM1 images and loaded into the CLUT buffer by TEX0.CLD
-//   (upload_inputs: the GIF packets of gs_inputs.hpp, run through gs_packets' interpreter). Both paths
+//   (upload_inputs: the GIF packets of gs_inputs.hpp, run through gs_packets' interpreter); a normal
+//   map and diffuse texture too big for the memory beside the buffers stream per pass in pieces
+//   (texture_stream.hpp, draw_textured; the memory path then draws on one thread). Both paths
 //   run the depth test through gs::depth_test.
 // The register sets and vertex values of the passes are pass_table.hpp's, which frame_packets.cpp
 // writes as the GIF packet stream of the same frame.
@@ -218,6 +220,7 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
     return texture_ref{in.nm->width, in.nm->height, in.nm->index.data(), &clut, nullptr, false, filter, in.memory, in.nm_at, in.nm_texels.get()};
   };
   auto flat_white = [&](std::uint32_t) { return white; };
+  const stream_texture nm_stream = normal_map_stream(in), diffuse_texels = diffuse_stream(in);
 
   for (std::size_t l = 0; l < s.lights.size(); ++l) {
     const std::vector<light_vertex>& lv = ps.lights[l];
@@ -234,9 +237,9 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
       case method::two_pass: {
         const auto attr = attributes(ps, o.model.setup, [&](std::uint32_t v) { return two_pass_colour(lv[v], o.s); }, normal_map_uv);
         const texture_ref pos = nm_texture(in.pos), neg = nm_texture(in.neg);
-        r.draw<two_pass_positive>(&pos, attr, fb.dpb);
+        draw_textured<two_pass_positive>(r, fb.memory, in.stream.get(), nm_stream, pos, attr, fb.dpb);
         note("2.3 Max(n,0)·l (MODULATE)", li, "DPB", fb.dpb);
-        r.draw<two_pass_negative>(&neg, attr, fb.dpb);
+        draw_textured<two_pass_negative>(r, fb.memory, in.stream.get(), nm_stream, neg, attr, fb.dpb);
         note("2.3 − Max(−n,0)·l (MODULATE, Cd − Cs)", li, "DPB", fb.dpb);
         // 2.4a: n'_a into R, G and B: the DPB read as PSMT8H (its own alpha byte) through a grey CLUT.
         if constexpr (in_memory(FB{})) {
@@ -267,11 +270,11 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
         note("2.3 sphere map · fade (HIGHLIGHT)", li, "DPB", fb.dpb);
         const auto attr = attributes(ps, o.model.setup, flat_white, normal_map_uv);
         const texture_ref x = nm_texture(in.axis[0]), y = nm_texture(in.axis[1]), z = nm_texture(in.axis[2]);
-        r.draw<four_pass_x>(&x, attr, fb.dpb);
+        draw_textured<four_pass_x>(r, fb.memory, in.stream.get(), nm_stream, x, attr, fb.dpb);
         note("2.3 R: x multiply (Cs − Cd)·As + Cd", li, "DPB", fb.dpb);
-        r.draw<four_pass_y>(&y, attr, fb.dpb);
+        draw_textured<four_pass_y>(r, fb.memory, in.stream.get(), nm_stream, y, attr, fb.dpb);
         note("2.3 G: y multiply (Cs − Cd)·As + Cd", li, "DPB", fb.dpb);
-        r.draw<four_pass_z>(&z, attr, fb.dpb);
+        draw_textured<four_pass_z>(r, fb.memory, in.stream.get(), nm_stream, z, attr, fb.dpb);
         note("2.3 B: z multiply (Cs − Cd)·As + Cd", li, "DPB", fb.dpb);
         break;
       }
@@ -281,13 +284,13 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
         };
         const auto tl_pos = side(false), tl_neg = side(true);
         const texture_ref pos = nm_texture(in.pos), neg = nm_texture(in.neg);
-        r.draw<baseline_add>(&pos, tl_pos, fb.dpb);       // NM_pos·TL_pos
+        draw_textured<baseline_add>(r, fb.memory, in.stream.get(), nm_stream, pos, tl_pos, fb.dpb); // NM_pos·TL_pos
         note("2.3 + NM_pos·TL_pos", li, "DPB", fb.dpb);
-        r.draw<baseline_add>(&neg, tl_neg, fb.dpb);       // NM_neg·TL_neg
+        draw_textured<baseline_add>(r, fb.memory, in.stream.get(), nm_stream, neg, tl_neg, fb.dpb); // NM_neg·TL_neg
         note("2.3 + NM_neg·TL_neg", li, "DPB", fb.dpb);
-        r.draw<baseline_subtract>(&neg, tl_pos, fb.dpb);  // −NM_neg·TL_pos
+        draw_textured<baseline_subtract>(r, fb.memory, in.stream.get(), nm_stream, neg, tl_pos, fb.dpb);  // −NM_neg·TL_pos
         note("2.3 − NM_neg·TL_pos", li, "DPB", fb.dpb);
-        r.draw<baseline_subtract>(&pos, tl_neg, fb.dpb);  // −NM_pos·TL_neg
+        draw_textured<baseline_subtract>(r, fb.memory, in.stream.get(), nm_stream, pos, tl_neg, fb.dpb);  // −NM_pos·TL_neg
         note("2.3 − NM_pos·TL_neg", li, "DPB", fb.dpb);
         break;
       }
@@ -314,7 +317,7 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
   r.fill(fb.diff, 0, false);
   const texture_ref diffuse{in.diffuse->width, in.diffuse->height, nullptr, nullptr, in.diffuse->texels.data(), false, filter,
                             in.memory, in.diffuse_at, in.diffuse_texels.get()};
-  r.draw<diffuse_layer>(&diffuse, attributes(ps, o.model.setup, flat_white, normal_map_uv), fb.diff);
+  draw_textured<diffuse_layer>(r, fb.memory, in.stream.get(), diffuse_texels, diffuse, attributes(ps, o.model.setup, flat_white, normal_map_uv), fb.diff);
   note("3 diffuse layer", -1, "diffuse", fb.diff);
 
   // Step 4: diffuse × LAB per channel: (Cs − 0)·Ad >> 7 with the LAB channel in the destination
@@ -418,7 +421,10 @@ frame render(const scene& s, const prepared_scene& ps, method m, const render_op
       v->address = &addresses.emplace_back(v->layout(), v->bp, v->bw, 64 * fbw, 32 * static_cast<std::uint32_t>((ps.height + 31) / 32));
     render_options one = o;
     if (o.dpb_clear != dpb_clear_mode::explicit_clear) one.threads = 1;  // draw order is the model's
-    render_bands(s, ps, m, one, upload_inputs(memory, in, layout.first_texture_block(), one.threads > 1), fb, result);
+    gs_inputs uploaded = upload_inputs(memory, in, layout.first_texture_block(), one.threads > 1);
+    if (uploaded.window_first != 0) one.threads = 1;  // the pieces' uploads share the window
+    start_stream(uploaded, ps, o, band_renderer::drawn_area(ps, {0, 0, ps.width, ps.height}));
+    render_bands(s, ps, m, one, uploaded, fb, result);
   } else {
     std::vector<std::uint32_t> rows(4 * n, 0);  // value level: DPB, LAB, diffuse, output, frame-sized each
     frame_buffers<row_view> fb;
