@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
   gsdot3::cli::add_mesh_info_command(app, ctx);
   gsdot3::cli::add_prove_command(app, ctx);
   gsdot3::cli::add_pvr_bump_command(app, ctx);
+  gsdot3::cli::add_quality_command(app, ctx);
   gsdot3::cli::add_render_command(app, ctx);
   gsdot3::cli::add_ssbump_command(app, ctx);
   gsdot3::cli::add_vectors_command(app, ctx);

@@ -13,6 +13,7 @@
 #include "pipeline/files.hpp"
 #include "pipeline/memory_picture.hpp"
 #include "pipeline/memory_steps.hpp"
+#include "pipeline/quality_claims.hpp"
 #include "pipeline/report_page.hpp"
 
 namespace gsdot3::pipeline {
@@ -240,6 +241,18 @@ report_summary write_report(const scene& s, const report_request& r) {
       write_png(dir / dot, grey_image(w, h, frames[k].dot[l]));
       write_png(dir / err, error_map(w, h, [&](std::size_t i) { return dot_value(frames[k].dot[l][i]); }, ref.renormalised[l]));
     }
+  }
+
+  // Seed 000's comparative sentences on this scene (quality_claims.hpp; gsdot3 quality adds random scenes).
+  auto rendered = [&](method m) { return std::find(r.methods.begin(), r.methods.end(), m) != r.methods.end(); };
+  if (rendered(method::two_pass) && rendered(method::four_pass) && rendered(method::baseline)) {
+    quality_scene q{"this scene", {}};
+    for (std::size_t k = 0; k < frames.size(); ++k) q.methods.push_back(measure_errors(sum.methods[k].m, frames[k], ref, front));
+    for (const quality_row& row : quality_rows({q}))
+      j["quality_claims"].push_back({{"claim", row.claim}, {"paper", row.paper}, {"metric", row.metric},
+                                     {"better", std::string(name(row.better))}, {"other", std::string(name(row.other))},
+                                     {"value_better", row.per_scene.front().first}, {"value_other", row.per_scene.front().second},
+                                     {"verdict", row.verdict}});
   }
 
   // The other seeds' methods on the same geometry (scheme_method.hpp).

@@ -73,31 +73,28 @@ std::vector<psnr_row> normal_encoding_psnr(const scene& s, const prepared_scene&
     const glm::dvec3 raw = view * (tn.x * t + tn.y * b + tn.z * n);
     pixels.push_back({raw, glm::normalize(raw)});
   });
+  std::size_t facing_away = 0;
+  double length_sum = 0;
+  for (const auto& p : pixels) {
+    facing_away += p.unit.z < 0 ? 1 : 0;
+    length_sum += glm::length(p.raw);
+  }
   std::vector<psnr_row> rows;
   for (const auto& m : ne::methods()) {
     if (m.only_8_bits && bits != 8) continue;
-    psnr_row r{std::string(m.name), 0, 0, pixels.size(), 0, 0, 0};
-    double se09 = 0, se10 = 0, len = 0;
     // #8 takes the per-pixel view vector; the scene's is not kept per pixel, so it runs with the view
     // straight down −z (its table frame), i.e. as #1.
+    ne::seed_error_sum given, given8(8), raw_self, bug;
     for (const auto& p : pixels) {
-      len += glm::length(p.raw);
-      const ne::vec3 d09 = m.decode(m.encode(to_ne(p.raw), bits), bits);
-      const ne::vec3 d10 = m.decode(ne::encode_2010(m, to_ne(p.raw), bits), bits);
-      auto err = [&](ne::vec3 d, std::size_t& nan) {
-        if (!ne::finite(d)) { ++nan; return 3.0; }
-        const glm::dvec3 e = glm::abs(p.unit - from_ne(d));
-        const glm::dvec3 c = glm::min(e, glm::dvec3(1));
-        return glm::dot(c, c);
-      };
-      se09 += err(d09, r.nan_2009);
-      se10 += err(d10, r.nan_2010);
+      const ne::vec3 v = to_ne(p.raw), n = to_ne(p.unit);
+      const ne::vec3 dn = m.decode(m.encode(n, bits), bits), dv = m.decode(m.encode(v, bits), bits);
+      given.add(n, dn);
+      given8.add(n, dn);
+      raw_self.add(v, dv);
+      bug.add(n, dv);
     }
-    const double denom = 3.0 * static_cast<double>(std::max<std::size_t>(1, pixels.size()));
-    r.psnr_2009 = -10 * std::log10(se09 / denom);
-    r.psnr_2010 = -10 * std::log10(se10 / denom);
-    r.mean_input_length = len / static_cast<double>(std::max<std::size_t>(1, pixels.size()));
-    rows.push_back(r);
+    rows.push_back({std::string(m.name), pixels.size(), facing_away, given.done(), given8.done(), raw_self.done(), bug.done(),
+                    length_sum / static_cast<double>(std::max<std::size_t>(1, pixels.size()))});
   }
   return rows;
 }

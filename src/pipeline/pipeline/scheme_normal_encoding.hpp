@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "normal_encoding/seed_psnr.hpp"
 #include "pipeline/prepare.hpp"
 #include "pipeline/render.hpp"
 #include "pipeline/scene.hpp"
@@ -22,16 +23,20 @@ scheme_frame render_enc_spheremap(const scene&, const prepared_scene&, const std
 scheme_frame render_enc_stereographic(const scene&, const prepared_scene&, const std::vector<std::int32_t>&, const render_options&);
 scheme_frame render_enc_octahedral(const scene&, const prepared_scene&, const std::vector<std::int32_t>&, const render_options&);
 
-// The seed's quality measure: per covered pixel, n1 = the unit view-space normal (normal-map texel
-// through the barycentrically interpolated vertex frame, then the camera's rotation), n2 = its
-// decode; MSE over pixels and the 3 channels of |n1 − n2| (each clamped to 1, as an image holds it),
-// PSNR = −10·log10(MSE). "2009": the encoder gets the interpolated vector as is (not unit), as the
-// seed's shaders did; "2010": normalised first.
+// Seed 002's quality measure (normal_encoding/seed_psnr.hpp) on the scene: per covered pixel the
+// interpolated view-space vector v (normal-map texel through the barycentrically interpolated vertex
+// frame, then the camera's rotation; not unit) and n = normalize(v). Three ways to feed an encoder:
+//   given:     n given, error against n — what the seed measures: the error of the encoding
+//              against the normal it was given (for xyz "only because of quantization");
+//   raw_self:  v given, error against v — the 2009 pipeline if n1 was the vector as interpolated;
+//   bug_2009:  v given, error against n — the 2009 encoders' missing normalise as an error (the bug
+//              the seed's header admits), kept apart from the seed's measure.
+// facing_away: pixels with n.z < 0 (view space looks down −z), where #1 decodes the wrong z sign.
 struct psnr_row {
   std::string method;
-  double psnr_2009 = 0, psnr_2010 = 0;
-  std::size_t pixels = 0, nan_2009 = 0, nan_2010 = 0;  // NaN decodes count as error 1 per channel
-  double mean_input_length = 0;                      // of the 2009 input vectors
+  std::size_t pixels = 0, facing_away = 0;
+  normal_encoding::seed_error given, given_8bit_image, raw_self, bug_2009;
+  double mean_input_length = 0;  // of v
 };
 std::vector<psnr_row> normal_encoding_psnr(const scene& s, const prepared_scene& ps, const std::vector<std::int32_t>& visible, int bits);
 

@@ -1,0 +1,142 @@
+// tests/pipeline/quality_test.cpp — the comparative quality rows (quality_claims.hpp): every figure
+// recomputed here another way (report.hpp's compare for the RMSEs, a direct search for the gain, the
+// sign-change test as max·min < 0), and the verdict rule on hand-made figures. No render figure is
+// written down: the verdicts are computed, whatever the model's options give.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "pipeline/quality_claims.hpp"
+#include "pipeline/report.hpp"
+
+namespace gsdot3::pipeline {
+namespace {
+
+TEST(Quality, FiguresAgreeWithIndependentComputations) {
+  const scene s = random_quality_scene(3, 96, 84);
+  const render_options o;
+  const quality_scene q = measure_quality("random-3", s, o);
+  const prepared_scene ps = prepare(s);
+  const method order[] = {method::two_pass, method::four_pass, method::baseline};
+  ASSERT_EQ(q.methods.size(), 3u);
+  std::size_t sign_change_seen = 0;
+  for (std::size_t k = 0; k < 3; ++k) {
+    const frame f = render(s, ps, order[k], o);
+    const reference_frame ref = render_reference(s, ps, f.visible_triangle, o.bilinear, o.specular_power);
+    const method_errors& e = q.methods[k];
+    EXPECT_EQ(e.m, order[k]);
+    const error_stats rn = compare(f.dot, ref.renormalised), un = compare(f.dot, ref.unnormalised);
+    ASSERT_GT(rn.samples, 100u);
+    EXPECT_EQ(e.samples, rn.samples);
+    EXPECT_NEAR(e.vs_renormalised, rn.rmse, 1e-9 * (1 + rn.rmse));
+    EXPECT_NEAR(e.vs_unnormalised, un.rmse, 1e-9 * (1 + un.rmse));
+    EXPECT_EQ(e.pixel_ops, f.pixel_ops);
+    // RMSE(d − g·u) by golden-section search over g in [0.5, 1.5] (convex in g).
+    auto rmse_at = [&](double g) {
+      double sum = 0;
+      std::size_t n = 0;
+      for (std::size_t l = 0; l < s.lights.size(); ++l)
+        for (std::size_t i = 0; i < f.dot[l].size(); ++i)
+          if (!std::isnan(ref.unnormalised[l][i])) {
+            const double d = dot_value(f.dot[l][i]) - g * ref.unnormalised[l][i];
+            sum += d * d;
+            ++n;
+          }
+      return std::sqrt(sum / static_cast<double>(n));
+    };
+    double a = 0.5, b = 1.5;
+    const double phi = (std::sqrt(5.0) - 1) / 2;
+    for (int it = 0; it < 80; ++it) {
+      const double c = b - phi * (b - a), d = a + phi * (b - a);
+      if (rmse_at(c) < rmse_at(d)) b = d;
+      else a = c;
+    }
+    EXPECT_NEAR(e.gain, (a + b) / 2, 1e-6);
+    EXPECT_NEAR(e.after_gain, rmse_at((a + b) / 2), 1e-9);
+    EXPECT_LE(e.after_gain, e.vs_unnormalised + 1e-12);
+    // The per-vertex clamping samples: some component's largest vertex value times its smallest is < 0.
+    double sum = 0;
+    std::size_t n = 0;
+    for (std::size_t l = 0; l < s.lights.size(); ++l)
+      for (std::size_t i = 0; i < f.dot[l].size(); ++i) {
+        if (std::isnan(ref.unnormalised[l][i]) || f.visible_triangle[i] < 0) continue;
+        const auto& t = ps.triangles[static_cast<std::size_t>(f.visible_triangle[i])];
+        bool mixed = false;
+        for (int c = 0; c < 3; ++c) {
+          float lo = 1e9f, hi = -1e9f;
+          for (std::uint32_t v : t.vertex) {
+            lo = std::min(lo, ps.lights[l][v].T[c] * ps.lights[l][v].fade);
+            hi = std::max(hi, ps.lights[l][v].T[c] * ps.lights[l][v].fade);
+          }
+          mixed = mixed || lo * hi < 0;
+        }
+        if (!mixed) continue;
+        const double d = dot_value(f.dot[l][i]) - static_cast<double>(ref.unnormalised[l][i]);
+        sum += d * d;
+        ++n;
+      }
+    EXPECT_EQ(e.sign_change_samples, n);
+    if (n > 0) {
+      EXPECT_NEAR(e.sign_change, std::sqrt(sum / static_cast<double>(n)), 1e-9);
+    }
+    sign_change_seen += n;
+  }
+  EXPECT_GT(sign_change_seen, 0u) << "the scene has no triangle where the per-vertex clamping acts";
+}
+
+method_errors errors(method m, double renormalised, std::size_t ops) {
+  method_errors e{m};
+  e.vs_renormalised = renormalised;
+  e.pixel_ops = ops;
+  return e;
+}
+
+TEST(Quality, VerdictIsHoldsRefutedOrMixedWithTheCount) {
+  // Scene 1: two-pass 1 < baseline 2; scene 2: two-pass 3 > baseline 2. Pixel ops: 10 < 20 on both.
+  const std::vector<quality_scene> scenes = {
+      {"a", {errors(method::two_pass, 1, 10), errors(method::four_pass, 0.5, 30), errors(method::baseline, 2, 20)}},
+      {"b", {errors(method::two_pass, 3, 10), errors(method::four_pass, 4, 30), errors(method::baseline, 2, 20)}}};
+  const auto rows = quality_rows(scenes);
+  auto find = [&](const std::string& claim, const std::string& metric) {
+    const auto it = std::find_if(rows.begin(), rows.end(), [&](const quality_row& r) { return r.claim == claim && r.metric == metric; });
+    EXPECT_NE(it, rows.end()) << claim << " " << metric;
+    return it == rows.end() ? quality_row{} : *it;
+  };
+  EXPECT_EQ(find("quality.two-pass-vs-2002", "rmse_vs_renormalised").verdict, "mixed (1 of 2)");
+  EXPECT_EQ(find("quality.two-pass-vs-2002", "gs_pixel_ops").verdict, "holds");
+  EXPECT_EQ(find("quality.four-pass-vs-2002", "gs_pixel_ops").verdict, "refuted");
+  EXPECT_EQ(find("quality.four-pass-vs-2002", "rmse_vs_renormalised").verdict, "mixed (1 of 2)");
+  const quality_row r = find("quality.four-pass-vs-two-pass", "rmse_vs_renormalised");
+  EXPECT_EQ(r.verdict, "mixed (1 of 2)");
+  ASSERT_EQ(r.per_scene.size(), 2u);
+  EXPECT_EQ(r.per_scene[1], (std::pair<double, double>{4, 3}));
+  // Four-pass normalises: the unnormalised-product metrics are not its claim.
+  EXPECT_EQ(std::count_if(rows.begin(), rows.end(), [](const quality_row& x) { return x.claim == "quality.four-pass-vs-two-pass"; }), 1);
+}
+
+TEST(Quality, EqualOnEveryScene) {
+  const std::vector<quality_scene> scenes = {
+      {"a", {errors(method::two_pass, 1, 10), errors(method::four_pass, 2, 20), errors(method::baseline, 2, 20)}}};
+  const auto rows = quality_rows(scenes);
+  const auto it = std::find_if(rows.begin(), rows.end(), [](const quality_row& r) {
+    return r.claim == "quality.four-pass-vs-2002" && r.metric == "gs_pixel_ops";
+  });
+  ASSERT_NE(it, rows.end());
+  EXPECT_EQ(it->verdict, "refuted (equal on every scene)");
+}
+
+TEST(Quality, RandomScenesAreFixedBySeedAndDiffer) {
+  const scene a = random_quality_scene(5), b = random_quality_scene(5), c = random_quality_scene(6);
+  ASSERT_EQ(a.lights.size(), b.lights.size());
+  for (std::size_t l = 0; l < a.lights.size(); ++l) EXPECT_EQ(a.lights[l].position, b.lights[l].position);
+  EXPECT_EQ(a.view.eye, b.view.eye);
+  EXPECT_NE(a.view.eye, c.view.eye);
+  for (const scene* s : {&a, &c}) {
+    EXPECT_GE(s->lights.size(), 1u);
+    EXPECT_LE(s->lights.size(), 3u);
+  }
+}
+
+}  // namespace
+}  // namespace gsdot3::pipeline
