@@ -119,7 +119,7 @@ class band_renderer {
   template <const pass_regs& Pass, class FB>
   [[gnu::flatten]] void draw(const texture_ref* tex, const std::vector<tri_attr>& attr, const FB& fb) {
     constexpr gs::gs_registers regs = Pass.registers();
-    if (vectorised()) return draw_spans(regs, tex, attr, fb);
+    if (vectorised()) return draw_spans(batch_registers<Pass>, tex, attr, fb);
     auto shade = [&](std::size_t t, int x, int y) {
       const tri_attr& a = attr[t];
       const gs::fragment_colour cf = a.colour_at(x, y);
@@ -159,7 +159,7 @@ class band_renderer {
     r = {std::max(r.x0, a.x0), std::max(r.y0, a.y0), std::min(r.x1, a.x1), std::min(r.y1, a.y1)};
     if (r.x0 >= r.x1 || r.y0 >= r.y1) return;
     if (vectorised() && !scalar_sprites) {
-      span_batch batch(regs, o_.model);
+      span_batch batch(batch_registers<Pass>, o_.model);
       rasterise_sprite({r.x0 * 16, r.y0 * 16}, {r.x1 * 16, r.y1 * 16}, r, [&](int x, int y) {
         batch.add(fb(x, y), texel(x, y), cf, x, y);
         ++ops_;
@@ -219,6 +219,10 @@ class band_renderer {
   }
 
  private:
+  // The registers the SIMD path reads at run time: a copy of its own, so that the scalar path's
+  // compile-time `regs` never has its address taken (g++ then folds gs::pixel_pipeline as before).
+  template <const pass_regs& Pass>
+  static constexpr gs::gs_registers batch_registers = Pass.registers();
   // The SIMD pixel pipeline (render_options::simd; a traced render records every pixel, so it is scalar).
   bool vectorised() const noexcept { return o_.simd && pending == nullptr; }
   // draw() through span_batch: one batch per triangle (the cached fragments are in triangle order).
