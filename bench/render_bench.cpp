@@ -17,12 +17,13 @@ const scene& default_frame_scene() {
   return s;
 }
 
-void frame_bench(benchmark::State& state, method m, bool memory_path = false) {
+void frame_bench(benchmark::State& state, method m, bool memory_path = false, bool simd = true) {
   const scene& s = default_frame_scene();
   const prepared_scene ps = prepare(s);
   render_options o;
   o.threads = static_cast<int>(state.range(0));
   o.memory_path = memory_path;
+  o.simd = simd;
   double ops = 0;
   for (auto _ : state) {
     const frame f = render(s, ps, m, o);
@@ -44,6 +45,12 @@ void BM_TwoPassMemory(benchmark::State& st) { frame_bench(st, method::two_pass, 
 void BM_FourPassMemory(benchmark::State& st) { frame_bench(st, method::four_pass, true); }
 void BM_BaselineMemory(benchmark::State& st) { frame_bench(st, method::baseline, true); }
 
+// render_options::simd = false (`--scalar`): every pixel through the scalar gs::pixel_pipeline.
+void BM_TwoPassScalar(benchmark::State& st) { frame_bench(st, method::two_pass, false, false); }
+void BM_FourPassScalar(benchmark::State& st) { frame_bench(st, method::four_pass, false, false); }
+void BM_BaselineScalar(benchmark::State& st) { frame_bench(st, method::baseline, false, false); }
+void BM_FourPassMemoryScalar(benchmark::State& st) { frame_bench(st, method::four_pass, true, false); }
+
 void BM_FloatReference(benchmark::State& state) {
   const scene& s = default_frame_scene();
   const prepared_scene ps = prepare(s);
@@ -63,6 +70,10 @@ BENCHMARK(BM_Baseline)->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisec
 BENCHMARK(BM_TwoPassMemory)->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FourPassMemory)->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_BaselineMemory)->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_TwoPassScalar)->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FourPassScalar)->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_BaselineScalar)->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FourPassMemoryScalar)->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FloatReference)->UseRealTime()->Unit(benchmark::kMillisecond);
 
 BENCHMARK_MAIN();

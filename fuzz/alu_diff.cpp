@@ -4,6 +4,8 @@
 //      int arithmetic written from the facts digest's formulas (pixel_reference below), stage by stage;
 //   2. register decode/encode: a decoded 64-bit value re-encodes to itself, a rejected one throws
 //      gs::register_error and nothing else;
+//   1b. gs_simd::pixel_pipeline (the SIMD units, issue 30) on every SIMD target against
+//      gs::pixel_pipeline, the pixel in a random lane of a batch of copies;
 //   3. the proof layer where it overlaps: methods::offset_multiply / add_wrapped / minus_128 against
 //      their closed forms, four_pass::table against methods::four_pass_channel, and two_pass::table
 //      (the vertex-light fast path) against two_pass::pixel.
@@ -23,6 +25,7 @@
 #include "fuzz_check.hpp"
 #include "gs_arith/pixel_pipeline.hpp"
 #include "gs_arith/registers.hpp"
+#include "gs_simd/pixel_span.hpp"
 #include "proofs/domains.hpp"
 #include "proofs/four_pass.hpp"
 #include "proofs/methods.hpp"
@@ -247,6 +250,28 @@ reference_pixel pixel_reference(const gs::gs_registers& r, const gs::pixel_input
   return ref;
 }
 
+void check_simd_pixel(FuzzedDataProvider& in, const gs::gs_registers& regs, const gs::pixel_input& p, const gs::model_options& o,
+                      std::uint32_t expected) {
+  static gsdot3::simd::pixel_batch batch;
+  const std::size_t lane = in.ConsumeIntegralInRange<std::size_t>(0, gsdot3::simd::pixel_batch::capacity - 1);
+  batch.n = lane + 1;
+  for (std::size_t i = 0; i < batch.n; ++i) {
+    batch.texel[i] = p.texel.to_u32();
+    const gs::gouraud_channel c[4] = {p.vertex.r, p.vertex.g, p.vertex.b, p.vertex.a};
+    for (std::size_t k = 0; k < 4; ++k) batch.cf[k][i] = static_cast<std::uint32_t>(c[k].value());
+    batch.dst[i] = p.dst, batch.x[i] = p.x, batch.y[i] = p.y;
+  }
+  for (const gsdot3::simd::target& target : gsdot3::simd::available_targets()) {
+    gsdot3::simd::force_target(target.bits);
+    gsdot3::simd::pixel_pipeline(regs, o, batch);
+    require(batch.out[lane] == expected, [&] {
+      return "gs_simd pixel_pipeline (" + target.name + ", lane " + std::to_string(lane) + ") out " + hex(batch.out[lane], 8) +
+             ", gs::pixel_pipeline " + hex(expected, 8) + "; " + describe(regs, p, o);
+    });
+  }
+  gsdot3::simd::force_target(0);
+}
+
 void check_pixel(FuzzedDataProvider& in) {
   const auto o = random_options(in);
   const auto regs = random_registers(in);
@@ -268,6 +293,7 @@ void check_pixel(FuzzedDataProvider& in) {
   require(t.out == ref.out, [&] {
     return "pixel_pipeline out " + hex(t.out, 8) + ", reference " + hex(ref.out, 8) + "; " + describe(regs, p, o) + "\n" + gs::format_trace(t);
   });
+  check_simd_pixel(in, regs, p, o, t.out);
 }
 
 // ---- register decode / encode -------------------------------------------------------------------

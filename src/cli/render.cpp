@@ -31,7 +31,7 @@ struct render_args {
   std::vector<std::string> lights, model_options;
   int s = 122, threads = 2;
   double specular = 0.0;
-  bool memory_path = false;
+  bool memory_path = false, scalar = false;
   std::string dpb_clear = "explicit";
 };
 
@@ -142,6 +142,7 @@ scene_setup setup(const render_args& a) {
   }
   const auto [w, h] = parse_size(a.size);
   req.options.memory_path = a.memory_path;
+  req.options.simd = !a.scalar;
   if (a.dpb_clear == "z-trick") req.options.dpb_clear = pipeline::dpb_clear_mode::z_trick;
   else if (a.dpb_clear == "z-trick-psmz32") req.options.dpb_clear = pipeline::dpb_clear_mode::z_trick_psmz32;
   else if (a.dpb_clear != "explicit") throw usage_error("--dpb-clear: expected explicit, z-trick or z-trick-psmz32, got '" + a.dpb_clear + "'");
@@ -253,6 +254,8 @@ void add_options(CLI::App* cmd, render_args& a) {
   cmd->add_option("--threads", a.threads, "frame bands rendered in parallel")->capture_default_str();
   cmd->add_flag("--memory-path", a.memory_path,
                 "frame buffers in the modelled GS local memory; post filter as PSMT8 channel-fetch sprites (same frames)");
+  cmd->add_flag("--scalar", a.scalar,
+                "every pixel through the scalar gs::pixel_pipeline instead of the SIMD units (gs_simd; same frames)");
   cmd->add_option("--dpb-clear", a.dpb_clear,
                   "step 2.1's DPB clear (section 3.4): explicit | z-trick | z-trick-psmz32 (Z-buffer clear during the "
                   "ILP pass; implies --memory-path, one thread; see --model-option texture_buffer=...)")

@@ -21,6 +21,7 @@
 #include "pipeline/prepare.hpp"
 #include "pipeline/render.hpp"
 #include "pipeline/texture_stream.hpp"
+#include "pipeline/span_batch.hpp"
 
 namespace gsdot3::pipeline::detail {
 
@@ -120,6 +121,7 @@ class band_renderer {
   template <const pass_regs& Pass, class FB>
   [[gnu::flatten]] void draw(const texture_ref* tex, const std::vector<tri_attr>& attr, const FB& fb, const scissor* clip = nullptr) {
     constexpr gs::gs_registers regs = Pass.registers();
+    if (vectorised()) return draw_spans(batch_registers<Pass>, tex, attr, fb);
     auto shade = [&](std::size_t t, int x, int y) {
       const tri_attr& a = attr[t];
       const gs::fragment_colour cf = a.colour_at(x, y);
@@ -166,6 +168,14 @@ class band_renderer {
     const scissor& a = clip != nullptr ? *clip : sprite_area_;
     r = {std::max(r.x0, a.x0), std::max(r.y0, a.y0), std::min(r.x1, a.x1), std::min(r.y1, a.y1)};
     if (r.x0 >= r.x1 || r.y0 >= r.y1) return;
+    if (vectorised() && !scalar_sprites) {
+      span_batch batch(batch_registers<Pass>, o_.model);
+      rasterise_sprite({r.x0 * 16, r.y0 * 16}, {r.x1 * 16, r.y1 * 16}, r, [&](int x, int y) {
+        batch.add(fb(x, y), texel(x, y), cf, x, y);
+        ++ops_;
+      });
+      return;
+    }
     rasterise_sprite({r.x0 * 16, r.y0 * 16}, {r.x1 * 16, r.y1 * 16}, r, [&](int x, int y) {
       const gs::rgba8 t = texel(x, y);
       std::uint32_t& word = fb(x, y);
@@ -195,6 +205,9 @@ class band_renderer {
 
   // Tracing (render_options::trace): the pass being drawn records its inputs here (frame-sized).
   pass_record* pending = nullptr;
+  // Sprites whose texel fetch reads memory the sprite writes (the memory path's channel passes) go
+  // pixel by pixel: span_batch writes a batch only when it is flushed.
+  bool scalar_sprites = false;
   void note_shaded(std::size_t i, gs::rgba8 texel, const gs::fragment_colour& cf) {
     pending->texel[i] = texel.to_u32();
     const gs::gouraud_channel c[4] = {cf.r, cf.g, cf.b, cf.a};
@@ -216,6 +229,38 @@ class band_renderer {
   }
 
  private:
+  // The registers the SIMD path reads at run time: a copy of its own, so that the scalar path's
+  // compile-time `regs` never has its address taken (g++ then folds gs::pixel_pipeline as before).
+  template <const pass_regs& Pass>
+  static constexpr gs::gs_registers batch_registers = Pass.registers();
+  // The SIMD pixel pipeline (render_options::simd; a traced render records every pixel, so it is scalar).
+  bool vectorised() const noexcept { return o_.simd && pending == nullptr; }
+  // draw() through span_batch: one batch per triangle (the cached fragments are in triangle order).
+  template <class FB>
+  void draw_spans(const gs::gs_registers& regs, const texture_ref* tex, const std::vector<tri_attr>& attr, const FB& fb) {
+    span_batch batch(regs, o_.model);
+    auto add = [&](std::size_t t, int x, int y) {
+      const tri_attr& a = attr[t];
+      const gs::rgba8 texel = tex != nullptr ? tex->sample(a.u.at(x, y), a.v.at(x, y)) : gs::rgba8{};
+      batch.add(fb(x, y), texel, a.colour_at(x, y), x, y);
+      ++ops_;
+    };
+    if (o_.path == raster_path::cached) {
+      std::int32_t last = -1;
+      for (const fragment& f : frags_) {
+        if (f.tri != last) batch.flush(), last = f.tri;
+        add(static_cast<std::size_t>(f.tri), f.x, f.y);
+      }
+      return;
+    }
+    for (std::size_t t = 0; t < ps_.triangles.size(); ++t) {
+      rasterise_triangle(ps_.triangles[t].setup, band_, [&](int x, int y) {
+        if (passes_later_depth_test(ps_.triangles[t], x, y)) add(t, x, y);
+      });
+      batch.flush();
+    }
+  }
+
   // The depth test of every pass after step 1 (GEQUAL, ZMSK = 1: Z is only read).
   bool passes_later_depth_test(const prepared_triangle& tri, int x, int y) const noexcept {
     return gs::depth_test(passes::depth_gequal, passes::z_masked, static_cast<std::uint32_t>(tri.z.at(x, y)), z_.read(x, y)).pass;

@@ -136,6 +136,7 @@ void channel_pass(band_renderer& r, const frame_buffers<memory_view>& fb, gs::rg
   // With the Z clear the ILP sprites cover every page the area touches (the paper's per-page
   // primitives, section 3.3), so that the Z writes clear whole pages.
   const scissor pages{a.x0 & ~63, a.y0 & ~31, (a.x1 + 63) & ~63, (a.y1 + 31) & ~31};
+  r.scalar_sprites = true;  // the texel fetches read the memory the sprites write (span_batch.hpp)
   // The byte of the page (at TBP0 = 0) each sprite pixel fetches, through CLAMP_1 and the PSMT8
   // address: sprite k's pixel (dx, dy) at 16·k + 8·dy + dx. The sprites and their texels are the
   // same on every page, which only moves TBP0 (texel_addresses::byte adds it).
@@ -182,6 +183,7 @@ void channel_pass(band_renderer& r, const frame_buffers<memory_view>& fb, gs::rg
                             dst, z_clear ? &pages : nullptr);
       }
     }
+  r.scalar_sprites = false;
 }
 
 // The memory path's copy of the LAB into the output over `area` (before step 4): gs_inputs.hpp's

@@ -52,6 +52,7 @@ struct render_options {
   std::vector<pass_record>* trace = nullptr;  // non-null: every pass appended here (one band, slower)
   bool memory_path = false;        // frame buffers in the modelled GS local memory (render.cpp)
   dpb_clear_mode dpb_clear = dpb_clear_mode::explicit_clear;
+  bool simd = true;                // the SIMD pixel pipeline (gs_simd); false: gs::pixel_pipeline per pixel
 };
 
 struct frame {

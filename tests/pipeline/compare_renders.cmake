@@ -1,0 +1,31 @@
+# `gsdot3 render` (value level and --memory-path) and `gsdot3 report` with and without --scalar: the
+# PNGs they write are the same bytes (the SIMD pixel pipeline equals the scalar one on whole frames).
+# -DGSDOT3=<the gsdot3 binary> -DOUT=<a scratch folder>
+file(REMOVE_RECURSE "${OUT}")
+foreach(run "render" "render;--memory-path" "report")
+  string(REPLACE ";" "_" tag "${run}")
+  foreach(path "simd" "scalar")
+    set(extra "")
+    if(path STREQUAL "scalar")
+      set(extra "--scalar")
+    endif()
+    execute_process(COMMAND ${GSDOT3} ${run} --size 128x112 --threads 2 ${extra} --out "${OUT}/${tag}-${path}"
+                    RESULT_VARIABLE rc OUTPUT_QUIET ERROR_VARIABLE err)
+    if(NOT rc EQUAL 0)
+      message(FATAL_ERROR "gsdot3 ${run} ${extra} failed (${rc}): ${err}")
+    endif()
+  endforeach()
+  file(GLOB pngs RELATIVE "${OUT}/${tag}-simd" "${OUT}/${tag}-simd/*.png")
+  list(LENGTH pngs count)
+  if(count LESS 3)
+    message(FATAL_ERROR "gsdot3 ${run}: expected a PNG per method, found ${count}")
+  endif()
+  foreach(png ${pngs})
+    execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files "${OUT}/${tag}-simd/${png}" "${OUT}/${tag}-scalar/${png}"
+                    RESULT_VARIABLE same)
+    if(NOT same EQUAL 0)
+      message(FATAL_ERROR "gsdot3 ${run}: ${png} differs between the SIMD and the --scalar render")
+    endif()
+  endforeach()
+  message(STATUS "gsdot3 ${run}: ${count} PNGs identical with and without --scalar")
+endforeach()
