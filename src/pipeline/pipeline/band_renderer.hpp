@@ -121,7 +121,8 @@ class band_renderer {
   template <const pass_regs& Pass, class FB>
   [[gnu::flatten]] void draw(const texture_ref* tex, const std::vector<tri_attr>& attr, const FB& fb, const scissor* clip = nullptr) {
     constexpr gs::gs_registers regs = Pass.registers();
-    if (vectorised()) return draw_spans(batch_registers<Pass>, tex, attr, fb);
+    // A streamed piece (clip) is drawn by the scalar loop below: the span batches know no SCISSOR_1.
+    if (vectorised() && clip == nullptr) return draw_spans(batch_registers<Pass>, tex, attr, fb);
     auto shade = [&](std::size_t t, int x, int y) {
       const tri_attr& a = attr[t];
       const gs::fragment_colour cf = a.colour_at(x, y);
