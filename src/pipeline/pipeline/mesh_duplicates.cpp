@@ -1,5 +1,6 @@
 // pipeline/mesh_duplicates.cpp — duplicated triangles found and dropped (see mesh_duplicates.hpp).
 #include "pipeline/mesh_duplicates.hpp"
+#include "pipeline/word_hash.hpp"
 
 #include <algorithm>
 #include <array>
@@ -14,13 +15,7 @@ namespace {
 using position_key = std::array<std::uint32_t, 3>;
 using triangle_key = std::array<std::uint32_t, 9>;
 
-struct key_hash {
-  std::size_t operator()(const triangle_key& k) const {
-    std::uint64_t h = 1469598103934665603ull;  // FNV-1a over the nine words
-    for (std::uint32_t w : k) h = (h ^ w) * 1099511628211ull;
-    return static_cast<std::size_t>(h);
-  }
-};
+using key_hash = word_hash;
 
 position_key key_of(glm::vec3 p) {
   auto word = [](float f) { return std::bit_cast<std::uint32_t>(f == 0.0f ? 0.0f : f); };

@@ -14,6 +14,7 @@
 
 #include "pipeline/mesh_duplicates.hpp"
 #include "pipeline/mikktspace.hpp"
+#include "pipeline/word_hash.hpp"
 
 namespace gsdot3::pipeline {
 
@@ -130,18 +131,10 @@ struct corner {
   float sign;
 };
 
-struct corner_hash {
-  std::size_t operator()(const std::array<std::uint32_t, 12>& k) const {
-    std::uint64_t h = 1469598103934665603ull;
-    for (std::uint32_t w : k) h = (h ^ w) * 1099511628211ull;
-    return static_cast<std::size_t>(h);
-  }
-};
-
 // Corners with identical attributes become one vertex.
 mesh weld(const std::vector<corner>& corners) {
   mesh m;
-  std::unordered_map<std::array<std::uint32_t, 12>, std::uint32_t, corner_hash> ids;
+  std::unordered_map<std::array<std::uint32_t, 12>, std::uint32_t, word_hash> ids;
   std::array<std::uint32_t, 3> tri{};
   for (std::size_t c = 0; c < corners.size(); ++c) {
     const corner& k = corners[c];

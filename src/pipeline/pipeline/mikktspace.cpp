@@ -1,6 +1,7 @@
 // pipeline/mikktspace.cpp — MikkTSpace tangents (see mikktspace.hpp for the rules and where in the
 // reference's mikktspace.c each comes from).
 #include "pipeline/mikktspace.hpp"
+#include "pipeline/word_hash.hpp"
 
 #include <algorithm>
 #include <array>
@@ -19,13 +20,6 @@ namespace {
 
 using vertex_key = std::array<std::uint32_t, 8>;
 
-struct key_hash {
-  std::size_t operator()(const vertex_key& k) const {
-    std::uint64_t h = 1469598103934665603ull;  // FNV-1a over the eight words
-    for (std::uint32_t w : k) h = (h ^ w) * 1099511628211ull;
-    return static_cast<std::size_t>(h);
-  }
-};
 
 // Equal as floats (the reference compares with ==): −0 and +0 are one value.
 std::uint32_t word(float f) { return std::bit_cast<std::uint32_t>(f == 0.0f ? 0.0f : f); }
@@ -135,7 +129,7 @@ mikktspace_result mikktspace_tangents(const std::vector<tangent_corner>& corners
   r.corners.resize(corners.size());
 
   // 1. Weld equal corners into vertices.
-  std::unordered_map<vertex_key, std::uint32_t, key_hash> ids;
+  std::unordered_map<vertex_key, std::uint32_t, word_hash> ids;
   std::vector<std::uint32_t> vertex_of(corners.size());
   for (std::size_t c = 0; c < corners.size(); ++c)
     vertex_of[c] = ids.try_emplace(key_of(corners[c]), static_cast<std::uint32_t>(ids.size())).first->second;
