@@ -45,7 +45,7 @@ pixel_inputs inputs_at(const prepared_triangle& t, const std::array<gs::rgba8, 3
     yr = std::min(yr, ceil_124(t.setup.v[k].y));
   }
   const gs::gouraud_plane gp = *gs::gouraud_triangle(gv[0], gv[1], gv[2], xr + xy_offset_pixels, yr + xy_offset_pixels);
-  const gs::fragment_colour f = gs::gouraud_at(gp, x + xy_offset_pixels, y + xy_offset_pixels);
+  const gs::fragment_colour f = gs::gouraud_colour(gp, x + xy_offset_pixels, y + xy_offset_pixels, gs::model_options{}.setup);
   pixel_inputs in;
   in.colour87 = {f.r.value(), f.g.value(), f.b.value(), f.a.value()};
   in.u16 = make_plane(t.setup.v, {uv[0][0], uv[1][0], uv[2][0]}, -(1 << 20), 1 << 20).at(x, y);

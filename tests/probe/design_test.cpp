@@ -78,6 +78,8 @@ TEST(ProbeDesign, NoPatchDependsOnAnotherOption) {
       const std::vector<std::uint32_t> f = frame_with(std::string(row.name), value);
       for (const patch& p : probe_design().patches) {
         if (p.option == row.name) continue;
+        // A whole-level set-up (parallel-gs) has no fraction to keep: P2 reads it as truncate_to_8 (R9).
+        if (p.option == "gouraud_fraction" && value == "per_pixel_level") continue;
         for (const auto& [x, y] : sample_pixels(p)) {
           const std::size_t i = static_cast<std::size_t>(y) * frame_width + x;
           ASSERT_EQ(rgb_of(f[i]), rgb_of(base[i])) << p.name << " under " << row.name << "=" << value;
@@ -115,7 +117,18 @@ TEST(ProbeDesign, PatchValuesAreTheOnesWorkedOutByHand) {
                             {"truncate_to_8", {{"gouraud_fraction.ramp", 0x010101}}}}},
       // Step trunc(4·128/514) = 0 from the reference pixel: Cf 0; exact: trunc(d·512/514) for d = 501..506 is
       // 499..504, (0xff · 499..504) >> 14 = 7.
-      {"gouraud_setup", {{"plane_steps", {{"gouraud_setup.ramp", 0x000000}}}, {"per_pixel", {{"gouraud_setup.ramp", 0x070707}}}}},
+      // Texel 0x80: (0x80 · Cf) >> 14 = Cf's whole levels. .ramp: trunc(4·128/514) = 0 from the reference pixel: 0; the
+      // exact plane trunc(d·512/514) for d = 501..506: 499..504, 3; rows scissored to the cell start at 520 with
+      // trunc(512·500/514) = 498 and offsets trunc(0.996·m) <= 6: 498..504, 3; floor((499..504 + 1/2)/128) = 3.
+      // .rows, k = 601..606 from the row start 0, g = 1024/686: exact 897.1..904.6 units, 7; 4 lanes: 150 or 151 steps of
+      // trunc(5.971) = 5 plus trunc(g·m) for m = k mod 4 (0..2): k = 601: 750 + 1 = 751, .., 606: 755 + 2 = 757: 5; 8
+      // lanes: 75 steps of trunc(11.942) = 11 plus trunc(g·m), m = 1..6: 826..833: 6; plane_steps: k steps of
+      // trunc(g) = 1 from 0: 601..606, 4; a whole level floor((897.1..904.6 + 1/2)/128) = 7.
+      {"gouraud_setup", {{"plane_steps", {{"gouraud_setup.ramp", 0x000000}, {"gouraud_setup.rows", 0x040404}}},
+                         {"per_pixel", {{"gouraud_setup.ramp", 0x030303}, {"gouraud_setup.rows", 0x070707}}},
+                         {"pcsx2_rows_4", {{"gouraud_setup.ramp", 0x030303}, {"gouraud_setup.rows", 0x050505}}},
+                         {"pcsx2_rows_8", {{"gouraud_setup.ramp", 0x030303}, {"gouraud_setup.rows", 0x060606}}},
+                         {"per_pixel_level", {{"gouraud_setup.ramp", 0x030303}, {"gouraud_setup.rows", 0x070707}}}}},
       // 0x81 + floor(-129 / 128) = 0x7f; 0x81 + trunc(-129 / 128) = 0x80.
       {"blend_shift", {{"floor", {{"blend_shift.negative", 0x7F7F7F}}}, {"truncate", {{"blend_shift.negative", 0x808080}}}}},
       {"dither_targets", {{"sixteen_bit_only", {{"dither_targets.ct32", 0x808080}}},
@@ -156,6 +169,17 @@ TEST(ProbeDesign, PatchValuesAreTheOnesWorkedOutByHand) {
         EXPECT_TRUE(uniform(f, find(name))) << name;
       }
     }
+  // gouraud_setup.level is not uniform: at (619, 434) the exact plane is 0.25·511 = 127.75 units, level 0 truncated,
+  // floor((127.75 + 0.5)/128) = 1 with parallel-gs's bias; at (620, 434) 128 units, level 1 for both.
+  {
+    const patch& lv = find("gouraud_setup.level");
+    EXPECT_EQ(lv.x, 616);
+    const auto exact = frame_with("gouraud_setup", "per_pixel"), biased = frame_with("gouraud_setup", "per_pixel_level");
+    EXPECT_EQ(rgb_of(exact[434 * frame_width + 619]), 0x000000u);
+    EXPECT_EQ(rgb_of(biased[434 * frame_width + 619]), 0x010101u);
+    EXPECT_EQ(rgb_of(exact[434 * frame_width + 620]), 0x010101u);
+    EXPECT_EQ(rgb_of(biased[434 * frame_width + 620]), 0x010101u);
+  }
   // Checks, default options: 0xc0 + 0x80 wraps to 0x40; HIGHLIGHT clamps to 0xff; 16-bit FBMSK.
   const std::vector<std::uint32_t> f = model_frame({});
   EXPECT_EQ(pixel(f, find("check.colclamp_wrap")), 0x404040u);

@@ -34,6 +34,7 @@ std::set<class_key> keys(const std::vector<tc::open_class>& classes) {
 gs::model_options with(gs::gouraud_fraction g, gs::tfx_rounding t = gs::tfx_rounding::floor, gs::blend_shift b = gs::blend_shift::floor) {
   gs::model_options o;
   o.gouraud = g, o.tfx = t, o.shift = b;
+  o.setup = gs::gouraud_setup::plane_steps;
   return o;
 }
 std::vector<std::pair<int, int>> codes(const std::vector<p::paper::packed_normal>& normals) {

@@ -26,6 +26,7 @@ std::set<class_key> keys(int s, const gs::model_options& o) {
 gs::model_options with(gs::gouraud_fraction g, gs::tfx_rounding t = gs::tfx_rounding::floor, gs::blend_shift b = gs::blend_shift::floor) {
   gs::model_options o;
   o.gouraud = g, o.tfx = t, o.shift = b;
+  o.setup = gs::gouraud_setup::plane_steps;
   return o;
 }
 constexpr gs::gouraud_fraction fractions[] = {gs::gouraud_fraction::keep_fraction, gs::gouraud_fraction::truncate_to_8};

@@ -322,7 +322,7 @@ TEST(TriangleCertify, TheWitnessesClassesDoNotClose) {
   // Each relaxation witness is a point of the relaxation above its threshold (relaxation_margin, the
   // ledger's figure): the branch and bound of its class must stop there open, never report it closed.
   for (const auto& wit : tt::relaxation_witnesses()) {
-    gs::model_options o{};
+    gs::model_options o{.setup = gs::gouraud_setup::plane_steps};
     o.gouraud = wit.gouraud;
     const p::two_pass::table t(o);
     ASSERT_GT(tt::relaxation_margin(wit, t, o), 0);
@@ -348,7 +348,7 @@ TEST(TriangleCertify, TheRelaxationExceedsAt83UnderTruncate) {
   ASSERT_NE(it, rows.end());
   const tt::relaxation_witness& w = *it;
   EXPECT_EQ(w.gouraud, gs::gouraud_fraction::truncate_to_8);
-  gs::model_options o{};
+  gs::model_options o{.setup = gs::gouraud_setup::plane_steps};
   o.gouraud = w.gouraud;
   const p::two_pass::table t(o);
   const double margin = tt::relaxation_margin(w, t, o);

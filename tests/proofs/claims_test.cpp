@@ -252,17 +252,35 @@ TEST(Claims, TwoPassMaxSVertex) {
 }
 
 TEST(Claims, TwoPassMaxSInterpolated) {
-  // Whole triangles: the paper's s = 122 wraps (a certificate, replayed through the pipeline in
-  // triangle_test.cpp); the bound proves s <= 79 (78 under truncate_to_8: the same inequality in
-  // doubles, triangle_test.cpp); the lowest certificate is s = 85 (84 under truncate_to_8).
-  const auto& o = base("two-pass.max-s.interpolated");
+  // Whole triangles, per gouraud_setup. Default per_pixel: no pixel lags, so the claim is the vertex
+  // lights' (two-pass.max-s.vertex, settled there by an exhaustive search above its argument): safe up
+  // to 125, and only the flat triangle (the vertex claim's witness as three equal vertex lights) wraps,
+  // at 126.
+  const auto& e = base("two-pass.max-s.interpolated");
+  const auto& vertex = base("two-pass.max-s.vertex");
+  EXPECT_EQ(e.result, p::verdict::bound);
+  EXPECT_EQ(fig(e, "s_max"), fig(vertex, "s_max"));
+  EXPECT_EQ(fig(e, "s_max_upper"), fig(vertex, "s_max"));
+  EXPECT_EQ(fig(e, "first_wrapping_s"), fig(vertex, "s_max") + 1);
+  EXPECT_EQ(fig(e, "certificates_not_wrapping"), 24);  // every row but the flat one
+  EXPECT_EQ(fig(e, "bound_limit_s"), 0);               // the relaxation witnesses charge a lag per_pixel has not
+  ASSERT_EQ(e.witnesses.size(), 1u);
+  EXPECT_EQ(e.witnesses[0].rfind("s = 126: n = (-127, -15, 5)", 0), 0u) << e.witnesses[0];
+  EXPECT_NE(e.note.find("the bound meets the lowest certificate"), std::string::npos) << e.note;
+  EXPECT_NE(e.note.find("The paper's s = 122 is safe"), std::string::npos) << e.note;
+  // The table: ten rows, one per evidenced set-up and gouraud_fraction.
+  EXPECT_EQ(e.table.size(), 12u);
+  // plane_steps (the model's DDA, no source): the paper's s = 122 wraps (a certificate, replayed through
+  // the pipeline in triangle_test.cpp); the bound proves s <= 79 (78 under truncate_to_8: the same
+  // inequality in doubles, triangle_test.cpp); the lowest certificate is s = 85 (84 under truncate_to_8).
+  const auto& o = variant("two-pass.max-s.interpolated", "gouraud_setup", "plane_steps");
   EXPECT_EQ(o.result, p::verdict::refuted);
   EXPECT_EQ(fig(o, "s_max"), 83);
   EXPECT_EQ(fig(o, "bound_s_max"), 79);              // the error bound alone (triangle_test checks it in doubles)
   EXPECT_EQ(fig(o, "relaxation_certified_s"), 83);   // re-run by proofs_certify_survey
   EXPECT_EQ(fig(o, "first_wrapping_s"), 85);
   EXPECT_EQ(fig(o, "s_max_upper"), 84);
-  EXPECT_EQ(fig(o, "certificates_not_wrapping"), 9);  // the truncate_to_8 rows for s = 84, 85, 86, 89, 90, 91, 98, 100, and the per_pixel one
+  EXPECT_EQ(fig(o, "certificates_not_wrapping"), 13);  // the truncate_to_8 rows, the per_pixel one and the four pcsx2_rows ones
   EXPECT_EQ(o.witnesses.size(), 12u);                  // s = 85, 86, 89, 90, 91, 98, 100, 122..125 and the flat 126
   // The verdict text follows the figures: the bracket is 80..84 and the lowest certificate's s is named.
   EXPECT_NE(o.note.find("s = 84 is bracketed"), std::string::npos) << o.note;
@@ -271,34 +289,41 @@ TEST(Claims, TwoPassMaxSInterpolated) {
   // recomputes it), 83 under truncate_to_8 (whose lattice already wraps at 84; s = 82 is certified).
   EXPECT_EQ(fig(o, "bound_limit_s"), 84);
   EXPECT_NE(o.note.find("admit a wrap from s = 84"), std::string::npos) << o.note;
-  const auto& t = variant("two-pass.max-s.interpolated", "gouraud_fraction", "truncate_to_8");
+  bool paper = false;
+  for (const auto& w : o.witnesses) paper = paper || w.rfind("s = 122:", 0) == 0;
+  EXPECT_TRUE(paper);
+  auto under = [](const char* setup, const char* fraction) {
+    gs::model_options v;
+    EXPECT_FALSE(gs::set_option(v, "gouraud_setup", setup).has_value());
+    EXPECT_FALSE(gs::set_option(v, "gouraud_fraction", fraction).has_value());
+    p::run_config cfg;
+    cfg.variants = false;
+    return p::run_claim(*p::find_claim("two-pass.max-s.interpolated"), v, cfg).result;
+  };
+  const auto t = under("plane_steps", "truncate_to_8");
   EXPECT_EQ(t.result, p::verdict::refuted);
   EXPECT_EQ(fig(t, "s_max"), 82);
   EXPECT_EQ(fig(t, "bound_s_max"), 78);
   EXPECT_EQ(fig(t, "first_wrapping_s"), 84);
   EXPECT_EQ(fig(t, "s_max_upper"), 83);
-  EXPECT_EQ(fig(t, "certificates_not_wrapping"), 6);  // the keep_fraction rows for s = 85, 86, 90, 98 and 100, the per_pixel one
   EXPECT_NE(t.note.find("s = 83 is bracketed"), std::string::npos) << t.note;
   EXPECT_NE(t.note.find("the lowest s = 84"), std::string::npos) << t.note;
   EXPECT_EQ(fig(t, "bound_limit_s"), 83);
-  bool paper = false;
-  for (const auto& w : o.witnesses) paper = paper || w.rfind("s = 122:", 0) == 0;
-  EXPECT_TRUE(paper);
-  // gouraud_setup = per_pixel: no pixel lags, so the claim is the vertex lights' (two-pass.max-s.vertex,
-  // settled there by an exhaustive search above its argument): safe up to 125, and only the flat
-  // triangle (the vertex claim's witness as three equal vertex lights) wraps, at 126.
-  const auto& e = variant("two-pass.max-s.interpolated", "gouraud_setup", "per_pixel");
-  const auto& vertex = base("two-pass.max-s.vertex");
-  EXPECT_EQ(e.result, p::verdict::bound);
-  EXPECT_EQ(fig(e, "s_max"), fig(vertex, "s_max"));
-  EXPECT_EQ(fig(e, "s_max_upper"), fig(vertex, "s_max"));
-  EXPECT_EQ(fig(e, "first_wrapping_s"), fig(vertex, "s_max") + 1);
-  EXPECT_EQ(fig(e, "certificates_not_wrapping"), 20);  // every row but the flat one
-  EXPECT_EQ(fig(e, "bound_limit_s"), 0);               // the relaxation witnesses charge a lag per_pixel has not
-  ASSERT_EQ(e.witnesses.size(), 1u);
-  EXPECT_EQ(e.witnesses[0].rfind("s = 126: n = (-127, -15, 5)", 0), 0u) << e.witnesses[0];
-  EXPECT_NE(e.note.find("the bound meets the lowest certificate"), std::string::npos) << e.note;
-  EXPECT_NE(e.note.find("The paper's s = 122 is safe"), std::string::npos) << e.note;
+  // pcsx2_rows_8 (PCSX2 SW on AVX2): a steep row's saturated second vector wraps the paper's s = 122
+  // (and s = 110); the cube bound of that per-channel mix proves s <= 72.
+  const auto r8 = under("pcsx2_rows_8", "keep_fraction");
+  EXPECT_EQ(r8.result, p::verdict::refuted);
+  EXPECT_EQ(fig(r8, "s_max"), 72);
+  EXPECT_EQ(fig(r8, "first_wrapping_s"), 110);
+  // per_pixel_level (parallel-gs): within 128 units of the plane, safe up to 123; the s = 124 certificate
+  // (a whole level, as truncate_to_8) wraps.
+  const auto lv = under("per_pixel_level", "keep_fraction");
+  EXPECT_EQ(lv.result, p::verdict::bound);
+  EXPECT_EQ(fig(lv, "s_max"), 123);
+  EXPECT_EQ(fig(lv, "first_wrapping_s"), 124);
+  const auto r4 = under("pcsx2_rows_4", "keep_fraction");
+  EXPECT_EQ(r4.result, p::verdict::refuted);
+  EXPECT_EQ(fig(r4, "first_wrapping_s"), 100);
   // The dobiestation profile (per_pixel with truncate_to_8): the multiply's floor hands a pixel the
   // integer light of the unit box its exact light lies in, which can sit just outside the packed
   // shell: safe up to 123 by the bound, and the s = 124 certificate's box m = (−27, −63, −105) has

@@ -85,7 +85,7 @@ TEST(Triangle, EveryCertificateWrapsThroughTheRasteriserAndThePixelPipeline) {
     const ref::normal n = ref::appendix2(c.iX, c.iY);
     const int L[3] = {cf.r.value(), cf.g.value(), cf.b.value()};
     for (auto g : {gs::gouraud_fraction::keep_fraction, gs::gouraud_fraction::truncate_to_8}) {
-      gs::model_options o{};
+      gs::model_options o{.setup = gs::gouraud_setup::plane_steps};
       o.gouraud = g;
       const std::uint32_t dpb1 = pl::gs_pixel(pass1.registers(), pal.pos, cf, 0x00808080u, c.px, c.py, o);
       const std::uint32_t dpb2 = pl::gs_pixel(pass2.registers(), pal.neg, cf, dpb1, c.px, c.py, o);
@@ -468,7 +468,7 @@ TEST(Triangle, BoundedSafeSIsWhatTheInequalityGivesForTheWorstNormal) {
   // Independent form (reach_double, every normal, no pruning): every normal is safe at bound_safe_s
   // by the inequality (and so below it: the reach grows with s), and some normal is not at s + 1.
   for (auto g : {gs::gouraud_fraction::keep_fraction, gs::gouraud_fraction::truncate_to_8}) {
-    gs::model_options o{};
+    gs::model_options o{.setup = gs::gouraud_setup::plane_steps};
     o.gouraud = g;
     const p::two_pass::table t(o);
     const int s_max = tt::bound_safe_s(o);
@@ -499,7 +499,7 @@ TEST(Triangle, PerPixelSafeSIsWhatTheBallOrTheLightSupportGives) {
   // so n·(L − centre) < min(R·|n|, 128·max over L_s of Σ|n_c|·|l_c|) + |n|_1 (in doubles and by a scan of
   // the packed lights here). Every normal is safe at bound_safe_s = 125 that way, and at 126 the
   // vertex claim's witness normal is not (the flat certificate wraps there).
-  gs::model_options o{};
+  gs::model_options o{.setup = gs::gouraud_setup::plane_steps};
   o.setup = gs::gouraud_setup::per_pixel;
   const p::two_pass::table t(o);
   ASSERT_EQ(tt::bound_safe_s(o), 125);
@@ -528,7 +528,7 @@ TEST(Triangle, PerPixelTruncatedSafeSIsWhatTheInequalityGives) {
   // multiply's floor adding up to 127/128 level on each channel against the side (n_c < 0 at the top,
   // > 0 at the bottom). Every normal is safe at bound_safe_s = 123 that way, and some normal is not
   // at 124 (where the certificate of two_pass_triangle.cpp wraps).
-  gs::model_options o{};
+  gs::model_options o{.setup = gs::gouraud_setup::plane_steps};
   o.setup = gs::gouraud_setup::per_pixel;
   o.gouraud = gs::gouraud_fraction::truncate_to_8;
   const p::two_pass::table t(o);
@@ -570,7 +570,7 @@ TEST(Triangle, FloorsGiveBackAtMostG) {
   std::uniform_int_distribution<int> unit(0, 0x7FFF);
   for (int combo = 0; combo < 8; ++combo) {
     const auto g = combo & 1 ? gs::gouraud_fraction::truncate_to_8 : gs::gouraud_fraction::keep_fraction;
-    gs::model_options o{};
+    gs::model_options o{.setup = gs::gouraud_setup::plane_steps};
     o.gouraud = g;
     o.tfx = combo & 2 ? gs::tfx_rounding::truncate : gs::tfx_rounding::floor;
     o.shift = combo & 4 ? gs::blend_shift::truncate : gs::blend_shift::floor;
@@ -620,7 +620,7 @@ TEST(Triangle, TruncateToEightGivesBackAtMost127Units) {
     most = std::max(most, L - seen);
   }
   EXPECT_EQ(most, 127);
-  gs::model_options o{};
+  gs::model_options o{.setup = gs::gouraud_setup::plane_steps};
   o.gouraud = gs::gouraud_fraction::truncate_to_8;
   const auto nm = p::paper::pack_normal_from(60, 67);  // all three components > 0: every channel is against the bottom
   EXPECT_EQ(tt::truncation_units(nm, -1, o), 127 * (nm.iX + nm.iY + nm.iZ));
@@ -633,7 +633,7 @@ TEST(Triangle, AZeroNormalComponentAddsNothingWhateverItsLight) {
   // 8.7 value, both gouraud_fraction values: the value does not move.
   int normals = 0;
   for (auto g : {gs::gouraud_fraction::keep_fraction, gs::gouraud_fraction::truncate_to_8}) {
-    gs::model_options o{};
+    gs::model_options o{.setup = gs::gouraud_setup::plane_steps};
     o.gouraud = g;
     for (const auto& nm : p::appendix2_normals()) {
       if (nm.iX != 0 && nm.iY != 0) continue;

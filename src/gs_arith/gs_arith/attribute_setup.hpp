@@ -7,7 +7,7 @@
 // the evidence and confidence of each plane's rounding):
 // - The colour plane's reference pixel is the triangle's top-left pixel: min over the vertices of
 //   ceil(x), and of ceil(y), in window pixels (under gouraud_setup::plane_steps the truncated steps'
-//   error grows with distance from it; per_pixel reads the exact plane at every pixel).
+//   error grows with distance from it; the other set-ups do not use it).
 // - gouraud_triangle works in the GS's unsigned 16-bit 12.4 primitive space: window coordinates plus
 //   `offset` whole pixels (XYOFFSET's whole-pixel part; the renderer's 2048), so that vertices left
 //   of or above the window are not clamped.
@@ -29,7 +29,7 @@ struct triangle_attributes {
   gouraud_plane colour{};
   plane u, v;
   std::int32_t offset_x = 0, offset_y = 0;  // window pixel + offset = gouraud_triangle's pixel
-  gouraud_setup setup = gouraud_setup::plane_steps;
+  gouraud_setup setup = gouraud_setup::per_pixel;
   // Cf at window pixel (x, y).
   constexpr fragment_colour colour_at(int x, int y) const noexcept {
     return gouraud_colour(colour, x + offset_x, y + offset_y, setup);
@@ -37,9 +37,11 @@ struct triangle_attributes {
 };
 
 // uv16[k] = {U, V} of vertex k in 12.4 texels. A zero-area triangle gives default (zero) planes.
+// clip_x0: SCISSOR's left window pixel (gouraud_setup::pcsx2_rows starts a row there at the latest).
 inline triangle_attributes setup_attributes(const triangle_setup& t, const std::array<rgba8, 3>& c,
                                             const std::array<std::array<std::int32_t, 2>, 3>& uv16,
-                                            std::int32_t offset_x, std::int32_t offset_y, gouraud_setup setup) {
+                                            std::int32_t offset_x, std::int32_t offset_y, gouraud_setup setup,
+                                            std::int32_t clip_x0 = 0) {
   triangle_attributes a;
   a.offset_x = offset_x;
   a.offset_y = offset_y;
@@ -54,6 +56,8 @@ inline triangle_attributes setup_attributes(const triangle_setup& t, const std::
   }
   // gouraud_triangle clamps XY to 0..65535; empty only for zero area there.
   if (const auto g = gouraud_triangle(gv[0], gv[1], gv[2], x_ref + offset_x, y_ref + offset_y)) a.colour = *g;
+  a.colour.clip_x0 = clip_x0 + offset_x;
+  a.colour.lane_origin = offset_x;
   a.u = make_plane(t.v, {uv16[0][0], uv16[1][0], uv16[2][0]}, -(1 << 20), 1 << 20);
   a.v = make_plane(t.v, {uv16[0][1], uv16[1][1], uv16[2][1]}, -(1 << 20), 1 << 20);
   return a;

@@ -4,11 +4,13 @@
 // fixed point and clamps the stepped value at >= 0; flat shading (IIP = 0) takes the last vertex's
 // colour. SW only, no hardware recording: confidence low for the exact rounding of the setup.
 // The triangle set-up is option gs::gouraud_setup (docs/evidence.md R9, with the functions read):
-// plane_steps (one plane, both steps truncated to whole units, every pixel stepped from one reference
-// pixel: the model's own choice, no source does it) or per_pixel (the exact plane at each pixel,
-// truncated to whole units: DobieStation's float set-up); PCSX2 SW starts each row afresh from a float
-// edge walk and truncates the step of 4 (or 8) pixels, which neither reproduces. Spans (gouraud_span)
-// step per pixel as below.
+// per_pixel (the exact plane at each pixel, truncated to whole units: DobieStation's and Play!'s float
+// set-ups without their float rounding; the default, two sources), pcsx2_rows_4 / pcsx2_rows_8 (PCSX2
+// SW's JIT path: each row starts from the plane at its first pixel, then truncated 16-bit lane offsets
+// and vector steps of 4 or 8 pixels, gouraud_rows_at), per_pixel_level (parallel-gs: the exact plane,
+// floored to a whole level after adding 1/256 level, gouraud_level_at) and plane_steps (one plane, both
+// steps truncated, every pixel stepped from one reference pixel: the model's own DDA, no source does
+// it). Spans (gouraud_span) step per pixel as below.
 //
 // The model, at value level (how to use it for "light vectors after the model's Gouraud interpolation"):
 //   1. setup per primitive: a start value (8.7, signed, at a reference pixel) and a step per pixel
@@ -95,6 +97,7 @@ struct gouraud_vertex {
 // vertex 0 the value is c0 + (nx·px + ny·py)·128 / det 8.7 units (|nx|, |ny| < 2^25, |det| < 2^33).
 struct gouraud_exact_plane {
   std::int64_t x0 = 0, y0 = 0, det = 1;  // vertex 0 in 12.4 (clamped to 0..65535), twice the area
+  std::array<std::int64_t, 6> xy{};      // the three vertices in 12.4 (clamped), for the row starts
   std::array<gouraud_start, 4> c0{};
   std::array<std::int64_t, 4> nx{}, ny{};
 };
@@ -113,6 +116,8 @@ struct gouraud_plane {
   std::array<gouraud_start, 4> base;
   std::array<gouraud_step, 4> dx, dy;
   gouraud_exact_plane exact;
+  std::int64_t clip_x0 = 0;      // SCISSOR's left in this pixel space (pcsx2_rows' row start)
+  std::int64_t lane_origin = 0;  // the frame's pixel 0 in this pixel space (pcsx2_rows' vectors align there)
 };
 
 // Empty for a degenerate (zero-area) triangle. Pixel centres are at integer coordinates.
@@ -129,7 +134,7 @@ constexpr std::optional<gouraud_plane> gouraud_triangle(const gouraud_vertex& v0
   const std::array<u8, 4> c0{v0.c.r, v0.c.g, v0.c.b, v0.c.a}, c1{v1.c.r, v1.c.g, v1.c.b, v1.c.a},
       c2{v2.c.r, v2.c.g, v2.c.b, v2.c.a};
   const std::int64_t px = clamp_distance(x_ref) * 16 - x0, py = clamp_distance(y_ref) * 16 - y0;
-  gouraud_plane p{x_ref, y_ref, {}, {}, {}, {x0, y0, det, {}, {}, {}}};
+  gouraud_plane p{x_ref, y_ref, {}, {}, {}, {x0, y0, det, {x0, y0, ax + x0, ay + y0, bx + x0, by + y0}, {}, {}, {}}};
   for (int i = 0; i < 4; ++i) {
     const std::int64_t d1 = c1[i].value() - c0[i].value(), d2 = c2[i].value() - c0[i].value();
     // dC per 1/16 pixel: gx = (d1·by − d2·ay) / det, gy = (d2·ax − d1·bx) / det.
@@ -162,9 +167,102 @@ constexpr fragment_colour gouraud_exact_at(const gouraud_plane& p, std::int32_t 
   return {ch(0), ch(1), ch(2), ch(3)};
 }
 
+// The exact plane of channel i at pixel (x, y) as the fraction num / den of 8.7 units, den > 0.
+struct plane_fraction {
+  std::int64_t num, den;
+};
+constexpr plane_fraction exact_plane_fraction(const gouraud_exact_plane& e, int i, std::int64_t x, std::int64_t y) noexcept {
+  const std::int64_t px = clamp_distance(x) * 16 - e.x0, py = clamp_distance(y) * 16 - e.y0;
+  const std::int64_t num = e.c0[i].value() * e.det + (e.nx[i] * px + e.ny[i] * py) * 128;
+  return e.det < 0 ? plane_fraction{-num, -e.det} : plane_fraction{num, e.det};
+}
+constexpr std::int64_t floor_div(std::int64_t num, std::int64_t den) noexcept {  // den > 0
+  return num >= 0 ? num / den : -((-num + den - 1) / den);
+}
+
+// gouraud_setup::per_pixel_level (parallel-gs gs/shaders/ubershader.comp compute_combined_color: the
+// barycentric colour floor(255·(c0 + (c1 − c0)·i + (c2 − c0)·j) + 1/256), a whole level): the exact plane
+// at the pixel plus 1/256 level (half an 8.7 unit), floored to a whole level, in 8.7: 128·floor((2P + 1)/256). Its float
+// barycentrics (i, j from integer edge functions times an approximate reciprocal of the area,
+// gs/shaders/intersect.h evaluate_coverage_single) are taken as exact: ~2^-24 relative, below the bias.
+constexpr fragment_colour gouraud_level_at(const gouraud_plane& p, std::int32_t x, std::int32_t y) noexcept {
+  auto ch = [&](int i) {
+    const auto f = exact_plane_fraction(p.exact, i, x, y);
+    return gouraud_channel::from_saturated(128 * floor_div(2 * f.num + f.den, 256 * f.den));
+  };
+  return {ch(0), ch(1), ch(2), ch(3)};
+}
+
+// PCSX2 SW's row start (GSRasterizer.cpp DrawTriangleSection): the least pixel at or right of the
+// triangle's left edge on row y, ceil(x_edge), and not left of `clip_x0` (SCISSOR's left, in the same
+// pixel space). Exact here (PCSX2 walks the edge in float). A row the triangle does not reach gives x.
+constexpr std::int64_t gouraud_row_start(const gouraud_exact_plane& e, std::int64_t x, std::int64_t y,
+                                         std::int64_t clip_x0) noexcept {
+  const std::int64_t y16 = clamp_distance(y) * 16;
+  std::int64_t best = -1;
+  for (int k = 0; k < 3; ++k) {
+    const std::int64_t xa = e.xy[2 * k], ya = e.xy[2 * k + 1], xb = e.xy[(2 * k + 2) % 6], yb = e.xy[(2 * k + 3) % 6];
+    if (y16 < (ya < yb ? ya : yb) || y16 > (ya < yb ? yb : ya)) continue;
+    std::int64_t num = xa * (yb - ya) + (y16 - ya) * (xb - xa), den = 16 * (yb - ya);
+    if (ya == yb) num = xa < xb ? xa : xb, den = 16;
+    if (den < 0) num = -num, den = -den;
+    const std::int64_t start = -floor_div(-num, den);  // ceil
+    if (best < 0 || start < best) best = start;
+  }
+  if (best < 0) return x;
+  return best < clip_x0 ? clip_x0 : best;
+}
+
+// x86 packssdw (a 32-bit lane saturated to 16 bits signed) and paddw (16-bit wrap).
+constexpr std::int64_t saturate16(std::int64_t v) noexcept { return v < -32768 ? -32768 : v > 32767 ? 32767 : v; }
+constexpr std::int64_t wrap16(std::int64_t v) noexcept { return ((v + 32768) & 0xFFFF) - 32768; }
+
+// gouraud_setup::pcsx2_rows_4 / pcsx2_rows_8, PCSX2 SW's JIT path (read at 0361ab3c / 02f831f3):
+// GSRasterizer::DrawTriangleSection sets each row's start colour in float from the plane at the row's
+// first pixel `left` (edge.c + dedge.c·dy + dscan.c·prestep); GSSetupPrimCodeGenerator.all.cpp Color()
+// truncates (cvttps2dq) the colour step of one vector, dscan.c · lanes, and each lane's offset dscan.c ·
+// (lane − skip), and saturates both to 16 bits (packssdw); CDrawScanline / the JIT scanline convert the
+// row start with truncation, add the lane offsets (16-bit), and per further vector add the step and
+// clamp at >= 0 (add16, max_i16). skip = left mod lanes in frame pixels (the vector is aligned). The float plane is
+// taken as exact here. At pixel x: n = the vectors after the first, m = x − left − n·lanes.
+constexpr std::int64_t gouraud_rows_units(const gouraud_exact_plane& e, int i, std::int64_t x, std::int64_t y, int lanes,
+                                          std::int64_t clip_x0, std::int64_t lane_origin = 0) noexcept {
+  const std::int64_t left = gouraud_row_start(e, x, y, clip_x0);
+  const auto f = exact_plane_fraction(e, i, left, y);
+  const std::int64_t start = f.num / f.den;  // the truncating conversion of the row's start value
+  const std::int64_t skip = (left - lane_origin) - floor_div(left - lane_origin, lanes) * lanes;
+  const std::int64_t n = x < left - skip ? 0 : (x - (left - skip)) / lanes;
+  const std::int64_t m = x - left - n * lanes;
+  const std::int64_t g2048 = e.nx[i] * 2048;  // the x gradient · det, 8.7 units per pixel
+  const std::int64_t step = saturate16(divide_toward_zero(g2048 * lanes, e.det));
+  std::int64_t v = wrap16(start + saturate16(divide_toward_zero(g2048 * m, e.det)));
+  if (n == 0) return v;
+  if (step >= 0 && v + n * step <= 32767 && (n - 1) * step <= 32767) {  // max(0, ·) per step, no wrap
+    const std::int64_t a = v + n * step, b = (n - 1) * step;
+    return a > b ? a : b;
+  }
+  if (step < 0 && v + step >= -32768) {
+    const std::int64_t a = v + clamp_distance(n) * step;
+    return a > 0 ? a : 0;
+  }
+  for (std::int64_t k = 0; k < n; ++k) v = wrap16(v + step) < 0 ? 0 : wrap16(v + step);
+  return v;
+}
+constexpr fragment_colour gouraud_rows_at(const gouraud_plane& p, std::int32_t x, std::int32_t y, int lanes) noexcept {
+  auto ch = [&](int i) { return gouraud_channel::from_saturated(gouraud_rows_units(p.exact, i, x, y, lanes, p.clip_x0, p.lane_origin)); };
+  return {ch(0), ch(1), ch(2), ch(3)};
+}
+
 // The fragment colour at pixel (x, y) under the set-up in force.
 constexpr fragment_colour gouraud_colour(const gouraud_plane& p, std::int32_t x, std::int32_t y, gouraud_setup s) noexcept {
-  return s == gouraud_setup::per_pixel ? gouraud_exact_at(p, x, y) : gouraud_at(p, x, y);
+  switch (s) {
+    case gouraud_setup::per_pixel: return gouraud_exact_at(p, x, y);
+    case gouraud_setup::plane_steps: return gouraud_at(p, x, y);
+    case gouraud_setup::pcsx2_rows_4: return gouraud_rows_at(p, x, y, 4);
+    case gouraud_setup::pcsx2_rows_8: return gouraud_rows_at(p, x, y, 8);
+    case gouraud_setup::per_pixel_level: return gouraud_level_at(p, x, y);
+  }
+  return gouraud_exact_at(p, x, y);
 }
 
 // PRIM.IIP = 0: the whole primitive takes the last vertex's colour.

@@ -1,6 +1,7 @@
 #include "gs_arith/options.hpp"
 
 #include <algorithm>
+#include <iterator>
 
 namespace gs {
 
@@ -17,22 +18,25 @@ const std::vector<option_info>& option_catalogue() {
        "DobieStation 68dd073e (issue 17). Unconfirmed on HW."},
       {"dither_targets", {"sixteen_bit_only", "all_formats"},
        "sixteen_bit_only: PCSX2 SW; all_formats: DobieStation. Unconfirmed on HW."},
-      {"bilinear", {"lerp16_4", "nearest", "weighted_sum_4"},
-       "lerp16_4: PCSX2 SW 4-bit weights; nearest: filtering off; weighted_sum_4: DobieStation (Play! in float). "
-       "Unconfirmed on HW."},
+      {"bilinear", {"weighted_sum_4", "lerp16_4", "nearest"},
+       "weighted_sum_4: DobieStation (Play!, parallel-gs in float) (3 sources); lerp16_4: PCSX2 SW 4-bit weights (1); "
+       "nearest: filtering off. Unconfirmed on HW."},
       {"rgb_only_targets", {"thirty_two_bit_only", "all_formats"},
        "thirty_two_bit_only: PCSX2 GetAFAIL(FRAME.PSM), PR 9652; all_formats: Play! Vulkan, DobieStation 3a23544b. "
        "No recording here."},
       {"texture_buffer", {"quarter_page", "per_fragment", "page", "draw_snapshot"},
        "quarter_page: Mikkelsen 2004 section 3.4; draw_snapshot: PCSX2 SW; per_fragment, page: what-ifs. Unconfirmed on HW."},
-      {"gouraud_setup", {"plane_steps", "per_pixel"},
-       "plane_steps: the model's own (no source); per_pixel: DobieStation 3a23544b render_triangle2, Play! (float). "
-       "PCSX2 SW's row set-up is neither. No recording here."},
+      {"gouraud_setup", {"per_pixel", "plane_steps", "pcsx2_rows_4", "pcsx2_rows_8", "per_pixel_level"},
+       "per_pixel: DobieStation 3a23544b render_triangle2, Play! (float) (2 sources); plane_steps: a fixed-point DDA "
+       "with 8.7 steps, no source; pcsx2_rows_4/8: PCSX2 SW DrawTriangleSection + SetupPrim (1); per_pixel_level: "
+       "parallel-gs ubershader.comp (1). No recording here."},
   };
   return rows;
 }
 
 namespace {
+// gouraud_setup's names in enumerator order.
+constexpr std::string_view setup_names[] = {"plane_steps", "per_pixel", "pcsx2_rows_4", "pcsx2_rows_8", "per_pixel_level"};
 template <typename E>
 bool pick(E& field, std::string_view value, std::string_view a, E ea, std::string_view b, E eb) {
   if (value == a) { field = ea; return true; }
@@ -58,7 +62,10 @@ std::optional<std::string> set_option(model_options& o, std::string_view name, s
   else if (name == "texture_buffer")
     ok = pick(o.tex_buffer, value, "quarter_page", texture_buffer::quarter_page, "per_fragment", texture_buffer::per_fragment) ||
          pick(o.tex_buffer, value, "page", texture_buffer::page, "draw_snapshot", texture_buffer::draw_snapshot);
-  else if (name == "gouraud_setup") ok = pick(o.setup, value, "plane_steps", gouraud_setup::plane_steps, "per_pixel", gouraud_setup::per_pixel);
+  else if (name == "gouraud_setup") {
+    for (int k = 0; k < static_cast<int>(std::size(setup_names)); ++k)
+      if (value == setup_names[k]) o.setup = static_cast<gouraud_setup>(k), ok = true;
+  }
   else {
     std::string known;
     for (const auto& row : option_catalogue()) known += (known.empty() ? "" : ", ") + std::string(row.name);
@@ -88,7 +95,7 @@ std::string_view option_value(const model_options& o, std::string_view name) {
     constexpr std::string_view names[] = {"quarter_page", "per_fragment", "page", "draw_snapshot"};
     return names[static_cast<int>(o.tex_buffer)];
   }
-  if (name == "gouraud_setup") return o.setup == gouraud_setup::plane_steps ? "plane_steps" : "per_pixel";
+  if (name == "gouraud_setup") return setup_names[static_cast<int>(o.setup)];
   return {};
 }
 

@@ -26,16 +26,21 @@ enum class tfx_rounding { floor, truncate };
 //                the vertex colour has no fraction).
 enum class gouraud_fraction { keep_fraction, truncate_to_8 };
 
-// A Gouraud triangle's colour set-up (docs/evidence.md R9, which names the functions read).
+// A Gouraud triangle's colour set-up (docs/evidence.md R9, which names the functions read and counts
+// the sources per value; gs_arith/gouraud.hpp gouraud_colour).
+// per_pixel: the exact plane at every pixel, truncated toward zero to whole 8.7 units (default: two
+//   sources, DobieStation gsthread.cpp render_triangle2 / render_half_triangle and Play!'s GPU, both in
+//   float).
 // plane_steps: one plane per primitive, its start value at the bounding box's top-left pixel and both
-//   steps truncated toward zero to whole 8.7 units, every pixel start + a·dx + b·dy (default; the
-//   model's own choice: no source read sets up a triangle this way, and it lets a pixel far from the
-//   reference lag up to 16 levels per axis).
-// per_pixel: the exact plane at every pixel, truncated toward zero to whole 8.7 units (DobieStation
-//   gsthread.cpp render_triangle2 / render_half_triangle: the colour stays a float per row and pixel and
-//   becomes an integer only at the pixel; Play! interpolates in float on the GPU).
-// PCSX2 SW's row set-up (a float start per row, a truncated step per 4 or 8 pixels) is neither.
-enum class gouraud_setup { plane_steps, per_pixel };
+//   steps truncated toward zero to whole 8.7 units, every pixel start + a·dx + b·dy (a fixed-point DDA
+//   with 8.7 steps: the model's own, no source; a pixel far from the reference lags up to 16 levels
+//   per axis).
+// pcsx2_rows_4, pcsx2_rows_8: PCSX2 SW (GSRasterizer.cpp DrawTriangleSection, GSSetupPrimCodeGenerator
+//   Color(), CDrawScanline): each row from the plane at its first pixel, truncated 16-bit lane offsets
+//   and per-vector steps of 4 (SSE) or 8 (AVX2) pixels.
+// per_pixel_level: parallel-gs (ubershader.comp compute_combined_color): the exact plane plus 1/256
+//   level, floored to a whole level.
+enum class gouraud_setup { plane_steps, per_pixel, pcsx2_rows_4, pcsx2_rows_8, per_pixel_level };
 
 // The blend's ((A − B)·C) >> 7. floor: HW-confirmed by all 486 ps2autotests blend results.
 // truncate (toward zero): refuted by 24 of them; kept as a what-if for the proofs.
@@ -51,10 +56,11 @@ enum class dither_decode { twos_complement, sign_magnitude, inverted_magnitude }
 // dthe`) and HW (GSRendererHW `dfmt == 2`) (default). all_formats: DobieStation draw_pixel (no format test).
 enum class dither_targets { sixteen_bit_only, all_formats };
 
-// Bilinear filtering arithmetic. lerp16_4: PCSX2 SW `lerp16_4`, 4-bit weights, c0 + (((c1 − c0)·w) >> 4),
-// horizontal then vertical (default). nearest: filtering off (what-if). weighted_sum_4: the same 4-bit
-// weights in one 2-D weighted sum, floor(Σ w·c / 256) (DobieStation tex_lookup, exact in its doubles;
-// Play! Vulkan CDrawDesktop does the same sum in float).
+// Bilinear filtering arithmetic (docs/evidence.md R6 counts the sources). weighted_sum_4: 4-bit
+// weights in one 2-D weighted sum, floor(Σ w·c / 256) (default: DobieStation tex_lookup, exact in its
+// doubles; Play! Vulkan CDrawDesktop and parallel-gs's GPU sampler do the same sum in float).
+// lerp16_4: PCSX2 SW `lerp16_4`, c0 + (((c1 − c0)·w) >> 4), horizontal then vertical. nearest:
+// filtering off (what-if).
 enum class bilinear_mode { lerp16_4, nearest, weighted_sum_4 };
 
 // Which frame formats AFAIL = RGB_ONLY keeps the alpha of. thirty_two_bit_only: RGB_ONLY acts as
@@ -77,11 +83,11 @@ enum class texture_buffer { quarter_page, per_fragment, page, draw_snapshot };
 struct model_options {
   tfx_rounding tfx = tfx_rounding::floor;
   gouraud_fraction gouraud = gouraud_fraction::keep_fraction;
-  gouraud_setup setup = gouraud_setup::plane_steps;
+  gouraud_setup setup = gouraud_setup::per_pixel;
   blend_shift shift = blend_shift::floor;
   dither_decode dither = dither_decode::twos_complement;
   dither_targets dither_on = dither_targets::sixteen_bit_only;
-  bilinear_mode bilinear = bilinear_mode::lerp16_4;
+  bilinear_mode bilinear = bilinear_mode::weighted_sum_4;
   rgb_only_targets rgb_only = rgb_only_targets::thirty_two_bit_only;
   texture_buffer tex_buffer = texture_buffer::quarter_page;
 

@@ -15,7 +15,7 @@ const std::vector<profile>& profiles() {
         {"bilinear", "lerp16_4"},
         {"rgb_only_targets", "thirty_two_bit_only"},
         {"texture_buffer", "draw_snapshot"},
-        {"gouraud_setup", "plane_steps"}}},
+        {"gouraud_setup", "pcsx2_rows_8"}}},
       {"dobiestation", "DobieStation src/core/gsthread.cpp (interpreter: tex_lookup, draw_pixel)",
        {{"tfx_rounding", "floor"},
         {"gouraud_fraction", "truncate_to_8"},
@@ -36,6 +36,17 @@ const std::vector<profile>& profiles() {
         {"rgb_only_targets", "all_formats"},
         {"texture_buffer", "quarter_page"},
         {"gouraud_setup", "per_pixel"}}},
+      {"parallel-gs", "parallel-gs gs/shaders/ubershader.comp (compute_combined_color, alpha_blend, shade_resolve), "
+                      "triangle_setup.comp; rows not read keep the model default",
+       {{"tfx_rounding", "floor"},
+        {"gouraud_fraction", "truncate_to_8"},
+        {"blend_shift", "floor"},
+        {"dither_decode", "twos_complement"},
+        {"dither_targets", "sixteen_bit_only"},
+        {"bilinear", "weighted_sum_4"},
+        {"rgb_only_targets", "thirty_two_bit_only"},
+        {"texture_buffer", "quarter_page"},
+        {"gouraud_setup", "per_pixel_level"}}},
   };
   return rows;
 }

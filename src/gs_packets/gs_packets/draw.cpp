@@ -249,7 +249,7 @@ std::uint64_t draw_primitive(mem::local_memory& m, const draw_registers& r, cons
   if (p.TME)
     for (std::size_t k = 0; k < 3; ++k) uv[k] = texel_position(d, v[k]);
   const triangle_attributes a =
-      setup_attributes(t, {v[0].colour, v[1].colour, v[2].colour}, uv, d.ofx >> 4, d.ofy >> 4, o.setup);
+      setup_attributes(t, {v[0].colour, v[1].colour, v[2].colour}, uv, d.ofx >> 4, d.ofy >> 4, o.setup, d.clip.x0);
   // Z as a plane (MODEL-PLANE-16, rasteriser.hpp); Z above 24 bits through Z / 256 (the plane's
   // 32-bit range), low 8 bits 0: a model limit, stated.
   const bool wide = std::max({v[0].Z, v[1].Z, v[2].Z}) > 0xFFFFFFu;

@@ -80,6 +80,7 @@ constexpr std::uint8_t bilinear_sets[3][4] = {{0x00, 0xFF, 0x01, 0xFE}, {0x00, 0
 std::vector<std::uint32_t> texture_texels() {
   std::vector<std::uint32_t> t(texture_side * texture_side, 0x80000000u);
   t[0] = 0xFFFFFFFFu;  // (0, 0): white, the Gouraud ramp's texel
+  t[1] = 0x80808080u;  // (1, 0): 1.0, the gouraud_setup ramps' texel: Cf's whole levels, its fraction dropped
   for (int k = 0; k < 4; ++k) {
     const int u = bilinear_texel + (k & 1), v = bilinear_texel + (k >> 1);
     t[static_cast<std::size_t>(v * texture_side + u)] = 0x80000000u | std::uint32_t{bilinear_sets[0][k]} |
@@ -148,11 +149,31 @@ design make_design() {
     const int x = 520, y = 16;
     // Colour 0 at x − 500, 4 at x + 14 (two vertices, one above the other: the cell lies inside): the
     // step is 4·128/514 = 0.996 units per pixel, 0 along y.
-    b.add(gouraud_ramp(base, x, y, {{{x - 500, y - 4, 0x80000000u, 8, 8}, {x + 14, y - 4, 0x80040404u, 8, 8}, {x + 14, y + 28, 0x80040404u, 8, 8}}}));
+    b.add(gouraud_ramp(base, x, y, {{{x - 500, y - 4, 0x80000000u, 24, 8}, {x + 14, y - 4, 0x80040404u, 24, 8}, {x + 14, y + 28, 0x80040404u, 24, 8}}}));
     b.add_patch("gouraud_setup.ramp", "gouraud_setup", x, y,
-                "Gouraud TRIANGLE, MODULATE, texel 0xFF, Cf from 0 to 4 over 514 pixels (0.996 units per pixel), read 501..506 "
+                "Gouraud TRIANGLE, MODULATE, texel 0x80, Cf from 0 to 4 over 514 pixels (0.996 units per pixel), read 501..506 "
                 "pixels from the first vertex: 0 when the step truncates to whole units (plane_steps), Cf_8.7 = 499..504 and "
-                "(0xFF * Cf) >> 14 = 7 from the exact plane (per_pixel)");
+                "(0x80 * Cf) >> 14 = 3 from the exact plane (per_pixel and the other set-ups of a source)");
+  }
+  {  // gouraud_setup (P12): a long row, its start at x = 0, read ~600 pixels on (PCSX2's vectors).
+    const int x = 600, y = 432;
+    // Colour 0 along x = 0, 8 at x = 686: 1024/686 = 1.4927 units per pixel along x, 0 along y. Scissored to
+    // the band x = 0 .. cell end, rows of the cell (no other patch there), so PCSX2's row starts at 0.
+    draw d = gouraud_ramp(base, x, y, {{{0, y - 400, 0x80000000u, 24, 8}, {0, y + 408, 0x80000000u, 24, 8}, {686, y + 4, 0x80080808u, 24, 8}}});
+    d.scissor = {0, y, x + cell - 1, y + cell - 1};
+    b.add(d);
+    b.add_patch("gouraud_setup.rows", "gouraud_setup", x, y,
+                "Gouraud TRIANGLE, MODULATE, texel 0x80, Cf = 1.4927 units per pixel from x = 0, read 601..606 pixels on: "
+                "level 7 from the exact plane (897..904 units); 5 from 4-lane vector steps trunc(5.97) = 5 (~146 units "
+                "behind), 6 from 8-lane steps trunc(11.94) = 11 (~71 behind), 4 from plane_steps' step 1");
+  }
+  {  // gouraud_setup (P12): the exact plane within half an 8.7 unit below a whole level (parallel-gs's bias).
+    const int x = 616, y = 432;
+    // Colour 0 along x = 108, 2 at x = 1132: 0.25·(x − 108) units, so 127.5 and 127.75 at x = 618, 619.
+    b.add(gouraud_ramp(base, x, y, {{{108, y - 4, 0x80000000u, 24, 8}, {108, y + 1500, 0x80000000u, 24, 8}, {1132, y - 4, 0x80020202u, 24, 8}}}));
+    b.add_patch("gouraud_setup.level", "gouraud_setup", x, y,
+                "Gouraud TRIANGLE, MODULATE, texel 0x80, Cf = 0.25·(x − 108) units: 127.5 and 127.75 at x = 618, 619, "
+                "level 0 truncated, 1 with parallel-gs's +1/256 level (per_pixel_level); 128 and more from x = 620 on");
   }
   {  // blend_shift (P3, settled by the recordings; probed anyway): (0 − 0x81)·1 >> 7 + 0x81.
     const int x = 32, y = 16;

@@ -74,6 +74,7 @@ void draw_primitive(mem::local_memory& m, const draw& d, std::optional<mem::text
   if (triangle && d.regs.PRIM.IIP) {
     auto gv = [](const vertex& p) { return gs::gouraud_vertex{p.x * 16, p.y * 16, gs::rgba8::from_u32(p.rgba)}; };
     plane = gs::gouraud_triangle(gv(d.v[0]), gv(d.v[1]), gv(d.v[2]), d.v[0].x, d.v[0].y);
+    if (plane) plane->clip_x0 = d.scissor.x0;  // pcsx2_rows: a row starts at SCISSOR's left at the latest
   }
   gs::rgba8 texel{};
   if (d.regs.PRIM.TME) {

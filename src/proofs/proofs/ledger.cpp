@@ -162,6 +162,11 @@ std::string ledger_markdown(const std::vector<claim_result>& results) {
       os << "\n";
     }
     for (const auto& w : r.result.witnesses) os << "  - witness: " << w << "\n";
+    if (!r.result.table.empty()) {
+      os << "\n";
+      for (const auto& line : r.result.table) os << line << "\n";
+      os << "\n";
+    }
     for (const auto& v : r.variants) os << "- Option " << variant_text(v) << "\n";
   }
   return os.str();

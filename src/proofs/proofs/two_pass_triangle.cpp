@@ -36,6 +36,12 @@ constexpr triangle_case certificate_table[] = {
     {125, -127, -15, {{{-125, 0, 0}, {-83, -69, 63}, {60, 74, -80}}}, {32576, 0, 0, 32752, 32576, 32752}, 2035, 2},
     {124, 24, 59, {{{-28, -63, -103}, {-27, -60, -105}, {-24, -63, -104}}}, {0, 0, 32752, 0, 0, 32752}, 651, 826},  // per_pixel, truncate_to_8
     {126, -127, -15, {{{-125, -15, 0}, {-125, -15, 0}, {-125, -15, 0}}}, {0, 0, 160, 0, 0, 160}, 2, 2},  // flat
+    // pcsx2_rows: the row at y = 1000 starts at x = 1007 (7 mod 8: the pixel after it opens the next vector)
+    {110, 108, -55, {{{105, -28, 17}, {-1, -84, 71}, {105, -28, 17}}}, {16112, 16000, 16144, 16000, 16112, 16032}, 1008, 1000},
+    {122, -20, -117, {{{-15, -95, 75}, {-22, -120, 0}, {-15, -95, 75}}}, {16112, 16000, 16144, 16000, 16112, 16032}, 1008, 1000},
+    // pcsx2_rows_4: the row starts at x = 1003 (3 mod 4), B 1 + 1/16 pixel after it
+    {100, 108, -55, {{{99, -12, 7}, {-6, -79, 61}, {99, -12, 7}}}, {16048, 16000, 16065, 16000, 16048, 16032}, 1004, 1000},
+    {122, -20, -117, {{{-113, -43, 16}, {-8, -110, 52}, {-113, -43, 16}}}, {16048, 16000, 16065, 16000, 16048, 16032}, 1004, 1000},
 };
 }  // namespace
 
@@ -52,7 +58,9 @@ gs::fragment_colour pixel_light(const triangle_case& c, gs::gouraud_setup setup)
   const auto r = reference_pixel(c.xy16);
   const auto plane = gs::gouraud_triangle(v[0], v[1], v[2], r[0] + xy_offset_pixels, r[1] + xy_offset_pixels);
   if (!plane) return gs::fragment_colour::flat(light_colour(c.light[2]));  // zero area: covers nothing
-  return gs::gouraud_colour(*plane, c.px + xy_offset_pixels, c.py + xy_offset_pixels, setup);
+  auto at = *plane;
+  at.clip_x0 = xy_offset_pixels;  // SCISSOR: the window's left edge
+  return gs::gouraud_colour(at, c.px + xy_offset_pixels, c.py + xy_offset_pixels, setup);
 }
 
 namespace {
@@ -78,13 +86,18 @@ normal_terms terms(const paper::packed_normal& p) {
 
 // The largest s (0 .. 127) for which the bound of cannot_wrap holds for this normal: the reach
 // len·s·128 + G grows with s, so that is every s below the least failing one.
+// Other set-ups: the ball's reach len·s·128 + l1·W (len >= |n|), and under pcsx2_rows the cube's
+// l1·(128·s + 3) as well.
 int safe_s(const paper::packed_normal& p, const normal_terms& n, int e, const gs::model_options& o) {
-  const std::int64_t err = gain_units(n.l1, n.least, lag_window(o));
-  const std::int64_t top = wrap_threshold_units(p, e, 1, o) - err - truncation_units(p, 1, o),
-                     bottom = wrap_threshold_units(p, e, -1, o) - err - truncation_units(p, -1, o);
+  const bool steps = o.setup == gs::gouraud_setup::plane_steps;
+  const std::int64_t err = steps ? gain_units(n.l1, n.least, lag_window(o)) : n.l1 * lag_window(o);
+  const std::int64_t top = wrap_threshold_units(p, e, 1, o) - truncation_units(p, 1, o),
+                     bottom = wrap_threshold_units(p, e, -1, o) - truncation_units(p, -1, o);
   const std::int64_t room = std::min(top, bottom) - 1;  // reach <= room
-  if (room < 0) return 0;
-  return static_cast<int>(std::min<std::int64_t>(127, room / (n.len * 128)));
+  if (room - err < 0) return 0;
+  std::int64_t s = std::min<std::int64_t>(127, (room - err) / (n.len * 128));
+  if (saturates(o)) s = room - 3 * n.l1 < 0 ? 0 : std::min(s, (room - 3 * n.l1) / (n.l1 * 128));
+  return static_cast<int>(s);
 }
 }  // namespace
 
@@ -137,9 +150,11 @@ bool cannot_wrap(const paper::packed_normal& p, int e, int s, const gs::model_op
     return reach + truncation_units(p, 1, o) < wrap_threshold_units(p, e, 1, o) &&
            reach + truncation_units(p, -1, o) < wrap_threshold_units(p, e, -1, o);
   };
-  if (o.setup != gs::gouraud_setup::per_pixel) return fits(reach_units(n, s, window_pixels));
+  if (o.setup == gs::gouraud_setup::plane_steps) return fits(reach_units(n, s, window_pixels));
+  if (saturates(o) && !fits(saturation_units(n, s))) return false;
   // the ball first; the light set's support (a scan of it) only where the ball is not enough
-  return fits(ball_reach_units(n, s, 1)) || (!lights.empty() && fits(128 * light_support(n, lights) + n[0] + n[1] + n[2]));
+  const int w = lag_window(o);
+  return fits(ball_reach_units(n, s, w)) || (!lights.empty() && fits(128 * light_support(n, lights) + (n[0] + n[1] + n[2]) * w));
 }
 
 int bound_safe_s(const gs::model_options& o, bool attenuated) {
@@ -155,12 +170,14 @@ int bound_safe_s(const gs::model_options& o, bool attenuated) {
   std::vector<start> order;
   for (const auto& p : appendix2_normals()) order.push_back({safe_s(p, terms(p), t.alpha_error(p), o), &p, t.alpha_error(p)});
   std::sort(order.begin(), order.end(), [](const start& a, const start& b) { return a.s < b.s; });
-  // The light sets per s, built when per_pixel first asks for one.
+  // The light sets per s, built when a set-up other than plane_steps first asks for one.
   std::map<int, std::vector<ivec3>> sets;
   auto lights = [&](int s) -> std::span<const ivec3> {
-    if (o.setup != gs::gouraud_setup::per_pixel) return {};
+    // plane_steps has its own bound; under pcsx2_rows the cube of the saturated steps decides, not the ball
+    // (and the attenuated lights' set, a scan of the whole ball per s, is left to the ball's bound)
+    if (o.setup == gs::gouraud_setup::plane_steps || saturates(o) || attenuated) return {};
     auto it = sets.find(s);
-    if (it == sets.end()) it = sets.emplace(s, attenuated ? attenuated_lights(s) : packed_lights(s)).first;
+    if (it == sets.end()) it = sets.emplace(s, packed_lights(s)).first;
     return it->second;
   };
   int least = 127;

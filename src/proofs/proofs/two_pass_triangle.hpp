@@ -106,6 +106,17 @@ struct triangle_case {
 // s = 126: a flat triangle (three equal lights, the first witness of two-pass.max-s.vertex, n =
 // (−127, −15, 5), l = (−125, −15, 0)): every set-up gives its pixels that light exactly, so it wraps
 // under every option; it is the lowest wrap under gouraud_setup=per_pixel, where no pixel lags.
+// pcsx2_rows_8 (8 lanes), s = 110 and 122: a steep first row's second vector (two_pass_triangle.hpp's
+// argument above lag_window). Vertices at pixel centres: A = (1007, 1000), B = (1009, 1000), C = (1007,
+// 1002) with lights A, B, A; the row at y = 1000 starts at A, 1007 = 7 mod 8, so the pixel (1008, 1000),
+// whose exact light is (A + B)/2, is lane 0 of the next vector: on the channel whose lights differ by
+// >= 74 levels (|8·g| and |7·g| above 32767 units) the saturated offset and step give A's value back
+// (minus a unit), the other channels keep (A + B)/2, and that mix leaves the ball along n. Found by a
+// scan over sampled Appendix 2 normals, the steep channel set and the 200 best packed lights A and B by
+// that mix's n·light (a scratch search, not kept: the construction above is all it used).
+// pcsx2_rows_4, s = 100 and 122: the same with 4 lanes, A = (1003, 1000) (3 mod 4) and B = (1004 + 1/16, 1000),
+// so that P(1004, 1000) = A + (16/17)·(B − A) and the steep channel (lights >= 81 levels apart, |3·g| and
+// |4·g| above 32767) keeps A's value.
 // tests/proofs replays each through the pipeline's rasteriser (the pixel is covered) and
 // gs::pixel_pipeline.
 std::span<const triangle_case> certificates() noexcept;
@@ -168,8 +179,39 @@ gs::fragment_colour pixel_light(const triangle_case& c, gs::gouraud_setup setup 
 // Under gouraud_setup::per_pixel the light is the exact plane at p truncated toward zero from vertex
 // 0's value, so |E_c| < 1 unit on every channel whatever the gradients, with P(p) in the ball: no
 // case split, n·L(p) − n·centre < R·|n| + m (ball_reach_units with W = 1; lag_window is the W of (ii)).
+// The other set-ups of a source are bounded the same way, with their own W, the largest |E_c| (in units):
+// - per_pixel_level: L_c = 128·floor((P_c(p) + 1/2)/128), so −127.5 < E_c <= 1/2: W = 128. L_c is a multiple of
+//   128, so the multiply's floors have the truncate_to_8 slack (floor_slack_units 128) and truncate_to_8
+//   changes nothing (truncation_units 0).
+// - pcsx2_rows_4 / _8 (gs::gouraud_rows_units): p = left + k on its row, left = the row's first pixel
+//   (ceil of the left edge: in the closed triangle, as p). With g the exact x gradient, n the vectors
+//   after the first and m = k − n·lanes, L_c = trunc(P_c(left)) + trunc(g·m) + n·trunc(lanes·g) when
+//   nothing saturates, and P_c(left) + g·k = P_c(p): E_c = −(three truncations, one of them n times),
+//   |E_c| < 2 + n <= 2 + floor((2047 + lanes − 1)/lanes): W = 514 (4 lanes), 258 (8 lanes). The clamp
+//   at 0 after each step only lifts a negative running value, and (Lindley) never above P_c(p): still
+//   within W. Saturation: |P_c(p) − P_c(left)| = |g|·k <= 2s·128 < 32767, so n = 0 never saturates, and
+//   n >= 2 needs k >= lanes + 1, where |lanes·g| < 32767 too; at n = 1 (m = k − lanes < 0, opposite
+//   sign to the step) a saturated step (and offset) gives, by cases, a value between trunc(P_c(left))
+//   − 1 and P_c(p) + 1, exact in 16 bits (paddw wraps, but the true sum lies in range). Per channel
+//   that is a point of the segment from P(left) to P(p), both in the ball, ±3 units, but a different
+//   point per channel: the light is only in the cube |λ_c| <= R + 3 around the centre (saturation_units,
+//   n·L(p) − n·centre < |n|_1·(R + 3)). tests/proofs/triangle_test.cpp checks both statements against
+//   the model on random steep and shallow triangles.
 constexpr int lag_window(const gs::model_options& o) noexcept {
-  return o.setup == gs::gouraud_setup::per_pixel ? 1 : window_pixels;
+  switch (o.setup) {
+    case gs::gouraud_setup::per_pixel: return 1;
+    case gs::gouraud_setup::per_pixel_level: return 128;
+    case gs::gouraud_setup::pcsx2_rows_4: return 2 + (window_pixels - 1 + 3) / 4;
+    case gs::gouraud_setup::pcsx2_rows_8: return 2 + (window_pixels - 1 + 7) / 8;
+    case gs::gouraud_setup::plane_steps: break;
+  }
+  return window_pixels;
+}
+constexpr bool saturates(const gs::model_options& o) noexcept {
+  return o.setup == gs::gouraud_setup::pcsx2_rows_4 || o.setup == gs::gouraud_setup::pcsx2_rows_8;
+}
+constexpr std::int64_t saturation_units(const std::array<std::int64_t, 3>& n, int s) noexcept {
+  return (n[0] + n[1] + n[2]) * (std::int64_t{128} * s + 3);
 }
 constexpr std::int64_t gain_units(std::int64_t l1, std::int64_t least, int window) noexcept {
   return l1 * window + std::int64_t{window - 1} * (l1 - least);
@@ -178,6 +220,7 @@ constexpr std::int64_t gain_units(std::int64_t l1, std::int64_t least, int windo
 // of moving it a whole level: 1 (keep_fraction: n_c·M_c a whole number) or 128 (truncate_to_8: a
 // multiple of 128).
 constexpr std::int64_t floor_slack_units(const gs::model_options& o) noexcept {
+  if (o.setup == gs::gouraud_setup::per_pixel_level) return 128;
   return o.gouraud == gs::gouraud_fraction::keep_fraction ? 1 : 128;
 }
 // What reach + truncation_units must stay below on a wrap side (side +1: the top, value >= 128;
@@ -190,7 +233,7 @@ constexpr std::int64_t wrap_threshold_units(const paper::packed_normal& p, int e
   return std::int64_t{16384} * (side > 0 ? 128 - neg - e : 129 - pos + e) + floor_slack_units(o) * counted;
 }
 constexpr std::int64_t truncation_units(const paper::packed_normal& p, int side, const gs::model_options& o) noexcept {
-  if (o.gouraud == gs::gouraud_fraction::keep_fraction) return 0;
+  if (o.gouraud == gs::gouraud_fraction::keep_fraction || o.setup == gs::gouraud_setup::per_pixel_level) return 0;
   std::int64_t sum = 0;
   for (int n : {p.iX, p.iY, p.iZ})
     if (side * n < 0) sum += n < 0 ? -n : n;
@@ -221,12 +264,12 @@ std::int64_t ball_reach_units(const std::array<std::int64_t, 3>& n, int s, int w
 // The bound on n·L(p) − n·centre (8.7 units, the Gouraud light's; truncation_units come on top), for a
 // normal with components |n_c| and s: max of case (i) and (iii) over every D.
 std::int64_t reach_units(const std::array<std::int64_t, 3>& n, int s, int window);
-// Under gouraud_setup::per_pixel, P(p) is a convex combination of the three vertex lights, so
+// Under the set-ups other than plane_steps, P(p) is a convex combination of the three vertex lights, so
 // n·(P(p) − centre) <= 128·light_support: the largest Σ |n_c|·l_c over the light set (packed lights,
 // or the ball's cells under tolight = attenuated_T; both are symmetric under negating a channel, so
 // this serves both wrap sides). Tighter than the ball's R·|n| where no light points along n.
 std::int64_t light_support(const std::array<std::int64_t, 3>& n, std::span<const ivec3> lights) noexcept;
-// `lights`: the light set of s, used under per_pixel (empty: the ball alone).
+// `lights`: the light set of s, used under the set-ups other than plane_steps (empty: the ball alone).
 bool cannot_wrap(const paper::packed_normal& p, int e, int s, const gs::model_options& o,
                  std::span<const ivec3> lights = {}) noexcept;
 // The largest s such that no normal can wrap for any s' <= s by that bound (0 if none); `attenuated`:

@@ -37,6 +37,7 @@ struct outcome {
   std::vector<figure> figures;
   std::vector<std::string> witnesses;  // "inputs => observed, expected" lines, hex and decimal
   std::string note;                    // one sentence: what the verdict means here
+  std::vector<std::string> table;      // optional markdown table lines, printed after the figures
   // The evaluation read neither the model options nor the domain options (e.g. a brute force of
   // option-free statements): every variant would repeat it, so the runner evaluates none.
   bool option_free = false;
