@@ -36,8 +36,9 @@ constexpr gs::alpha_reg subtract_source{gs::blend_colour::Cd, gs::blend_colour::
 constexpr pl::pass_regs pass1{true, false, gs::tfx::MODULATE, gs::tcc::RGB, {}, false, 0};
 constexpr pl::pass_regs pass2{true, true, gs::tfx::MODULATE, gs::tcc::RGBA, subtract_source, false, 0};
 
-// The light plane as the pipeline's attribute set-up builds it for one triangle.
-gs::gouraud_plane pipeline_plane(const pl::triangle_setup& setup, const tt::triangle_case& c) {
+// The light's attributes as the pipeline's attribute set-up builds them for one triangle, under `gouraud`.
+gs::triangle_attributes pipeline_attributes(const pl::triangle_setup& setup, const tt::triangle_case& c,
+                                            gs::gouraud_setup gouraud) {
   pl::prepared_scene ps;
   ps.width = ps.height = 2048;
   pl::prepared_triangle tri;
@@ -45,9 +46,12 @@ gs::gouraud_plane pipeline_plane(const pl::triangle_setup& setup, const tt::tria
   tri.setup = setup;
   ps.triangles.push_back(tri);
   const auto attr = pl::detail::attributes(
-      ps, gs::gouraud_setup::plane_steps, [&](std::uint32_t v) { return tt::light_colour(c.light[v]); },
+      ps, gouraud, [&](std::uint32_t v) { return tt::light_colour(c.light[v]); },
       [](const pl::prepared_triangle&, int) { return std::pair<std::int32_t, std::int32_t>{0, 0}; });
-  return attr[0].colour;
+  return attr[0];
+}
+gs::gouraud_plane pipeline_plane(const pl::triangle_setup& setup, const tt::triangle_case& c) {
+  return pipeline_attributes(setup, c, gs::gouraud_setup::plane_steps).colour;
 }
 
 // Plain-int two-pass value for an 8.7 light (floor of n·L / 2^14 per channel, pass 2 subtracted).
@@ -105,7 +109,16 @@ TEST(Triangle, EveryCertificateWrapsThroughTheRasteriserAndThePixelPipeline) {
     auto wraps = [](int v) { return v >= 128 || v <= -129; };
     const auto exact = gs::gouraud_exact_at(plane, c.px + pl::xy_offset_pixels, c.py + pl::xy_offset_pixels);
     const int E[3] = {exact.r.value(), exact.g.value(), exact.b.value()};
-    EXPECT_TRUE(wraps(plain_value(n, L, false)) || wraps(plain_value(n, L, true)) || wraps(plain_value(n, E, true))) << "s " << c.s;
+    bool wrapped = wraps(plain_value(n, L, false)) || wraps(plain_value(n, L, true)) || wraps(plain_value(n, E, true));
+    // and under PCSX2 SW's row set-ups (the pcsx2_rows rows): the pipeline's attribute set-up (SCISSOR's
+    // left at window pixel 0) gives the proof's pixel_light, and the light wraps under either fraction
+    for (auto s : {gs::gouraud_setup::pcsx2_rows_4, gs::gouraud_setup::pcsx2_rows_8}) {
+      const auto rows = pipeline_attributes(setup, c, s).colour_at(c.px, c.py);
+      ASSERT_EQ(rows, tt::pixel_light(c, s)) << "s " << c.s;
+      const int R[3] = {rows.r.value(), rows.g.value(), rows.b.value()};
+      wrapped = wrapped || wraps(plain_value(n, R, false)) || wraps(plain_value(n, R, true));
+    }
+    EXPECT_TRUE(wrapped) << "s " << c.s;
   }
   // s = 122..125 and the flat s = 126 under both options, the s = 91 and s = 89 keep_fraction rows under
   // both, every other row under its own
@@ -674,7 +687,7 @@ std::array<double, 3> plane_by_cramer(const tt::relaxation_point& x, std::size_t
 
 TEST(Triangle, RelaxationWitnessesLieInTheRelaxationAndExceedTheirThresholds) {
   for (const auto& w : tt::relaxation_witnesses()) {
-    gs::model_options o;
+    gs::model_options o{.setup = gs::gouraud_setup::plane_steps};  // the relaxation bounds plane_steps' lag
     o.gouraud = w.gouraud;
     const p::two_pass::table t(o);
     const auto nm = p::paper::pack_normal_from(w.iX, w.iY);
