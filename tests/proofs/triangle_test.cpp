@@ -536,6 +536,21 @@ TEST(Triangle, PerPixelSafeSIsWhatTheBallOrTheLightSupportGives) {
   EXPECT_FALSE(tt::cannot_wrap(w, t.alpha_error(w), 126, o, p::packed_lights(126)));
 }
 
+TEST(Triangle, BallSupportLightsGiveTheWholeBallsSupport) {
+  // The reduction of ball_support_lights against a scan of every cell of the ball (attenuated_lights)
+  // at s = 16 and 17, for every normal of the normal map.
+  for (int s : {16, 17}) {
+    const auto ball = p::attenuated_lights(s), surface = tt::ball_support_lights(s);
+    ASSERT_LT(surface.size(), ball.size() / 20);
+    for (const auto& nm : p::appendix2_normals()) {
+      const std::array<std::int64_t, 3> n{std::abs(nm.iX), std::abs(nm.iY), std::abs(nm.iZ)};
+      std::int64_t whole = 0;
+      for (const auto& l : ball) whole = std::max(whole, n[0] * std::abs(l[0]) + n[1] * std::abs(l[1]) + n[2] * std::abs(l[2]));
+      ASSERT_EQ(tt::light_support(n, surface), whole) << s << " " << nm.iX << " " << nm.iY;
+    }
+  }
+}
+
 TEST(Triangle, PerPixelTruncatedSafeSIsWhatTheInequalityGives) {
   // The dobiestation profile (per_pixel with truncate_to_8): the same inequality in doubles with the
   // multiply's floor adding up to 127/128 level on each channel against the side (n_c < 0 at the top,

@@ -143,6 +143,19 @@ std::int64_t light_support(const std::array<std::int64_t, 3>& n, std::span<const
   return best;
 }
 
+std::vector<ivec3> ball_support_lights(int s) {
+  // light_support takes |l_c| and n_c >= 0, so over the ball's cells it is the largest n·l over the
+  // cells of the first octant with the largest z for their (x, y): for fixed x, y the sum grows with z.
+  std::vector<ivec3> out;
+  for (int x = 0; x <= s; ++x)
+    for (int y = 0; x * x + y * y <= s * s; ++y) {
+      int z = 0;
+      while (x * x + y * y + (z + 1) * (z + 1) <= s * s) ++z;
+      out.push_back({x, y, z});
+    }
+  return out;
+}
+
 bool cannot_wrap(const paper::packed_normal& p, int e, int s, const gs::model_options& o, std::span<const ivec3> lights) noexcept {
   // value < reach/16384 + neg + e, compared without division.
   const std::array<std::int64_t, 3> n{std::abs(p.iX), std::abs(p.iY), std::abs(p.iZ)};
@@ -174,10 +187,9 @@ int bound_safe_s(const gs::model_options& o, bool attenuated) {
   std::map<int, std::vector<ivec3>> sets;
   auto lights = [&](int s) -> std::span<const ivec3> {
     // plane_steps has its own bound; under pcsx2_rows the cube of the saturated steps decides, not the ball
-    // (and the attenuated lights' set, a scan of the whole ball per s, is left to the ball's bound)
-    if (o.setup == gs::gouraud_setup::plane_steps || saturates(o) || attenuated) return {};
+    if (o.setup == gs::gouraud_setup::plane_steps || saturates(o)) return {};
     auto it = sets.find(s);
-    if (it == sets.end()) it = sets.emplace(s, packed_lights(s)).first;
+    if (it == sets.end()) it = sets.emplace(s, attenuated ? ball_support_lights(s) : packed_lights(s)).first;
     return it->second;
   };
   int least = 127;

@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <span>
+#include <vector>
 
 #include "gs_arith/options.hpp"
 #include "gs_arith/texture_function.hpp"
@@ -269,6 +270,10 @@ std::int64_t reach_units(const std::array<std::int64_t, 3>& n, int s, int window
 // or the ball's cells under tolight = attenuated_T; both are symmetric under negating a channel, so
 // this serves both wrap sides). Tighter than the ball's R·|n| where no light points along n.
 std::int64_t light_support(const std::array<std::int64_t, 3>& n, std::span<const ivec3> lights) noexcept;
+// The cells of the ball |l| <= s (tolight = attenuated_T, domains.hpp attenuated_lights) on which
+// light_support takes its largest value for every n >= 0: the first octant's cells with the largest z
+// for their x, y ((s + 1)² cells instead of the ball's ~4.2·s³; checked against the whole ball).
+std::vector<ivec3> ball_support_lights(int s);
 // `lights`: the light set of s, used under the set-ups other than plane_steps (empty: the ball alone).
 bool cannot_wrap(const paper::packed_normal& p, int e, int s, const gs::model_options& o,
                  std::span<const ivec3> lights = {}) noexcept;
