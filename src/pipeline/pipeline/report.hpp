@@ -66,7 +66,9 @@ struct report_summary {
 // the largest RMSE of a GS method against the unnormalised reference on the embedded scene is
 // about 2, so above 4 most of a method's error against the renormalised one is normalisation.
 inline constexpr double normalisation_warning_rmse = 4.0;
-std::string normalisation_warning(const error_stats& normalisation);
+// `four_pass_brighter`: four-pass was drawn and its mean error is positive and above every other
+// method's (box.uc with smooth normals); the warning then says why.
+std::string normalisation_warning(const error_stats& normalisation, bool four_pass_brighter);
 
 // Renders, compares and writes everything into a staged folder that becomes out_dir only when all
 // is written (staged_directory: nothing half written; files of out_dir it does not write are kept).
