@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Writes the dumps of issue 29's matrix with `gsdot3 dump` / `gsdot3 probe` and checks every one with
 pcsx2_check.py (the independent reader): the three methods with 1 to 4 lights (NTSC, raw), PAL and
-VESA, .gs.xz, .gs.zst and an upper-case .GS.ZST, a height map, the probe. Every dump must
+VESA, .gs.xz, .gs.zst and an upper-case .GS.ZST, a 64² height map, a 1024² one (streamed) for each
+method, the probe. Every dump must
 pass within PCSX2's limits and the 1 MiB packet bound. Then the counter-check: the 4-light four-pass
 dump written as one unsplit transfer (--max-packet 1 GiB, what gsdot3 wrote before issue 29) must FAIL
 the check on PCSX2's 9 MiB path buffer. Usage: dump_matrix.py GSDOT3 OUT_DIR
@@ -40,12 +41,14 @@ def main(gsdot3, out):
     runs.append((os.path.join(out, 'four-pass-2l.gs.xz'), 'ntsc', ['dump', '--method', 'four-pass']))
     runs.append((os.path.join(out, 'baseline-2l.gs.zst'), 'ntsc', ['dump', '--method', 'baseline']))
     runs.append((os.path.join(out, 'two-pass-2l-upper.GS.ZST'), 'pal', ['dump', '--method', 'two-pass', '--video', 'pal']))
-    # A 1024x1024 normal map is not in the matrix: its textures do not fit the memory path's 4 MiB
-    # ("memory path: the textures do not fit"); a 64x64 height map is (the upload cut at any qword).
-    grey_png(os.path.join(out, 'height64.png'), 64)
-    runs.append((os.path.join(out, 'four-pass-4l-map64.gs'), 'ntsc',
-                 ['dump', '--method', 'four-pass', '--height-map', os.path.join(out, 'height64.png')] +
-                 sum((['--light', l] for l in LIGHTS), [])))
+    # A 64x64 height map (the upload cut at any qword) and a 1024x1024 one, whose textures do not fit
+    # beside the frame buffers and are streamed per pass in pieces (pipeline/texture_stream.hpp).
+    for n, methods in ((64, ('four-pass',)), (1024, ('two-pass', 'four-pass', 'baseline'))):
+        grey_png(os.path.join(out, 'height%d.png' % n), n)
+        for method in methods:
+            runs.append((os.path.join(out, '%s-4l-map%d.gs' % (method, n)), 'ntsc',
+                         ['dump', '--method', method, '--height-map', os.path.join(out, 'height%d.png' % n)] +
+                         sum((['--light', l] for l in LIGHTS), [])))
     runs.append((os.path.join(out, 'probe.gs'), 'ntsc', ['probe']))
     bad = 0
     for f, video, cmd in runs:
