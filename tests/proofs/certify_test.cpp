@@ -290,8 +290,8 @@ TEST(TriangleCertify, DualAtTheWitnessGeometriesMatchesTheirAttainedValue) {
 }
 
 TEST(TriangleCertify, ACertifiedClassHoldsOnRandomGeneralTriangles) {
-  // |n| = (67, 73, 81) at s = 83 under keep_fraction, the first class of `proofs_triangle_certify 83
-  // survey`: threshold 15998.2734 = (16384·125 − |n|_1)/128, 128 − #neg − e = 125 (without the floors'
+  // |n| = (67, 73, 81) at s = 83 under keep_fraction, the first class of `tools/proofs_triangle certify
+  // 83`: threshold 15998.2734 = (16384·125 − |n|_1)/128, 128 − #neg − e = 125 (without the floors'
   // 1/16384 level per negative channel that the ledger's threshold adds: stricter than the ledger's).
   const tc::problem pr{{67, 73, 81}, 83, std::int64_t{16384} * 125 - 221};
   const tc::outcome r = tc::certify_class(pr, 2048, std::int64_t{1} << (tc::coord_bits - 2), 200000);
@@ -339,7 +339,7 @@ TEST(TriangleCertify, TheWitnessesClassesDoNotClose) {
 }
 
 TEST(TriangleCertify, TheRelaxationExceedsAt83UnderTruncate) {
-  // The point `proofs_triangle_certify 83 truncate_to_8 survey 0 100000 -4 2000000 2047` stops at for
+  // The point `tools/proofs_triangle certify 83 --truncate-to-8` (its defaults: box 2047) stops at for
   // class #0 (bottom of pack(67, 73)), box 2047, lights as printed (9 decimals): relaxation_margin,
   // the ledger's figure, is positive, so s = 83 under truncate_to_8 is beyond the relaxation.
   // It is the truncate_to_8 row of relaxation_witnesses().

@@ -796,8 +796,8 @@ int last_row_or_column_covered(const std::array<int, 6>& xy16, int w, int row = 
 }  // namespace
 
 TEST(Triangle, NoTriangleOfTheWindowCoversItsLastRowOrColumn) {
-  // bench/proofs_triangle_free_x puts its pixel on row 2046: with every vertex y <= w − 1, a pixel
-  // centre on row w − 1 lies on the triangle's boundary, on a bottom edge or at the lowest vertex,
+  // bench/proofs_triangle_free_x (commit 9f63566) put its pixel on row 2046: with every vertex
+  // y <= w − 1, a pixel centre on row w − 1 lies on the triangle's boundary, on a bottom edge or at the lowest vertex,
   // which is also on a right edge, and the fill rule covers neither (the same for column w − 1 with
   // right edges). Every triangle of three distinct points of a 9 × 9 lattice (1/4 pixel apart, so the
   // pixel centres themselves are vertices) in a 3-pixel window, and random full-size triangles with

@@ -355,8 +355,8 @@ outcome interpolated_under(const gs::model_options& o, const sweep_config& cfg) 
              ": the lowest certificate (s = " + std::to_string(first_wrap) + ") puts its pixel's light " + lag_text +
              " levels from the light of the vertex next to it" +
              (lowest_lag > 2047.0 / 128 ? " (more than one axis's 2047/128: its plane lags along both axes)" : " (one axis's lag)") +
-             "; the searches (bench/proofs_triangle_two_axis, bench/proofs_triangle_anneal, bench/proofs_triangle_corner, "
-             "bench/proofs_triangle_steep with bench/proofs_triangle_plan, bench/proofs_triangle_lattice, bench/proofs_triangle_free_x) found no wrap below " +
+             "; the searches (tools/proofs_triangle two-axis, corner and steep; the local search, steep's planners and "
+             "the free-x search of commit 9f63566's bench/proofs_triangle_*) found no wrap below " +
              std::to_string(first_wrap) + "." + limit_text +
              (limit > 0 ? std::string(", so s = ") + std::to_string(limit) + " and above can only be settled with the lattice (integer "
                                                       "lights, the whole-unit steps' lattice of gradients, 12.4 vertices; the floors' and the "

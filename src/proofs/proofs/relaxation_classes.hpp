@@ -25,7 +25,7 @@ struct open_class {
 // Every class whose reach_units leaves a side open at s, most open first.
 std::vector<open_class> open_classes(int s, const gs::model_options& o);
 
-// The branch and bound's settings for the ledger (and bench/proofs_triangle_certify's defaults): the
+// The branch and bound's settings for the ledger (and tools/proofs_triangle certify's defaults): the
 // families' box side (pixels), the narrowest rectangle (1/16 pixel), the rectangles per class. A box of
 // 2047 covers the claim's domain: its vertices lie in 0 .. 2047 pixels (12.4 window coordinates 0 ..
 // 2047·16), so after the family reduction's translation (the least vertex coordinate onto r, by less
@@ -38,8 +38,8 @@ inline constexpr int survey_min_cell_log2 = -4;
 bool relaxation_certified(int s, const gs::model_options& o);
 
 // The s the claim takes as certified, per gouraud_fraction (plane_steps; 0 under per_pixel, whose bound
-// needs no relaxation): 83 under keep_fraction, 82 under truncate_to_8 (bench/proofs_triangle_certify
-// `83 survey`: 2 183 classes, 38.1 s; `82 truncate_to_8 survey`: 2 965 classes, 57.6 s, one core).
+// needs no relaxation): 83 under keep_fraction, 82 under truncate_to_8 (`tools/proofs_triangle certify
+// 83`: 2 183 classes, 38.1 s; `certify 82 --truncate-to-8`: 2 965 classes, 57.6 s, one core).
 // Too slow for prove's budget, so prove takes these values and ctest proofs_certify_survey (label
 // exhaustive) re-runs relaxation_certified at them (the open classes are the same under every value of
 // tfx_rounding and blend_shift, which it checks too), and checks
@@ -57,8 +57,8 @@ std::vector<paper::packed_normal> normals_in(const std::vector<open_class>& clas
 // At s_next = certified_relaxation_s + 1, where the relaxation itself exceeds (relaxation_witnesses):
 // how many classes open_classes lists, how many of them stay uncertified and how many normals those
 // hold, so that a wrap at s_next needs one of those normals (plane_steps; zeros under per_pixel).
-// Measured by bench/proofs_triangle_certify (`84 survey`: 155 of 3 851 classes stop, 557 normals,
-// 140 s; `83 truncate_to_8 survey`: 303 of 5 270, 1 042 normals, 131 s; one core) and re-derived by
+// Measured by `tools/proofs_triangle certify 84` (155 of 3 851 classes stop, 557 normals, 140 s;
+// `certify 83 --truncate-to-8`: 303 of 5 270, 1 042 normals, 131 s; one core) and re-derived by
 // ctest proofs_certify_next_s under every tfx_rounding × blend_shift; prove takes the stored values.
 struct next_s_survey {
   int s = 0;

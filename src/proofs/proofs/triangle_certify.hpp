@@ -4,11 +4,24 @@
 //
 // Folded coordinates (triangle_relaxation.hpp: σ_c = side·sign n_c, w_c = |n_c|), levels. The reference
 // pixel r = (0, 0) is the least vertex x and the least vertex y; vertices X_k (k = 0, 1, 2), the pixel p
-// a vertex (the family reduction of bench/proofs_triangle_dual, whose four steps we re-checked: the
-// translation and the diagonal scaling never lower the objective, the objective is linear in p for
-// fixed vertices and lights, and three vertices that attain the four extremes of their bounding box
-// put one of them on a corner, leaving F1, F2, F3 (= F2 mirrored, x <-> y maps the relaxation onto
-// itself), F4, A1, A2). The plane P(x) = Q + G·x through the vertex lights ℓ_k = Q + G·X_k, |ℓ_k| <= s;
+// a vertex (the family reduction below, leaving F1, F2, F3 (= F2 mirrored, x <-> y maps the
+// relaxation onto itself), F4, A1, A2). The family reduction, in four steps:
+//  1. Translation: a lattice case's least vertex coordinates lie in (r − 1, r]; moving the triangle
+//     and p by less than one pixel so that they equal r keeps the barycentric coordinates and the
+//     steps and does not shorten a or b (p's offsets from r). So r = (0, 0) is the least vertex x and
+//     the least vertex y, and every vertex coordinate is below 2048.
+//  2. Scaling: diag(λ, μ) about r with λ, μ >= 1 keeps P_c(p) (barycentric coordinates are affine
+//     invariants), divides the x steps by λ and the y steps by μ, and multiplies a by λ and b by μ;
+//     λ·a·min(1, t/λ) = min(λ·a, a·t) >= a·min(1, t) for t >= 0, so the objective never falls. So the
+//     bounding box is [0, A]² (A = 2048; relaxation_classes.hpp's survey_box explains why 2047 suffices).
+//  3. The pixel: for fixed vertices and lights the objective is linear in p (P_c(p) is, and so are
+//     p_x·clamp(t_x) and p_y·clamp(t_y), t depending on the vertices and lights only), so its maximum
+//     over the closed triangle is at a vertex.
+//  4. Three vertices attain the box's four extremes, so one of them is a corner of it. One corner
+//     vertex: the other two lie on the two edges the corner does not touch (F1: corner (A, A), F2:
+//     (A, 0), F3: (0, A), the mirror image of F2, F4: (0, 0)); two corner vertices, opposite (A1, A2;
+//     the third anywhere) or adjacent (a case of the others).
+// The plane P(x) = Q + G·x through the vertex lights ℓ_k = Q + G·X_k, |ℓ_k| <= s;
 // t_{c,ax} = −128·G_{c,ax} units per pixel. The objective (relaxation_value) is
 //   Σ_c w_c·(P_c(p) + p_x·clamp(t_{c,x}, 0, 1)/128 + p_y·clamp(t_{c,y}, 0, 1)/128).
 // A pattern π (bit 2c + ax set: (c, ax) charged) is the region t_{c,ax} >= 0 on charged axes, <= 0 on
@@ -27,7 +40,7 @@
 // m = w_c·p_ax·θ − 128λ on a charged axis, w_c·p_ax + 128μ on an uncharged one, and the least θ is
 // max(0, m)/(w_c·p_ax)), and Slater holds for a nondegenerate triangle (small lights with strict
 // signs), so at one geometry the least bound over y is the pattern's supremum. The θ-dual of
-// proofs_triangle_dual is y_{k,c} = w_c·β_k(z_c) with z_c on [0, p] per charged axis and z_c = p on the
+// tools/proofs_triangle relaxation is y_{k,c} = w_c·β_k(z_c) with z_c on [0, p] per charged axis and z_c = p on the
 // uncharged ones; here z_c may go past p on uncharged axes (κ <= 0), which is what the θ-dual misses.
 // y_p = w, y_k = 0 (k ≠ p) is feasible for every geometry (κ = 0): bound (ii) with every axis lagged.
 // For a FIXED y the bound is s·Σ|y_k| plus Σ max(0, affine function of the vertex and pixel

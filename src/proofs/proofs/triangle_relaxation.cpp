@@ -11,11 +11,11 @@ namespace gsdot3::proofs::two_pass::triangle {
 
 namespace {
 // One witness per gouraud_fraction value, at the lowest s found: keep_fraction, the top side of
-// n = (−89, −65, 65) (the normal of the s = 85 certificates), printed by `proofs_triangle_dual 84 -89 -65 4 150`
-// (lights to three decimals, as printed; proofs/relaxation_classes.hpp certifies s = 83);
-// truncate_to_8, the bottom side of n = pack(67, 73), where `proofs_triangle_certify 83 truncate_to_8
-// survey 0 100000 -4 2000000 2047` stops first (class #0 of 303 that stop; lights to nine decimals, as
-// printed; 0.018 levels·|n| over; s = 82 is certified).
+// n = (−89, −65, 65) (the normal of the s = 85 certificates), printed by `tools/proofs_triangle
+// relaxation 84 -89 -65 4 150` (lights to three decimals, as printed; proofs/relaxation_classes.hpp
+// certifies s = 83); truncate_to_8, the bottom side of n = pack(67, 73), where `tools/proofs_triangle
+// certify 83 --truncate-to-8` stops first (class #0 of 303 that stop; `certify 83 --truncate-to-8 0 1`
+// prints it alone; lights to nine decimals, as printed; 0.018 levels·|n| over; s = 82 is certified).
 constexpr relaxation_witness witness_table[] = {
     {84, -89, -65, 1, gs::gouraud_fraction::keep_fraction,
      {{{{0, 2047}, {848.51, 0}, {2047, 2047}}}, {{2047, 2047}},

@@ -9,8 +9,9 @@
 // that relaxation where Σ_c |n_c|·σ_c·(L_c − 16384) plus the bound's own slack exceeds the wrap
 // threshold: then no argument that uses only those statements and the ball can prove its normal
 // safe at s, and the open range can only be closed with the lattice (integer lights, 12.4 vertices,
-// the truncation itself, the floors). bench/proofs_triangle_dual finds them (its header argues the
-// reduction of the geometry to five families with the bounding box [0, 2048]² and p at a vertex).
+// the truncation itself, the floors). `tools/proofs_triangle relaxation` searches the geometry for them
+// and `tools/proofs_triangle certify` meets them where its branch and bound stops (triangle_certify.hpp
+// argues the reduction of the geometry to five families with the bounding box [0, 2048]² and p at a vertex).
 #pragma once
 
 #include <array>
@@ -41,7 +42,7 @@ struct relaxation_witness {
   gs::gouraud_fraction gouraud;
   relaxation_point at;
 };
-// The table; bench/proofs_triangle_dual's `families` mode printed each row (command beside it).
+// The table; each row was printed by a tools/proofs_triangle subcommand (command beside it).
 std::span<const relaxation_witness> relaxation_witnesses() noexcept;
 
 // The witness's value above its side's threshold, levels·|n|: relaxation_value + the start error

@@ -1,9 +1,9 @@
-// proofs_triangle_two_axis — triangle certificates of two-pass.max-s.interpolated whose pixel lags
+// proofs_triangle two-axis — triangle certificates of two-pass.max-s.interpolated whose pixel lags
 // along both axes (src/proofs/proofs/two_pass_triangle.hpp, case (ii) of the bound). Not a benchmark
 // and not a test: a reproducible tool; every row it prints is re-verified by the claim and replayed
 // through the rasteriser in tests/proofs/triangle_test.cpp.
 //
-//   proofs_triangle_two_axis S [truncate_to_8]
+//   proofs_triangle two-axis S [--truncate-to-8]
 // The construction: X = (0, E), Y = (E, 0), Z = (E, E) (12.4, E = 32752: the reference pixel is the
 // window's corner, Z's pixel lies ~2046 pixels from it along both axes), l_X = l_Y = l_Z + d with d
 // along the wrap side's signs σ: on the two channels of largest |n_c| d_c = D levels, whose step
@@ -19,19 +19,19 @@
 #include <cstdio>
 
 #include "pipeline/raster.hpp"
-#include "proofs_search_args.hpp"
 #include "proofs/domains.hpp"
 #include "proofs/two_pass.hpp"
 #include "proofs/two_pass_triangle.hpp"
+#include "triangle_args.hpp"
 
 namespace p = gsdot3::proofs;
 namespace pl = gsdot3::pipeline;
 namespace tt = gsdot3::proofs::two_pass::triangle;
 
-int main(int argc, char** argv) {
-  const auto args = gsdot3::bench::parse_search_args(argc, argv, "proofs_triangle_two_axis");
+namespace {
+int run(const gsdot3::tools::search_args& args) {
   const int s = args.s;
-  const gs::model_options o = args.o;
+  const gs::model_options o = args.options();
   constexpr int E = (tt::window_pixels - 1) * 16;
   const std::array<int, 6> xy16{0, E, E, 0, E, E};
   const auto setup = pl::setup_triangle({pl::xy124{0, E}, pl::xy124{E, 0}, pl::xy124{E, E}});
@@ -91,4 +91,13 @@ int main(int argc, char** argv) {
       }
   std::printf("s = %d: no wrapping pixel in the searched set (%lld cases, best wrap-side value %d)\n", s, evaluated, best);
   return 1;
+}
+}  // namespace
+
+void gsdot3::tools::add_two_axis_command(CLI::App& app, int& rc) {
+  auto args = std::make_shared<search_args>();
+  CLI::App* cmd = app.add_subcommand("two-axis", "The two-axis construction: the certificate rows at s = 91 (one per option)");
+  cmd->footer("Prints the first wrapping case as a certificate row (exit status 0), or the best wrap-side value (1). Seconds.");
+  add_search_args(*cmd, *args);
+  cmd->callback([args, &rc] { rc = run(*args); });
 }

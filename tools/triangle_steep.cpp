@@ -1,9 +1,9 @@
-// proofs_triangle_steep — triangle certificates of two-pass.max-s.interpolated in which the third
+// proofs_triangle steep — triangle certificates of two-pass.max-s.interpolated in which the third
 // channel lags too, through a steep step on the other axis. Not a benchmark and not a test: a
 // reproducible tool (no randomness); every row it prints is re-verified by the claim and replayed
 // through the rasteriser in tests/proofs/triangle_test.cpp.
 //
-//   proofs_triangle_steep S [truncate_to_8] IX IY SIDE THIRD LX0 LX1 LX2 D1 D2 YX_LO YX_HI [BOX T1 T2 NR SIGNS MIN]
+//   proofs_triangle steep S [--truncate-to-8] IX IY SIDE THIRD LX0 LX1 LX2 D1 D2 YX_LO YX_HI [BOX T1 T2 NR SIGNS MIN]
 // Geometry: X = (0, yX) with yX well above the pixel's row, Y = (xY, 0), Z = (xZ, yZ) with yZ in
 // 2044..2047, the pixel next to Z; the reference pixel is r = (0, 0). Wrap side SIDE (+1: top,
 // −1: bottom), σ_c = SIDE·sign n_c.
@@ -21,7 +21,7 @@
 //  t2 = 1, 5, .. T2, yZ = 2047 − 0..3) and K = 1..15, the integer differences (e1, e2) of the third
 //  channel from X to Y and to Z follow from the two step windows; X's light runs over the box
 //  LX ± BOX per channel, and all three lights must be packed lights of L_S. Each case is scored
-//  exactly (bench::score_near_vertices around Z). The start values (LX, D1, D2, the yX range) came from
+//  exactly (score_near_vertices around Z). The start values (LX, D1, D2, the yX range) came from
 //  a continuous relaxation of the same arithmetic (lights in the real ball, any real geometry),
 //  which this tool does not contain; any values can be tried.
 // The floors: the value is a sum of floors of n_c·L_c per pass (two_pass::pixel), so a case whose
@@ -32,57 +32,37 @@
 // as they are (the GS's truncations toward zero are odd) and only the floors and the alpha error move.
 // Prints the first wrapping case as a certificate row, or the best wrap-side value reached and its
 // case in the table's format.
+#include <array>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
+#include <memory>
 #include <set>
 #include <utility>
 
-#include "proofs_search_args.hpp"
-#include "proofs_triangle_score.hpp"
 #include "proofs/domains.hpp"
+#include "triangle_args.hpp"
+#include "triangle_score.hpp"
 
 namespace p = gsdot3::proofs;
 namespace tt = gsdot3::proofs::two_pass::triangle;
-namespace bench = gsdot3::bench;
+namespace tl = gsdot3::tools;
 
 namespace {
 constexpr int max124 = (tt::window_pixels - 1) * 16;
 
 struct steep_args {
-  int iX, iY, side, third;
-  int lx[3];
-  int d1, d2, yx_lo, yx_hi, box = 5, t1 = 60, t2 = 200, nr = 0, signs = 0;
+  tl::search_args search;
+  int iX = 0, iY = 0, side = 1, third = 0;
+  std::array<int, 3> lx{};
+  int d1 = 0, d2 = 0, yx_lo = 0, yx_hi = 0, box = 5, t1 = 60, t2 = 200, nr = 0, signs = 0;
   double min_smooth = 125.5;
 };
 
-steep_args parse(int argc, char** argv, int next) {
-  if (argc < next + 11) {
-    std::fprintf(stderr, "usage: proofs_triangle_steep S [truncate_to_8] IX IY SIDE THIRD LX0 LX1 LX2 D1 D2 YX_LO YX_HI [BOX T1 T2 NR SIGNS MIN]\n");
-    std::exit(2);
-  }
-  auto at = [&](int k) { return std::atoi(argv[next + k]); };
-  steep_args a{at(0), at(1), at(2), at(3), {at(4), at(5), at(6)}, at(7), at(8), at(9), at(10)};
-  if (argc > next + 11) a.box = at(11);
-  if (argc > next + 12) a.t1 = at(12);
-  if (argc > next + 13) a.t2 = at(13);
-  if (argc > next + 14) a.nr = at(14);
-  if (argc > next + 15) a.signs = at(15);
-  if (argc > next + 16) a.min_smooth = std::atof(argv[next + 16]);
-  if ((a.side != 1 && a.side != -1) || a.third < 0 || a.third > 2 || a.d1 < 3 || a.yx_lo < 0 || a.yx_hi > 2047 || a.nr < 0 ||
-      (a.signs != 0 && a.signs != 1)) {
-    std::fprintf(stderr, "proofs_triangle_steep: SIDE is 1 or -1, THIRD 0..2, D1 >= 3, 0 <= YX_LO <= YX_HI <= 2047, NR >= 0, SIGNS 0 or 1\n");
-    std::exit(2);
-  }
-  return a;
-}
-}  // namespace
-
-int main(int argc, char** argv) {
-  const auto args = bench::parse_search_args(argc, argv, "proofs_triangle_steep", " IX IY SIDE THIRD LX0 LX1 LX2 D1 D2 YX_LO YX_HI [BOX T1 T2 NR SIGNS MIN]");
-  const steep_args a = parse(argc, argv, args.next);
+int run(const steep_args& a) {
+  const auto& args = a.search;
   const int s = args.s;
-  const p::two_pass::table t(args.o);
+  const gs::model_options o = args.options();
+  const p::two_pass::table t(o);
   const auto nm = p::paper::pack_normal_from(a.iX, a.iY);
   const int n[3] = {nm.iX, nm.iY, nm.iZ};
   int sg[3];
@@ -90,10 +70,12 @@ int main(int argc, char** argv) {
   const int c3 = a.third, ca = (c3 + 1) % 3, cb = (c3 + 2) % 3;
   std::set<std::pair<int, int>> normals;
   for (const auto& m : p::appendix2_normals()) normals.insert({m.iX, m.iY});
-  bench::found best;
+  tl::found best;
   long long evaluated = 0, explored = 0;
+  tl::progress rows("steep: yZ, yX rows", 4LL * (16 * (a.yx_hi - a.yx_lo) + 1));
+  long long row = 0;
   for (int yZ16 = max124; yZ16 >= max124 - 48; yZ16 -= 16)
-    for (int yX16 = a.yx_lo * 16; yX16 <= a.yx_hi * 16; ++yX16)
+    for (int yX16 = a.yx_lo * 16; yX16 <= a.yx_hi * 16; ++yX16, rows.at(++row))
       for (int d1 = a.d1 - 2; d1 <= a.d1 + 2; ++d1)
         for (int d2 = a.d2 - 2; d2 <= a.d2 + 2; ++d2)
           for (int t1 = 1; t1 <= a.t1; t1 += 2)
@@ -125,15 +107,15 @@ int main(int argc, char** argv) {
                           lz[ca] -= sg[ca] * d2, lz[cb] -= sg[cb] * d2, lz[c3] += e2;
                           if (!p::is_packed_light(s, lx) || !p::is_packed_light(s, ly) || !p::is_packed_light(s, lz)) continue;
                           const tt::triangle_case c{s, a.iX, a.iY, {lx, ly, lz}, {0, yX16, xY16, 0, xZ16, yZ16}, 0, 0};
-                          bench::found f{c, bench::score_near_vertices(c, args.o, t, a.side, 2, 4), a.side};
+                          tl::found f{c, tl::score_near_vertices(c, o, t, a.side, 2, 4), a.side};
                           ++evaluated;
                           if (f.sc.value < 128 && f.sc.smooth >= a.min_smooth && (a.nr > 0 || a.signs)) {
-                            f = bench::explore(c, a.side, a.nr, a.signs != 0, args.o, t, normals);
+                            f = tl::explore(c, a.side, a.nr, a.signs != 0, o, t, normals);
                             ++explored;
                           }
-                          if (bench::better(f.sc, best.sc)) best = f;
+                          if (tl::better(f.sc, best.sc)) best = f;
                           if (f.sc.value >= 128) {
-                            bench::print_certificate_row(f.c, f.sc, args.option_name());
+                            tl::print_certificate_row(f.c, f.sc, args.option_name());
                             std::printf("(side %+d; %lld cases evaluated, %lld explored)\n", f.side, evaluated, explored);
                             return 0;
                           }
@@ -143,6 +125,35 @@ int main(int argc, char** argv) {
             }
   std::printf("s = %d (%s): no wrap, best wrap-side value %d (smooth %.3f) at (%d, %d), side %+d, %lld cases evaluated, %lld explored; its case:\n",
               s, args.option_name(), best.sc.value, best.sc.smooth, best.sc.px, best.sc.py, best.side, evaluated, explored);
-  bench::print_certificate_row(best.c, best.sc, args.option_name(), "best");
+  tl::print_certificate_row(best.c, best.sc, args.option_name(), "best");
   return 1;
+}
+}  // namespace
+
+void gsdot3::tools::add_steep_command(CLI::App& app, int& rc) {
+  auto a = std::make_shared<steep_args>();
+  CLI::App* cmd = app.add_subcommand("steep", "The steep third-channel construction: the certificate rows at s = 86, 85 (one per option) and 84 (truncate_to_8)");
+  cmd->footer("Prints the first wrapping case as a certificate row (exit status 0), or the best case reached (1). Seconds to minutes.");
+  add_search_args(*cmd, a->search);
+  cmd->add_option("IX", a->iX, "The normal pack(IX, IY)")->required();
+  cmd->add_option("IY", a->iY, "")->required();
+  cmd->add_option("SIDE", a->side, "The wrap side: 1 top (value >= 128), -1 bottom (<= -129)")->required()->check(CLI::IsMember({1, -1}));
+  cmd->add_option("THIRD", a->third, "The channel that gets the steep y step (0..2)")->required()->check(CLI::Range(0, 2));
+  cmd->add_option("LX0", a->lx[0], "X's light, the centre of the box searched")->required();
+  cmd->add_option("LX1", a->lx[1], "")->required();
+  cmd->add_option("LX2", a->lx[2], "")->required();
+  cmd->add_option("D1", a->d1, "The lag channels' fall from X to Y, levels (searched ±2)")->required()->check(CLI::Range(3, 255));
+  cmd->add_option("D2", a->d2, "The lag channels' fall from X to Z, levels (searched ±2)")->required();
+  cmd->add_option("YX_LO", a->yx_lo, "X's y, pixels: from")->required()->check(CLI::Range(0, 2047));
+  cmd->add_option("YX_HI", a->yx_hi, "to")->required()->check(CLI::Range(0, 2047));
+  cmd->add_option("BOX", a->box, "X's light runs over LX ± BOX per channel (default 5)")->check(CLI::NonNegativeNumber);
+  cmd->add_option("T1", a->t1, "Y's x offsets 1, 3, .. T1 sixteenths (default 60)");
+  cmd->add_option("T2", a->t2, "Z's x offsets 1, 5, .. T2 sixteenths (default 200)");
+  cmd->add_option("NR", a->nr, "Also score the normals within ±NR of (IX, IY) (default 0)")->check(CLI::NonNegativeNumber);
+  cmd->add_option("SIGNS", a->signs, "1: also every sign pattern of (n_x, n_y, side) (default 0)")->check(CLI::IsMember({0, 1}));
+  cmd->add_option("MIN", a->min_smooth, "The smooth part from which NR and SIGNS apply (default 125.5)");
+  cmd->callback([a, &rc] {
+    if (a->yx_lo > a->yx_hi) throw CLI::ValidationError("YX_LO", "must not exceed YX_HI");
+    rc = run(*a);
+  });
 }

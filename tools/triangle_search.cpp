@@ -1,7 +1,7 @@
-// proofs_triangle_search — finds the triangle certificates of two-pass.max-s.interpolated
-// (src/proofs/proofs/claims_two_pass.cpp). Not a benchmark and not a test: a reproducible tool.
+// proofs_triangle search — finds the triangle certificates of two-pass.max-s.interpolated
+// (src/proofs/proofs/claims_two_pass.cpp) at s = 100 and 122..125. Not a test: a reproducible tool.
 //
-//   proofs_triangle_search S [truncate_to_8]
+//   proofs_triangle search S [--truncate-to-8]
 // The construction (argument in src/proofs/proofs/two_pass_triangle.hpp): a right triangle
 // A = (W, 0), B = (0, H), C = (W, H) in the 2048² window, so the plane's reference pixel (the
 // bounding box's top-left, as the pipeline sets it up) is the bbox corner (0, 0) and a pixel next to
@@ -19,19 +19,19 @@
 #include <vector>
 
 #include "gs_arith/gouraud.hpp"
-#include "proofs_search_args.hpp"
 #include "pipeline/raster.hpp"
 #include "proofs/methods.hpp"
 #include "proofs/two_pass.hpp"
 #include "proofs/two_pass_triangle.hpp"
+#include "triangle_args.hpp"
 
 namespace p = gsdot3::proofs;
 namespace tt = gsdot3::proofs::two_pass::triangle;
 
-int main(int argc, char** argv) {
-  const auto args = gsdot3::bench::parse_search_args(argc, argv, "proofs_triangle_search");
+namespace {
+int run(const gsdot3::tools::search_args& args) {
   const int s = args.s;
-  const gs::model_options o = args.o;
+  const gs::model_options o = args.options();
   const auto& normals = p::appendix2_normals();
   const p::two_pass::table t(o);
   const auto lights = p::packed_lights(s);
@@ -98,5 +98,14 @@ int main(int argc, char** argv) {
         }
       }
   std::printf("s = %d: no wrapping pixel in the searched set (%lld cases, values %d .. %d)\n", s, evaluated, best_bottom, best_top);
-  return 0;
+  return 1;
+}
+}  // namespace
+
+void gsdot3::tools::add_search_command(CLI::App& app, int& rc) {
+  auto args = std::make_shared<search_args>();
+  CLI::App* cmd = app.add_subcommand("search", "The one-axis construction: the certificate rows at s = 100 (one per option) and 122..125");
+  cmd->footer("Prints the first wrapping case as a certificate row (exit status 0), or that the searched set has none (1). Seconds.");
+  add_search_args(*cmd, *args);
+  cmd->callback([args, &rc] { rc = run(*args); });
 }

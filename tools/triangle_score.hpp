@@ -1,4 +1,4 @@
-// proofs_triangle_score.hpp — the exact score the triangle certificate searches share: a case's
+// triangle_score.hpp — the exact score the certificate searches of tools/proofs_triangle share: a case's
 // covered pixels next to its vertices, each light through tt::pixel_light and the pixel through the
 // model's two-pass passes (two_pass::pixel), and the certificate row in the table's format
 // (src/proofs/proofs/two_pass_triangle.cpp).
@@ -14,7 +14,7 @@
 #include "proofs/two_pass.hpp"
 #include "proofs/two_pass_triangle.hpp"
 
-namespace gsdot3::bench {
+namespace gsdot3::tools {
 
 struct scored {
   double smooth = -1e9;  // wrap-side value in levels, real (the exact Σ n_c·L_c, no floors)
@@ -111,4 +111,4 @@ inline void print_certificate_row(const proofs::two_pass::triangle::triangle_cas
               at.px, at.py);
 }
 
-}  // namespace gsdot3::bench
+}  // namespace gsdot3::tools

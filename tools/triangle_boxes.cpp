@@ -1,9 +1,9 @@
-// proofs_triangle_boxes — certificates of two-pass.max-s.interpolated under gouraud_setup=per_pixel
+// proofs_triangle boxes — certificates of two-pass.max-s.interpolated under gouraud_setup=per_pixel
 // with gouraud_fraction=truncate_to_8 (the dobiestation profile). Not a benchmark and not a test: a
 // reproducible tool (no randomness); every row it prints is re-verified by the claim and replayed
 // through the rasteriser in tests/proofs/triangle_test.cpp.
 //
-//   proofs_triangle_boxes S [truncate_to_8] [SHARD COUNT]   (the light is truncated to 8 bits either way)
+//   proofs_triangle boxes S [SHARD COUNT]   (always gouraud_fraction=truncate_to_8)
 // Under per_pixel the pixel's light is the exact plane (within one 8.7 unit) and truncate_to_8 hands the
 // multiply its integer level m = floor: a pixel wraps when the unit box [m, m + 1)³ of a wrapping
 // integer vector m meets a triangle of three packed lights. For each Appendix 2 normal the bound
@@ -19,12 +19,13 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <memory>
 #include <vector>
 
-#include "proofs_search_args.hpp"
 #include "proofs/domains.hpp"
 #include "proofs/two_pass.hpp"
 #include "proofs/two_pass_triangle.hpp"
+#include "triangle_args.hpp"
 
 namespace p = gsdot3::proofs;
 namespace tt = gsdot3::proofs::two_pass::triangle;
@@ -74,22 +75,26 @@ tt::triangle_case place(int s, const p::paper::packed_normal& nm, const std::arr
   if (px >= 0 && py >= 0 && px + py <= 2047) k.px = px, k.py = py;
   return k;
 }
-}  // namespace
 
-int main(int argc, char** argv) {
-  auto args = gsdot3::bench::parse_search_args(argc, argv, "proofs_triangle_boxes", " [SHARD COUNT]");
-  args.o.gouraud = gs::gouraud_fraction::truncate_to_8;
-  args.o.setup = gs::gouraud_setup::per_pixel;
-  const int shard = argc > args.next ? std::atoi(argv[args.next]) : 0;
-  const int count = argc > args.next + 1 ? std::max(1, std::atoi(argv[args.next + 1])) : 1;
-  const int s = args.s;
-  const p::two_pass::table t(args.o);
+struct boxes_args {
+  gsdot3::tools::search_args search{0, true, gs::gouraud_setup::per_pixel};
+  int shard = 0, count = 1;
+};
+
+int run(const boxes_args& a) {
+  const int shard = a.shard, count = a.count;
+  const int s = a.search.s;
+  const gs::model_options o = a.search.options();
+  const p::two_pass::table t(o);
   const auto lights = p::packed_lights(s);
+  const auto& normals = p::appendix2_normals();
+  gsdot3::tools::progress progress("boxes: Appendix 2 normals", static_cast<long long>(normals.size()));
   int index = 0, open = 0, found = 0;
-  for (const auto& nm : p::appendix2_normals()) {
+  for (const auto& nm : normals) {
+    progress.at(index);
     if (index++ % count != shard) continue;
     const int e = t.alpha_error(nm);
-    if (tt::cannot_wrap(nm, e, s, args.o, lights)) continue;
+    if (tt::cannot_wrap(nm, e, s, o, lights)) continue;
     ++open;
     const int n[3] = {nm.iX, nm.iY, nm.iZ};
     const double len = std::sqrt(double(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]));
@@ -109,7 +114,7 @@ int main(int argc, char** argv) {
               const p::ivec3 m{l[0] + dx, l[1] + dy, l[2] + dz};
               if (std::abs(m[0]) > 127 || std::abs(m[1]) > 127 || std::abs(m[2]) > 127 || along(m) < best - 2 * len) continue;
               if (std::find(boxes.begin(), boxes.end(), m) != boxes.end()) continue;
-              if (wraps(p::two_pass::pixel(nm, gs::fragment_colour::flat(tt::light_colour(m)), args.o).value)) boxes.push_back(m);
+              if (wraps(p::two_pass::pixel(nm, gs::fragment_colour::flat(tt::light_colour(m)), o).value)) boxes.push_back(m);
             }
       for (const auto& m : boxes) {
         std::vector<p::ivec3> near;
@@ -123,7 +128,7 @@ int main(int argc, char** argv) {
             for (std::size_t c = b + 1; c < near.size() && !wrapped; ++c) {
               const tt::triangle_case k = place(s, nm, {near[a], near[b], near[c]}, m);
               if (k.px < 0) continue;
-              const auto r = p::two_pass::pixel(nm, tt::pixel_light(k, args.o.setup), args.o);
+              const auto r = p::two_pass::pixel(nm, tt::pixel_light(k, o.setup), o);
               if (r.dot == r.value) continue;
               wrapped = true;
               std::printf("    {%d, %d, %d, {{{%d, %d, %d}, {%d, %d, %d}, {%d, %d, %d}}}, {0, 0, 32752, 0, 0, 32752}, %d, %d},  "
@@ -140,4 +145,19 @@ int main(int argc, char** argv) {
   }
   std::printf("s = %d: %d normals of this shard open by the bound, %d with a wrap printed\n", s, open, found);
   return 0;
+}
+}  // namespace
+
+void gsdot3::tools::add_boxes_command(CLI::App& app, int& rc) {
+  auto a = std::make_shared<boxes_args>();
+  CLI::App* cmd = app.add_subcommand(
+      "boxes", "Unit boxes of wrapping integer lights under per_pixel with truncate_to_8: the certificate row at s = 124 (per_pixel)");
+  cmd->footer("Prints up to three certificate rows, one per normal, and how many normals the bound leaves open. `124`: ~4 min.");
+  cmd->add_option("S", a->search.s, "The light scale s: the vertex lights are packed lights of L_s")->required()->check(CLI::Range(1, 127));
+  cmd->add_option("SHARD", a->shard, "Run the normals with index = SHARD mod COUNT only (default 0)")->check(CLI::NonNegativeNumber);
+  cmd->add_option("COUNT", a->count, "(default 1)")->check(CLI::PositiveNumber);
+  cmd->callback([a, &rc] {
+    if (a->shard >= a->count) throw CLI::ValidationError("SHARD", "must be below COUNT");
+    rc = run(*a);
+  });
 }

@@ -1,8 +1,8 @@
-// proofs_triangle_corner — triangle certificates of two-pass.max-s.interpolated from the corner
+// proofs_triangle corner — triangle certificates of two-pass.max-s.interpolated from the corner
 // model. Not a benchmark and not a test: a reproducible tool (no randomness); every row it prints is
 // re-verified by the claim and replayed through the rasteriser in tests/proofs/triangle_test.cpp.
 //
-//   proofs_triangle_corner S [truncate_to_8] [CANDIDATES]
+//   proofs_triangle corner S [--truncate-to-8] [CANDIDATES]
 // The corner model (case (ii) of the bound in src/proofs/proofs/two_pass_triangle.hpp at its
 // extreme): X = (0, yX), Y = (xY, 0), Z = (xZ, yZ) near the window's corners, so the reference pixel
 // is r = (0, 0) and the pixel p next to Z lies ~2046 pixels from it along both axes. X and Y carry
@@ -30,24 +30,25 @@
 //      and two_pass::pixel).
 //   3. Local search: from each candidate's best geometry, a steepest ascent over the six 12.4
 //      coordinates (±1, ±2, ±4, ±8, ±16, ±64, ±256) and the three lights (±1 per channel, kept
-//      packed), on the wrap-side value plus its smooth part, as proofs_triangle_anneal scores.
+//      packed), on the wrap-side value plus its smooth part.
 // Prints the first wrapping case as a certificate row, or the best wrap-side value reached.
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <memory>
 #include <vector>
 
-#include "proofs_search_args.hpp"
-#include "proofs_triangle_score.hpp"
 #include "proofs/domains.hpp"
 #include "proofs/two_pass.hpp"
 #include "proofs/two_pass_triangle.hpp"
+#include "triangle_args.hpp"
+#include "triangle_score.hpp"
 
 namespace p = gsdot3::proofs;
 namespace tt = gsdot3::proofs::two_pass::triangle;
-using gsdot3::bench::scored;
+using gsdot3::tools::scored;
 
 namespace {
 constexpr int E = (tt::window_pixels - 1) * 16;  // 2047.0 in 12.4
@@ -177,7 +178,7 @@ std::pair<tt::triangle_case, scored> best_geometry(tt::triangle_case c, const gs
         const int first = static_cast<int>(std::floor(16 * lo)) + 1, last = std::min(static_cast<int>(std::ceil(16 * hi)) - 1, first + 7);
         for (int s16 = first; s16 <= last; ++s16) {
           c.xy16 = {0, yz - t16, xz - s16, 0, xz, yz};
-          const scored sc = gsdot3::bench::score_near_vertices(c, o, t, side, 1, 4);
+          const scored sc = gsdot3::tools::score_near_vertices(c, o, t, side, 1, 4);
           ++evaluated;
           if (total(sc) > total(best)) best = sc, best_c = c;
         }
@@ -193,7 +194,7 @@ std::pair<tt::triangle_case, scored> climb(tt::triangle_case c, scored cur, cons
     tt::triangle_case best_c = c;
     scored best = cur;
     auto consider = [&](const tt::triangle_case& q) {
-      const scored sc = gsdot3::bench::score_near_vertices(q, o, t, side, 1, 4);
+      const scored sc = gsdot3::tools::score_near_vertices(q, o, t, side, 1, 4);
       ++evaluated;
       if (total(sc) > total(best)) best = sc, best_c = q;
     };
@@ -216,17 +217,17 @@ std::pair<tt::triangle_case, scored> climb(tt::triangle_case c, scored cur, cons
   }
   return {c, cur};
 }
-}  // namespace
 
-int main(int argc, char** argv) {
-  const auto args = gsdot3::bench::parse_search_args(argc, argv, "proofs_triangle_corner", " [CANDIDATES]");
+struct corner_args {
+  gsdot3::tools::search_args search;
+  long keep = 300;
+};
+
+int run(const corner_args& a) {
+  const auto& args = a.search;
   const int s = args.s;
-  const gs::model_options o = args.o;
-  const long keep = argc > args.next ? std::atol(argv[args.next]) : 300;
-  if (keep < 1) {
-    std::fprintf(stderr, "usage: proofs_triangle_corner S [truncate_to_8] [CANDIDATES] (CANDIDATES >= 1)\n");
-    return 2;
-  }
+  const gs::model_options o = args.options();
+  const long keep = a.keep;
   const p::two_pass::table t(o);
   const auto cands = corner_candidates(s, o, t, static_cast<std::size_t>(keep));
   std::fprintf(stderr, "s = %d (%s): %zu corner candidates\n", s, args.option_name(), cands.size());
@@ -245,7 +246,7 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "candidate %zu (rank %.3f, n = (%d, %d), side %+d): geometry %d (%.3f), climbed %d (%.3f); %ld evaluated\n", i,
                      k.rank, k.iX, k.iY, k.side, gs_.value, gs_.smooth, fs.value, fs.smooth, evaluated);
         if (fs.value >= 128) {
-          gsdot3::bench::print_certificate_row(fc, fs, args.option_name());
+          gsdot3::tools::print_certificate_row(fc, fs, args.option_name());
           return 0;
         }
       }
@@ -253,4 +254,15 @@ int main(int argc, char** argv) {
   std::printf("s = %d (%s): no wrap found (%zu candidates, %ld cases evaluated, best wrap-side value %d, smooth %.3f)\n", s,
               args.option_name(), cands.size(), evaluated, overall.value, overall.smooth);
   return 1;
+}
+}  // namespace
+
+void gsdot3::tools::add_corner_command(CLI::App& app, int& rc) {
+  auto a = std::make_shared<corner_args>();
+  CLI::App* cmd = app.add_subcommand("corner", "The corner model: the certificate rows at s = 89 (one per option)");
+  cmd->footer("Prints the first wrapping case as a certificate row (exit status 0), or the best value reached (1); "
+              "a line per candidate on stderr. Minutes.");
+  add_search_args(*cmd, a->search);
+  cmd->add_option("CANDIDATES", a->keep, "How many of the best-ranked lattice candidates to try (default 300)")->check(CLI::PositiveNumber);
+  cmd->callback([a, &rc] { rc = run(*a); });
 }
