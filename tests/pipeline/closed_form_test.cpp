@@ -8,6 +8,7 @@
 #include <random>
 
 #include "pipeline/encoders.hpp"
+#include "pipeline/render.hpp"
 #include "test_scenes.hpp"
 
 namespace gsdot3::pipeline {

@@ -9,6 +9,7 @@
 
 #include "pipeline/quality_claims.hpp"
 #include "pipeline/report.hpp"
+#include "pipeline/render.hpp"
 
 namespace gsdot3::pipeline {
 namespace {

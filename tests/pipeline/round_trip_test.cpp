@@ -21,6 +21,7 @@
 #include "gs_packets/interpreter.hpp"
 #include "pipeline/default_scene.hpp"
 #include "pipeline/frame_packets.hpp"
+#include "pipeline/render.hpp"
 
 namespace gsdot3::pipeline {
 namespace {

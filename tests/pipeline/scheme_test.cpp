@@ -12,6 +12,7 @@
 #include "pipeline/pixel_walk.hpp"
 #include "pipeline/report.hpp"
 #include "pipeline/scheme_method.hpp"
+#include "pipeline/render.hpp"
 #include "test_scenes.hpp"
 #include "common/temp_dir.hpp"
 

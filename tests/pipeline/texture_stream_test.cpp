@@ -23,6 +23,7 @@
 #include "pipeline/frame_packets.hpp"
 #include "pipeline/gs_inputs.hpp"
 #include "pipeline/normal_map_image.hpp"
+#include "pipeline/render.hpp"
 
 namespace gsdot3::pipeline {
 namespace {

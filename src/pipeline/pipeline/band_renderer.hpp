@@ -19,7 +19,7 @@
 #include "pipeline/gs_pass.hpp"
 #include "pipeline/pass_table.hpp"
 #include "pipeline/prepare.hpp"
-#include "pipeline/render.hpp"
+#include "pipeline/method.hpp"
 #include "pipeline/texture_stream.hpp"
 #include "pipeline/span_batch.hpp"
 

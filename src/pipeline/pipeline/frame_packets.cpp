@@ -277,11 +277,8 @@ frame_packets build_frame_packets(const scene& s, const prepared_scene& ps, meth
     }
     g.clip(g.frame());
   };
-  auto nm_pass = [&](const pass_regs& p, int palette, auto&& colour) {
-    textured(p, DPB, in.cbp[static_cast<std::size_t>(palette)], nm_stream, in.nm_at, colour, nm_uv);
-  };
   auto white_vertex = [](const prepared_triangle&, int) { return white; };
-  enum { pos, neg, axis_x, axis_y, axis_z, ilp, grey, alpha_index };
+  auto cbp = [&](clut_slot c) { return in.cbp[static_cast<std::size_t>(c)]; };
   for (std::size_t l = 0; l < s.lights.size(); ++l) {
     const std::vector<light_vertex>& lv = ps.lights[l];
     auto at = [&](const prepared_triangle& t, int k) -> const light_vertex& { return lv[t.vertex[static_cast<std::size_t>(k)]]; };
@@ -292,43 +289,31 @@ frame_packets build_frame_packets(const scene& s, const prepared_scene& ps, meth
     g.area_sprite(step1_ambient, gs::rgba8::from_u32(clear_dpb));
     g.clip(g.frame());
     g.depth(depth_gequal, z_masked);
-    auto draw = [&](const pass_regs& p, auto&& colour, auto&& uv) {
-      g.target(DPB, p);
-      g.triangles(p, true, colour, uv);
-    };
-    switch (m) {
-      case method::two_pass: {
-        auto c = [&](const prepared_triangle& t, int k) { return two_pass_colour(at(t, k), o.s); };
-        nm_pass(two_pass_positive, pos, c);
-        nm_pass(two_pass_negative, neg, c);
-        // 2.4a: the DPB read as PSMT8H through the grey CLUT, 1:1.
-        g.clip(area);
-        g.depth(depth_always, z_masked);
-        g.texflush();
-        gs::mem::buffer t8h = b.colour(DPB);
-        t8h.PSM = gs::mem::psm::PSMT8H;
-        g.texture(two_pass_add_alpha, t8h, ps.width, ps.height, in.cbp[grey], false, false);
-        g.target(DPB, two_pass_add_alpha);
-        g.area_sprite(two_pass_add_alpha, white);
-        break;
-      }
-      case method::four_pass: {
-        g.texture(four_pass_sphere, in.sphere_at, 64, 64, std::nullopt, true, false);
-        draw(four_pass_sphere, [&](const prepared_triangle& t, int k) { return four_pass_sphere_colour(at(t, k)); },
-             [&](const prepared_triangle& t, int k) { return sphere_uv(at(t, k)); });
-        const pass_regs* axis[3] = {&four_pass_x, &four_pass_y, &four_pass_z};
-        for (int a = 0; a < 3; ++a) nm_pass(*axis[a], axis_x + a, white_vertex);
-        break;
-      }
-      case method::baseline: {
-        auto side = [&](bool negative) {
-          return [&, negative](const prepared_triangle& t, int k) { return baseline_colour(at(t, k), negative); };
-        };
-        nm_pass(baseline_add, pos, side(false));       // NM_pos·TL_pos
-        nm_pass(baseline_add, neg, side(true));        // NM_neg·TL_neg
-        nm_pass(baseline_subtract, neg, side(false));  // −NM_neg·TL_pos
-        nm_pass(baseline_subtract, pos, side(true));   // −NM_pos·TL_neg
-        break;
+    // 2.3 (and two-pass's 2.4a): the method's light passes, pass_table.hpp's list in draw order.
+    for (const light_pass& p : describe(m).light) {
+      const pass_regs& regs = *p.regs;
+      const std::uint32_t cbp = in.cbp[static_cast<std::size_t>(p.clut)];
+      auto colour = [&](const prepared_triangle& t, int k) { return vertex_rgbaq(p.colour, at(t, k), o.s); };
+      switch (p.source) {
+        case pass_source::normal_map:
+          textured(regs, DPB, cbp, nm_stream, in.nm_at, colour, nm_uv);
+          break;
+        case pass_source::sphere_map:
+          g.texture(regs, in.sphere_at, 64, 64, std::nullopt, true, false);
+          g.target(DPB, regs);
+          g.triangles(regs, true, colour, [&](const prepared_triangle& t, int k) { return vertex_uv(p.source, t, k, lv); });
+          break;
+        case pass_source::dpb_alpha: {  // the DPB read as PSMT8H through the palette, 1:1
+          g.clip(area);
+          g.depth(depth_always, z_masked);
+          g.texflush();
+          gs::mem::buffer t8h = b.colour(DPB);
+          t8h.PSM = gs::mem::psm::PSMT8H;
+          g.texture(regs, t8h, ps.width, ps.height, cbp, false, false);
+          g.target(DPB, regs);
+          g.area_sprite(regs, white);
+          break;
+        }
       }
     }
     // 2.4: R += G, R += B; 2.5, 2.6: ILP[sum] × light colour added into the LAB.
@@ -337,12 +322,12 @@ frame_packets build_frame_packets(const scene& s, const prepared_scene& ps, meth
     g.target(DPB, post_add_into_red);
     for (unsigned c : {1u, 2u}) {
       g.texflush();
-      g.channel_pass(post_add_into_red, white, in.cbp[grey], c, DPB);
+      g.channel_pass(post_add_into_red, white, cbp(clut_slot::grey), c, DPB);
     }
     const auto& lc = s.lights[l].colour;
     g.texflush();
     g.target(LAB, ilp_into_lab);
-    g.channel_pass(ilp_into_lab, rgb(lc[0], lc[1], lc[2], 0x80), in.cbp[ilp], 0, DPB);
+    g.channel_pass(ilp_into_lab, rgb(lc[0], lc[1], lc[2], 0x80), cbp(clut_slot::ilp), 0, DPB);
   }
 
   // Step 3: the DPB cleared to zero over the sprite area and the diffuse layer drawn into it.
@@ -363,7 +348,7 @@ frame_packets build_frame_packets(const scene& s, const prepared_scene& ps, meth
   for (unsigned c = 0; c < 3; ++c) {
     g.texflush();
     g.target(OUT, move_into_alpha);
-    g.channel_pass(move_into_alpha, white, in.cbp[alpha_index], c, LAB);
+    g.channel_pass(move_into_alpha, white, cbp(clut_slot::alpha_index), c, LAB);
     g.texflush();
     g.texture(*multiply[c], b.colour(DPB), ps.width, ps.height, std::nullopt, false, false);
     g.target(OUT, *multiply[c]);

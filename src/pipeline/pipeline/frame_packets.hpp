@@ -40,7 +40,7 @@
 #include "gs_packets/video_mode.hpp"
 #include "pipeline/gs_inputs.hpp"
 #include "pipeline/prepare.hpp"
-#include "pipeline/render.hpp"
+#include "pipeline/method.hpp"
 #include "pipeline/scene.hpp"
 
 namespace gsdot3::pipeline {

@@ -12,6 +12,7 @@
 #include "gs_packets/gs_registers.hpp"
 #include "gs_packets/interpreter.hpp"
 #include "pipeline/encoders.hpp"
+#include "pipeline/pass_table.hpp"
 
 namespace gsdot3::pipeline {
 
@@ -65,20 +66,21 @@ gs_inputs make_inputs(const scene& s, method m, const render_options& o) {
   in.ilp = intensity_palette(o.specular_power);
   in.grey = identity_palette();
   in.alpha_index = index_in_alpha();
-  switch (m) {
-    case method::two_pass:
+  switch (passes::describe(m).palettes) {
+    case passes::palette_kind::two_pass:
       in.pos = two_pass_palette(s.normals.palette, false);
       in.neg = two_pass_palette(s.normals.palette, true);
       break;
-    case method::four_pass:
-      for (int a = 0; a < 3; ++a) in.axis[a] = reordered_palette(s.normals.palette, a);
-      in.sphere = sphere_map(64, 64);
-      break;
-    case method::baseline:
+    case passes::palette_kind::signed_side:
       in.pos = signed_side_palette(s.normals.palette, false);
       in.neg = signed_side_palette(s.normals.palette, true);
       break;
+    case passes::palette_kind::reordered_axes:
+      for (int a = 0; a < 3; ++a) in.axis[a] = reordered_palette(s.normals.palette, a);
+      break;
   }
+  for (const passes::light_pass& p : passes::describe(m).light)
+    if (p.source == passes::pass_source::sphere_map) in.sphere = sphere_map(64, 64);
   return in;
 }
 

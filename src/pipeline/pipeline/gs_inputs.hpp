@@ -17,7 +17,8 @@
 #include "gs_memory/memory_registers.hpp"
 #include "gs_packets/builder.hpp"
 #include "pipeline/raster.hpp"
-#include "pipeline/render.hpp"
+#include "pipeline/method.hpp"
+#include "pipeline/prepare.hpp"
 #include "pipeline/scene.hpp"
 #include "pipeline/texture_stream.hpp"
 
@@ -83,7 +84,8 @@ struct gs_inputs {
   std::shared_ptr<texture_streamer> stream;
 };
 
-// The eight palettes in upload order: pos, neg, axis x, y, z, ilp, grey, alpha_index.
+// The eight palettes in upload order (clut_slot: the index into palettes() and gs_inputs::cbp).
+enum class clut_slot : std::uint8_t { pos, neg, axis_x, axis_y, axis_z, ilp, grey, alpha_index };
 std::array<gs::clut_buffer*, 8> palettes(gs_inputs& in);
 std::array<const gs::clut_buffer*, 8> palettes(const gs_inputs& in);
 

@@ -8,7 +8,7 @@
 
 #include "gs_memory/format.hpp"
 #include "pipeline/files.hpp"
-#include "pipeline/render.hpp"
+#include "pipeline/method.hpp"
 
 namespace gsdot3::pipeline {
 

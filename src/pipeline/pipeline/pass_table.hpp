@@ -1,19 +1,26 @@
 // pipeline/pass_table.hpp — the one description of the methods' passes: the register set of every
-// pass (pass_regs, context 1), the clear values and write masks, and the per-vertex colour and
-// texture coordinates each triangle pass sends. render.cpp draws with them directly; frame_packets.cpp
-// writes the same values as GIF packets (TEX0_1.TFX/TCC, PRIM.TME/ABE, ALPHA_1, COLCLAMP,
-// FRAME_1.FBMSK; RGBAQ, UV per vertex), so the two cannot disagree on a pass.
+// pass (pass_regs, context 1), the clear values and write masks, the per-vertex colour and texture
+// coordinates each triangle pass sends, and each method as data: its light passes in draw order
+// (method_passes, at the end). render.cpp interprets that list on the value and the memory path,
+// frame_packets.cpp writes the same list as GIF packets (TEX0_1.TFX/TCC, PRIM.TME/ABE, ALPHA_1,
+// COLCLAMP, FRAME_1.FBMSK; RGBAQ, UV per vertex) and gs_inputs.cpp builds the palettes it names,
+// so none of them can disagree on a pass.
 #pragma once
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <span>
+#include <stdexcept>
+#include <string_view>
 
 #include "gs_arith/colour.hpp"
 #include "gs_arith/depth_test.hpp"
 #include "pipeline/encoders.hpp"
+#include "pipeline/gs_inputs.hpp"
 #include "pipeline/gs_pass.hpp"
+#include "pipeline/method.hpp"
 #include "pipeline/prepare.hpp"
 
 namespace gsdot3::pipeline::passes {
@@ -91,6 +98,92 @@ inline std::array<std::int32_t, 2> normal_map_uv(const prepared_triangle& t, int
 inline std::array<std::int32_t, 2> sphere_uv(const light_vertex& l) {
   const st c = sphere_coordinates(l.T);
   return {static_cast<std::int32_t>(std::lround(c.s * 64 * 16)), static_cast<std::int32_t>(std::lround(c.t * 64 * 16))};
+}
+
+// ---- The methods as data ----------------------------------------------------------------------
+// What a light pass samples: the normal map through palette `clut`; the 64×64 sphere map of the
+// vertex tolight vectors (four-pass, section 3.6); or the DPB's own alpha byte read as PSMT8H through
+// palette `clut`, one sprite over the sprite area (two-pass step 2.4a, section 3.5).
+enum class pass_source : std::uint8_t { normal_map, sphere_map, dpb_alpha };
+// What a triangle pass sends per vertex as RGBAQ (the functions above).
+enum class vertex_colour : std::uint8_t { tolight, sphere_fade, white, tl_pos, tl_neg };
+// One pass of step 2.3 (or its post pass 2.4a), drawn per light into the DPB.
+struct light_pass {
+  const pass_regs* regs;
+  pass_source source;
+  clut_slot clut;          // normal_map, dpb_alpha
+  vertex_colour colour;    // triangle passes
+  std::string_view label;  // the trace's (pass_record::label): the paper's step and what it does
+};
+// How the palettes of the normal map's 256 normals are built (gs_inputs.cpp's make_inputs): the
+// two-pass Max(±n, 0) pair (slots pos, neg), the 2002 method's signed sides (pos, neg), or the
+// four-pass per-axis reordered palettes (axis_x .. axis_z).
+enum class palette_kind : std::uint8_t { two_pass, signed_side, reordered_axes };
+// A method: its palettes and its light passes in draw order. Steps 1, 2.1, 2.4 (R += G, R += B),
+// 2.5/2.6 (the ILP into the LAB), 3 and 4 are the same for every method (section 3.1).
+template <std::size_t N>
+struct method_passes {
+  method m;
+  palette_kind palettes;
+  std::array<light_pass, N> light;
+};
+
+// Two-pass (section 3.5): Max(n, 0)·l − Max(−n, 0)·l, then n'_a added into R, G and B.
+inline constexpr method_passes<3> two_pass_method{method::two_pass, palette_kind::two_pass, {{
+    {&two_pass_positive, pass_source::normal_map, clut_slot::pos, vertex_colour::tolight, "2.3 Max(n,0)·l (MODULATE)"},
+    {&two_pass_negative, pass_source::normal_map, clut_slot::neg, vertex_colour::tolight, "2.3 − Max(−n,0)·l (MODULATE, Cd − Cs)"},
+    {&two_pass_add_alpha, pass_source::dpb_alpha, clut_slot::grey, vertex_colour::white, "2.4a + n'a (PSMT8H of the DPB alpha)"},
+}}};
+// Four-pass (section 3.6): the sphere map · fade, then (Cs − Cd)·As + Cd per axis into R, G, B.
+inline constexpr method_passes<4> four_pass_method{method::four_pass, palette_kind::reordered_axes, {{
+    {&four_pass_sphere, pass_source::sphere_map, clut_slot::pos /* unused */, vertex_colour::sphere_fade,
+     "2.3 sphere map · fade (HIGHLIGHT)"},
+    {&four_pass_x, pass_source::normal_map, clut_slot::axis_x, vertex_colour::white, "2.3 R: x multiply (Cs − Cd)·As + Cd"},
+    {&four_pass_y, pass_source::normal_map, clut_slot::axis_y, vertex_colour::white, "2.3 G: y multiply (Cs − Cd)·As + Cd"},
+    {&four_pass_z, pass_source::normal_map, clut_slot::axis_z, vertex_colour::white, "2.3 B: z multiply (Cs − Cd)·As + Cd"},
+}}};
+// The 2002 method (section 2): NM_pos·TL_pos + NM_neg·TL_neg − NM_neg·TL_pos − NM_pos·TL_neg.
+inline constexpr method_passes<4> baseline_method{method::baseline, palette_kind::signed_side, {{
+    {&baseline_add, pass_source::normal_map, clut_slot::pos, vertex_colour::tl_pos, "2.3 + NM_pos·TL_pos"},
+    {&baseline_add, pass_source::normal_map, clut_slot::neg, vertex_colour::tl_neg, "2.3 + NM_neg·TL_neg"},
+    {&baseline_subtract, pass_source::normal_map, clut_slot::neg, vertex_colour::tl_pos, "2.3 − NM_neg·TL_pos"},
+    {&baseline_subtract, pass_source::normal_map, clut_slot::pos, vertex_colour::tl_neg, "2.3 − NM_pos·TL_neg"},
+}}};
+
+// f.template operator()<D>() with D the method's method_passes (a constant, so a renderer can
+// instantiate its pixel loops per pass register set); the only switch over the GS methods.
+template <class F>
+decltype(auto) with_method(method m, F&& f) {
+  switch (m) {
+    case method::two_pass: return f.template operator()<two_pass_method>();
+    case method::four_pass: return f.template operator()<four_pass_method>();
+    case method::baseline: return f.template operator()<baseline_method>();
+  }
+  throw std::invalid_argument("unknown GS method");
+}
+struct method_view {
+  palette_kind palettes;
+  std::span<const light_pass> light;
+};
+inline method_view describe(method m) {
+  return with_method(m, []<const auto& D>() { return method_view{D.palettes, D.light}; });
+}
+
+// A light pass's vertex colour and texture coordinates at corner k of triangle t (lv: the light's
+// per-vertex data, s: the two-pass tolight scale).
+inline gs::rgba8 vertex_rgbaq(vertex_colour c, const light_vertex& l, int s) {
+  switch (c) {
+    case vertex_colour::tolight: return two_pass_colour(l, s);
+    case vertex_colour::sphere_fade: return four_pass_sphere_colour(l);
+    case vertex_colour::white: return white;
+    case vertex_colour::tl_pos: return baseline_colour(l, false);
+    case vertex_colour::tl_neg: return baseline_colour(l, true);
+  }
+  return white;
+}
+inline std::array<std::int32_t, 2> vertex_uv(pass_source src, const prepared_triangle& t, int k,
+                                             const std::vector<light_vertex>& lv) {
+  return src == pass_source::sphere_map ? sphere_uv(lv[t.vertex[static_cast<std::size_t>(k)]]) : normal_map_uv(t, k);
 }
 
 }  // namespace gsdot3::pipeline::passes

@@ -7,6 +7,7 @@
 
 #include "pipeline/default_scene.hpp"
 #include "pipeline/prepare.hpp"
+#include "pipeline/render.hpp"
 
 namespace gsdot3::pipeline {
 

@@ -11,7 +11,7 @@
 
 #include "pipeline/prepare.hpp"
 #include "pipeline/reference.hpp"
-#include "pipeline/render.hpp"
+#include "pipeline/method.hpp"
 #include "pipeline/scene.hpp"
 
 namespace gsdot3::pipeline {

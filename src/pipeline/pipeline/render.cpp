@@ -40,15 +40,13 @@
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <thread>
+#include <utility>
 
-#include "gs_memory/address.hpp"
-#include "gs_memory/channel_fetch.hpp"
 #include "gs_memory/local_memory.hpp"
-#include "gs_memory/texture_buffer.hpp"
-#include "gs_memory/texture_wrap.hpp"
-#include "gs_memory/transfer.hpp"
 #include "pipeline/band_renderer.hpp"
+#include "pipeline/channel_pass.hpp"
 #include "pipeline/encoders.hpp"
 #include "pipeline/gs_inputs.hpp"
 #include "pipeline/gs_pass.hpp"
@@ -56,142 +54,10 @@
 
 namespace gsdot3::pipeline {
 
-std::string_view name(method m) {
-  switch (m) {
-    case method::two_pass: return "two-pass";
-    case method::four_pass: return "four-pass";
-    case method::baseline: return "baseline";
-  }
-  return "?";
-}
-
-std::string_view name(dpb_clear_mode m) {
-  switch (m) {
-    case dpb_clear_mode::explicit_clear: return "explicit";
-    case dpb_clear_mode::z_trick: return "z-trick";
-    case dpb_clear_mode::z_trick_psmz32: return "z-trick-psmz32";
-  }
-  return "?";
-}
-
 namespace {
 
 using namespace detail;
 using namespace passes;
-
-gs::u8 byte(int v) { return gs::u8::from_wrapped(v); }
-
-template <class FB>
-struct frame_buffers {
-  std::vector<std::uint32_t> z;  // the value path's Z buffer storage (zb's rows)
-  z_view zb;
-  FB lab, dpb, diff, out;
-  gs::mem::local_memory* memory = nullptr;  // the memory path's local memory, else null
-  buffer_layout layout;                     // the memory path's buffers (gs_inputs.hpp)
-  const gs::mem::texel_addresses* page_as_t8 = nullptr;  // the memory path: a page of the DPB / LAB as PSMT8 (BP 0)
-  dpb_clear_mode clear = dpb_clear_mode::explicit_clear;
-};
-
-// zsigma(x, y): the pixel of the same page whose PSMZ32 address is PSMCT32 pixel (x, y)'s, from
-// gs_memory's two layouts (the four 32×16 quarters of the page swapped along the diagonals).
-std::array<int, 2> zsigma(int x, int y) {
-  static const std::array<std::uint16_t, 2048> table = [] {
-    std::array<std::uint16_t, 2048> ct_at_word{}, sigma{};
-    const gs::mem::buffer ct{{}, fixed::uint<6>::from_wrapped(1), gs::mem::psm::PSMCT32};
-    const gs::mem::buffer z{{}, fixed::uint<6>::from_wrapped(1), gs::mem::psm::PSMZ32};
-    for (std::uint32_t p = 0; p < 2048; ++p) ct_at_word[gs::mem::locate(ct, p % 64, p / 64).byte / 4] = static_cast<std::uint16_t>(p);
-    for (std::uint32_t q = 0; q < 2048; ++q) sigma[ct_at_word[gs::mem::locate(z, q % 64, q / 64).byte / 4]] = static_cast<std::uint16_t>(q);
-    return sigma;
-  }();
-  const int s = table[static_cast<std::size_t>((y & 31) * 64 + (x & 63))];
-  return {(x & ~63) + s % 64, (y & ~31) + s / 64};
-}
-constexpr bool in_memory(const row_view&) { return false; }
-constexpr bool in_memory(const memory_view&) { return true; }
-
-// A sprite pass whose texel is byte `channel` of each pixel of `src` through `clut`, into `dst`.
-// Value level: the byte of the same pixel's word. Memory path: gs_memory's channel-fetch sprites
-// (8×2 tiles per page, the page read as PSMT8 with TBP0 = its base, TBW = 2·FBW, TW = 7, TH = 6).
-template <const pass_regs& Pass>
-void channel_pass(band_renderer& r, const frame_buffers<row_view>&, gs::rgba8 colour, const gs::clut_buffer& clut,
-                  unsigned channel, const row_view& src, const row_view& dst) {
-  r.sprite<Pass>(colour, [&](int x, int y) { return gs::clut_t8(clut, byte(static_cast<int>(src(x, y) >> (8 * channel)))); }, dst);
-}
-// The memory path. A source drawn in PSMZ32 (src.z) has logical pixel L in the word of PSMCT32
-// pixel zsigma(L): the tile that fetches PSMCT32 pixel M is drawn at zsigma(M) (the sprites' XYZ
-// in the Z layout). z_clear: the ILP pass of the z-trick modes, also writing Z = 0x00808080 into the
-// DPB as PSMZ24 at every fragment (after its texel fetch). In the z-trick modes the texel fetches
-// go through gs_memory's texture_page_buffer model (model option texture_buffer).
-template <const pass_regs& Pass>
-void channel_pass(band_renderer& r, const frame_buffers<memory_view>& fb, gs::rgba8 colour, const gs::clut_buffer& clut,
-                  unsigned channel, const memory_view& src, const memory_view& dst, bool z_clear = false,
-                  gs::texture_buffer tb = gs::texture_buffer::per_fragment) {
-  static constexpr gs::mem::channel_fetch layout[4] = {gs::mem::channel_fetch_sprites(0), gs::mem::channel_fetch_sprites(1),
-                                                       gs::mem::channel_fetch_sprites(2), gs::mem::channel_fetch_sprites(3)};
-  const gs::mem::channel_fetch& f = layout[channel];
-  gs::mem::local_memory& mem = *fb.memory;
-  const gs::mem::buffer zbuf{fixed::uint<14>::from_wrapped(fb.dpb.bp), fixed::uint<6>::from_wrapped(fb.dpb.bw), gs::mem::psm::PSMZ24};
-  const bool buffered = fb.clear != dpb_clear_mode::explicit_clear;
-  const scissor& a = r.sprite_area();
-  // With the Z clear the ILP sprites cover every page the area touches (the paper's per-page
-  // primitives, section 3.3), so that the Z writes clear whole pages.
-  const scissor pages{a.x0 & ~63, a.y0 & ~31, (a.x1 + 63) & ~63, (a.y1 + 31) & ~31};
-  r.scalar_sprites = true;  // the texel fetches read the memory the sprites write (span_batch.hpp)
-  // The byte of the page (at TBP0 = 0) each sprite pixel fetches, through CLAMP_1 and the PSMT8
-  // address: sprite k's pixel (dx, dy) at 16·k + 8·dy + dx. The sprites and their texels are the
-  // same on every page, which only moves TBP0 (texel_addresses::byte adds it).
-  static_assert([] {
-    for (const gs::mem::channel_fetch& c : layout)
-      for (const gs::mem::fetch_sprite& sp : c.sprites)
-        if (sp.x1 - sp.x0 != 8 || sp.y1 - sp.y0 != 2) return false;
-    return true;
-  }());
-  std::array<std::uint32_t, 16 * 128> fetched{};
-  for (std::size_t k = 0; k < f.sprites.size(); ++k)
-    for (std::int32_t dy = 0; dy < 2; ++dy)
-      for (std::int32_t dx = 0; dx < 8; ++dx) {
-        const gs::mem::fetch_sprite& sp = f.sprites[k];
-        const auto u = gs::mem::wrap_texel(f.CLAMP.WMS, sp.u0 + dx, fixed::u4::literal(7), f.CLAMP.MINU, f.CLAMP.MAXU);
-        const auto v = gs::mem::wrap_texel(f.CLAMP.WMT, sp.v0 + dy, fixed::u4::literal(6), f.CLAMP.MINV, f.CLAMP.MAXV);
-        fetched[16 * k + static_cast<std::size_t>(8 * dy + dx)] = fb.page_as_t8->byte(u, v, 0);
-      }
-  for (int py = a.y0 / 32; py * 32 < a.y1; ++py)
-    for (int px = a.x0 / 64; px * 64 < a.x1; ++px) {
-      const std::uint32_t page = static_cast<std::uint32_t>(px) + static_cast<std::uint32_t>(py) * src.bw;
-      const gs::mem::buffer tex{fixed::uint<14>::from_wrapped(src.bp + 32 * page), fixed::uint<6>::from_wrapped(2 * src.bw),
-                                gs::mem::psm::PSMT8};
-      gs::mem::texture_page_buffer texels(buffered ? tb : gs::texture_buffer::per_fragment, mem, (src.bp + 32 * page) * 256,
-                                          gs::mem::page_bytes);
-      for (std::size_t k = 0; k < f.sprites.size(); ++k) {
-        const gs::mem::fetch_sprite& sp = f.sprites[k];
-        const std::uint32_t* sprite_texels = &fetched[16 * k];
-        const int mx = px * 64 + static_cast<int>(sp.x0), my = py * 32 + static_cast<int>(sp.y0);  // PSMCT32 pixel fetched
-        const std::array<int, 2> drawn = src.z ? zsigma(mx, my) : std::array<int, 2>{mx, my};   // where it is drawn
-        const int x0 = drawn[0], y0 = drawn[1];  // plain ints: clang 14 cannot capture structured bindings
-        const int w = static_cast<int>(sp.x1 - sp.x0), h = static_cast<int>(sp.y1 - sp.y0);
-        r.sprite_rect<Pass>(colour, {x0, y0, x0 + w, y0 + h},
-                            [&](int x, int y) {
-                              const std::uint32_t at = sprite_texels[8 * (y - y0) + (x - x0)] + tex.BP.value() * gs::mem::block_bytes;
-                              const std::uint8_t index = texels.fetch(at % gs::mem::memory_bytes);
-                              if (z_clear) {  // ZBUF = the DPB (PSMZ24), Z = 0x00808080, ZTST = ALWAYS
-                                const auto zx = static_cast<std::uint32_t>(x), zy = static_cast<std::uint32_t>(y);
-                                const gs::depth_result d = gs::depth_test(passes::depth_always, passes::z_written, clear_dpb, mem.read_pixel(zbuf, zx, zy));
-                                if (d.write_z) mem.write_pixel(zbuf, zx, zy, d.z);
-                              }
-                              return gs::clut_t8(clut, gs::u8::from_wrapped(index));
-                            },
-                            dst, z_clear ? &pages : nullptr);
-      }
-    }
-  r.scalar_sprites = false;
-}
-
-// The memory path's copy of the LAB into the output over `area` (before step 4): gs_inputs.hpp's
-// lab_to_output, the transfer the packet stream writes, run through gs_memory's local_to_local.
-void copy_lab(const frame_buffers<memory_view>& fb, const scissor& area) {
-  if (const std::optional<lab_copy> c = lab_to_output(fb.layout, area, fb.lab.z))
-    gs::mem::local_to_local(*fb.memory, c->BITBLTBUF, c->TRXPOS, c->TRXREG, lab_copy::TRXDIR);
-}
 
 template <class FB>
 std::size_t render_band(const scene& s, const prepared_scene& ps, method m, const render_options& o, const gs_inputs& in,
@@ -204,7 +70,7 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
     pending = {{}, -1, {}, {}, std::vector<std::uint32_t>(frame_pixels), std::vector<std::uint16_t>(4 * frame_pixels),
                std::vector<std::uint8_t>(frame_pixels)};
   };
-  auto note = [&](const char* label, int light, const char* target, const FB& buffer) {
+  auto note = [&](std::string_view label, int light, const char* target, const FB& buffer) {
     if (o.trace == nullptr) return;
     pending.label = label, pending.light = light, pending.target = target;
     pending.word.resize(frame_pixels);
@@ -223,6 +89,8 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
   };
   auto flat_white = [&](std::uint32_t) { return white; };
   const stream_texture nm_stream = normal_map_stream(in), diffuse_texels = diffuse_stream(in);
+  const texture_ref sphere{64, 64, nullptr, nullptr, in.sphere.data(), true, gs::bilinear_mode::nearest, in.memory, in.sphere_at,
+                           in.sphere_texels.get()};
 
   for (std::size_t l = 0; l < s.lights.size(); ++l) {
     const std::vector<light_vertex>& lv = ps.lights[l];
@@ -235,68 +103,34 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
     }
     const int li = static_cast<int>(l);
     note("2.1 clear 0x00808080", li, "DPB", fb.dpb);
-    switch (m) {
-      case method::two_pass: {
-        const auto attr = attributes(ps, o.model.setup, [&](std::uint32_t v) { return two_pass_colour(lv[v], o.s); }, normal_map_uv);
-        const texture_ref pos = nm_texture(in.pos), neg = nm_texture(in.neg);
-        draw_textured<two_pass_positive>(r, fb.memory, in.stream.get(), nm_stream, pos, attr, fb.dpb);
-        note("2.3 Max(n,0)·l (MODULATE)", li, "DPB", fb.dpb);
-        draw_textured<two_pass_negative>(r, fb.memory, in.stream.get(), nm_stream, neg, attr, fb.dpb);
-        note("2.3 − Max(−n,0)·l (MODULATE, Cd − Cs)", li, "DPB", fb.dpb);
-        // 2.4a: n'_a into R, G and B: the DPB read as PSMT8H (its own alpha byte) through a grey CLUT.
-        if constexpr (in_memory(FB{})) {
-          const gs::mem::buffer t8h{fixed::uint<14>::from_wrapped(fb.dpb.bp), fixed::uint<6>::from_wrapped(fb.dpb.bw),
-                                    gs::mem::psm::PSMT8H};
-          r.sprite<two_pass_add_alpha>(
-              white,
-              [&](int x, int y) {
-                const auto [tx, ty] = fb.dpb.z ? zsigma(x, y) : std::array<int, 2>{x, y};  // the word of logical (x, y)
-                return gs::clut_t8(in.grey, gs::u8::from_wrapped(fb.memory->read_pixel(t8h, static_cast<std::uint32_t>(tx),
-                                                                                         static_cast<std::uint32_t>(ty))));
-              },
-              fb.dpb);
-        } else {
-          r.sprite<two_pass_add_alpha>(white, [&](int x, int y) { return gs::clut_t8(in.grey, gs::t8h_index(fb.dpb(x, y))); },
-                                       fb.dpb);
-        }
-        note("2.4a + n'a (PSMT8H of the DPB alpha)", li, "DPB", fb.dpb);
-        break;
+    // 2.3 (and two-pass's 2.4a): the method's light passes, pass_table.hpp's list in draw order, each
+    // instantiated for its register set. Passes with the same vertex colours and texture coordinates
+    // share their attribute set-up.
+    std::array<std::vector<tri_attr>, 10> attr;
+    auto attributes_of = [&](const light_pass& p) -> const std::vector<tri_attr>& {
+      std::vector<tri_attr>& a = attr[2 * static_cast<std::size_t>(p.colour) + (p.source == pass_source::sphere_map)];
+      if (a.empty() && !ps.triangles.empty())
+        a = attributes(
+            ps, o.model.setup, [&](std::uint32_t v) { return vertex_rgbaq(p.colour, lv[v], o.s); },
+            [&](const prepared_triangle& t, int k) { return vertex_uv(p.source, t, k, lv); });
+      return a;
+    };
+    auto draw_pass = [&]<const pass_regs& Regs, pass_source Source>(const light_pass& p) {
+      if constexpr (Source == pass_source::normal_map) {
+        draw_textured<Regs>(r, fb.memory, in.stream.get(), nm_stream, nm_texture(*palettes(in)[static_cast<std::size_t>(p.clut)]),
+                            attributes_of(p), fb.dpb);
+      } else if constexpr (Source == pass_source::sphere_map) {
+        r.draw<Regs>(&sphere, attributes_of(p), fb.dpb);
+      } else {
+        alpha_into_rgb<Regs>(r, fb, *palettes(in)[static_cast<std::size_t>(p.clut)]);
       }
-      case method::four_pass: {
-        const auto pass1 = attributes(
-            ps, o.model.setup, [&](std::uint32_t v) { return four_pass_sphere_colour(lv[v]); },
-            [&](const prepared_triangle& t, int k) { return sphere_uv(lv[t.vertex[static_cast<std::size_t>(k)]]); });
-        const texture_ref sphere{64, 64, nullptr, nullptr, in.sphere.data(), true, gs::bilinear_mode::nearest, in.memory, in.sphere_at,
-                                 in.sphere_texels.get()};
-        r.draw<four_pass_sphere>(&sphere, pass1, fb.dpb);
-        note("2.3 sphere map · fade (HIGHLIGHT)", li, "DPB", fb.dpb);
-        const auto attr = attributes(ps, o.model.setup, flat_white, normal_map_uv);
-        const texture_ref x = nm_texture(in.axis[0]), y = nm_texture(in.axis[1]), z = nm_texture(in.axis[2]);
-        draw_textured<four_pass_x>(r, fb.memory, in.stream.get(), nm_stream, x, attr, fb.dpb);
-        note("2.3 R: x multiply (Cs − Cd)·As + Cd", li, "DPB", fb.dpb);
-        draw_textured<four_pass_y>(r, fb.memory, in.stream.get(), nm_stream, y, attr, fb.dpb);
-        note("2.3 G: y multiply (Cs − Cd)·As + Cd", li, "DPB", fb.dpb);
-        draw_textured<four_pass_z>(r, fb.memory, in.stream.get(), nm_stream, z, attr, fb.dpb);
-        note("2.3 B: z multiply (Cs − Cd)·As + Cd", li, "DPB", fb.dpb);
-        break;
-      }
-      case method::baseline: {
-        auto side = [&](bool negative) {
-          return attributes(ps, o.model.setup, [&, negative](std::uint32_t v) { return baseline_colour(lv[v], negative); }, normal_map_uv);
-        };
-        const auto tl_pos = side(false), tl_neg = side(true);
-        const texture_ref pos = nm_texture(in.pos), neg = nm_texture(in.neg);
-        draw_textured<baseline_add>(r, fb.memory, in.stream.get(), nm_stream, pos, tl_pos, fb.dpb); // NM_pos·TL_pos
-        note("2.3 + NM_pos·TL_pos", li, "DPB", fb.dpb);
-        draw_textured<baseline_add>(r, fb.memory, in.stream.get(), nm_stream, neg, tl_neg, fb.dpb); // NM_neg·TL_neg
-        note("2.3 + NM_neg·TL_neg", li, "DPB", fb.dpb);
-        draw_textured<baseline_subtract>(r, fb.memory, in.stream.get(), nm_stream, neg, tl_pos, fb.dpb);  // −NM_neg·TL_pos
-        note("2.3 − NM_neg·TL_pos", li, "DPB", fb.dpb);
-        draw_textured<baseline_subtract>(r, fb.memory, in.stream.get(), nm_stream, pos, tl_neg, fb.dpb);  // −NM_pos·TL_neg
-        note("2.3 − NM_pos·TL_neg", li, "DPB", fb.dpb);
-        break;
-      }
-    }
+      note(p.label, li, "DPB", fb.dpb);
+    };
+    with_method(m, [&]<const auto& D>() {
+      [&]<std::size_t... I>(std::index_sequence<I...>) {
+        (draw_pass.template operator()<*D.light[I].regs, D.light[I].source>(D.light[I]), ...);
+      }(std::make_index_sequence<D.light.size()>{});
+    });
     // 2.4: R += G, R += B (mod 256): additive sprites writing red only.
     channel_pass<post_add_into_red>(r, fb, white, in.grey, 1, fb.dpb, fb.dpb);
     note("2.4 R += G", li, "DPB", fb.dpb);

@@ -2,72 +2,12 @@
 // with the two-pass (3.5), four-pass (3.6) or Breugelmans 2002 (section 2) signed multiplications.
 #pragma once
 
-#include <cstdint>
-#include <string>
-#include <string_view>
-#include <vector>
-
-#include "gs_arith/options.hpp"
+#include "pipeline/method.hpp"
 #include "pipeline/prepare.hpp"
 #include "pipeline/scene.hpp"
 
 namespace gsdot3::pipeline {
 
-enum class method { two_pass, four_pass, baseline };
-std::string_view name(method m);
-
-// reference: every pass rasterises every triangle again with ZTST = GEQUAL, as the GS does.
-// cached: the fragments passing GEQUAL after step 1 are recorded once (in draw order) and every
-// later pass replays them; identical by construction since no later pass writes Z (tests check it).
-enum class raster_path { reference, cached };
-
-// One pass of a traced render (render_options::trace), frame-sized: `word` is the target buffer after
-// the pass; for the pixels the pass shaded, the texel and the fragment colour (r, g, b, a in 8.7)
-// that went into gs::pixel_pipeline (`shaded` = 1). The inspector of the report page shows them.
-struct pass_record {
-  std::string label;   // the paper's step and what it does, e.g. "2.3 Max(n,0)·l (MODULATE)"
-  int light = -1;      // the light of a step-2 pass, −1 for steps 1, 3, 4
-  std::string target;  // "DPB", "LAB", "diffuse", "frame"
-  std::vector<std::uint32_t> word, texel;
-  std::vector<std::uint16_t> colour;  // 4 per pixel
-  std::vector<std::uint8_t> shaded;
-};
-// Step 2.1's DPB clear (section 3.4; memory path only, which the z-trick modes imply): an explicit
-// fill per light, or the Z-buffer clear during each light's ILP pass (ZBUF = the DPB in PSMZ24,
-// Z = 0x00808080, ZTST always) — z_trick: the DPB rendered in PSMZ32 and the post-filter / ILP sprites
-// drawn in the Z layout, so the LAB stays PSMCT32; z_trick_psmz32: the sprites at their own XYZ and
-// the LAB in PSMZ32 throughout (read back as PSMZ32 at step 4). The z-trick modes render on one
-// thread (the texture page buffer model, gs::texture_buffer, follows the draw order).
-enum class dpb_clear_mode { explicit_clear, z_trick, z_trick_psmz32 };
-std::string_view name(dpb_clear_mode m);
-
-struct render_options {
-  int s = 122;                     // two-pass tolight scale (section 3.5), 1..127
-  bool bilinear = false;           // TEX1.MMAG for the normal map and the diffuse texture
-  bool specular = false;           // half vectors instead of tolight vectors (section 3.7)
-  double specular_power = 1.0;     // ILP exponent (section 3.7); 1 = diffuse
-  gs::model_options model{};
-  raster_path path = raster_path::cached;
-  int threads = 2;                 // horizontal bands rendered in parallel
-  std::vector<pass_record>* trace = nullptr;  // non-null: every pass appended here (one band, slower)
-  bool memory_path = false;        // frame buffers in the modelled GS local memory (render.cpp)
-  dpb_clear_mode dpb_clear = dpb_clear_mode::explicit_clear;
-  bool simd = true;                // the SIMD pixel pipeline (gs_simd); false: gs::pixel_pipeline per pixel
-};
-
-struct frame {
-  int width = 0, height = 0;
-  std::vector<std::uint32_t> colour;             // the lit frame after step 4 (A8B8G8R8)
-  std::vector<std::vector<std::uint8_t>> dot;    // per light: the DPB byte after the post filter
-                                                 // (dot product + 128, mod 256)
-  std::vector<std::int32_t> visible_triangle;    // per pixel: index into prepared_scene::triangles, −1 = none
-  std::size_t pixel_ops = 0;                     // pixels sent through gs::pixel_pipeline
-};
-
-
 frame render(const scene& s, const prepared_scene& ps, method m, const render_options& o);
-
-// The signed dot product (1/128 units) a DPB byte stands for: (v − 128) as a signed byte.
-constexpr int dot_value(std::uint8_t v) noexcept { return static_cast<std::int8_t>(static_cast<std::uint8_t>(v - 128)); }
 
 }  // namespace gsdot3::pipeline

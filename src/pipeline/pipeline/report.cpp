@@ -15,6 +15,7 @@
 #include "pipeline/memory_steps.hpp"
 #include "pipeline/quality_claims.hpp"
 #include "pipeline/report_page.hpp"
+#include "pipeline/render.hpp"
 
 namespace gsdot3::pipeline {
 

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "pipeline/reference.hpp"
-#include "pipeline/render.hpp"
+#include "pipeline/method.hpp"
 #include "pipeline/scheme_method.hpp"
 
 namespace gsdot3::pipeline {

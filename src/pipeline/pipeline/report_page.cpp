@@ -17,6 +17,7 @@
 #include "gs_arith/bilinear.hpp"
 #include "pipeline/files.hpp"
 #include "pipeline/pixel_walk.hpp"
+#include "pipeline/render.hpp"
 #include "proofs/claim.hpp"
 
 // Generated from pipeline/report_page.html and docs/claims.md (src/pipeline/CMakeLists.txt).

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "pipeline/prepare.hpp"
-#include "pipeline/render.hpp"
+#include "pipeline/method.hpp"
 #include "pipeline/scene.hpp"
 
 namespace gsdot3::pipeline {

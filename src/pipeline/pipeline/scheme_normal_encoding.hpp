@@ -9,7 +9,7 @@
 
 #include "normal_encoding/seed_psnr.hpp"
 #include "pipeline/prepare.hpp"
-#include "pipeline/render.hpp"
+#include "pipeline/method.hpp"
 #include "pipeline/scene.hpp"
 #include "pipeline/scheme_method.hpp"
 

@@ -1,10 +1,12 @@
 #include "proofs/dpb_clear.hpp"
 
 #include <memory>
+#include <vector>
 
 #include "gs_memory/address.hpp"
 #include "gs_memory/channel_fetch.hpp"
 #include "gs_memory/local_memory.hpp"
+#include "gs_memory/overlay.hpp"
 #include "gs_memory/texture_buffer.hpp"
 #include "gs_memory/texture_wrap.hpp"
 
@@ -27,21 +29,14 @@ mem::buffer page_buffer(std::uint32_t bp, std::uint32_t bw, mem::psm p) {
   return {fixed::uint<14>::from_wrapped(bp), fixed::uint<6>::from_wrapped(bw), p};
 }
 
-// The inverse of the PSMZ32 layout over one page, from the two address functions.
-std::array<int, page_pixels> make_zsigma() {
-  std::array<int, page_pixels> ct_at_word{}, sigma{};
-  for (int p = 0; p < page_pixels; ++p)
-    ct_at_word[mem::locate(page_buffer(0, 1, mem::psm::PSMCT32), p % 64, p / 64).byte / 4] = p;
-  for (int q = 0; q < page_pixels; ++q)
-    sigma[ct_at_word[mem::locate(page_buffer(0, 1, mem::psm::PSMZ32), q % 64, q / 64).byte / 4]] = q;
-  return sigma;
-}
-
 }  // namespace
 
+// gs_memory's overlay of a PSMCT32 page on a PSMZ32 page: for PSMCT32 pixel p, the PSMZ32 pixel
+// of the same word (both formats 32-bit, so bit 0 of it).
 int zsigma(int p) {
-  static const std::array<int, page_pixels> sigma = make_zsigma();
-  return sigma[static_cast<std::size_t>(p)];
+  static const std::vector<mem::overlay_cell> cells = mem::page_overlay(mem::psm::PSMZ32, mem::psm::PSMCT32);
+  const mem::overlay_cell& c = cells[static_cast<std::size_t>(p)];
+  return static_cast<int>(c.y) * 64 + static_cast<int>(c.x);
 }
 
 ilp_pass run_ilp_pass(const page_words& dpb_before, dpb_clear variant, mem::psm zbuf_psm, gs::texture_buffer tb) {

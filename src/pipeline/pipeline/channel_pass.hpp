@@ -1,0 +1,154 @@
+// pipeline/channel_pass.hpp — render.cpp's frame buffers and its passes that read a frame buffer
+// as a texture: step 2.4's post filter, the ILP read of 2.6 and step 4's channel move (a byte of
+// each pixel through a palette), on the value path (the byte of the same pixel's word) and on the
+// memory path (gs_memory's channel-fetch sprites), and the memory path's copy of the LAB into the
+// output. Internal to render.cpp.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "gs_arith/depth_test.hpp"
+#include "gs_memory/address.hpp"
+#include "gs_memory/channel_fetch.hpp"
+#include "gs_memory/local_memory.hpp"
+#include "gs_memory/overlay.hpp"
+#include "gs_memory/texture_buffer.hpp"
+#include "gs_memory/texture_wrap.hpp"
+#include "gs_memory/transfer.hpp"
+#include "pipeline/band_renderer.hpp"
+#include "pipeline/gs_inputs.hpp"
+#include "pipeline/pass_table.hpp"
+
+namespace gsdot3::pipeline::detail {
+
+inline gs::u8 byte(int v) { return gs::u8::from_wrapped(v); }
+
+template <class FB>
+struct frame_buffers {
+  std::vector<std::uint32_t> z;  // the value path's Z buffer storage (zb's rows)
+  z_view zb;
+  FB lab, dpb, diff, out;
+  gs::mem::local_memory* memory = nullptr;  // the memory path's local memory, else null
+  buffer_layout layout;                     // the memory path's buffers (gs_inputs.hpp)
+  const gs::mem::texel_addresses* page_as_t8 = nullptr;  // the memory path: a page of the DPB / LAB as PSMT8 (BP 0)
+  dpb_clear_mode clear = dpb_clear_mode::explicit_clear;
+};
+
+// zsigma(x, y): the pixel of the same page whose PSMZ32 address is PSMCT32 pixel (x, y)'s:
+// gs_memory's overlay of a PSMCT32 page on a PSMZ32 page (the four 32×16 quarters of the page
+// swapped along the diagonals), both 32-bit, so each pixel's whole word.
+inline std::array<int, 2> zsigma(int x, int y) {
+  static const std::vector<gs::mem::overlay_cell> cells = gs::mem::page_overlay(gs::mem::psm::PSMZ32, gs::mem::psm::PSMCT32);
+  const gs::mem::overlay_cell& c = cells[static_cast<std::size_t>((y & 31) * 64 + (x & 63))];
+  return {(x & ~63) + static_cast<int>(c.x), (y & ~31) + static_cast<int>(c.y)};
+}
+inline constexpr bool in_memory(const row_view&) { return false; }
+inline constexpr bool in_memory(const memory_view&) { return true; }
+
+// A sprite pass whose texel is byte `channel` of each pixel of `src` through `clut`, into `dst`.
+// Value level: the byte of the same pixel's word. Memory path: gs_memory's channel-fetch sprites
+// (8×2 tiles per page, the page read as PSMT8 with TBP0 = its base, TBW = 2·FBW, TW = 7, TH = 6).
+template <const pass_regs& Pass>
+inline void channel_pass(band_renderer& r, const frame_buffers<row_view>&, gs::rgba8 colour, const gs::clut_buffer& clut,
+                  unsigned channel, const row_view& src, const row_view& dst) {
+  r.sprite<Pass>(colour, [&](int x, int y) { return gs::clut_t8(clut, byte(static_cast<int>(src(x, y) >> (8 * channel)))); }, dst);
+}
+// The memory path. A source drawn in PSMZ32 (src.z) has logical pixel L in the word of PSMCT32
+// pixel zsigma(L): the tile that fetches PSMCT32 pixel M is drawn at zsigma(M) (the sprites' XYZ
+// in the Z layout). z_clear: the ILP pass of the z-trick modes, also writing Z = 0x00808080 into the
+// DPB as PSMZ24 at every fragment (after its texel fetch). In the z-trick modes the texel fetches
+// go through gs_memory's texture_page_buffer model (model option texture_buffer).
+template <const pass_regs& Pass>
+inline void channel_pass(band_renderer& r, const frame_buffers<memory_view>& fb, gs::rgba8 colour, const gs::clut_buffer& clut,
+                  unsigned channel, const memory_view& src, const memory_view& dst, bool z_clear = false,
+                  gs::texture_buffer tb = gs::texture_buffer::per_fragment) {
+  static constexpr gs::mem::channel_fetch layout[4] = {gs::mem::channel_fetch_sprites(0), gs::mem::channel_fetch_sprites(1),
+                                                       gs::mem::channel_fetch_sprites(2), gs::mem::channel_fetch_sprites(3)};
+  const gs::mem::channel_fetch& f = layout[channel];
+  gs::mem::local_memory& mem = *fb.memory;
+  const gs::mem::buffer zbuf{fixed::uint<14>::from_wrapped(fb.dpb.bp), fixed::uint<6>::from_wrapped(fb.dpb.bw), gs::mem::psm::PSMZ24};
+  const bool buffered = fb.clear != dpb_clear_mode::explicit_clear;
+  const scissor& a = r.sprite_area();
+  // With the Z clear the ILP sprites cover every page the area touches (the paper's per-page
+  // primitives, section 3.3), so that the Z writes clear whole pages.
+  const scissor pages{a.x0 & ~63, a.y0 & ~31, (a.x1 + 63) & ~63, (a.y1 + 31) & ~31};
+  r.scalar_sprites = true;  // the texel fetches read the memory the sprites write (span_batch.hpp)
+  // The byte of the page (at TBP0 = 0) each sprite pixel fetches, through CLAMP_1 and the PSMT8
+  // address: sprite k's pixel (dx, dy) at 16·k + 8·dy + dx. The sprites and their texels are the
+  // same on every page, which only moves TBP0 (texel_addresses::byte adds it).
+  static_assert([] {
+    for (const gs::mem::channel_fetch& c : layout)
+      for (const gs::mem::fetch_sprite& sp : c.sprites)
+        if (sp.x1 - sp.x0 != 8 || sp.y1 - sp.y0 != 2) return false;
+    return true;
+  }());
+  std::array<std::uint32_t, 16 * 128> fetched{};
+  for (std::size_t k = 0; k < f.sprites.size(); ++k)
+    for (std::int32_t dy = 0; dy < 2; ++dy)
+      for (std::int32_t dx = 0; dx < 8; ++dx) {
+        const gs::mem::fetch_sprite& sp = f.sprites[k];
+        const auto u = gs::mem::wrap_texel(f.CLAMP.WMS, sp.u0 + dx, fixed::u4::literal(7), f.CLAMP.MINU, f.CLAMP.MAXU);
+        const auto v = gs::mem::wrap_texel(f.CLAMP.WMT, sp.v0 + dy, fixed::u4::literal(6), f.CLAMP.MINV, f.CLAMP.MAXV);
+        fetched[16 * k + static_cast<std::size_t>(8 * dy + dx)] = fb.page_as_t8->byte(u, v, 0);
+      }
+  for (int py = a.y0 / 32; py * 32 < a.y1; ++py)
+    for (int px = a.x0 / 64; px * 64 < a.x1; ++px) {
+      const std::uint32_t page = static_cast<std::uint32_t>(px) + static_cast<std::uint32_t>(py) * src.bw;
+      const gs::mem::buffer tex{fixed::uint<14>::from_wrapped(src.bp + 32 * page), fixed::uint<6>::from_wrapped(2 * src.bw),
+                                gs::mem::psm::PSMT8};
+      gs::mem::texture_page_buffer texels(buffered ? tb : gs::texture_buffer::per_fragment, mem, (src.bp + 32 * page) * 256,
+                                          gs::mem::page_bytes);
+      for (std::size_t k = 0; k < f.sprites.size(); ++k) {
+        const gs::mem::fetch_sprite& sp = f.sprites[k];
+        const std::uint32_t* sprite_texels = &fetched[16 * k];
+        const int mx = px * 64 + static_cast<int>(sp.x0), my = py * 32 + static_cast<int>(sp.y0);  // PSMCT32 pixel fetched
+        const std::array<int, 2> drawn = src.z ? zsigma(mx, my) : std::array<int, 2>{mx, my};   // where it is drawn
+        const int x0 = drawn[0], y0 = drawn[1];  // plain ints: clang 14 cannot capture structured bindings
+        const int w = static_cast<int>(sp.x1 - sp.x0), h = static_cast<int>(sp.y1 - sp.y0);
+        r.sprite_rect<Pass>(colour, {x0, y0, x0 + w, y0 + h},
+                            [&](int x, int y) {
+                              const std::uint32_t at = sprite_texels[8 * (y - y0) + (x - x0)] + tex.BP.value() * gs::mem::block_bytes;
+                              const std::uint8_t index = texels.fetch(at % gs::mem::memory_bytes);
+                              if (z_clear) {  // ZBUF = the DPB (PSMZ24), Z = 0x00808080, ZTST = ALWAYS
+                                const auto zx = static_cast<std::uint32_t>(x), zy = static_cast<std::uint32_t>(y);
+                                const gs::depth_result d = gs::depth_test(passes::depth_always, passes::z_written, passes::clear_dpb, mem.read_pixel(zbuf, zx, zy));
+                                if (d.write_z) mem.write_pixel(zbuf, zx, zy, d.z);
+                              }
+                              return gs::clut_t8(clut, gs::u8::from_wrapped(index));
+                            },
+                            dst, z_clear ? &pages : nullptr);
+      }
+    }
+  r.scalar_sprites = false;
+}
+
+// Two-pass step 2.4a: n'_a into R, G and B — the DPB read as PSMT8H (its own alpha byte at the same
+// pixel: gs::t8h_index on the value path; on the memory path the PSMT8H read of the DPB's page, in
+// the Z layout at the word of logical (x, y)) through `clut`, one sprite over the sprite area.
+template <const pass_regs& Pass>
+void alpha_into_rgb(band_renderer& r, const frame_buffers<row_view>& fb, const gs::clut_buffer& clut) {
+  r.sprite<Pass>(passes::white, [&](int x, int y) { return gs::clut_t8(clut, gs::t8h_index(fb.dpb(x, y))); }, fb.dpb);
+}
+template <const pass_regs& Pass>
+void alpha_into_rgb(band_renderer& r, const frame_buffers<memory_view>& fb, const gs::clut_buffer& clut) {
+  const gs::mem::buffer t8h{fixed::uint<14>::from_wrapped(fb.dpb.bp), fixed::uint<6>::from_wrapped(fb.dpb.bw), gs::mem::psm::PSMT8H};
+  r.sprite<Pass>(
+      passes::white,
+      [&](int x, int y) {
+        const auto [tx, ty] = fb.dpb.z ? zsigma(x, y) : std::array<int, 2>{x, y};
+        return gs::clut_t8(clut, byte(fb.memory->read_pixel(t8h, static_cast<std::uint32_t>(tx), static_cast<std::uint32_t>(ty))));
+      },
+      fb.dpb);
+}
+
+// The memory path's copy of the LAB into the output over `area` (before step 4): gs_inputs.hpp's
+// lab_to_output, the transfer the packet stream writes, run through gs_memory's local_to_local.
+inline void copy_lab(const frame_buffers<memory_view>& fb, const scissor& area) {
+  if (const std::optional<lab_copy> c = lab_to_output(fb.layout, area, fb.lab.z))
+    gs::mem::local_to_local(*fb.memory, c->BITBLTBUF, c->TRXPOS, c->TRXREG, lab_copy::TRXDIR);
+}
+
+}  // namespace gsdot3::pipeline::detail

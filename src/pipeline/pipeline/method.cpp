@@ -1,0 +1,23 @@
+#include "pipeline/method.hpp"
+
+namespace gsdot3::pipeline {
+
+std::string_view name(method m) {
+  switch (m) {
+    case method::two_pass: return "two-pass";
+    case method::four_pass: return "four-pass";
+    case method::baseline: return "baseline";
+  }
+  return "?";
+}
+
+std::string_view name(dpb_clear_mode m) {
+  switch (m) {
+    case dpb_clear_mode::explicit_clear: return "explicit";
+    case dpb_clear_mode::z_trick: return "z-trick";
+    case dpb_clear_mode::z_trick_psmz32: return "z-trick-psmz32";
+  }
+  return "?";
+}
+
+}  // namespace gsdot3::pipeline
