@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "model_args.hpp"
 #include "gs_arith/options.hpp"
 #include "gs_arith/pixel_pipeline.hpp"
 #include "gs_arith/profiles.hpp"
@@ -51,15 +52,10 @@ std::uint32_t parse_colour(const std::string& what, const std::string& text) {
   return static_cast<std::uint32_t>(parse_digits(what, text, first, true, 0xFFFFFFFFu));
 }
 
-std::pair<std::string, std::string> split_assignment(const std::string& what, const std::string& text) {
-  const auto eq = text.find('=');
-  if (eq == std::string::npos || eq == 0) throw usage_error(what + ": expected NAME=VALUE, got '" + text + "'");
-  return {text.substr(0, eq), text.substr(eq + 1)};
-}
-
 struct alu_args {
-  std::vector<std::string> regs, options;
-  std::string vertex, texel, dst = "00000000", profile;
+  std::vector<std::string> regs;
+  model_args model{"--option"};
+  std::string vertex, texel, dst = "00000000";
   unsigned x = 0, y = 0;
   bool trace = false;
 };
@@ -75,13 +71,7 @@ void run_alu(const alu_args& a) {
       throw usage_error(std::string("--reg: ") + e.what());
     }
   }
-  gs::model_options opts;
-  if (!a.profile.empty())
-    if (auto err = gs::apply_profile(opts, a.profile)) throw usage_error("--profile: " + *err);
-  for (const auto& o : a.options) {
-    const auto [name, value] = split_assignment("--option", o);
-    if (auto err = gs::set_option(opts, name, value)) throw usage_error("--option: " + *err);
-  }
+  const gs::model_options opts = a.model.resolve();
   if (regs.PRIM.TME && a.texel.empty()) throw usage_error("PRIM.TME = 1 needs --texel");
   const std::uint32_t dst = parse_colour("--dst", a.dst);
   if (gs::bits_of(regs.FRAME_1.PSM) == gs::pixel_bits::b16 && dst > 0xFFFFu)
@@ -127,9 +117,7 @@ void add_alu_command(CLI::App& app, context& ctx) {
   cmd->add_option("--x", args->x, "Pixel x (dither matrix column x & 3; default 0)");
   cmd->add_option("--y", args->y, "Pixel y (dither matrix row y & 3; default 0)");
   cmd->add_flag("--trace", args->trace, "Print every stage's value before the result");
-  cmd->add_option("--option", args->options, "Model option NAME=VALUE (listed below). Repeatable.");
-  cmd->add_option("--profile", args->profile,
-                  "Emulator option set (" + gs::profile_names() + ", docs/evidence.md); --option overrides it");
+  args->model.add_to(cmd, "(listed below)");
   cmd->callback([args, &ctx] {
     run_alu(*args);
     ctx.exit_code = 0;

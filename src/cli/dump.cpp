@@ -7,6 +7,7 @@
 #include <string>
 
 #include "commands.hpp"
+#include "gs_arith/options.hpp"
 #include "gs_packets/dump.hpp"
 #include "gs_packets/packetiser.hpp"
 #include "gs_packets/state.hpp"
@@ -71,6 +72,13 @@ void add_dump_command(CLI::App& app, context& ctx) {
               << " bytes), " << *video << ", " << fp.triangles << " triangles, " << fp.sprites
               << " sprites; displayed: DISPFB1 FBP " << fp.buffers.output() << " FBW " << fp.buffers.fbw << " PSMCT32, "
               << st.in.s.width << "x" << st.in.s.height << "; " << seconds << " s\n";
+    // The frame is the model's under these options: a replay that should reproduce it needs them too.
+    std::string differ;
+    const gs::model_options defaults{};
+    for (const auto& row : gs::option_catalogue())
+      if (gs::option_value(st.options.model, row.name) != gs::option_value(defaults, row.name))
+        differ += " --model-option " + std::string(row.name) + "=" + std::string(gs::option_value(st.options.model, row.name));
+    std::cout << "replay under the same model options: gsdot3 replay " << *out << differ << "\n";
     ctx.exit_code = 0;
   });
 }

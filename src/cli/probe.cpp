@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "model_args.hpp"
 #include "output_file.hpp"
 #include "gs_packets/dump.hpp"
 #include "pipeline/files.hpp"
@@ -28,7 +29,7 @@ namespace pr = gsdot3::probe;
 
 struct probe_args {
   std::string out, png;
-  std::vector<std::string> options;
+  model_args model{"--option"};
 };
 struct decode_args {
   std::string shot, out;
@@ -43,19 +44,9 @@ std::string legend() {
   return s;
 }
 
-gs::model_options options_from(const std::vector<std::string>& items) {
-  gs::model_options o;
-  for (const std::string& item : items) {
-    const auto eq = item.find('=');
-    if (eq == std::string::npos) throw usage_error("--option: expected NAME=VALUE, got '" + item + "'");
-    if (auto err = gs::set_option(o, item.substr(0, eq), item.substr(eq + 1))) throw usage_error("--option: " + *err);
-  }
-  return o;
-}
-
 void run_probe(const probe_args& a) {
   if (a.out.empty() && a.png.empty()) throw usage_error("probe: nothing to write (give --out F.gs and/or --png F.png)");
-  const gs::model_options o = options_from(a.options);
+  const gs::model_options o = a.model.resolve();
   if (!a.out.empty()) {
     try {
       gs::dump::save_dump(a.out, pr::probe_dump());
@@ -131,7 +122,7 @@ void add_probe_command(CLI::App& app, context& ctx) {
       "prints the patch legend. `probe decode SHOT` reads a screenshot of that frame.");
   cmd->add_option("--out", args->out, "GS dump to write (.gs, .gs.xz or .gs.zst; written atomically)");
   cmd->add_option("--png", args->png, "Also write the frame the model predicts (PNG, atomically)");
-  cmd->add_option("--option", args->options, "Model option NAME=VALUE for --png (repeatable)");
+  args->model.add_to(cmd, "for --png");
   auto dargs = std::make_shared<decode_args>();
   auto* dec = cmd->add_subcommand(
       "decode",

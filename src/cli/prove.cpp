@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "model_args.hpp"
 #include "output_file.hpp"
 #include "gs_arith/options.hpp"
 #include "gs_arith/profiles.hpp"
@@ -26,8 +27,8 @@ namespace gsdot3::cli {
 
 namespace {
 struct prove_args {
-  std::vector<std::string> claims, options;
-  std::string profile;
+  std::vector<std::string> claims;
+  model_args model{"--option"};
   bool json = false, markdown = false, no_variants = false, list = false, brute_force = false;
   unsigned threads = 0;
   std::string shard, output;        // --shard K/N, --output FILE
@@ -70,14 +71,7 @@ struct progress_printer {
 
 void run_prove(const prove_args& a, context& ctx) {
   if (a.json && a.markdown) throw usage_error("--json and --markdown are exclusive");
-  gs::model_options opts;
-  if (!a.profile.empty())
-    if (auto err = gs::apply_profile(opts, a.profile)) throw usage_error("--profile: " + *err);
-  for (const auto& o : a.options) {
-    const auto eq = o.find('=');
-    if (eq == std::string::npos || eq == 0) throw usage_error("--option: expected NAME=VALUE, got '" + o + "'");
-    if (auto err = gs::set_option(opts, o.substr(0, eq), o.substr(eq + 1))) throw usage_error("--option: " + *err);
-  }
+  const gs::model_options opts = a.model.resolve();
   std::vector<const proofs::claim*> selected;
   if (a.claims.empty()) {
     for (const auto& c : proofs::catalogue()) selected.push_back(&c);
@@ -145,9 +139,7 @@ void add_prove_command(CLI::App& app, context& ctx) {
   auto args = std::make_shared<prove_args>();
   auto* cmd = app.add_subcommand("prove", "Settle the paper's claims on the modeled GS: proven, refuted (with witnesses) or bound");
   cmd->add_option("--claim", args->claims, "Claim id to run (repeatable; default: the whole catalogue)");
-  cmd->add_option("--option", args->options, "Model option NAME=VALUE for the base run (repeatable)");
-  cmd->add_option("--profile", args->profile,
-                  "Emulator option set for the base run (" + gs::profile_names() + "); --option overrides it");
+  args->model.add_to(cmd, "for the base run");
   cmd->add_flag("--json", args->json, "Print the ledger as one JSON document");
   cmd->add_flag("--markdown", args->markdown, "Print the ledger as Markdown (docs/claims.md; no timings)");
   cmd->add_flag("--no-variants", args->no_variants, "Skip the re-runs under the other option values");

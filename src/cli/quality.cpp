@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "model_args.hpp"
 #include "gs_arith/options.hpp"
 #include "pipeline/default_scene.hpp"
 #include "pipeline/quality_claims.hpp"
@@ -18,7 +19,7 @@ struct args {
   unsigned scenes = 8;
   std::uint64_t seed = 1;
   int s = 122;
-  std::vector<std::string> model_options;
+  model_args model;
   bool json = false;
 };
 
@@ -37,11 +38,7 @@ void run(const args& a, context& ctx) {
   if (a.s < 1 || a.s > 127) throw usage_error("--s: 1 to 127, not " + std::to_string(a.s));
   pipeline::render_options o;
   o.s = a.s;
-  for (const std::string& kv : a.model_options) {
-    const auto eq = kv.find('=');
-    if (eq == std::string::npos) throw usage_error("--model-option: expected NAME=VALUE, got '" + kv + "'");
-    if (auto err = gs::set_option(o.model, kv.substr(0, eq), kv.substr(eq + 1))) throw usage_error("--model-option: " + *err);
-  }
+  o.model = a.model.resolve();
   std::vector<pipeline::quality_scene> scenes;
   std::fprintf(stderr, "gsdot3 quality: the embedded scene\n");
   scenes.push_back(pipeline::measure_quality("embedded", pipeline::default_scene(), o));
@@ -98,7 +95,7 @@ void add_quality_command(CLI::App& app, context& ctx) {
   cmd->add_option("--scenes", a->scenes, "random scenes besides the embedded one (0 to 64)")->capture_default_str();
   cmd->add_option("--seed", a->seed, "seed of the first random scene (scene k uses seed + k)")->capture_default_str();
   cmd->add_option("--s", a->s, "two-pass tolight scale (section 3.5)")->capture_default_str();
-  cmd->add_option("--model-option", a->model_options, "a GS model option NAME=VALUE (repeatable; gsdot3 prove --help lists them)");
+  a->model.add_to(cmd);
   cmd->add_flag("--json", a->json, "every scene's figures and every row as JSON on stdout");
   cmd->callback([a, &ctx] { run(*a, ctx); });
 }

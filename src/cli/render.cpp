@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "model_args.hpp"
 #include "import_options.hpp"
 #include "scene_options.hpp"
 #include "gs_arith/options.hpp"
@@ -24,11 +25,11 @@ namespace {
 struct render_args {
   std::string out = "gsdot3-out", method = "all", mesh, normal_map, size = "512x448", filter = "nearest", path = "cached";
   std::string camera, height_map;
-  std::string profile;
   std::string normal_map_y = "up", view, export_mesh;
   import_args import;
   float bump = 0.05f;
-  std::vector<std::string> lights, model_options;
+  std::vector<std::string> lights;
+  model_args model;
   int s = 122, threads = 2;
   double specular = 0.0;
   bool memory_path = false, scalar = false;
@@ -133,13 +134,7 @@ scene_setup setup(const render_args& a) {
     req.options.specular = true;
     req.options.specular_power = a.specular;
   }
-  if (!a.profile.empty())
-    if (auto err = gs::apply_profile(req.options.model, a.profile)) throw usage_error("--profile: " + *err);
-  for (const std::string& kv : a.model_options) {
-    const auto eq = kv.find('=');
-    if (eq == std::string::npos) throw usage_error("--model-option: expected NAME=VALUE, got '" + kv + "'");
-    if (auto err = gs::set_option(req.options.model, kv.substr(0, eq), kv.substr(eq + 1))) throw usage_error("--model-option: " + *err);
-  }
+  req.options.model = a.model.resolve();
   const auto [w, h] = parse_size(a.size);
   req.options.memory_path = a.memory_path;
   req.options.simd = !a.scalar;
@@ -260,8 +255,7 @@ void add_options(CLI::App* cmd, render_args& a) {
                   "step 2.1's DPB clear (section 3.4): explicit | z-trick | z-trick-psmz32 (Z-buffer clear during the "
                   "ILP pass; implies --memory-path, one thread; see --model-option texture_buffer=...)")
       ->capture_default_str();
-  cmd->add_option("--model-option", a.model_options, "GS model option NAME=VALUE (see `gsdot3 alu --help`)");
-  cmd->add_option("--profile", a.profile, "GS model options of an emulator (" + gs::profile_names() + "); --model-option overrides it");
+  a.model.add_to(cmd);
 }
 
 }  // namespace

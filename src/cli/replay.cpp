@@ -18,6 +18,7 @@
 #include "commands.hpp"
 #include "dump_notes.hpp"
 #include "image_compare.hpp"
+#include "model_args.hpp"
 #include "gs_memory/address.hpp"
 #include "gs_memory/psm_names.hpp"
 #include "gs_packets/display.hpp"
@@ -89,6 +90,7 @@ struct args {
   std::vector<std::string> buffers;
   unsigned height = 0;
   bool skip_unmodelled = false;
+  model_args model;
 };
 
 void write_picture(const std::filesystem::path& file, const pipeline::image& img) {
@@ -111,7 +113,7 @@ void run(const args& a, context& ctx) {
     throw usage_error(e.what());
   }
   mem::local_memory m;
-  gs::packets::interpreter it(m, {.skip_unmodelled = a.skip_unmodelled});
+  gs::packets::interpreter it(m, {.model = a.model.resolve(), .skip_unmodelled = a.skip_unmodelled});
   try {
     print_dump_notes(a.file, d, gs::dump::decode_paths(d));
     it.replay(d);
@@ -185,6 +187,7 @@ void add_replay_command(CLI::App& app, context& ctx) {
   cmd->add_option("--expect", a->expect, "Compare the displayed frame with this PNG (a screenshot), as `gsdot3 compare` "
                                          "does; exit 1 when they differ");
   cmd->add_option("--heat", a->heat, "With --expect: write the heat map PNG here");
+  a->model.add_to(cmd, "the drawing runs under (as `gsdot3 dump` printed for its dumps)");
   cmd->callback([a, &ctx] { run(*a, ctx); });
 }
 

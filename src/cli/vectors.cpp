@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "model_args.hpp"
 #include "gs_arith/options.hpp"
 #include "gs_arith/profiles.hpp"
 #include "probe/recording.hpp"
@@ -30,9 +31,7 @@ std::vector<std::pair<std::string, std::string>> parse_options(const std::vector
   std::vector<std::pair<std::string, std::string>> out;
   gs::model_options check;
   for (const auto& item : items) {
-    const auto eq = item.find('=');
-    if (eq == std::string::npos || eq == 0) throw usage_error("--option: expected NAME=VALUE, got '" + item + "'");
-    out.emplace_back(item.substr(0, eq), item.substr(eq + 1));
+    out.push_back(split_assignment("--option", item));
     if (auto err = gs::set_option(check, out.back().first, out.back().second)) throw usage_error("--option: " + *err);
   }
   return out;
