@@ -6,10 +6,9 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "commands.hpp"
 #include "gs_cost/model.hpp"
@@ -43,30 +42,42 @@ std::string mode_text(const cost::pass_cost& p) {
   const auto& m = p.mode;
   std::string s = std::string(gs::packets::prim_names[m.prim & 7]) + " " +
                   std::string(gs::mem::name_of(static_cast<gs::mem::psm>(m.frame_psm)));
-  if (m.textured) s += " tex " + std::string(gs::mem::name_of(static_cast<gs::mem::psm>(m.tex_psm))) + (m.bilinear ? " bilinear" : "");
+  if (m.textured)
+    s +=
+        " tex " + std::string(gs::mem::name_of(static_cast<gs::mem::psm>(m.tex_psm))) + (m.bilinear ? " bilinear" : "");
   if (m.blend_reads_dst) s += " blend";
   if (m.z_read || m.z_write) s += std::string(" Z") + (m.z_read ? "r" : "") + (m.z_write ? "w" : "");
   return s;
 }
 
 nlohmann::json to_json(const cost::breakdown& b) {
-  return {{"pixels", b.pixels},        {"page_breaks", b.page_breaks}, {"texture_misses", b.texture_misses},
-          {"uploads", b.uploads},      {"clut_loads", b.clut_loads},   {"setup", b.setup},
+  return {{"pixels", b.pixels},   {"page_breaks", b.page_breaks}, {"texture_misses", b.texture_misses},
+          {"uploads", b.uploads}, {"clut_loads", b.clut_loads},   {"setup", b.setup},
           {"total", b.total()}};
 }
 
 nlohmann::json to_json(const cost::tally& t) {
-  return {{"primitives", t.primitives}, {"triangles", t.triangles},     {"sprites", t.sprites},
-          {"pixels", t.pixels},         {"blocks", t.blocks},           {"page_breaks", t.page_breaks},
-          {"texture_misses", t.texture_misses}, {"transfers", t.transfers}, {"upload_bytes", t.upload_bytes},
+  return {{"primitives", t.primitives},
+          {"triangles", t.triangles},
+          {"sprites", t.sprites},
+          {"pixels", t.pixels},
+          {"blocks", t.blocks},
+          {"page_breaks", t.page_breaks},
+          {"texture_misses", t.texture_misses},
+          {"transfers", t.transfers},
+          {"upload_bytes", t.upload_bytes},
           {"clut_loads", t.clut_loads}};
 }
 
 nlohmann::json timing(std::uint64_t cycles) {
   return {{"cycles", cycles},
           {"seconds", cost::seconds(cycles)},
-          {"ntsc", {{"budget_share", cost::seconds(cycles) * cost::ntsc_hz}, {"fps_locked", cost::fps_locked(cycles, cost::ntsc_hz)}}},
-          {"pal", {{"budget_share", cost::seconds(cycles) * cost::pal_hz}, {"fps_locked", cost::fps_locked(cycles, cost::pal_hz)}}},
+          {"ntsc",
+           {{"budget_share", cost::seconds(cycles) * cost::ntsc_hz},
+            {"fps_locked", cost::fps_locked(cycles, cost::ntsc_hz)}}},
+          {"pal",
+           {{"budget_share", cost::seconds(cycles) * cost::pal_hz},
+            {"fps_locked", cost::fps_locked(cycles, cost::pal_hz)}}},
           {"fps_unlocked", cost::fps_unlocked(cycles)}};
 }
 
@@ -88,23 +99,26 @@ void print_text(const args& a, const std::vector<cost::frame_cost>& frames) {
     std::cout << "frame " << f + 1 << ": " << c << " cycles, " << fixed_str(cost::seconds(c) * 1e3, 3) << " ms; NTSC "
               << fixed_str(100.0 * cost::seconds(c) * cost::ntsc_hz, 1) << " % of a field, "
               << fixed_str(cost::fps_locked(c, cost::ntsc_hz), 2) << " fps; PAL "
-              << fixed_str(100.0 * cost::seconds(c) * cost::pal_hz, 1) << " %, " << fixed_str(cost::fps_locked(c, cost::pal_hz), 2)
-              << " fps; unlocked " << fixed_str(cost::fps_unlocked(c), 1) << " fps\n";
-    std::cout << "  primitives " << fr.counts.primitives << " (" << fr.counts.triangles << " triangles, " << fr.counts.sprites
-              << " sprites), pixels " << fr.counts.pixels << ", page breaks " << fr.counts.page_breaks
-              << ", texture misses " << fr.counts.texture_misses << ", transfers " << fr.counts.transfers << " ("
-              << fr.counts.upload_bytes << " bytes), CLUT loads " << fr.counts.clut_loads << "\n";
+              << fixed_str(100.0 * cost::seconds(c) * cost::pal_hz, 1) << " %, "
+              << fixed_str(cost::fps_locked(c, cost::pal_hz), 2) << " fps; unlocked "
+              << fixed_str(cost::fps_unlocked(c), 1) << " fps\n";
+    std::cout << "  primitives " << fr.counts.primitives << " (" << fr.counts.triangles << " triangles, "
+              << fr.counts.sprites << " sprites), pixels " << fr.counts.pixels << ", page breaks "
+              << fr.counts.page_breaks << ", texture misses " << fr.counts.texture_misses << ", transfers "
+              << fr.counts.transfers << " (" << fr.counts.upload_bytes << " bytes), CLUT loads " << fr.counts.clut_loads
+              << "\n";
     std::cout << "  fill-rate share " << pct(fr.cycles.pixels, c) << " (pixel cycles of all cycles)\n";
     print_breakdown(fr.cycles);
     std::cout << "  passes " << fr.passes.size() << "\n";
     for (std::size_t i = 0; i < fr.passes.size() && i < a.passes; ++i) {
       const auto& p = fr.passes[i];
       const std::uint64_t pc = p.cycles.total();
-      std::cout << "  pass " << i + 1 << " at byte " << p.first_offset << ": " << mode_text(p) << "; " << p.counts.primitives
-                << " primitives, " << p.counts.pixels << " pixels; " << pc << " cycles ("
+      std::cout << "  pass " << i + 1 << " at byte " << p.first_offset << ": " << mode_text(p) << "; "
+                << p.counts.primitives << " primitives, " << p.counts.pixels << " pixels; " << pc << " cycles ("
                 << fixed_str(cost::seconds(pc) * 1e6, 1) << " us, " << pct(pc, c) << " of the frame): pixels "
-                << p.cycles.pixels << ", page breaks " << p.cycles.page_breaks << ", texture misses " << p.cycles.texture_misses
-                << ", uploads " << p.cycles.uploads << ", CLUT " << p.cycles.clut_loads << ", set-up " << p.cycles.setup << "\n";
+                << p.cycles.pixels << ", page breaks " << p.cycles.page_breaks << ", texture misses "
+                << p.cycles.texture_misses << ", uploads " << p.cycles.uploads << ", CLUT " << p.cycles.clut_loads
+                << ", set-up " << p.cycles.setup << "\n";
     }
     if (fr.passes.size() > a.passes)
       std::cout << "  (" << fr.passes.size() - a.passes << " more passes; --passes N lists more, --json all)\n";
@@ -127,7 +141,8 @@ void print_json(const args& a, const std::vector<cost::frame_cost>& frames) {
     nlohmann::json jf = timing(fr.cycles.total());
     jf["breakdown"] = to_json(fr.cycles);
     jf["counts"] = to_json(fr.counts);
-    jf["fill_rate_share"] = fr.cycles.total() == 0 ? 0.0 : static_cast<double>(fr.cycles.pixels) / static_cast<double>(fr.cycles.total());
+    jf["fill_rate_share"] =
+        fr.cycles.total() == 0 ? 0.0 : static_cast<double>(fr.cycles.pixels) / static_cast<double>(fr.cycles.total());
     jf["passes"] = nlohmann::json::array();
     for (const auto& p : fr.passes) {
       nlohmann::json jp = timing(p.cycles.total());
@@ -135,7 +150,8 @@ void print_json(const args& a, const std::vector<cost::frame_cost>& frames) {
       jp["mode"] = mode_text(p);
       jp["breakdown"] = to_json(p.cycles);
       jp["counts"] = to_json(p.counts);
-      jp["frame_share"] = fr.cycles.total() == 0 ? 0.0 : static_cast<double>(p.cycles.total()) / static_cast<double>(fr.cycles.total());
+      jp["frame_share"] =
+          fr.cycles.total() == 0 ? 0.0 : static_cast<double>(p.cycles.total()) / static_cast<double>(fr.cycles.total());
       jf["passes"].push_back(jp);
     }
     j["frames"].push_back(jf);
@@ -144,12 +160,18 @@ void print_json(const args& a, const std::vector<cost::frame_cost>& frames) {
 }
 
 void run(args a) {
-  if (a.walk == "blocks") a.o.walk = cost::pixel_walk::blocks;
-  else if (a.walk == "pixels") a.o.walk = cost::pixel_walk::pixels;
-  else throw usage_error("--walk: blocks or pixels, got '" + a.walk + "'");
-  if (a.texture_unit == "page") a.o.texture_miss_unit = cost::texture_unit::page;
-  else if (a.texture_unit == "quarter_page") a.o.texture_miss_unit = cost::texture_unit::quarter_page;
-  else throw usage_error("--texture-miss-unit: page or quarter_page, got '" + a.texture_unit + "'");
+  if (a.walk == "blocks")
+    a.o.walk = cost::pixel_walk::blocks;
+  else if (a.walk == "pixels")
+    a.o.walk = cost::pixel_walk::pixels;
+  else
+    throw usage_error("--walk: blocks or pixels, got '" + a.walk + "'");
+  if (a.texture_unit == "page")
+    a.o.texture_miss_unit = cost::texture_unit::page;
+  else if (a.texture_unit == "quarter_page")
+    a.o.texture_miss_unit = cost::texture_unit::quarter_page;
+  else
+    throw usage_error("--texture-miss-unit: page or quarter_page, got '" + a.texture_unit + "'");
   if (a.o.blend_rate_divisor == 0) throw usage_error("--blend-rate-divisor: 1 or more");
   gs::dump::gs_dump d;
   try {
@@ -163,8 +185,10 @@ void run(args a) {
   } catch (const gs::dump::dump_error& e) {
     throw usage_error(a.file + ": " + e.what());
   }
-  if (a.json) print_json(a, frames);
-  else print_text(a, frames);
+  if (a.json)
+    print_json(a, frames);
+  else
+    print_text(a, frames);
 }
 
 }  // namespace
@@ -172,15 +196,17 @@ void run(args a) {
 void add_cost_command(CLI::App& app, context& ctx) {
   (void)ctx;
   auto a = std::make_shared<args>();
-  auto* cmd = app.add_subcommand("cost", "Price a PCSX2 GS dump on the console's GS: cycles, time at 147.456 MHz and "
-                                         "NTSC / PAL frame rate per frame and per pass, and where the cycles go "
-                                         "(docs/cost.md)");
+  auto* cmd = app.add_subcommand("cost",
+                                 "Price a PCSX2 GS dump on the console's GS: cycles, time at 147.456 MHz and "
+                                 "NTSC / PAL frame rate per frame and per pass, and where the cycles go "
+                                 "(docs/cost.md)");
   cmd->add_option("FILE", a->file, "The dump (.gs, .gs.xz, .gs.zst)")->required();
   cmd->add_flag("--json", a->json, "Every frame and every pass as JSON on stdout");
   cmd->add_option("--passes", a->passes, "Passes listed per frame in the text output")->capture_default_str();
   cmd->add_option("--walk", a->walk, "Pixel cycles: blocks (8x2 / 4x2 blocks touched) or pixels (pixels / rate)")
       ->capture_default_str();
-  cmd->add_option("--page-break-cycles", a->o.page_break_cycles, "Cycles per frame / Z page change")->capture_default_str();
+  cmd->add_option("--page-break-cycles", a->o.page_break_cycles, "Cycles per frame / Z page change")
+      ->capture_default_str();
   cmd->add_option("--texture-miss-cycles", a->o.texture_miss_cycles, "Cycles per texture miss")->capture_default_str();
   cmd->add_option("--texture-miss-unit", a->texture_unit, "What a texture miss leaves: page or quarter_page")
       ->capture_default_str();

@@ -28,12 +28,14 @@ constexpr std::uint64_t frame(std::uint64_t fbp, std::uint64_t fbw, std::uint64_
 constexpr std::uint64_t scissor_all = 2047ull << 16 | 2047ull << 48;
 constexpr std::uint64_t xyz(std::uint64_t x, std::uint64_t y) { return (x << 4) | (y << 4) << 16; }
 constexpr std::uint64_t uv(std::uint64_t u, std::uint64_t v) { return (u << 4) | (v << 4) << 16; }
-constexpr std::uint64_t tex0(std::uint64_t tbp0, std::uint64_t tbw, std::uint64_t psm, std::uint64_t tw, std::uint64_t th) {
+constexpr std::uint64_t tex0(std::uint64_t tbp0, std::uint64_t tbw, std::uint64_t psm, std::uint64_t tw,
+                             std::uint64_t th) {
   return tbp0 | tbw << 14 | psm << 20 | tw << 26 | th << 30 | 1ull << 35;  // TFX = DECAL
 }
 
 writes environment(std::uint64_t frame_value) {
-  return {{PRMODECONT, 1}, {XYOFFSET_1, 0}, {SCISSOR_1, scissor_all}, {FRAME_1, frame_value}, {TEST_1, 0}, {ZBUF_1, 1ull << 32}};
+  return {{PRMODECONT, 1},        {XYOFFSET_1, 0}, {SCISSOR_1, scissor_all},
+          {FRAME_1, frame_value}, {TEST_1, 0},     {ZBUF_1, 1ull << 32}};
 }
 
 dump::gs_dump dump_of(const packet_builder& pb, int frames = 1) {

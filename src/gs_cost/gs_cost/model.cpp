@@ -28,7 +28,9 @@ tally& tally::operator+=(const tally& o) noexcept {
   return *this;
 }
 
-double fps_unlocked(std::uint64_t cycles) noexcept { return cycles == 0 ? 0.0 : gs_clock_hz / static_cast<double>(cycles); }
+double fps_unlocked(std::uint64_t cycles) noexcept {
+  return cycles == 0 ? 0.0 : gs_clock_hz / static_cast<double>(cycles);
+}
 
 double fps_locked(std::uint64_t cycles, double hz) noexcept {
   if (cycles == 0) return hz;

@@ -32,7 +32,8 @@ std::array<std::int32_t, 2> texel_124(const packets::vertex& x, bool fst, std::u
   if (fst) return {x.U & 0x3FFF, x.V & 0x3FFF};
   const double q = std::bit_cast<float>(x.Q);
   auto fix = [&](std::uint32_t st, std::uint32_t size_log2) {
-    const double u = static_cast<double>(std::bit_cast<float>(st)) / q * 16.0 * std::ldexp(1.0, static_cast<int>(size_log2));
+    const double u =
+        static_cast<double>(std::bit_cast<float>(st)) / q * 16.0 * std::ldexp(1.0, static_cast<int>(size_log2));
     return std::isfinite(u) ? static_cast<std::int32_t>(std::clamp(std::floor(u), -1048576.0, 1048576.0)) : 0;
   };
   return {fix(x.S, tw), fix(x.T, th)};
@@ -81,8 +82,10 @@ walk_counts walk_primitive(const packets::draw_registers& r, std::span<const pac
   std::vector<span> rows;
   auto cover = [&](int x, int y) {
     span& s = rows[static_cast<std::size_t>(y - base)];
-    if (s.x0 >= s.x1) s = {x, x + 1};
-    else s = {std::min(s.x0, x), std::max(s.x1, x + 1)};
+    if (s.x0 >= s.x1)
+      s = {x, x + 1};
+    else
+      s = {std::min(s.x0, x), std::max(s.x1, x + 1)};
     y_first = std::min(y_first, y), y_last = std::max(y_last, y);
   };
   // Texel planes (12.4) for textured primitives.
@@ -126,10 +129,11 @@ walk_counts walk_primitive(const packets::draw_registers& r, std::span<const pac
   if (y_first > y_last) return c;
 
   const auto fbw = fixed::uint<6>::from_wrapped(bits(r.FRAME, 16, 6));
-  const mem::buffer frame{mem::from_page(fixed::uint<9>::from_wrapped(bits(r.FRAME, 0, 9))), fbw, known_psm(m.frame_psm)};
+  const mem::buffer frame{mem::from_page(fixed::uint<9>::from_wrapped(bits(r.FRAME, 0, 9))), fbw,
+                          known_psm(m.frame_psm)};
   const mem::buffer zbuf{mem::from_page(fixed::uint<9>::from_wrapped(bits(r.ZBUF, 0, 9))), fbw, known_psm(m.z_psm)};
-  const mem::buffer tex{fixed::uint<14>::from_wrapped(bits(r.TEX0, 0, 14)), fixed::uint<6>::from_wrapped(bits(r.TEX0, 14, 6)),
-                        known_psm(m.tex_psm)};
+  const mem::buffer tex{fixed::uint<14>::from_wrapped(bits(r.TEX0, 0, 14)),
+                        fixed::uint<6>::from_wrapped(bits(r.TEX0, 14, 6)), known_psm(m.tex_psm)};
   mem::clamp_reg clamp{};
   try {
     clamp = mem::decode_clamp(r.CLAMP & ((std::uint64_t{1} << 44) - 1));

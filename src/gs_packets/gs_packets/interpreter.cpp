@@ -144,11 +144,11 @@ void interpreter::start_transfer(std::uint64_t offset) {
     if (dir.XDIR == mem::xdir::local_to_local) {  // runs when TRXDIR is written (PCSX2 `GSState::Move`)
       mem::local_to_local(mem_, current_.bitbltbuf, current_.trxpos, current_.trxreg, dir);
       done_.push_back(current_);
-      if (opt_.observer != nullptr)
-        opt_.observer->transfer(current_,
-                                mem::transfer_bytes(current_.bitbltbuf.SPSM, static_cast<std::uint32_t>(current_.trxreg.RRW.value()),
-                                                    static_cast<std::uint32_t>(current_.trxreg.RRH.value())),
-                                true);
+      if (opt_.observer != nullptr) {
+        const auto w = static_cast<std::uint32_t>(current_.trxreg.RRW.value());
+        const auto h = static_cast<std::uint32_t>(current_.trxreg.RRH.value());
+        opt_.observer->transfer(current_, mem::transfer_bytes(current_.bitbltbuf.SPSM, w, h), true);
+      }
       return;
     }
   } catch (const register_error& e) {
