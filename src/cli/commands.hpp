@@ -36,5 +36,6 @@ void add_compare_command(CLI::App& app, context& ctx);    // two frames, pixel b
 void add_replay_command(CLI::App& app, context& ctx);     // a GS dump through the model
 void add_probe_command(CLI::App& app, context& ctx);      // the option probe and its decoder
 void add_dump_command(CLI::App& app, context& ctx);       // a method's frame as a GS dump
+void add_cost_command(CLI::App& app, context& ctx);       // a GS dump priced on the console's GS
 
 }  // namespace gsdot3::cli

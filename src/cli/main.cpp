@@ -25,6 +25,7 @@ int main(int argc, char** argv) {
   gsdot3::cli::add_replay_command(app, ctx);
   gsdot3::cli::add_probe_command(app, ctx);
   gsdot3::cli::add_dump_command(app, ctx);
+  gsdot3::cli::add_cost_command(app, ctx);
   // A repeatable option takes one value per occurrence, so `--option a=b FILE` leaves FILE positional.
   auto one_value_each = [](CLI::App* a, auto& self) -> void {
     for (CLI::Option* opt : a->get_options()) opt->allow_extra_args(false);

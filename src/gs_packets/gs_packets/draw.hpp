@@ -52,6 +52,7 @@ struct draw_registers {
                 ZBUF = 0;
   std::uint64_t TEXA = 0, DIMX = 0, DTHE = 0, COLCLAMP = 1, PABE = 0, SCANMSK = 0;
   unsigned context = 1;  // 1 or 2, for the messages
+  friend bool operator==(const draw_registers&, const draw_registers&) = default;
 };
 
 // The CLUT buffer and, when the last TEX0 write's CLUT load could not be modelled, why.

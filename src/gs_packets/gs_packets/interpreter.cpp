@@ -60,7 +60,11 @@ void interpreter::tex0_written(unsigned context, std::uint64_t offset) {
     const unsigned cld = static_cast<unsigned>(t.CLD.value());
     const bool loaded = mem::is_indexed(t.PSM) && ((cld >= 1 && cld <= 3) || (cld == 4 && clut_.state.CBP0 != before.CBP0) ||
                                                    (cld == 5 && clut_.state.CBP1 != before.CBP1));
-    if (loaded) clut_.load_error.clear();
+    if (loaded) {
+      clut_.load_error.clear();
+      const std::uint32_t entries = mem::value_bits(t.PSM) == 8 ? 256u : 16u;  // PSMT8(H): 256; PSMT4(HL, HH): 16
+      if (opt_.observer != nullptr) opt_.observer->clut_load(entries, offset);
+    }
   } catch (const std::invalid_argument& e) {  // register_error too
     clut_.load_error = std::string(e.what()) + " (TEX0 written at byte " + std::to_string(offset) + ")";
   }
@@ -87,7 +91,9 @@ void interpreter::vertex_kick(bool draw, bool with_fog, std::uint64_t offset) {
   if (draw) {
     const draw_registers r = drawing_registers();
     const std::span<const vertex> vs(queue_.data(), need);
-    if (const std::string why = check_primitive(r, clut_, vs); !why.empty()) {
+    const std::string why = check_primitive(r, clut_, vs);
+    if (opt_.observer != nullptr) opt_.observer->primitive(r, vs, why.empty(), offset);
+    if (!why.empty()) {
       const unmodelled u{std::string(prim_names[type]) + ": " + why, offset};
       unmodelled_.push_back(u);
       if (!opt_.skip_unmodelled) throw unmodelled_error(u);
@@ -138,6 +144,11 @@ void interpreter::start_transfer(std::uint64_t offset) {
     if (dir.XDIR == mem::xdir::local_to_local) {  // runs when TRXDIR is written (PCSX2 `GSState::Move`)
       mem::local_to_local(mem_, current_.bitbltbuf, current_.trxpos, current_.trxreg, dir);
       done_.push_back(current_);
+      if (opt_.observer != nullptr) {
+        const auto w = static_cast<std::uint32_t>(current_.trxreg.RRW.value());
+        const auto h = static_cast<std::uint32_t>(current_.trxreg.RRH.value());
+        opt_.observer->transfer(current_, mem::transfer_bytes(current_.bitbltbuf.SPSM, w, h), true);
+      }
       return;
     }
   } catch (const register_error& e) {
@@ -158,6 +169,7 @@ void interpreter::finish_transfer() {
   try {
     mem::host_to_local(mem_, current_.bitbltbuf, current_.trxpos, current_.trxreg, mem::trxdir_reg{}, data_);
     done_.push_back(current_);
+    if (opt_.observer != nullptr) opt_.observer->transfer(current_, need_, false);
   } catch (const std::invalid_argument& e) {
     unmodelled_.push_back({e.what(), current_.offset});
   }
@@ -207,12 +219,18 @@ void interpreter::replay(const dump::gs_dump& d) {
   std::vector<std::tuple<std::uint64_t, unsigned, std::size_t>> order;
   for (unsigned p = 0; p < paths.size(); ++p)
     for (std::size_t i = 0; i < paths[p].events.size(); ++i) order.emplace_back(paths[p].file_offsets[i], p, i);
-  for (std::size_t i = 0; i < d.packets.size(); ++i)
+  constexpr unsigned vsync_packet = 254;
+  for (std::size_t i = 0; i < d.packets.size(); ++i) {
     if (d.packets[i].type == dump::packet_type::registers) order.emplace_back(d.packets[i].offset, registers_packet, i);
+    if (d.packets[i].type == dump::packet_type::vsync && opt_.observer != nullptr)
+      order.emplace_back(d.packets[i].offset, vsync_packet, i);
+  }
   std::stable_sort(order.begin(), order.end());
   for (const auto& [at, p, i] : order) {
     if (p == registers_packet) {
       if (d.packets[i].data.size() == privileged_.size()) privileged_ = d.packets[i].data;
+    } else if (p == vsync_packet) {
+      opt_.observer->vsync(at);
     } else {
       apply(paths[p].events[i], at);
     }

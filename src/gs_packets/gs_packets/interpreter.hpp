@@ -21,6 +21,7 @@
 
 #include <array>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <cstdint>
 #include <string>
@@ -56,9 +57,24 @@ struct unmodelled_error : std::runtime_error {
   unmodelled feature;
 };
 
+// What an observer (the GS cost model, src/gs_cost) is told as the interpreter walks a dump; every
+// hook does nothing by default. primitive: each kicked primitive, before it is drawn (drawn = false when
+// check_primitive refused it: skipped, or about to stop the replay), with the registers it draws with and
+// its vertices. transfer: a host -> local transfer whose data is complete, or a local -> local copy, with
+// the bytes it moved. clut_load: a TEX0 / TEX2 write that loaded the CLUT buffer (`entries` CLUT
+// entries). vsync: a vsync packet of the dump, in dump order (replay only).
+struct interpreter_observer {
+  virtual ~interpreter_observer() = default;
+  virtual void primitive(const draw_registers&, std::span<const vertex>, bool /*drawn*/, std::uint64_t /*offset*/) {}
+  virtual void transfer(const completed_transfer&, std::uint64_t /*bytes*/, bool /*local_to_local*/) {}
+  virtual void clut_load(std::uint32_t /*entries*/, std::uint64_t /*offset*/) {}
+  virtual void vsync(std::uint64_t /*offset*/) {}
+};
+
 struct interpreter_options {
   model_options model{};
   bool skip_unmodelled = false;  // skip (and list) primitives the model cannot draw instead of stopping
+  interpreter_observer* observer = nullptr;  // not owned; told of primitives, transfers, CLUT loads, vsyncs
 };
 
 class interpreter {
