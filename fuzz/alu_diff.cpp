@@ -1,7 +1,8 @@
 // fuzz/alu_diff.cpp — libFuzzer harness: random register values, colours and model options through
 // the GS model; every path that computes the same thing must agree bit for bit.
 //   1. gs::pixel_pipeline (the reference per-unit path) against the same pixel computed with plain
-//      int arithmetic written from the facts digest's formulas (pixel_reference below), stage by stage;
+//      int arithmetic written from the formulas of ../shared/spec/gs-alu-facts.md (pixel_reference
+//      below), stage by stage;
 //   2. register decode/encode: a decoded 64-bit value re-encodes to itself, a rejected one throws
 //      gs::register_error and nothing else;
 //   1b. gs_simd::pixel_pipeline (the SIMD units, issue 30) on every SIMD target against
@@ -131,7 +132,7 @@ std::string describe(const gs::gs_registers& r, const gs::pixel_input& p, const 
   return s;
 }
 
-// ---- the plain-int reference: the facts digest's formulas, one after the other --------------------
+// ---- the plain-int reference: the formulas of ../shared/spec/gs-alu-facts.md, one after the other --
 struct reference_pixel {
   int cs[4];          // after TFX: r, g, b, a
   bool write_rgb, write_a;

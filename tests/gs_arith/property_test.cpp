@@ -1,6 +1,6 @@
 // gs_arith_property — algebraic properties of the GS units over random registers and colours
 // (rapidcheck). Each property is a fact stated independently of the code: an identity of the
-// formulas in the facts digest, or of register semantics.
+// formulas in ../shared/spec/gs-alu-facts.md, or of register semantics.
 #include <gtest/gtest.h>
 #include <rapidcheck.h>
 #include <rapidcheck/gtest.h>

@@ -2,7 +2,7 @@
 //
 // Written another way on purpose: plain `int` arithmetic, division instead of shifts, tables instead
 // of switches, whole 32-bit words instead of fixed:: types. Each function restates one line of the
-// facts digest (shared/spec/gs-alu-facts.md); none calls the model.
+// facts digest ../shared/spec/gs-alu-facts.md; none calls the model.
 #pragma once
 
 #include <algorithm>

@@ -128,7 +128,7 @@ namespace gsdot3::pipeline {
 namespace {
 
 // The report's DPB pictures: the display is the PSMCT32 words' RGB; the PSMT8 view follows the
-// facts digest's channel-fetch formula (gs-memory-facts.md, "Reading a PSMCT32 buffer as PSMT8"):
+// channel-fetch formula of ../shared/spec/gs-memory-facts.md ( "Reading a PSMCT32 buffer as PSMT8"):
 // texel (u, v) of a page is byte c of pixel (x, y) with x = ((u & ~15) >> 1) | (u & 7), x ^= 4 when
 // bit 2 of v differs from bit 1, y = ((v & ~3) >> 1) | (v & 1), c = v & 2 ? (u & 8 ? A : G) : (u & 8 ? B : R).
 TEST(MemoryPicture, DpbPicturesFollowTheChannelFetchFormula) {

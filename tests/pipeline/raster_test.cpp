@@ -21,8 +21,9 @@ std::map<std::pair<int, int>, int> hits_of_quad(xy124 a, xy124 b) {
   return hits;
 }
 
-// A fully covered rectangle drawn as two triangles covers exactly the digest's sprite rule
-// (ceil of both corners, right and bottom excluded), every pixel once: no gaps, no double hits.
+// A fully covered rectangle drawn as two triangles covers exactly the sprite rule of
+// ../shared/spec/gs-alu-facts.md (ceil of both corners, right and bottom excluded), every pixel once: no
+// gaps, no double hits.
 TEST(FillRule, QuadOfTwoTrianglesEqualsSpriteRule) {
   std::mt19937 rng(5);
   std::uniform_int_distribution<int> coord(0, 100 * 16);

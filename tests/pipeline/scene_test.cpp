@@ -53,7 +53,7 @@ pixel_inputs inputs_at(const prepared_triangle& t, const std::array<gs::rgba8, 3
   return in;
 }
 
-// MODULATE of one channel with an 8.7 colour, clamped (facts digest: (Ct·Cf_8.7) >> 14, min 255).
+// MODULATE of one channel with an 8.7 colour, clamped (../shared/spec/gs-alu-facts.md: (Ct·Cf_8.7) >> 14, min 255).
 int modulate(int texel, int cf87) { return std::min(255, (texel * cf87) >> 14); }
 
 // The DPB byte by plain integers (`formula`) and through src/proofs' per-pixel composition of the

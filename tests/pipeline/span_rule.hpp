@@ -1,6 +1,6 @@
-// tests/pipeline/span_rule.hpp — the digest's fill rule written as spans, with exact rationals:
-// rows ceil(y_top) .. ceil(y_bottom) exclusive; columns ceil(x_left) .. ceil(x_right) exclusive, where
-// x_left/x_right are where the triangle's edges cross the row's centre line. Independent of the
+// tests/pipeline/span_rule.hpp — the fill rule of ../shared/spec/gs-alu-facts.md written as spans, with exact
+// rationals: rows ceil(y_top) .. ceil(y_bottom) exclusive; columns ceil(x_left) .. ceil(x_right) exclusive,
+// where x_left/x_right are where the triangle's edges cross the row's centre line. Independent of the
 // edge-function form in src/pipeline/raster.cpp.
 #pragma once
 

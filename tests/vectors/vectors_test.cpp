@@ -1,5 +1,5 @@
 // tests of src/vectors (`gsdot3 vectors gen|ver`): hand-written lines whose expected outputs come from
-// the hardware recordings and the facts digest's formulas, gen -> ver round trips, and the
+// the hardware recordings and the formulas of ../shared/spec/gs-alu-facts.md, gen -> ver round trips, and the
 // reporting of corrupted and malformed lines.
 #include <cstddef>
 #include <filesystem>
@@ -60,11 +60,12 @@ std::string with_last_field(const std::string& line, const std::string& value) {
 
 }  // namespace
 
-// Expected outputs from outside the model: the facts digest's HW example, the simpletexture
-// recording, and COLCLAMP's clamp/wrap definition.
+// Expected outputs from outside the model: the HW example of ../shared/spec/gs-alu-facts.md ("Alpha blend"),
+// the simpletexture recording, and COLCLAMP's clamp/wrap definition.
 TEST(Vectors, HandWrittenLinesFromTheRecordingsAndTheDigest) {
   const std::string text = header("blend") +
-                           "# (Cs - Cd) * As + Cd, src ff402040, dst ff204020 -> ff5f005f on a PS2 (facts digest)\n"
+                           "# (Cs - Cd) * As + Cd, src ff402040, dst ff204020 -> ff5f005f on a PS2"
+                           " (../shared/spec/gs-alu-facts.md, \"Alpha blend\")\n"
                            "0000000000000044 ff402040 ff204020 => 05f 000 05f\n";
   const auto blend = ver(text);
   EXPECT_EQ(blend.result.passed, 1u);
@@ -175,7 +176,7 @@ TEST(Vectors, Ps2autotestsBlendRecordings) {
   const auto r = v::verify_ps2autotests(in, report, {});
   EXPECT_EQ(report.str(), "486 passed, 0 failed\n");
   EXPECT_EQ(r.failed, 0u);
-  // Under the refuted truncating shift the recordings disagree (24 mismatches, facts digest).
+  // Under the refuted truncating shift the recordings disagree (24 mismatches, ../shared/spec/gs-alu-facts.md).
   std::ifstream again(file);
   std::ostringstream what_if;
   v::verify_settings s;

@@ -1,6 +1,6 @@
 // gs_arith/alpha_blend.hpp — ALPHA_1: Cv = ((A − B)·C >> 7) + D per RGB channel.
 //
-// Evidence (facts digest, "Alpha blend"): HW-confirmed for COLCLAMP = 1 by the 486 ps2autotests
+// Evidence (../shared/spec/gs-alu-facts.md, "Alpha blend"): HW-confirmed for COLCLAMP = 1 by the 486 ps2autotests
 // results (81 ABCD modes × 6 colour pairs): the shift is floor, C is used unclamped up to 0xFF.
 // A, B, D ∈ {Cs, Cd, 0}; C ∈ {As, Ad, FIX}; the output alpha is As (alpha is never blended).
 // Widths: A − B is s9 (−255..255), ·C is s17, >> 7 is s10, + D is s11 (−509..763).

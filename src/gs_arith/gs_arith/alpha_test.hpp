@@ -1,16 +1,17 @@
 // gs_arith/alpha_test.hpp — TEST.ATE / ATST / AREF / AFAIL: which of RGB, A and Z a pixel writes.
 //
-// Evidence (facts digest, "Alpha test"; matrix row rgb_only_targets of docs/evidence.md): the post-TFX
-// alpha is compared with the 8-bit AREF by ATST (PCSX2 GSDrawScanline.cpp TestAlpha, DobieStation
-// gsthread.cpp draw_pixel, Play! GSH_VulkanDrawUtils.cpp CDrawUtils::AlphaTest agree); on failure AFAIL
-// picks what is still written:
+// Evidence (../shared/spec/gs-alu-facts.md, "Alpha test"; matrix row rgb_only_targets of docs/evidence.md):
+// the post-TFX alpha is compared with the 8-bit AREF by ATST (PCSX2 GSDrawScanline.cpp TestAlpha,
+// DobieStation gsthread.cpp draw_pixel, Play! GSH_VulkanDrawUtils.cpp CDrawUtils::AlphaTest agree); on
+// failure AFAIL picks what is still written:
 //   KEEP     nothing          FB_ONLY  RGB and A, not Z     ZB_ONLY  only Z
 //   RGB_ONLY RGB only (not A, not Z). Model option rgb_only_targets: thirty_two_bit_only (default) —
 //            other frame formats act as FB_ONLY (PCSX2 GSRegs.h GIFRegTEST::GetAFAIL(FRAME.PSM); PR 9652,
-//            tested against a PS2 per the facts digest) | all_formats — the alpha (16-bit: the A bit) is
-//            kept on every format (Play! CDrawUtils::AlphaTest, DobieStation at 3a23544b). Deciding it by
-//            TEX0.PSM (DobieStation at 68dd073e, issue 17) is not modelled: the texture's format has no
-//            part in the frame write (GetAFAIL takes FRAME.PSM). Confidence medium: no recording here.
+//            tested against a PS2 per ../shared/spec/gs-alu-facts.md, "Alpha test") | all_formats — the
+//            alpha (16-bit: the A bit) is kept on every format (Play! CDrawUtils::AlphaTest, DobieStation
+//            at 3a23544b). Deciding it by TEX0.PSM (DobieStation at 68dd073e, issue 17) is not modelled:
+//            the texture's format has no part in the frame write (GetAFAIL takes FRAME.PSM). Confidence
+//            medium: no recording here.
 // ATE = 0 or a pass writes everything (Z subject to the depth test, which is not modelled here).
 #pragma once
 

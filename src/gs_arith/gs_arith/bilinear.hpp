@@ -1,8 +1,8 @@
 // gs_arith/bilinear.hpp — texel footprint and filtering (TEX1.MMAG/MMIN = LINEAR, or NEAREST).
 //
-// Evidence (facts digest, "Rasterisation and interpolation"; matrix row bilinear of docs/evidence.md):
-// PCSX2 SW (GSDrawScanline.cpp CDrawScanline, `lerp16_4`): subtract half a texel, keep 4 fraction bits
-// as the weight, c = c0 + (((c1 − c0)·w) >> 4) with an arithmetic (floor) shift, horizontally then
+// Evidence (../shared/spec/gs-alu-facts.md, "Rasterisation and interpolation"; matrix row bilinear of
+// docs/evidence.md): PCSX2 SW (GSDrawScanline.cpp CDrawScanline, `lerp16_4`): subtract half a texel,
+// keep 4 fraction bits as the weight, c = c0 + (((c1 − c0)·w) >> 4) with an arithmetic (floor) shift, horizontally then
 // vertically, on all four channels. DobieStation (gsthread.cpp tex_lookup) takes the same footprint and
 // 4-bit weights but sums the four texels at once, Σ (w/16)·(w'/16)·c in doubles (exact: every term is a
 // multiple of 1/256 below 2^16), truncated on the store: floor(Σ w·c / 256). Play! (Vulkan

@@ -1,6 +1,6 @@
 // gs_arith/dither.hpp — DTHE / DIMX: a 4×4 matrix of 3-bit offsets added to the blended colour.
 //
-// Evidence (facts digest, "After the blend", step 1; matrix rows dither_decode, dither_targets of
+// Evidence (../shared/spec/gs-alu-facts.md, "After the blend", step 1; matrix rows dither_decode, dither_targets of
 // docs/evidence.md): the offset DIMX[y & 3][x & 3] is added to each RGB channel of the wide (s11)
 // blend output, before COLCLAMP clamp/wrap (PCSX2 GSDrawScanline.cpp CDrawScanline "WriteFrame";
 // DobieStation gsthread.cpp draw_pixel). No hardware recording covers dithering, so these are options:

@@ -2,7 +2,7 @@
 //
 // A frame-buffer word is the raw memory value of one pixel: 32 bits A8B8G8R8 for PSMCT32 and
 // PSMCT24 (whose top byte is never written), 16 bits A1B5G5R5 in the low half for PSMCT16/16S
-// (bits 16..31 are zero). Evidence (facts digest, "After the blend"):
+// (bits 16..31 are zero). Evidence (../shared/spec/gs-alu-facts.md, "After the blend"):
 // - FBA = 1 sets alpha bit 7 (SW, SH; not 24-bit targets). Confidence: medium, no HW test.
 // - 16-bit pack truncates, >> 3 per channel, alpha = bit 7 (SW). Confidence: medium, no HW test.
 // - FBMSK: a 1 bit keeps the old frame-buffer bit (GS manual, SW, SH, DB). For 16-bit targets PCSX2

@@ -1,6 +1,6 @@
 // gs_arith/gouraud.hpp — Gouraud colour interpolation in 8.7 fixed point (PRIM.IIP = 1).
 //
-// Evidence (facts digest, "Rasterisation and interpolation"): PCSX2 SW steps the RGBA colour in 8.7
+// Evidence (../shared/spec/gs-alu-facts.md, "Rasterisation and interpolation"): PCSX2 SW steps the RGBA colour in 8.7
 // fixed point and clamps the stepped value at >= 0; flat shading (IIP = 0) takes the last vertex's
 // colour. SW only, no hardware recording: confidence low for the exact rounding of the setup.
 // The triangle set-up is option gs::gouraud_setup (docs/evidence.md R9, with the functions read):

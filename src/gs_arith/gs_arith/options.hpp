@@ -1,6 +1,6 @@
 // gs_arith/options.hpp — every GS behaviour no hardware recording confirms, as a named run-time option.
 //
-// Defaults follow the facts digest (shared/spec/gs-alu-facts.md); each enumerator names its evidence.
+// Defaults follow the facts digest ../shared/spec/gs-alu-facts.md; each enumerator names its evidence.
 // Options are plain values passed to the unit functions, so the proofs can evaluate a claim under
 // each of them without rebuilding.
 #pragma once
@@ -65,8 +65,9 @@ enum class bilinear_mode { lerp16_4, nearest, weighted_sum_4 };
 
 // Which frame formats AFAIL = RGB_ONLY keeps the alpha of. thirty_two_bit_only: RGB_ONLY acts as
 // FB_ONLY unless FRAME.PSM & 0xF == 0 (PCSX2 GSRegs.h GIFRegTEST::GetAFAIL, called with FRAME.PSM by
-// GSRendererSW; PR 9652, tested against a PS2 per the facts digest; default). all_formats: alpha (the A bit of 16-bit formats) is kept for every format
-// (Play! GSH_VulkanDrawUtils.cpp CDrawUtils::AlphaTest, DobieStation draw_pixel at 3a23544b).
+// GSRendererSW; PR 9652, tested against a PS2 per ../shared/spec/gs-alu-facts.md, "Alpha test"; default).
+// all_formats: alpha (the A bit of 16-bit formats) is kept for every format (Play! GSH_VulkanDrawUtils.cpp
+// CDrawUtils::AlphaTest, DobieStation draw_pixel at 3a23544b).
 enum class rgb_only_targets { thirty_two_bit_only, all_formats };
 
 // What a texture read sees of memory written earlier in the same draw (the GS's texture page buffer;

@@ -1,6 +1,6 @@
 // gs_arith/pixel_pipeline.hpp — one pixel through the GS units in hardware order.
 //
-// Order (facts digest, "After the blend", and PCSX2 SW GSDrawScanline):
+// Order (../shared/spec/gs-alu-facts.md, "After the blend", and PCSX2 SW GSDrawScanline):
 //   1. texture function TFX/TCC on (texel, fragment colour), or the fragment colour when PRIM.TME = 0
 //   2. alpha test on the resulting alpha: which of RGB / A / Z are written
 //   3. alpha blend when PRIM.ABE = 1, unless PABE = 1 and As < 0x80 (then Cs passes); Cd/Ad are the

@@ -1,7 +1,7 @@
 // gs_arith/rasteriser.hpp — the GS rasteriser (a hardware unit below the pipeline: the renderer and the
 // packet interpreter draw through this one implementation).
 //
-// Evidence (facts digest, "Rasterisation and interpolation"; PCSX2 SW only, not HW-verified):
+// Evidence (../shared/spec/gs-alu-facts.md, "Rasterisation and interpolation"; PCSX2 SW only, not HW-verified):
 // - Vertex XY are 12.4 fixed point; pixel centres are at integer coordinates.
 // - Top-left fill rule: rows ceil(y_top) .. ceil(y_bottom) exclusive, columns ceil(x_left) ..
 //   ceil(x_right) exclusive. Evaluated here with exact integer edge functions: a pixel centre on an

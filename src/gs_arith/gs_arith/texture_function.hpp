@@ -1,6 +1,6 @@
 // gs_arith/texture_function.hpp — TEX0.TFX / TEX0.TCC: texel Ct combined with the fragment colour Cf.
 //
-// Evidence (facts digest, "Texture function"; matrix rows tfx_rounding, gouraud_fraction and
+// Evidence (../shared/spec/gs-alu-facts.md, "Texture function"; matrix rows tfx_rounding, gouraud_fraction and
 // highlight_clamp of docs/evidence.md): PCSX2 SW (GSDrawScanline.cpp CDrawScanline "AlphaTFX" /
 // "ColorTFX": modulate16 then clamp8, addus8 for HIGHLIGHT alpha), the PCSX2 HW shaders
 // (common/tfx_ps_tfx.inc tfx(): min(C_out, 255)) and Play! (GSH_VulkanDrawDesktop.cpp: Clamp to 1.0

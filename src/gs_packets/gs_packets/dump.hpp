@@ -12,7 +12,7 @@
 //   old layout (the first u32 is not 0xFFFFFFFF): u32 crc, u32 state_size, the state blob.
 //   both: the 8 KiB privileged registers (GSPrivRegSet), then packets, each a type byte:
 //     0 transfer  [path u8][size u32][size bytes]  (path 0 = PATH1 old, 1 PATH2, 2 PATH3, 3 PATH1 new:
-//                 the facts digest; GSDumpBase::Transfer writes the index it is given)
+//                 ../shared/spec/gs-memory-facts.md "GS dumps"; GSDumpBase::Transfer writes the index it is given)
 //     1 vsync     [field u8]
 //     2 readFIFO2 [size u32]
 //     3 registers [8 KiB privileged registers]

@@ -1,154 +1,18 @@
-// vectors/units.cpp — the unit table: fields, model evaluation and case generators per GS unit.
+// vectors/units.cpp — the unit table: per GS unit its fields, its model evaluation and its case
+// generators (the field codecs and register values they use are in fields.hpp).
 #include "vectors/units.hpp"
 
 #include <algorithm>
-#include <array>
 #include <string>
 
-#include "gs_arith/pixel_pipeline.hpp"
-#include "gs_arith/registers.hpp"
+#include "vectors/fields.hpp"
 
 namespace gsdot3::vectors {
-
-// ---- random ---------------------------------------------------------------------------------------
-std::uint64_t random::next() {
-  std::uint64_t z = (state_ += 0x9E3779B97F4A7C15u);
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9u;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBu;
-  return z ^ (z >> 31);
-}
-std::uint64_t random::below(std::uint64_t n) {
-  // Rejection sampling: uniform, and the same sequence on every platform.
-  const std::uint64_t limit = ~std::uint64_t{0} - (~std::uint64_t{0} % n);
-  std::uint64_t v = next();
-  while (v >= limit) v = next();
-  return v % n;
-}
-std::uint8_t random::colour_byte() {
-  if (coin()) return boundary_bytes[below(std::size(boundary_bytes))];
-  return static_cast<std::uint8_t>(next());
-}
-std::uint32_t random::colour_word() {
-  std::uint32_t w = 0;
-  for (int i = 0; i < 4; ++i) w |= std::uint32_t{colour_byte()} << (8 * i);
-  return w;
-}
 
 namespace {
 
 using gs::u8;
-
-// ---- field codecs -------------------------------------------------------------------------------
-void check_max(std::uint64_t v, std::uint64_t max, std::string_view name) {
-  if (v > max) throw domain_error(std::string(name) + " above its maximum");
-}
-// An 11-bit two's-complement field (the blender's s11 values).
-gs::s11 s11_field(std::uint64_t v, std::string_view name) {
-  check_max(v, 0x7FF, name);
-  return gs::s11::from_wrapped(v);
-}
-std::uint64_t s11_bits(gs::s11 v) { return static_cast<std::uint64_t>(v.value()) & 0x7FF; }
-gs::rgb_wide wide_fields(const values& in, std::size_t first) {
-  return {s11_field(in[first], "R"), s11_field(in[first + 1], "G"), s11_field(in[first + 2], "B")};
-}
-values wide_values(const gs::rgb_wide& w) { return {s11_bits(w.r), s11_bits(w.g), s11_bits(w.b)}; }
-
-gs::frame_psm psm_field(std::uint64_t v) {
-  static constexpr std::array valid = {gs::frame_psm::PSMCT32, gs::frame_psm::PSMCT24, gs::frame_psm::PSMCT16,
-                                       gs::frame_psm::PSMCT16S, gs::frame_psm::PSMZ32, gs::frame_psm::PSMZ24,
-                                       gs::frame_psm::PSMZ16, gs::frame_psm::PSMZ16S};
-  for (auto p : valid) {
-    if (static_cast<std::uint64_t>(p) == v) return p;
-  }
-  throw domain_error("PSM is not a frame-buffer format (00 01 02 0a 30 31 32 3a)");
-}
-constexpr std::uint64_t frame_formats[] = {0x00, 0x01, 0x02, 0x0a, 0x30, 0x31, 0x32, 0x3a};
-constexpr std::uint64_t level1_formats[] = {0x00, 0x01, 0x02};  // one of each pixel size
-
-// A frame-buffer word of format psm (16-bit formats hold the low half only).
-std::uint32_t frame_word(std::uint64_t v, gs::frame_psm psm, std::string_view name) {
-  check_max(v, gs::bits_of(psm) == gs::pixel_bits::b16 ? 0xFFFF : 0xFFFFFFFF, name);
-  return static_cast<std::uint32_t>(v);
-}
-std::uint64_t fit_frame_word(std::uint32_t w, std::uint64_t psm) {
-  return gs::bits_of(static_cast<gs::frame_psm>(psm)) == gs::pixel_bits::b16 ? (w & 0xFFFFu) : w;
-}
-
-gs::rgba8 colour_field(std::uint64_t v, std::string_view name) {
-  check_max(v, 0xFFFFFFFF, name);
-  return gs::rgba8::from_u32(static_cast<std::uint32_t>(v));
-}
-gs::gouraud_channel cf_field(std::uint64_t v) {
-  check_max(v, 0x7FFF, "Cf (8.7)");
-  return gs::gouraud_channel::from_wrapped(v);
-}
-gs::fragment_colour fragment_fields(const values& in, std::size_t first) {
-  return {cf_field(in[first]), cf_field(in[first + 1]), cf_field(in[first + 2]), cf_field(in[first + 3])};
-}
-std::uint64_t cf_random(random& rng) {
-  return std::uint64_t{rng.colour_byte()} << 7 | (rng.coin() ? 0 : rng.below(128));
-}
-
-// Register decoders report a bad value as gs::register_error; here it is a domain error.
-template <typename Decode>
-auto decode(Decode&& d, std::uint64_t v) {
-  try {
-    return d(v);
-  } catch (const gs::register_error& e) {
-    throw domain_error(e.what());
-  }
-}
-
-std::uint64_t word(int r, int g, int b, int a) {
-  return static_cast<std::uint64_t>(r & 0xFF) | static_cast<std::uint64_t>(g & 0xFF) << 8 |
-         static_cast<std::uint64_t>(b & 0xFF) << 16 | static_cast<std::uint64_t>(a & 0xFF) << 24;
-}
-
-// s11 values at the edges of the blend output range (−509..763), of 8 bits and of 11 bits.
-constexpr int wide_boundary[] = {-1024, -509, -256, -255, -1, 0, 1, 0x7F, 0x80, 0xFE, 0xFF, 0x100, 0x101, 0x1FF, 763, 1023};
-std::uint64_t wide_bits(int v) { return static_cast<std::uint64_t>(v) & 0x7FF; }
-std::uint64_t wide_random(random& rng) {
-  if (rng.coin()) return wide_bits(wide_boundary[rng.below(std::size(wide_boundary))]);
-  return rng.below(0x800);
-}
-
-std::uint64_t alpha_value(int a, int b, int c, int d, int fix) {
-  return gs::encode(gs::alpha_reg{static_cast<gs::blend_colour>(a), static_cast<gs::blend_colour>(b),
-                                  static_cast<gs::blend_alpha>(c), static_cast<gs::blend_colour>(d), u8::from_wrapped(fix)});
-}
-std::uint64_t alpha_random(random& rng) {
-  auto sel = [&] { return static_cast<int>(rng.below(3)); };
-  const int a = sel(), b = sel(), c = sel(), d = sel();
-  return alpha_value(a, b, c, d, rng.colour_byte());
-}
-std::uint64_t test_value(bool ate, int atst, int aref, int afail) {
-  gs::test_reg t;
-  t.ATE = ate;
-  t.ATST = static_cast<gs::atst>(atst);
-  t.AREF = u8::from_wrapped(aref);
-  t.AFAIL = static_cast<gs::afail>(afail);
-  return gs::encode(t);
-}
-std::uint64_t test_random(random& rng) {
-  const bool ate = rng.coin();
-  const int atst = static_cast<int>(rng.below(8));
-  const int aref = rng.colour_byte();
-  return test_value(ate, atst, aref, static_cast<int>(rng.below(4)));
-}
-std::uint64_t dimx_random(random& rng) {
-  gs::dimx_reg d;
-  for (auto& row : d.DM) {
-    for (auto& e : row) e = gs::u3::from_wrapped(rng.below(8));
-  }
-  return gs::encode(d);
-}
-std::uint64_t dimx_filled(int dm) {
-  gs::dimx_reg d;
-  for (auto& row : d.DM) row.fill(gs::u3::from_wrapped(dm));
-  return gs::encode(d);
-}
-// A matrix with every 3-bit value, the pattern PCSX2's default DIMX resembles.
-constexpr std::uint64_t dimx_mixed = 0x7340'2615'0736'5142u;  // every nibble <= 7
+using namespace fields;
 
 // ---- blend ---------------------------------------------------------------------------------------
 values blend_eval(const values& in, const gs::model_options& o) {
@@ -166,14 +30,16 @@ void blend_level1(const case_sink& emit) {
                 // R crosses (Cs, Cd) = (s, t); As = k, Ad = t, FIX = s, so every C picks a different one.
                 emit({alpha_value(a, b, c, d, s), word(s, t, k, k), word(t, s, s, t)});
 }
-void blend_random(random& rng, const case_sink& emit) { emit({alpha_random(rng), rng.colour_word(), rng.colour_word()}); }
+void blend_random(random& rng, const case_sink& emit) {
+  emit({alpha_random(rng), rng.colour_word(), rng.colour_word()});
+}
 
 // ---- tfx -------------------------------------------------------------------------------------------
 values tfx_eval(const values& in, const gs::model_options& o) {
   check_max(in[0], 3, "TFX");
   check_max(in[1], 1, "TCC");
-  const auto out = gs::texture_function(static_cast<gs::tfx>(in[0]), static_cast<gs::tcc>(in[1]), colour_field(in[2], "Ct"),
-                                        fragment_fields(in, 3), o);
+  const auto out = gs::texture_function(static_cast<gs::tfx>(in[0]), static_cast<gs::tcc>(in[1]),
+                                        colour_field(in[2], "Ct"), fragment_fields(in, 3), o);
   return {out.to_u32()};
 }
 void tfx_level1(const case_sink& emit) {
@@ -232,7 +98,8 @@ values dither_eval(const values& in, const gs::model_options& o) {
   const auto dimx = decode(gs::decode_dimx, in[2]);
   check_max(in[3], 0x7FF, "X");
   check_max(in[4], 0x7FF, "Y");
-  return wide_values(gs::dither(wide_fields(in, 5), dimx, static_cast<unsigned>(in[3]), static_cast<unsigned>(in[4]), dthe, psm, o));
+  return wide_values(
+      gs::dither(wide_fields(in, 5), dimx, static_cast<unsigned>(in[3]), static_cast<unsigned>(in[4]), dthe, psm, o));
 }
 void dither_level1(const case_sink& emit) {
   static constexpr std::uint64_t formats[] = {0x00, 0x01, 0x02, 0x0a};
@@ -243,18 +110,20 @@ void dither_level1(const case_sink& emit) {
       for (auto m : matrices)
         for (const auto& p : xy)
           for (std::size_t i = 0; i < std::size(wide_boundary); ++i)
-            emit({dthe, psm, m, p[0], p[1], wide_bits(wide_boundary[i]), wide_bits(wide_boundary[(i + 5) % std::size(wide_boundary)]),
+            emit({dthe, psm, m, p[0], p[1], wide_bits(wide_boundary[i]),
+                  wide_bits(wide_boundary[(i + 5) % std::size(wide_boundary)]),
                   wide_bits(wide_boundary[(i + 11) % std::size(wide_boundary)])});
 }
 void dither_random(random& rng, const case_sink& emit) {
-  emit({rng.below(2), frame_formats[rng.below(std::size(frame_formats))], dimx_random(rng), rng.below(0x800), rng.below(0x800),
-        wide_random(rng), wide_random(rng), wide_random(rng)});
+  emit({rng.below(2), frame_formats[rng.below(std::size(frame_formats))], dimx_random(rng), rng.below(0x800),
+        rng.below(0x800), wide_random(rng), wide_random(rng), wide_random(rng)});
 }
 void dither_all(const case_sink& emit) {
   for (std::uint64_t dthe = 0; dthe < 2; ++dthe)
     for (auto psm : frame_formats)
       for (int dm = 0; dm < 8; ++dm)
-        for (std::uint64_t v = 0; v < 0x800; ++v) emit({dthe, psm, dimx_filled(dm), 0, 0, v, (v + 683) & 0x7FF, (v + 1366) & 0x7FF});
+        for (std::uint64_t v = 0; v < 0x800; ++v)
+          emit({dthe, psm, dimx_filled(dm), 0, 0, v, (v + 683) & 0x7FF, (v + 1366) & 0x7FF});
 }
 
 // ---- colclamp --------------------------------------------------------------------------------------
@@ -267,9 +136,12 @@ void colclamp_level1(const case_sink& emit) {
   constexpr std::size_t n = std::size(wide_boundary);
   for (std::uint64_t clamp = 0; clamp < 2; ++clamp)
     for (std::size_t i = 0; i < n; ++i)
-      emit({clamp, wide_bits(wide_boundary[i]), wide_bits(wide_boundary[(i + 5) % n]), wide_bits(wide_boundary[(i + 11) % n])});
+      emit({clamp, wide_bits(wide_boundary[i]), wide_bits(wide_boundary[(i + 5) % n]),
+            wide_bits(wide_boundary[(i + 11) % n])});
 }
-void colclamp_random(random& rng, const case_sink& emit) { emit({rng.below(2), wide_random(rng), wide_random(rng), wide_random(rng)}); }
+void colclamp_random(random& rng, const case_sink& emit) {
+  emit({rng.below(2), wide_random(rng), wide_random(rng), wide_random(rng)});
+}
 void colclamp_all(const case_sink& emit) {
   for (std::uint64_t clamp = 0; clamp < 2; ++clamp)
     for (std::uint64_t v = 0; v < 0x800; ++v) emit({clamp, v, (v + 683) & 0x7FF, (v + 1366) & 0x7FF});
@@ -295,19 +167,25 @@ void frame_level1(const case_sink& emit) {
 }
 void frame_random(random& rng, const case_sink& emit) {
   const auto psm = frame_formats[rng.below(std::size(frame_formats))];
-  emit({psm, rng.below(2), rng.coin() ? 0 : rng.colour_word(), rng.colour_word(), fit_frame_word(rng.colour_word(), psm)});
+  emit({psm, rng.below(2), rng.coin() ? 0 : rng.colour_word(), rng.colour_word(),
+        fit_frame_word(rng.colour_word(), psm)});
 }
 
 // ---- pixel -----------------------------------------------------------------------------------------
 // Inputs 0..9 are registers (named as in gs::register_names), set through gs::set_register.
-constexpr std::string_view pixel_registers[] = {"PRIM", "TEX0_1", "ALPHA_1", "TEST_1", "FRAME_1",
-                                                "COLCLAMP", "PABE", "FBA_1", "DTHE", "DIMX"};
+constexpr std::string_view pixel_registers[] = {"PRIM",     "TEX0_1", "ALPHA_1", "TEST_1", "FRAME_1",
+                                                "COLCLAMP", "PABE",   "FBA_1",   "DTHE",   "DIMX"};
 constexpr std::size_t pixel_register_count = std::size(pixel_registers);
 
 values pixel_eval(const values& in, const gs::model_options& o) {
   gs::gs_registers regs;
   for (std::size_t i = 0; i < pixel_register_count; ++i) {
-    decode([&](std::uint64_t v) { gs::set_register(regs, pixel_registers[i], v); return 0; }, in[i]);
+    decode(
+        [&](std::uint64_t v) {
+          gs::set_register(regs, pixel_registers[i], v);
+          return 0;
+        },
+        in[i]);
   }
   std::size_t k = pixel_register_count;
   const auto cf = fragment_fields(in, k);
@@ -318,29 +196,11 @@ values pixel_eval(const values& in, const gs::model_options& o) {
   const gs::pixel_input p{cf, texel, dst, static_cast<unsigned>(in[k + 6]), static_cast<unsigned>(in[k + 7])};
   return {gs::pixel_pipeline(regs, p, o).out};
 }
-std::uint64_t prim_value(bool tme, bool abe) {
-  gs::prim_reg p;
-  p.PRIM = gs::prim_type::SPRITE;
-  p.TME = tme;
-  p.ABE = abe;
-  return gs::encode(p);
-}
-std::uint64_t tex0_value(int tfx, int tcc) {
-  gs::tex0_reg t;
-  t.TFX = static_cast<gs::tfx>(tfx);
-  t.TCC = static_cast<gs::tcc>(tcc);
-  return gs::encode(t);
-}
-std::uint64_t frame_value(std::uint64_t psm, std::uint32_t fbmsk) {
-  gs::frame_reg f;
-  f.PSM = static_cast<gs::frame_psm>(psm);
-  f.FBMSK = fbmsk;
-  return gs::encode(f);
-}
 void pixel_level1(const case_sink& emit) {
   // Every switch of the pipeline crossed with boundary vertex and destination colours; the
   // remaining registers fixed: MODULATE/RGBA, (Cs − Cd)·As + Cd, A >= 0x40 else RGB_ONLY, mixed DIMX.
-  const std::uint64_t tex0 = tex0_value(0, 1), alpha = alpha_value(0, 1, 0, 1, 0x80), test = test_value(true, 5, 0x40, 3);
+  const std::uint64_t tex0 = tex0_value(0, 1), alpha = alpha_value(0, 1, 0, 1, 0x80),
+                      test = test_value(true, 5, 0x40, 3);
   for (int prim = 0; prim < 4; ++prim)
     for (auto psm : level1_formats)
       for (int bitset = 0; bitset < 16; ++bitset)
@@ -348,8 +208,9 @@ void pixel_level1(const case_sink& emit) {
           for (int d : boundary_bytes) {
             const std::uint64_t cf = std::uint64_t(f) << 7;
             emit({prim_value(prim & 1, prim & 2), tex0, alpha, test, frame_value(psm, 0), std::uint64_t(bitset & 1),
-                  std::uint64_t(bitset >> 1 & 1), std::uint64_t(bitset >> 2 & 1), std::uint64_t(bitset >> 3 & 1), dimx_mixed,
-                  cf, std::uint64_t(d) << 7, cf, cf, 0x80FF4080, fit_frame_word(word(d, f, d, d), psm), 1, 2});
+                  std::uint64_t(bitset >> 1 & 1), std::uint64_t(bitset >> 2 & 1), std::uint64_t(bitset >> 3 & 1),
+                  dimx_mixed, cf, std::uint64_t(d) << 7, cf, cf, 0x80FF4080, fit_frame_word(word(d, f, d, d), psm), 1,
+                  2});
           }
 }
 void pixel_random(random& rng, const case_sink& emit) {
@@ -360,9 +221,9 @@ void pixel_random(random& rng, const case_sink& emit) {
   prim.ABE = rng.coin();
   const auto psm = frame_formats[rng.below(std::size(frame_formats))];
   emit({gs::encode(prim), tex0_value(static_cast<int>(rng.below(4)), static_cast<int>(rng.below(2))), alpha_random(rng),
-        test_random(rng), frame_value(psm, rng.coin() ? 0 : rng.colour_word()), rng.below(2), rng.below(2), rng.below(2),
-        rng.below(2), dimx_random(rng), cf_random(rng), cf_random(rng), cf_random(rng), cf_random(rng), rng.colour_word(),
-        fit_frame_word(rng.colour_word(), psm), rng.below(0x800), rng.below(0x800)});
+        test_random(rng), frame_value(psm, rng.coin() ? 0 : rng.colour_word()), rng.below(2), rng.below(2),
+        rng.below(2), rng.below(2), dimx_random(rng), cf_random(rng), cf_random(rng), cf_random(rng), cf_random(rng),
+        rng.colour_word(), fit_frame_word(rng.colour_word(), psm), rng.below(0x800), rng.below(0x800)});
 }
 
 std::vector<field> pixel_inputs() {
@@ -381,34 +242,70 @@ std::vector<field> pixel_inputs() {
 
 const std::vector<unit>& units() {
   static const std::vector<unit> table = {
-      {"blend", "ALPHA_1 blend ((A - B) * C >> 7) + D per RGB channel, before COLCLAMP (11-bit two's complement)",
-       {{"ALPHA_1", 16}, {"Cs", 8}, {"Cd", 8}}, {{"R", 3}, {"G", 3}, {"B", 3}},
-       blend_eval, blend_level1, blend_random, nullptr,
+      {"blend",
+       "ALPHA_1 blend ((A - B) * C >> 7) + D per RGB channel, before COLCLAMP (11-bit two's complement)",
+       {{"ALPHA_1", 16}, {"Cs", 8}, {"Cd", 8}},
+       {{"R", 3}, {"G", 3}, {"B", 3}},
+       blend_eval,
+       blend_level1,
+       blend_random,
+       nullptr,
        "81 modes x FIX x Cs x Cd (2^72 cases) is not practical; level 2 samples it"},
-      {"tfx", "texture function TFX/TCC: texel Ct and fragment colour Cf (8.7 per channel) -> Cs",
-       {{"TFX", 1}, {"TCC", 1}, {"Ct", 8}, {"CfR", 4}, {"CfG", 4}, {"CfB", 4}, {"CfA", 4}}, {{"Cs", 8}},
-       tfx_eval, tfx_level1, tfx_random, tfx_all,
+      {"tfx",
+       "texture function TFX/TCC: texel Ct and fragment colour Cf (8.7 per channel) -> Cs",
+       {{"TFX", 1}, {"TCC", 1}, {"Ct", 8}, {"CfR", 4}, {"CfG", 4}, {"CfB", 4}, {"CfA", 4}},
+       {{"Cs", 8}},
+       tfx_eval,
+       tfx_level1,
+       tfx_random,
+       tfx_all,
        "every TFX x TCC x Ct channel value x flat Cf channel value (fraction 0), all channels equal: 524288 cases; "
        "the 7 fraction bits of a Gouraud Cf are sampled by levels 1 and 2"},
-      {"atest", "alpha test TEST_1 (ATE ATST AREF AFAIL) on alpha A for frame format PSM -> writes of RGB, A, Z",
-       {{"TEST_1", 16}, {"PSM", 2}, {"A", 2}}, {{"RGB", 1}, {"A", 1}, {"Z", 1}},
-       atest_eval, atest_level1, atest_random, atest_all,
-       "every ATST x AREF x A with AFAIL = KEEP (524288 cases), then every AFAIL x frame format on a failing test (32 cases)"},
-      {"dither", "DTHE/DIMX offset added to the blend output at pixel (X, Y) for frame format PSM (11-bit two's complement)",
-       {{"DTHE", 1}, {"PSM", 2}, {"DIMX", 16}, {"X", 3}, {"Y", 3}, {"R", 3}, {"G", 3}, {"B", 3}}, {{"R", 3}, {"G", 3}, {"B", 3}},
-       dither_eval, dither_level1, dither_random, dither_all,
+      {"atest",
+       "alpha test TEST_1 (ATE ATST AREF AFAIL) on alpha A for frame format PSM -> writes of RGB, A, Z",
+       {{"TEST_1", 16}, {"PSM", 2}, {"A", 2}},
+       {{"RGB", 1}, {"A", 1}, {"Z", 1}},
+       atest_eval,
+       atest_level1,
+       atest_random,
+       atest_all,
+       "every ATST x AREF x A with AFAIL = KEEP (524288 cases), then every AFAIL x frame format on a failing test (32 "
+       "cases)"},
+      {"dither",
+       "DTHE/DIMX offset added to the blend output at pixel (X, Y) for frame format PSM (11-bit two's complement)",
+       {{"DTHE", 1}, {"PSM", 2}, {"DIMX", 16}, {"X", 3}, {"Y", 3}, {"R", 3}, {"G", 3}, {"B", 3}},
+       {{"R", 3}, {"G", 3}, {"B", 3}},
+       dither_eval,
+       dither_level1,
+       dither_random,
+       dither_all,
        "every DTHE x frame format x 3-bit DIMX entry (filling the matrix) x 11-bit value: 262144 cases"},
-      {"colclamp", "COLCLAMP: an 11-bit two's-complement blend output per channel -> 8 bits (clamp or wrap)",
-       {{"CLAMP", 1}, {"R", 3}, {"G", 3}, {"B", 3}}, {{"R", 2}, {"G", 2}, {"B", 2}},
-       colclamp_eval, colclamp_level1, colclamp_random, colclamp_all,
+      {"colclamp",
+       "COLCLAMP: an 11-bit two's-complement blend output per channel -> 8 bits (clamp or wrap)",
+       {{"CLAMP", 1}, {"R", 3}, {"G", 3}, {"B", 3}},
+       {{"R", 2}, {"G", 2}, {"B", 2}},
+       colclamp_eval,
+       colclamp_level1,
+       colclamp_random,
+       colclamp_all,
        "every CLAMP x 11-bit value (each channel sees every value): 4096 cases"},
-      {"frame", "frame write: FBA, pack to FRAME.PSM, FBMSK merge of colour C over the old word",
-       {{"PSM", 2}, {"FBA", 1}, {"FBMSK", 8}, {"C", 8}, {"old", 8}}, {{"new", 8}},
-       frame_eval, frame_level1, frame_random, nullptr,
+      {"frame",
+       "frame write: FBA, pack to FRAME.PSM, FBMSK merge of colour C over the old word",
+       {{"PSM", 2}, {"FBA", 1}, {"FBMSK", 8}, {"C", 8}, {"old", 8}},
+       {{"new", 8}},
+       frame_eval,
+       frame_level1,
+       frame_random,
+       nullptr,
        "8 formats x FBA x FBMSK x C x old (2^100 cases) is not practical; level 2 samples it"},
-      {"pixel", "one pixel through the whole pipeline (gs::pixel_pipeline): registers, Cf (8.7), texel, dst, X, Y -> new word",
-       pixel_inputs(), {{"out", 8}},
-       pixel_eval, pixel_level1, pixel_random, nullptr,
+      {"pixel",
+       "one pixel through the whole pipeline (gs::pixel_pipeline): registers, Cf (8.7), texel, dst, X, Y -> new word",
+       pixel_inputs(),
+       {{"out", 8}},
+       pixel_eval,
+       pixel_level1,
+       pixel_random,
+       nullptr,
        "the register state space is not practical to enumerate; level 2 samples it"},
   };
   return table;
