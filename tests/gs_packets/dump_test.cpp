@@ -97,6 +97,18 @@ TEST(Dump, NewLayoutByteByByte) {
   EXPECT_EQ(b.size(), pk2 + 7);
 }
 
+// assign_offsets against the reader (an independent walk of the written bytes), and a dump built in
+// memory without it refused by decode_paths instead of replayed in the wrong order.
+TEST(Dump, AssignedOffsetsAreWhereTheReaderFindsThePackets) {
+  gs_dump d = sample();
+  EXPECT_THROW(decode_paths(d), dump_error);
+  assign_offsets(d);
+  const gs_dump r = read_dump(write_dump(d));
+  ASSERT_EQ(r.packets.size(), d.packets.size());
+  for (std::size_t i = 0; i < d.packets.size(); ++i) EXPECT_EQ(d.packets[i].offset, r.packets[i].offset) << i;
+  EXPECT_EQ(decode_paths(d)[2].file_offsets, decode_paths(r)[2].file_offsets);
+}
+
 TEST(Dump, ReadsBackWhatItWrote) {
   const gs_dump d = sample();
   const auto b = write_dump(d);

@@ -36,6 +36,7 @@ dump::gs_dump upload_dump() {
   d.state = dump::make_state_v8();
   d.packets.push_back({dump::packet_type::transfer, 2, 0, 0, pb.bytes(), 0});
   d.packets.push_back({dump::packet_type::vsync, 0, 0, 0, {}, 0});
+  dump::assign_offsets(d);
   return d;
 }
 

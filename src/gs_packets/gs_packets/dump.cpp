@@ -123,6 +123,20 @@ std::vector<std::uint8_t> write_dump(const gs_dump& d) {
   return out;
 }
 
+void assign_offsets(gs_dump& d) {
+  // write_dump's order: marker and header size (8), GSDumpHeader, serial, screenshot, state, registers.
+  std::uint64_t at = 8 + header_bytes + d.serial.size() + d.screenshot.size() + d.state.size() + d.privileged.size();
+  for (packet& p : d.packets) {
+    p.offset = at;
+    switch (p.type) {
+      case packet_type::transfer: at += 1 + 1 + 4 + p.data.size(); break;
+      case packet_type::vsync: at += 1 + 1; break;
+      case packet_type::read_fifo2: at += 1 + 4; break;
+      case packet_type::registers: at += 1 + privileged_bytes; break;
+    }
+  }
+}
+
 gs_dump read_dump(std::span<const std::uint8_t> bytes) {
   reader r(bytes);
   gs_dump d;
@@ -220,6 +234,12 @@ gs_dump read_dump(std::span<const std::uint8_t> bytes) {
 std::vector<path_stream> decode_paths(const gs_dump& d) {
   std::vector<path_stream> paths(4);
   std::vector<std::vector<std::pair<std::size_t, const packet*>>> starts(4);  // (stream byte, packet)
+  for (std::size_t i = 1; i < d.packets.size(); ++i)
+    if (d.packets[i].offset <= d.packets[i - 1].offset)
+      throw dump_error("packet " + std::to_string(i) + " at byte " + std::to_string(d.packets[i].offset) +
+                       " does not follow packet " + std::to_string(i - 1) + " at byte " +
+                       std::to_string(d.packets[i - 1].offset) + ": offsets unset (a dump built in memory needs "
+                       "assign_offsets)");
   for (const packet& p : d.packets) {
     if (p.type != packet_type::transfer || p.path > 3) continue;
     starts[p.path].emplace_back(paths[p.path].bytes.size(), &p);

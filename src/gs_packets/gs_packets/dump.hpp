@@ -47,7 +47,8 @@ struct packet {
   std::uint8_t field = 0;             // vsync
   std::uint32_t size = 0;             // read_fifo2
   std::vector<std::uint8_t> data;     // transfer data, or the 8 KiB registers
-  std::uint64_t offset = 0;           // byte offset of the type byte in the (uncompressed) dump; set by read
+  std::uint64_t offset = 0;           // byte offset of the type byte in the (uncompressed) dump; set by
+                                      // read_dump, or by assign_offsets for a dump built in memory
 };
 
 // What read_dump accepted that a strict reader would refuse, as PCSX2 accepts it (one per leniency):
@@ -83,6 +84,9 @@ struct gs_dump {
 // Serialises in the new layout (old-layout dumps are read, not written). Throws dump_error when the
 // dump cannot be represented (screenshot size ≠ width × height × 4, registers not 8 KiB).
 std::vector<std::uint8_t> write_dump(const gs_dump& d);
+// Sets every packet's offset to the byte write_dump writes its type byte at. A dump built in memory
+// needs it before decode_paths or a replay, which order the packets and name faults by these offsets.
+void assign_offsets(gs_dump& d);
 // Parses either layout; malformed input throws dump_error with one line naming the byte offset. What
 // PCSX2 refuses is refused with its reason: a state version above 9 ("GS: Savestate version is
 // incompatible.  Load aborted.", GSState::Defrost, STATE_VERSION 9), a serial outside the header

@@ -395,6 +395,7 @@ gs::dump::gs_dump frame_dump(const frame_packets& fp, const dump_layout& layout)
   gs::dump::packet vsync;
   vsync.type = gs::dump::packet_type::vsync;
   d.packets.push_back(std::move(vsync));
+  gs::dump::assign_offsets(d);
   return d;
 }
 
