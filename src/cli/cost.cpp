@@ -11,9 +11,9 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "cost_args.hpp"
+#include "gs_cost/cost_json.hpp"
 #include "gs_cost/model.hpp"
-#include "gs_memory/psm_names.hpp"
-#include "gs_packets/draw.hpp"
 
 namespace gsdot3::cli {
 namespace {
@@ -21,10 +21,11 @@ namespace {
 namespace cost = gs::cost;
 
 struct args {
-  std::string file, walk = "blocks", texture_unit = "page";
+  std::string file;
   bool json = false;
   std::size_t passes = 40;
-  cost::cost_options o{};
+  cost_args model;
+  cost::cost_options o{};  // model.resolve()
 };
 
 std::string fixed_str(double v, int digits) {
@@ -37,50 +38,6 @@ std::string pct(std::uint64_t part, std::uint64_t whole) {
   return whole == 0 ? "0.0 %" : fixed_str(100.0 * static_cast<double>(part) / static_cast<double>(whole), 1) + " %";
 }
 
-std::string mode_text(const cost::pass_cost& p) {
-  if (p.counts.primitives == 0) return "transfers only";
-  const auto& m = p.mode;
-  std::string s = std::string(gs::packets::prim_names[m.prim & 7]) + " " +
-                  std::string(gs::mem::name_of(static_cast<gs::mem::psm>(m.frame_psm)));
-  if (m.textured)
-    s +=
-        " tex " + std::string(gs::mem::name_of(static_cast<gs::mem::psm>(m.tex_psm))) + (m.bilinear ? " bilinear" : "");
-  if (m.blend_reads_dst) s += " blend";
-  if (m.z_read || m.z_write) s += std::string(" Z") + (m.z_read ? "r" : "") + (m.z_write ? "w" : "");
-  return s;
-}
-
-nlohmann::json to_json(const cost::breakdown& b) {
-  return {{"pixels", b.pixels},   {"page_breaks", b.page_breaks}, {"texture_misses", b.texture_misses},
-          {"uploads", b.uploads}, {"clut_loads", b.clut_loads},   {"setup", b.setup},
-          {"total", b.total()}};
-}
-
-nlohmann::json to_json(const cost::tally& t) {
-  return {{"primitives", t.primitives},
-          {"triangles", t.triangles},
-          {"sprites", t.sprites},
-          {"pixels", t.pixels},
-          {"blocks", t.blocks},
-          {"page_breaks", t.page_breaks},
-          {"texture_misses", t.texture_misses},
-          {"transfers", t.transfers},
-          {"upload_bytes", t.upload_bytes},
-          {"clut_loads", t.clut_loads}};
-}
-
-nlohmann::json timing(std::uint64_t cycles) {
-  return {{"cycles", cycles},
-          {"seconds", cost::seconds(cycles)},
-          {"ntsc",
-           {{"budget_share", cost::seconds(cycles) * cost::ntsc_hz},
-            {"fps_locked", cost::fps_locked(cycles, cost::ntsc_hz)}}},
-          {"pal",
-           {{"budget_share", cost::seconds(cycles) * cost::pal_hz},
-            {"fps_locked", cost::fps_locked(cycles, cost::pal_hz)}}},
-          {"fps_unlocked", cost::fps_unlocked(cycles)}};
-}
-
 void print_breakdown(const cost::breakdown& b) {
   const std::uint64_t t = b.total();
   std::cout << "  pixels " << b.pixels << " (" << pct(b.pixels, t) << "), page breaks " << b.page_breaks << " ("
@@ -90,9 +47,9 @@ void print_breakdown(const cost::breakdown& b) {
 }
 
 void print_text(const args& a, const std::vector<cost::frame_cost>& frames) {
-  std::cout << "file " << a.file << "\nmodel: GS at 147.456 MHz, walk " << a.walk << ", page break "
+  std::cout << "file " << a.file << "\nmodel: GS at 147.456 MHz, walk " << cost::name(a.o.walk) << ", page break "
             << a.o.page_break_cycles << " cycles, texture miss " << a.o.texture_miss_cycles << " cycles per "
-            << a.texture_unit << " (docs/cost.md)\nframes " << frames.size() << "\n";
+            << cost::name(a.o.texture_miss_unit) << " (docs/cost.md)\nframes " << frames.size() << "\n";
   for (std::size_t f = 0; f < frames.size(); ++f) {
     const auto& fr = frames[f];
     const std::uint64_t c = fr.cycles.total();
@@ -113,7 +70,7 @@ void print_text(const args& a, const std::vector<cost::frame_cost>& frames) {
     for (std::size_t i = 0; i < fr.passes.size() && i < a.passes; ++i) {
       const auto& p = fr.passes[i];
       const std::uint64_t pc = p.cycles.total();
-      std::cout << "  pass " << i + 1 << " at byte " << p.first_offset << ": " << mode_text(p) << "; "
+      std::cout << "  pass " << i + 1 << " at byte " << p.first_offset << ": " << cost::mode_text(p) << "; "
                 << p.counts.primitives << " primitives, " << p.counts.pixels << " pixels; " << pc << " cycles ("
                 << fixed_str(cost::seconds(pc) * 1e6, 1) << " us, " << pct(pc, c) << " of the frame): pixels "
                 << p.cycles.pixels << ", page breaks " << p.cycles.page_breaks << ", texture misses "
@@ -129,50 +86,14 @@ void print_json(const args& a, const std::vector<cost::frame_cost>& frames) {
   nlohmann::json j;
   j["file"] = a.file;
   j["clock_hz"] = cost::gs_clock_hz;
-  j["options"] = {{"walk", a.walk},
-                  {"page_break_cycles", a.o.page_break_cycles},
-                  {"texture_miss_cycles", a.o.texture_miss_cycles},
-                  {"texture_miss_unit", a.texture_unit},
-                  {"sprite_setup_cycles", a.o.sprite_setup_cycles},
-                  {"clut_load_extra_cycles", a.o.clut_load_extra_cycles},
-                  {"blend_rate_divisor", a.o.blend_rate_divisor}};
+  j["options"] = cost::to_json(a.o);
   j["frames"] = nlohmann::json::array();
-  for (const auto& fr : frames) {
-    nlohmann::json jf = timing(fr.cycles.total());
-    jf["breakdown"] = to_json(fr.cycles);
-    jf["counts"] = to_json(fr.counts);
-    jf["fill_rate_share"] =
-        fr.cycles.total() == 0 ? 0.0 : static_cast<double>(fr.cycles.pixels) / static_cast<double>(fr.cycles.total());
-    jf["passes"] = nlohmann::json::array();
-    for (const auto& p : fr.passes) {
-      nlohmann::json jp = timing(p.cycles.total());
-      jp["first_offset"] = p.first_offset;
-      jp["mode"] = mode_text(p);
-      jp["breakdown"] = to_json(p.cycles);
-      jp["counts"] = to_json(p.counts);
-      jp["frame_share"] =
-          fr.cycles.total() == 0 ? 0.0 : static_cast<double>(p.cycles.total()) / static_cast<double>(fr.cycles.total());
-      jf["passes"].push_back(jp);
-    }
-    j["frames"].push_back(jf);
-  }
+  for (const auto& fr : frames) j["frames"].push_back(cost::frame_json(fr, true));
   std::cout << j.dump(1) << "\n";
 }
 
 void run(args a) {
-  if (a.walk == "blocks")
-    a.o.walk = cost::pixel_walk::blocks;
-  else if (a.walk == "pixels")
-    a.o.walk = cost::pixel_walk::pixels;
-  else
-    throw usage_error("--walk: blocks or pixels, got '" + a.walk + "'");
-  if (a.texture_unit == "page")
-    a.o.texture_miss_unit = cost::texture_unit::page;
-  else if (a.texture_unit == "quarter_page")
-    a.o.texture_miss_unit = cost::texture_unit::quarter_page;
-  else
-    throw usage_error("--texture-miss-unit: page or quarter_page, got '" + a.texture_unit + "'");
-  if (a.o.blend_rate_divisor == 0) throw usage_error("--blend-rate-divisor: 1 or more");
+  a.o = a.model.resolve();
   gs::dump::gs_dump d;
   try {
     d = gs::dump::load_dump(a.file);
@@ -203,19 +124,7 @@ void add_cost_command(CLI::App& app, context& ctx) {
   cmd->add_option("FILE", a->file, "The dump (.gs, .gs.xz, .gs.zst)")->required();
   cmd->add_flag("--json", a->json, "Every frame and every pass as JSON on stdout");
   cmd->add_option("--passes", a->passes, "Passes listed per frame in the text output")->capture_default_str();
-  cmd->add_option("--walk", a->walk, "Pixel cycles: blocks (8x2 / 4x2 blocks touched) or pixels (pixels / rate)")
-      ->capture_default_str();
-  cmd->add_option("--page-break-cycles", a->o.page_break_cycles, "Cycles per frame / Z page change")
-      ->capture_default_str();
-  cmd->add_option("--texture-miss-cycles", a->o.texture_miss_cycles, "Cycles per texture miss")->capture_default_str();
-  cmd->add_option("--texture-miss-unit", a->texture_unit, "What a texture miss leaves: page or quarter_page")
-      ->capture_default_str();
-  cmd->add_option("--sprite-setup-cycles", a->o.sprite_setup_cycles, "Set-up cycles per sprite")->capture_default_str();
-  cmd->add_option("--clut-load-extra-cycles", a->o.clut_load_extra_cycles, "Cycles per CLUT load beyond its bytes")
-      ->capture_default_str();
-  cmd->add_option("--blend-rate-divisor", a->o.blend_rate_divisor,
-                  "Pixel-rate divisor when the blend reads the destination (1: full rate, the sourced figure)")
-      ->capture_default_str();
+  a->model.add_to(cmd);
   cmd->callback([a] { run(*a); });
 }
 

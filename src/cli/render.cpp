@@ -2,12 +2,14 @@
 // dot product. `report` adds the HTML page; both write PNGs and report.json into --out.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <iostream>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "commands.hpp"
+#include "cost_args.hpp"
 #include "model_args.hpp"
 #include "import_options.hpp"
 #include "scene_options.hpp"
@@ -34,6 +36,8 @@ struct render_args {
   double specular = 0.0;
   bool memory_path = false, scalar = false;
   std::string dpb_clear = "explicit";
+  bool cost = false;  // render / report only: --cost and the cost model's options
+  cost_args cost_model;
 };
 
 std::vector<float> parse_floats(const std::string& what, const std::string& text, std::size_t n) {
@@ -177,6 +181,17 @@ scene_setup setup(const render_args& a) {
   return req;
 }
 
+// "; PS2 5.444 ms (802723 GS cycles, 32.6 % of an NTSC field)" or why the frame was not priced.
+std::string ps2_text(const pipeline::console_time& t) {
+  if (!t.frame) return "; PS2 not priced: " + t.not_priced;
+  const std::uint64_t c = t.frame->cycles.total();
+  char buf[160];
+  std::snprintf(buf, sizeof buf, "; PS2 %.3f ms (%llu GS cycles, %.1f %% of an NTSC field)",
+                gs::cost::seconds(c) * 1e3, static_cast<unsigned long long>(c),
+                100.0 * gs::cost::seconds(c) * gs::cost::ntsc_hz);
+  return buf;
+}
+
 void run(const render_args& a, bool html, context& ctx) {
   const scene_setup st = setup(a);
   const pipeline::scene_input& in = st.in;
@@ -200,6 +215,7 @@ void run(const render_args& a, bool html, context& ctx) {
   req.input_html = pipeline::input_html(in.summary);
   req.scene_description = description;
   req.progress = progress;
+  if (a.cost) req.cost = a.cost_model.resolve();
   pipeline::report_summary sum;
   try {
     sum = pipeline::write_report(s, req);
@@ -209,7 +225,8 @@ void run(const render_args& a, bool html, context& ctx) {
   for (const auto& m : sum.methods)
     std::cerr << "gsdot3: " << pipeline::name(m.m) << ": max |e| " << m.vs_renormalised.max_abs << ", RMSE "
               << m.vs_renormalised.rmse << ", within ±1 " << 100.0 * m.vs_renormalised.within_1 << "%, wraps "
-              << m.vs_renormalised.wraps << ", frame " << m.seconds * 1000.0 << " ms\n";
+              << m.vs_renormalised.wraps << ", frame " << m.seconds * 1000.0 << " ms"
+              << (a.cost ? ps2_text(m.ps2) : "") << "\n";
   for (const auto& m : sum.schemes)
     std::cerr << "gsdot3: " << m.m->name << ": max |e| " << m.vs_renormalised.max_abs << ", RMSE " << m.vs_renormalised.rmse
               << ", within ±1 " << 100.0 * m.vs_renormalised.within_1 << "%, frame " << m.seconds * 1000.0 << " ms\n";
@@ -270,12 +287,20 @@ constexpr const char* export_mesh_help =
     "also write the mesh the renderer drew (centred and scaled to its unit bounding sphere, as drawn) as OUT.glb: "
     "NORMAL, TANGENT (w = handedness) and TEXCOORD_0, for Blender or any glTF viewer";
 
+void add_cost_options(CLI::App* cmd, render_args& a) {
+  cmd->add_flag("--cost", a.cost,
+                "also price each GS method's frame on the console's GS (the stream gsdot3 dump writes, priced as "
+                "gsdot3 cost prices it; docs/cost.md): report.json methods.M.ps2 and the page's bar chart");
+  a.cost_model.add_to(cmd);
+}
+
 void add_render_command(CLI::App& app, context& ctx) {
   auto args = std::make_shared<render_args>();
   auto* render = app.add_subcommand("render", "Render the scene with each method through the GS model; PNGs + report.json");
   render->add_option("--out", args->out, "output directory (created if missing)")->capture_default_str();
   render->add_option("--export-mesh", args->export_mesh, export_mesh_help);
   add_options(render, *args);
+  add_cost_options(render, *args);
   render->callback([args, &ctx] { run(*args, false, ctx); });
 
   auto rargs = std::make_shared<render_args>();
@@ -284,6 +309,7 @@ void add_render_command(CLI::App& app, context& ctx) {
   report->add_option("--out", rargs->out, "output directory (created if missing)")->capture_default_str();
   report->add_option("--export-mesh", rargs->export_mesh, export_mesh_help);
   add_options(report, *rargs);
+  add_cost_options(report, *rargs);
   report->callback([rargs, &ctx] { run(*rargs, true, ctx); });
 }
 

@@ -10,6 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "gs_cost/cost_json.hpp"
 #include "pipeline/files.hpp"
 #include "pipeline/memory_picture.hpp"
 #include "pipeline/memory_steps.hpp"
@@ -199,7 +200,12 @@ report_summary write_report(const scene& s, const report_request& r) {
     say(std::string("rendering ") + std::string(name(m)) + " through the GS model");
     const auto t0 = std::chrono::steady_clock::now();
     frames.push_back(render(s, front, m, r.options));
-    sum.methods.push_back({m, seconds_since(t0), {}, {}});
+    sum.methods.push_back({m, seconds_since(t0), {}, {}, {}});
+    if (r.cost) {
+      say(std::string("pricing ") + std::string(name(m)) + " on the console's GS (its dump's packet stream, gs_cost)");
+      sum.methods.back().ps2 = price_frame(s, front, m, r.options, *r.cost);
+      if (!sum.methods.back().ps2.frame) say("  not priced: " + sum.methods.back().ps2.not_priced);
+    }
   }
   say("rendering the float reference");
   const auto t0 = std::chrono::steady_clock::now();
@@ -238,6 +244,9 @@ report_summary write_report(const scene& s, const report_request& r) {
   j["units"] = "dot products in 1/128 (a DPB byte 0x80 + d stands for d/128)";
   j["reference"] = {{"seconds", sum.reference_seconds}, {"normalisation_error", to_json(sum.normalisation)},
                     {"warning", sum.warning}};
+  if (r.cost)
+    j["ps2"] = {{"clock_hz", gs::cost::gs_clock_hz}, {"options", gs::cost::to_json(*r.cost)},
+                {"model", "docs/cost.md: the GS cost model on the frame's dump stream (gsdot3 dump, gsdot3 cost)"}};
   write_png(dir / "reference-lit.png", rgb_image(w, h, ref.colour));
   for (std::size_t l = 0; l < s.lights.size(); ++l)
     write_png(dir / ("reference-dot-light" + std::to_string(l) + ".png"), grey_image(w, h, reference_bytes(ref.renormalised[l])));
@@ -248,6 +257,9 @@ report_summary write_report(const scene& s, const report_request& r) {
     j["methods"][nm] = {{"frame_seconds", mr.seconds},
                         {"vs_renormalised", to_json(mr.vs_renormalised)},
                         {"vs_unnormalised", to_json(mr.vs_unnormalised)}};
+    if (r.cost)
+      j["methods"][nm]["ps2"] = mr.ps2.frame ? gs::cost::frame_json(*mr.ps2.frame, false)
+                                             : nlohmann::json{{"not_priced", mr.ps2.not_priced}};
     write_png(dir / (nm + "-lit.png"), rgb_image(w, h, frames[k].colour));
     for (std::size_t l = 0; l < s.lights.size(); ++l) {
       const std::string dot = nm + "-dot-light" + std::to_string(l) + ".png", err = nm + "-error-light" + std::to_string(l) + ".png";

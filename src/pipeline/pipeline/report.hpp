@@ -4,9 +4,11 @@
 
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "pipeline/console_time.hpp"
 #include "pipeline/reference.hpp"
 #include "pipeline/method.hpp"
 #include "pipeline/scheme_method.hpp"
@@ -36,12 +38,14 @@ struct report_request {
   bool write_html = true;                                 // false: `render` (images + JSON only)
   std::function<void(const std::string&)> progress;       // one line of stderr progress
   std::string input_json, input_html;                     // input_report.hpp; empty: no "input" entry
+  std::optional<gs::cost::cost_options> cost;             // price each GS method's frame (console_time.hpp)
 };
 
 struct method_result {
   method m;
   double seconds = 0;
   error_stats vs_renormalised, vs_unnormalised;
+  console_time ps2;  // when report_request::cost
 };
 
 struct scheme_result {
