@@ -326,7 +326,7 @@ def main():
     shutil.rmtree(out, ignore_errors=True)
     os.makedirs(out)
     report_dir = os.path.join(out, "report")
-    cmd = [a.gsdot3, "report", "--out", report_dir]
+    cmd = [a.gsdot3, "report", "--cost", "--out", report_dir]
     for pos, col in LIGHTS:
         cmd += ["--light", f"{pos}:{col[0]:02X}{col[1]:02X}{col[2]:02X}"]
     subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
@@ -367,6 +367,9 @@ def main():
         expected_images += len(report.get("memory", {}).get("dpb_pictures", {}).get("files", []))  # the rendered DPB
         if imgs["failed"] or imgs["loaded"] != imgs["total"] or imgs["total"] != expected_images:
             fail(f"images: {imgs}, expected {expected_images} loaded")
+        priced = [m for m, v in report["methods"].items() if "cycles" in v.get("ps2", {})]
+        if len(priced) != 3 or sc.get("ps2_bars") != len(priced):
+            fail(f"PS2 chart: {sc.get('ps2_bars')} bars drawn, report.json prices {priced} (the three GS methods)")
         if not sc["pixels"].startswith(f"loaded {n} "):
             fail(f"per-pixel data: {sc['pixels']}")
         if dom.srcs.get("img-a") != f"{a_m}-lit.png" or dom.srcs.get("img-b") != f"{b_m}-lit.png":

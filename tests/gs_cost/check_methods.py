@@ -3,7 +3,10 @@
 Usage: check_methods.py GSDOT3 DIR. Writes DIR/{two-pass,four-pass,baseline}.gs.zst with `gsdot3 dump`
 at a small size, prices each with `gsdot3 cost --json`, checks every frame and pass has its timing and
 breakdown, that the breakdown sums to the total, and that four-pass, which draws the mesh in more passes,
-draws more pixels and so spends more pixel cycles than two-pass. Prints one line per method.
+draws more pixels and so spends more pixel cycles than two-pass. Then `gsdot3 render --cost` at the same
+size, which prices each frame in process: its report.json must hold, per method, exactly the cycles,
+breakdown and counts the dump file gave (two routes to one figure: the file written, compressed, read
+back and replayed by another command). Prints one line per method.
 """
 import json
 import subprocess
@@ -34,3 +37,15 @@ two, four = figures["two-pass"], figures["four-pass"]
 assert four["counts"]["pixels"] > two["counts"]["pixels"], (four["counts"], two["counts"])
 assert four["breakdown"]["pixels"] > two["breakdown"]["pixels"], (four["breakdown"], two["breakdown"])
 print("four-pass draws more pixels and spends more pixel cycles than two-pass")
+
+subprocess.run([gsdot3, "render", "--cost", "--method", "gs", "--size", "128x96", "--out", f"{out}/render-cost"],
+               check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+with open(f"{out}/render-cost/report.json") as fh:
+    report = json.load(fh)
+for method, f in figures.items():
+    p = report["methods"][method]["ps2"]
+    for k in ["cycles", "breakdown", "counts"]:
+        assert p[k] == f[k], (method, k, p[k], f[k])
+    assert p["pass_count"] == len(f["passes"]), (method, p["pass_count"], len(f["passes"]))
+assert report["ps2"]["options"]["page_break_cycles"] == 10, report["ps2"]
+print("render --cost prices every method as gsdot3 cost prices its dump")
