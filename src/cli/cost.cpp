@@ -14,6 +14,8 @@
 #include "cost_args.hpp"
 #include "gs_cost/cost_json.hpp"
 #include "gs_cost/model.hpp"
+#include "pipeline/default_scene.hpp"
+#include "pipeline/performance_claims.hpp"
 
 namespace gsdot3::cli {
 namespace {
@@ -22,7 +24,7 @@ namespace cost = gs::cost;
 
 struct args {
   std::string file;
-  bool json = false;
+  bool json = false, claims = false, markdown = false;
   std::size_t passes = 40;
   cost_args model;
   cost::cost_options o{};  // model.resolve()
@@ -92,8 +94,36 @@ void print_json(const args& a, const std::vector<cost::frame_cost>& frames) {
   std::cout << j.dump(1) << "\n";
 }
 
+// The seed's performance sentences on the embedded scene (pipeline/performance_claims.hpp).
+void print_claims(const args& a) {
+  const pipeline::scene s = pipeline::default_scene();
+  const auto rows = pipeline::performance_rows(s, {}, a.o, [](const std::string& m) { std::cerr << "gsdot3: " << m << "\n"; });
+  const std::string scene = "the embedded scene (512x448, " + std::to_string(s.lights.size()) + " point lights)";
+  if (a.markdown) {
+    std::cout << pipeline::performance_markdown(rows, scene);
+    return;
+  }
+  if (a.json) {
+    nlohmann::json j = nlohmann::json::array();
+    for (const auto& r : rows)
+      j.push_back({{"claim", r.claim}, {"paper", r.paper}, {"statement", r.statement}, {"figures", r.figures},
+                   {"verdict", r.verdict}});
+    std::cout << j.dump(1) << "\n";
+    return;
+  }
+  std::cout << "seed 000's performance sentences on " << scene << ", GS cost model defaults (docs/cost.md)\n";
+  for (const auto& r : rows)
+    std::cout << r.claim << " (" << r.paper << "): " << r.verdict << "\n  " << r.statement << "\n  " << r.figures << "\n";
+}
+
 void run(args a) {
   a.o = a.model.resolve();
+  if (a.claims != a.file.empty()) throw usage_error("give a dump FILE or --claims, not both");
+  if (a.markdown && !a.claims) throw usage_error("--markdown goes with --claims");
+  if (a.claims) {
+    print_claims(a);
+    return;
+  }
   gs::dump::gs_dump d;
   try {
     d = gs::dump::load_dump(a.file);
@@ -121,7 +151,11 @@ void add_cost_command(CLI::App& app, context& ctx) {
                                  "Price a PCSX2 GS dump on the console's GS: cycles, time at 147.456 MHz and "
                                  "NTSC / PAL frame rate per frame and per pass, and where the cycles go "
                                  "(docs/cost.md)");
-  cmd->add_option("FILE", a->file, "The dump (.gs, .gs.xz, .gs.zst)")->required();
+  cmd->add_option("FILE", a->file, "The dump (.gs, .gs.xz, .gs.zst)");
+  cmd->add_flag("--claims", a->claims,
+                "Instead of a dump: seed 000's performance sentences priced on the embedded scene (two-pass vs "
+                "four-pass vs 2002, the free DPB clear, per light, real time, specular); docs/performance-claims.md");
+  cmd->add_flag("--markdown", a->markdown, "With --claims: the rows as docs/performance-claims.md");
   cmd->add_flag("--json", a->json, "Every frame and every pass as JSON on stdout");
   cmd->add_option("--passes", a->passes, "Passes listed per frame in the text output")->capture_default_str();
   a->model.add_to(cmd);

@@ -14,6 +14,7 @@
 #include "pipeline/files.hpp"
 #include "pipeline/memory_picture.hpp"
 #include "pipeline/memory_steps.hpp"
+#include "pipeline/performance_claims.hpp"
 #include "pipeline/quality_claims.hpp"
 #include "pipeline/report_page.hpp"
 #include "pipeline/render.hpp"
@@ -279,6 +280,12 @@ report_summary write_report(const scene& s, const report_request& r) {
                                      {"value_better", row.per_scene.front().first}, {"value_other", row.per_scene.front().second},
                                      {"verdict", row.verdict}});
   }
+
+  // Seed 000's performance sentences priced on this scene (performance_claims.hpp), with --cost.
+  if (r.cost && rendered(method::two_pass) && rendered(method::four_pass) && rendered(method::baseline))
+    for (const performance_row& row : performance_rows(s, r.options, *r.cost, r.progress))
+      j["performance_claims"].push_back({{"claim", row.claim}, {"paper", row.paper}, {"statement", row.statement},
+                                         {"figures", row.figures}, {"verdict", row.verdict}});
 
   // The other seeds' methods on the same geometry (scheme_method.hpp).
   page_inputs page{&s, &front, r.options, r.methods, &frames, &ref, {}, {}, {}, heat_limit, true};

@@ -1,0 +1,32 @@
+// pipeline/performance_claims.hpp — seed 000's performance sentences priced on the console's GS: each
+// frame is the stream `gsdot3 dump` writes, priced by the GS cost model (console_time.hpp, src/gs_cost,
+// docs/cost.md) under the cost options given; `gsdot3 cost --claims` prints the rows (docs/
+// performance-claims.md is that output for the embedded scene) and `gsdot3 report --cost` adds them to
+// report.json. Like the quality sentences they live here, not in the proof catalogue: src/proofs
+// renders nothing. A figure is one scene's frame under the default model options, not a proof.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "gs_cost/constants.hpp"
+#include "pipeline/method.hpp"
+#include "pipeline/scene.hpp"
+
+namespace gsdot3::pipeline {
+
+struct performance_row {
+  std::string claim, paper, statement;  // the claim id, where in the seed, the sentence tested
+  std::string figures;                  // the priced figures behind the verdict, in words
+  std::string verdict;                  // "holds", "refuted", or "bound: ..." (a priced extreme)
+};
+
+// Progress per priced frame when `progress` is set. The scene's lights are used as they are for the
+// method comparison; the light-count rows take its first light repeated 1, 2 and 3 times.
+std::vector<performance_row> performance_rows(const scene& s, const render_options& o, const gs::cost::cost_options& c,
+                                              const std::function<void(const std::string&)>& progress = {});
+// The rows as a Markdown table with one section per row (docs/performance-claims.md).
+std::string performance_markdown(const std::vector<performance_row>& rows, const std::string& scene_description);
+
+}  // namespace gsdot3::pipeline
