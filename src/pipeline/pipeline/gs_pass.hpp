@@ -17,34 +17,14 @@
 #include "gs_arith/options.hpp"
 #include "gs_arith/pixel_pipeline.hpp"
 #include "gs_arith/registers.hpp"
+#include "gs_methods/pass_registers.hpp"
 #include "gs_memory/fast_address.hpp"
 #include "gs_memory/local_memory.hpp"
 
 namespace gsdot3::pipeline {
 
-// The registers a pass sets (context 1); everything else keeps gs_registers' neutral values, the
-// frame buffer is PSMCT32.
-struct pass_regs {
-  bool TME = false;                     // PRIM.TME
-  bool ABE = false;                     // PRIM.ABE
-  gs::tfx TFX = gs::tfx::MODULATE;      // TEX0_1.TFX
-  gs::tcc TCC = gs::tcc::RGB;           // TEX0_1.TCC
-  gs::alpha_reg ALPHA{};                // ALPHA_1
-  bool CLAMP = true;                    // COLCLAMP.CLAMP
-  std::uint32_t FBMSK = 0;              // FRAME_1.FBMSK
+using gs_methods::pass_regs;  // gs_methods/pass_registers.hpp
 
-  constexpr gs::gs_registers registers() const noexcept {
-    gs::gs_registers r;
-    r.PRIM.TME = TME;
-    r.PRIM.ABE = ABE;
-    r.TEX0_1.TFX = TFX;
-    r.TEX0_1.TCC = TCC;
-    r.ALPHA_1 = ALPHA;
-    r.COLCLAMP.CLAMP = CLAMP;
-    r.FRAME_1.FBMSK = FBMSK;
-    return r;
-  }
-};
 
 // One pixel: the new frame-buffer word. Always inlined and flattened, so that with the pass's
 // registers as a compile-time constant the compiler folds gs::pixel_pipeline down to that pass

@@ -1,5 +1,6 @@
-// pipeline/pass_table.hpp — the one description of the methods' passes: the register set of every
-// pass (pass_regs, context 1), the clear values and write masks, the per-vertex colour and texture
+// pipeline/pass_table.hpp — the one description of the methods' passes: the depth test of every pass
+// (its register set, pass_regs, is gs_methods/pass_registers.hpp's, which proofs/methods.hpp runs for
+// the claims), the per-vertex colour and texture
 // coordinates each triangle pass sends, and each method as data: its light passes in draw order
 // (method_passes, at the end). render.cpp interprets that list on the value and the memory path,
 // frame_packets.cpp writes the same list as GIF packets (TEX0_1.TFX/TCC, PRIM.TME/ABE, ALPHA_1,
@@ -19,11 +20,16 @@
 #include "gs_arith/depth_test.hpp"
 #include "pipeline/encoders.hpp"
 #include "pipeline/gs_inputs.hpp"
+#include "gs_methods/pass_registers.hpp"
 #include "pipeline/gs_pass.hpp"
 #include "pipeline/method.hpp"
 #include "pipeline/prepare.hpp"
 
 namespace gsdot3::pipeline::passes {
+
+// The register sets of the passes and their constants: gs_methods/pass_registers.hpp (the proofs' methods.hpp
+// composes the same sets).
+using namespace ::gsdot3::gs_methods;
 
 using gs::blend_alpha;
 using gs::blend_colour;
@@ -37,41 +43,6 @@ inline constexpr gs::test_reg depth_gequal{false, gs::atst::NEVER, {}, gs::afail
 inline constexpr gs::test_reg depth_always{false, gs::atst::NEVER, {}, gs::afail::KEEP, false, false, true, gs::ztst::ALWAYS};
 inline constexpr gs::zbuf_reg z_written{{}, gs::zbuf_psm::PSMZ24, false};
 inline constexpr gs::zbuf_reg z_masked{{}, gs::zbuf_psm::PSMZ24, true};
-
-inline constexpr std::uint32_t clear_dpb = 0x00808080u;        // step 2.1
-inline constexpr std::uint32_t keep_alpha = 0xFF000000u;       // FBMSK: write RGB only
-inline constexpr std::uint32_t only_channel[3] = {0xFFFFFF00u, 0xFFFF00FFu, 0xFF00FFFFu};  // FBMSK: R, G, B only
-
-// ALPHA_1 settings used by the methods.
-inline constexpr gs::alpha_reg add_source{blend_colour::Cs, blend_colour::zero, blend_alpha::FIX, blend_colour::Cd,
-                                          gs::u8::literal(0x80)};  // Cs + Cd
-inline constexpr gs::alpha_reg subtract_source{blend_colour::Cd, blend_colour::Cs, blend_alpha::FIX, blend_colour::zero,
-                                               gs::u8::literal(0x80)};  // Cd − Cs
-inline constexpr gs::alpha_reg signed_multiply{blend_colour::Cs, blend_colour::Cd, blend_alpha::As, blend_colour::Cd,
-                                               gs::u8{}};  // (Cs − Cd)·As + Cd, section 3.6
-inline constexpr gs::alpha_reg multiply_by_ad{blend_colour::Cs, blend_colour::zero, blend_alpha::Ad, blend_colour::zero,
-                                              gs::u8{}};  // Cs·Ad, step 4
-
-// The register sets of the passes. Each is a constant the pass loops are instantiated with, so the
-// compiler folds gs::pixel_pipeline for it (the same model function, specialised, not a copy).
-//                                                     TME    ABE    TFX                 TCC             ALPHA_1          CLAMP  FBMSK
-inline constexpr pass_regs step1_ambient{};  // TME = 0, ABE = 0, COLCLAMP = 1; also the flat fills (sprites)
-inline constexpr pass_regs two_pass_positive{          true,  false, gs::tfx::MODULATE,  gs::tcc::RGB,   {},              false, 0};
-inline constexpr pass_regs two_pass_negative{          true,  true,  gs::tfx::MODULATE,  gs::tcc::RGBA,  subtract_source, false, 0};
-inline constexpr pass_regs two_pass_add_alpha{         true,  true,  gs::tfx::DECAL,     gs::tcc::RGB,   add_source,      false, keep_alpha};
-inline constexpr pass_regs four_pass_sphere{           true,  false, gs::tfx::HIGHLIGHT, gs::tcc::RGB,   {},              false, keep_alpha};
-inline constexpr pass_regs four_pass_x{                true,  true,  gs::tfx::DECAL,     gs::tcc::RGBA,  signed_multiply, false, only_channel[0]};
-inline constexpr pass_regs four_pass_y{                true,  true,  gs::tfx::DECAL,     gs::tcc::RGBA,  signed_multiply, false, only_channel[1]};
-inline constexpr pass_regs four_pass_z{                true,  true,  gs::tfx::DECAL,     gs::tcc::RGBA,  signed_multiply, false, only_channel[2]};
-inline constexpr pass_regs baseline_add{               true,  true,  gs::tfx::MODULATE,  gs::tcc::RGB,   add_source,      false, keep_alpha};
-inline constexpr pass_regs baseline_subtract{          true,  true,  gs::tfx::MODULATE,  gs::tcc::RGB,   subtract_source, false, keep_alpha};
-inline constexpr pass_regs post_add_into_red{          true,  true,  gs::tfx::DECAL,     gs::tcc::RGB,   add_source,      false, only_channel[0]};
-inline constexpr pass_regs ilp_into_lab{               true,  true,  gs::tfx::MODULATE,  gs::tcc::RGB,   add_source,      true,  keep_alpha};
-inline constexpr pass_regs diffuse_layer{              true,  false, gs::tfx::DECAL,     gs::tcc::RGB,   {},              true,  0};
-inline constexpr pass_regs multiply_red{               true,  true,  gs::tfx::DECAL,     gs::tcc::RGB,   multiply_by_ad,  true,  only_channel[0]};
-inline constexpr pass_regs multiply_green{             true,  true,  gs::tfx::DECAL,     gs::tcc::RGB,   multiply_by_ad,  true,  only_channel[1]};
-inline constexpr pass_regs multiply_blue{              true,  true,  gs::tfx::DECAL,     gs::tcc::RGB,   multiply_by_ad,  true,  only_channel[2]};
-inline constexpr pass_regs move_into_alpha{            true,  false, gs::tfx::DECAL,     gs::tcc::RGBA,  {},              true,  0x00FFFFFFu};  // memory path, step 4
 
 inline gs::rgba8 rgb(int r, int g, int b, int a) {
   return {gs::u8::from_wrapped(r), gs::u8::from_wrapped(g), gs::u8::from_wrapped(b), gs::u8::from_wrapped(a)};

@@ -112,6 +112,7 @@ gs::dump::gs_dump probe_dump() {
     d.packets.push_back({gs::dump::packet_type::transfer, 2, 0, 0, std::move(packet), 0});
   d.packets.push_back({gs::dump::packet_type::registers, 0, 0, 0, d.privileged, 0});
   d.packets.push_back({gs::dump::packet_type::vsync, 0, 1, 0, {}, 0});
+  gs::dump::assign_offsets(d);
   return d;
 }
 

@@ -1,6 +1,7 @@
 // proofs/methods.hpp — the paper's GS passes, composed from the model's unit functions
 // (gs::texture_function, gs::alpha_blend, gs::colclamp, gs::frame_write). Nothing here re-derives a
-// formula: each step is the register setting the paper describes, run through the model.
+// formula: each step is the register set the paper describes, run through the model; the sets are
+// gs_methods/pass_registers.hpp's, the ones the renderer and the dump writer draw with (pass_table.hpp).
 //
 // Post filters (section 3.3, step 2.4) are modelled at VALUE level: the paper fetches channels with
 // the PSMT8 / PSMT8H channel shuffle and adds them with additive blends (A = Cs, B = 0, C = FIX 0x80,
@@ -17,6 +18,7 @@
 #include "gs_arith/frame_write.hpp"
 #include "gs_arith/options.hpp"
 #include "gs_arith/texture_function.hpp"
+#include "gs_methods/pass_registers.hpp"
 
 namespace gsdot3::proofs::methods {
 
@@ -27,9 +29,8 @@ constexpr u8 byte(int v) noexcept { return u8::from_wrapped(v); }
 constexpr rgba8 grey(int rgb, int a) noexcept { return {byte(rgb), byte(rgb), byte(rgb), byte(a)}; }
 
 // ---- eq. (8) and the four-pass passes 2-4 ------------------------------------------------------
-// Blend (Cs − Cd)·As + Cd: A = Cs, B = Cd, C = As, D = Cd.
-inline constexpr gs::alpha_reg offset_multiply_blend{gs::blend_colour::Cs, gs::blend_colour::Cd, gs::blend_alpha::As,
-                                                     gs::blend_colour::Cd, u8{}};
+// Blend (Cs − Cd)·As + Cd: A = Cs, B = Cd, C = As, D = Cd (the four-pass axis passes' ALPHA_1).
+inline constexpr gs::alpha_reg offset_multiply_blend = gs_methods::signed_multiply;
 
 // Eq. (8) on one channel before COLCLAMP: Cs = 0x80 (the reordered palette's RGB), As = b2,
 // Cd = a2. Returns the s11 blend output.
@@ -43,26 +44,29 @@ constexpr fixed::s11 offset_multiply(u8 a2, u8 b2, const gs::model_options& o) n
 // (0x80, 0x80, 0x80, b2) through TFX = DECAL, TCC = RGBA, blended over the DPB word with COLCLAMP
 // off (step 2.2), written with FBMSK keeping every channel but `channel` (0 = R, 1 = G, 2 = B)
 // and the alpha byte. Returns the new PSMCT32 DPB word.
+// The registers are gs_methods' four_pass_x, _y and _z.
 constexpr std::uint32_t four_pass_channel(std::uint32_t dpb, int channel, u8 b2, const gs::model_options& o) noexcept {
+  constexpr const gs_methods::pass_regs* axis[3] = {&gs_methods::four_pass_x, &gs_methods::four_pass_y, &gs_methods::four_pass_z};
+  const gs_methods::pass_regs& p = *axis[channel];
   const rgba8 texel{byte(0x80), byte(0x80), byte(0x80), b2};
-  const rgba8 cs = gs::texture_function(gs::tfx::DECAL, gs::tcc::RGBA, texel, gs::fragment_colour::flat(grey(0x80, 0x80)), o);
+  const rgba8 cs = gs::texture_function(p.TFX, p.TCC, texel, gs::fragment_colour::flat(grey(0x80, 0x80)), o);
   const rgba8 cd = gs::frame_read(gs::frame_psm::PSMCT32, dpb);
-  const rgba8 out = gs::colclamp(gs::alpha_blend(offset_multiply_blend, cs, cd, o), cs.a, false);
-  const std::uint32_t keep = ~(0xFFu << (8 * channel));
-  return gs::frame_write(gs::frame_psm::PSMCT32, out, dpb, keep);
+  const rgba8 out = gs::colclamp(gs::alpha_blend(p.ALPHA, cs, cd, o), cs.a, p.CLAMP);
+  return gs::frame_write(gs::frame_psm::PSMCT32, out, dpb, p.FBMSK);
 }
 
 // ---- two-pass (section 3.5) ----------------------------------------------------------------------
 // Pass 1: positive palette texel, TFX = MODULATE with the Gouraud/flat light colour, blending off,
-// COLCLAMP off. Returns the DPB colour.
+// COLCLAMP off (gs_methods' two_pass_positive). Returns the DPB colour.
 constexpr rgba8 two_pass_pass1(rgba8 pos_texel, gs::fragment_colour light, const gs::model_options& o) noexcept {
-  const rgba8 cs = gs::texture_function(gs::tfx::MODULATE, gs::tcc::RGB, pos_texel, light, o);
-  return gs::colclamp(gs::blend_off(cs), cs.a, false);
+  constexpr const gs_methods::pass_regs& p = gs_methods::two_pass_positive;
+  static_assert(!p.ABE);
+  const rgba8 cs = gs::texture_function(p.TFX, p.TCC, pos_texel, light, o);
+  return gs::colclamp(gs::blend_off(cs), cs.a, p.CLAMP);
 }
 
-// Pass 2 blend: Cd − Cs (A = Cd, B = Cs, C = FIX = 0x80, D = 0).
-inline constexpr gs::alpha_reg subtract_blend{gs::blend_colour::Cd, gs::blend_colour::Cs, gs::blend_alpha::FIX,
-                                              gs::blend_colour::zero, byte(0x80)};
+// Pass 2 blend: Cd − Cs (A = Cd, B = Cs, C = FIX = 0x80, D = 0): two_pass_negative's ALPHA_1.
+inline constexpr gs::alpha_reg subtract_blend = gs_methods::subtract_source;
 
 // Pass 2 up to the blend: negative palette texel (alpha n'_a), TFX = MODULATE, TCC = RGBA, the light
 // colour with vertex alpha 0x80. Returns the blend output before COLCLAMP and the source alpha As.
@@ -72,20 +76,20 @@ struct pass2_result {
 };
 constexpr pass2_result two_pass_pass2_wide(rgba8 neg_texel, gs::fragment_colour light, rgba8 dpb,
                                            const gs::model_options& o) noexcept {
+  constexpr const gs_methods::pass_regs& p = gs_methods::two_pass_negative;
   light.a = gs::gouraud_channel::from_wrapped(0x80 << 7);
-  const rgba8 cs = gs::texture_function(gs::tfx::MODULATE, gs::tcc::RGBA, neg_texel, light, o);
-  return {gs::alpha_blend(subtract_blend, cs, dpb, o), cs.a};
+  const rgba8 cs = gs::texture_function(p.TFX, p.TCC, neg_texel, light, o);
+  return {gs::alpha_blend(p.ALPHA, cs, dpb, o), cs.a};
 }
 // Pass 2 written: COLCLAMP off (wrap), output alpha As.
 constexpr rgba8 two_pass_pass2(rgba8 neg_texel, gs::fragment_colour light, rgba8 dpb, const gs::model_options& o) noexcept {
   const auto p = two_pass_pass2_wide(neg_texel, light, dpb, o);
-  return gs::colclamp(p.wide, p.as, false);
+  return gs::colclamp(p.wide, p.as, gs_methods::two_pass_negative.CLAMP);
 }
 
 // ---- post filters (value level, see the header comment) ---------------------------------------
-// Additive blend Cs + Cd: A = Cs, B = 0, C = FIX = 0x80, D = Cd.
-inline constexpr gs::alpha_reg add_blend{gs::blend_colour::Cs, gs::blend_colour::zero, gs::blend_alpha::FIX,
-                                         gs::blend_colour::Cd, byte(0x80)};
+// Additive blend Cs + Cd: A = Cs, B = 0, C = FIX = 0x80, D = Cd: the post filter's ALPHA_1 (post_add_into_red).
+inline constexpr gs::alpha_reg add_blend = gs_methods::add_source;
 // x + y on one channel with COLCLAMP off.
 constexpr u8 add_wrapped(u8 x, u8 y, const gs::model_options& o) noexcept {
   const auto w = gs::alpha_blend(add_blend, grey(x.value(), 0), grey(y.value(), 0), o);
