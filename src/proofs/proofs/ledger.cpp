@@ -105,6 +105,9 @@ std::string ledger_markdown(const std::vector<claim_result>& results) {
         "it depends on; the other seeds' claims (the sections after the paper's) through their schemes in\n"
         "`src/schemes`, each choice a scheme leaves open evaluated inside the claim. `proven`: holds on the whole domain; `refuted (N)`: N counterexamples, the first\n"
         "few listed; `bound`: tight extremes, with the inputs that reach them.\n\n"
+        "The paper's sentences that need whole frames are settled on renders, not here: its comparative quality\n"
+        "sentences in [`quality-claims.md`](quality-claims.md) (`gsdot3 quality`) and its performance sentences,\n"
+        "priced on the GS cost model, in [`performance-claims.md`](performance-claims.md) (`gsdot3 cost --claims`).\n\n"
         "| claim | paper | verdict | domain size | option changes |\n|---|---|---|---:|---|\n";
   std::string_view section = claim::mikkelsen_section;
   for (const auto& r : results) {
