@@ -13,9 +13,7 @@ template <fixed::rounding R>
 void shift_right_all_int16(benchmark::State& state) {
   for (auto _ : state) {
     std::int64_t sum = 0;
-    for (std::int32_t v = -32768; v < 32768; ++v) {
-      sum += fixed::shift_right<R>(static_cast<std::int16_t>(v), 7);
-    }
+    for (std::int32_t v = -32768; v < 32768; ++v) { sum += fixed::shift_right<R>(static_cast<std::int16_t>(v), 7); }
     benchmark::DoNotOptimize(sum);
   }
   state.SetItemsProcessed(state.iterations() * 65536);
@@ -39,7 +37,9 @@ void blend_term_integer(benchmark::State& state) {
     std::int64_t sum = 0;
     for (std::int32_t a = 0; a < 256; ++a) {
       for (std::int32_t c = 0; c < 256; ++c) {
-        sum += fixed::shift_right<fixed::rounding::floor, 7>((fixed::u8::from_wrapped(a) - b) * fixed::u8::from_wrapped(c)).value();
+        sum +=
+            fixed::shift_right<fixed::rounding::floor, 7>((fixed::u8::from_wrapped(a) - b) * fixed::u8::from_wrapped(c))
+                .value();
       }
     }
     benchmark::DoNotOptimize(sum);

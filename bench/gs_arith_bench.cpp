@@ -50,8 +50,9 @@ BENCHMARK(BM_PixelPipeline)->Arg(0)->Arg(1)->Arg(2)->ArgName("scenario");
 void BM_BlendChannel(benchmark::State& state) {
   int a = 0;
   for (auto _ : state) {
-    const auto v = gs::blend_channel(gs::u8::from_wrapped(a), gs::u8::from_wrapped(a >> 8), gs::u8::from_wrapped(a >> 16),
-                                     gs::u8::from_wrapped(a >> 24), gs::blend_shift::floor);
+    const auto v =
+        gs::blend_channel(gs::u8::from_wrapped(a), gs::u8::from_wrapped(a >> 8), gs::u8::from_wrapped(a >> 16),
+                          gs::u8::from_wrapped(a >> 24), gs::blend_shift::floor);
     benchmark::DoNotOptimize(v);
     a = a * 1103515245 + 12345;
   }

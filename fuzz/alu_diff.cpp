@@ -58,7 +58,8 @@ gs::model_options random_options(FuzzedDataProvider& in) {
 
 std::string options_text(const gs::model_options& o) {
   std::string s;
-  for (const auto& row : gs::option_catalogue()) s.append(" ").append(row.name).append("=").append(gs::option_value(o, row.name));
+  for (const auto& row : gs::option_catalogue())
+    s.append(" ").append(row.name).append("=").append(gs::option_value(o, row.name));
   return s;
 }
 
@@ -74,9 +75,9 @@ std::uint32_t colour_word(FuzzedDataProvider& in) {
   return w;
 }
 
-constexpr gs::frame_psm frame_formats[] = {gs::frame_psm::PSMCT32, gs::frame_psm::PSMCT24, gs::frame_psm::PSMCT16,
-                                           gs::frame_psm::PSMCT16S, gs::frame_psm::PSMZ32, gs::frame_psm::PSMZ24,
-                                           gs::frame_psm::PSMZ16, gs::frame_psm::PSMZ16S};
+constexpr gs::frame_psm frame_formats[] = {gs::frame_psm::PSMCT32,  gs::frame_psm::PSMCT24, gs::frame_psm::PSMCT16,
+                                           gs::frame_psm::PSMCT16S, gs::frame_psm::PSMZ32,  gs::frame_psm::PSMZ24,
+                                           gs::frame_psm::PSMZ16,   gs::frame_psm::PSMZ16S};
 
 // The registers the pixel pipeline reads, field by field (every field value the manual allows).
 gs::gs_registers random_registers(FuzzedDataProvider& in) {
@@ -125,21 +126,23 @@ gs::pixel_input random_pixel(FuzzedDataProvider& in, gs::frame_psm psm) {
 
 std::string describe(const gs::gs_registers& r, const gs::pixel_input& p, const gs::model_options& o) {
   std::string s = "registers:";
-  for (auto name : gs::register_names) s.append(" ").append(name).append("=").append(hex(gs::register_value(r, name), 16));
-  s += " vertex(8.7)=" + hex(p.vertex.r.value(), 4) + "," + hex(p.vertex.g.value(), 4) + "," + hex(p.vertex.b.value(), 4) +
-       "," + hex(p.vertex.a.value(), 4) + " texel=" + hex(p.texel.to_u32(), 8) + " dst=" + hex(p.dst, 8) +
-       " x=" + std::to_string(p.x) + " y=" + std::to_string(p.y) + " options:" + options_text(o);
+  for (auto name : gs::register_names)
+    s.append(" ").append(name).append("=").append(hex(gs::register_value(r, name), 16));
+  s += " vertex(8.7)=" + hex(p.vertex.r.value(), 4) + "," + hex(p.vertex.g.value(), 4) + "," +
+       hex(p.vertex.b.value(), 4) + "," + hex(p.vertex.a.value(), 4) + " texel=" + hex(p.texel.to_u32(), 8) +
+       " dst=" + hex(p.dst, 8) + " x=" + std::to_string(p.x) + " y=" + std::to_string(p.y) +
+       " options:" + options_text(o);
   return s;
 }
 
 // ---- the plain-int reference: the formulas of ../shared/spec/gs-alu-facts.md, one after the other --
 struct reference_pixel {
-  int cs[4];          // after TFX: r, g, b, a
+  int cs[4];  // after TFX: r, g, b, a
   bool write_rgb, write_a;
-  int cd[4];          // destination as the blender reads it
-  int blend[3];       // before dither
+  int cd[4];     // destination as the blender reads it
+  int blend[3];  // before dither
   int dithered[3];
-  int clamped[4];     // alpha is As
+  int clamped[4];  // alpha is As
   std::uint32_t out;
 };
 
@@ -161,15 +164,21 @@ reference_pixel pixel_reference(const gs::gs_registers& r, const gs::pixel_input
   } else {
     const auto fn = r.TEX0_1.TFX;
     for (int c = 0; c < 3; ++c) {
-      if (fn == gs::tfx::DECAL) ref.cs[c] = ct[c];
-      else if (fn == gs::tfx::MODULATE) ref.cs[c] = std::min(255, modulate(ct[c], cf[c]));
-      else ref.cs[c] = std::min(255, modulate(ct[c], cf[c]) + af);
+      if (fn == gs::tfx::DECAL)
+        ref.cs[c] = ct[c];
+      else if (fn == gs::tfx::MODULATE)
+        ref.cs[c] = std::min(255, modulate(ct[c], cf[c]));
+      else
+        ref.cs[c] = std::min(255, modulate(ct[c], cf[c]) + af);
     }
     ref.cs[3] = af;
     if (r.TEX0_1.TCC == gs::tcc::RGBA) {
-      if (fn == gs::tfx::MODULATE) ref.cs[3] = std::min(255, modulate(ct[3], cf[3]));
-      else if (fn == gs::tfx::HIGHLIGHT) ref.cs[3] = std::min(255, ct[3] + af);
-      else ref.cs[3] = ct[3];
+      if (fn == gs::tfx::MODULATE)
+        ref.cs[3] = std::min(255, modulate(ct[3], cf[3]));
+      else if (fn == gs::tfx::HIGHLIGHT)
+        ref.cs[3] = std::min(255, ct[3] + af);
+      else
+        ref.cs[3] = ct[3];
     }
   }
   const int as = ref.cs[3];
@@ -189,13 +198,13 @@ reference_pixel pixel_reference(const gs::gs_registers& r, const gs::pixel_input
   }();
   const int bits = r.FRAME_1.PSM == gs::frame_psm::PSMCT32 || r.FRAME_1.PSM == gs::frame_psm::PSMZ32   ? 32
                    : r.FRAME_1.PSM == gs::frame_psm::PSMCT24 || r.FRAME_1.PSM == gs::frame_psm::PSMZ24 ? 24
-                                                                                                         : 16;
+                                                                                                       : 16;
   ref.write_rgb = ref.write_a = true;
   if (r.TEST_1.ATE && !pass) {
     switch (static_cast<int>(r.TEST_1.AFAIL)) {
-      case 0: ref.write_rgb = ref.write_a = false; break;  // KEEP
-      case 1: break;                                       // FB_ONLY
-      case 2: ref.write_rgb = ref.write_a = false; break;  // ZB_ONLY
+      case 0: ref.write_rgb = ref.write_a = false; break;                                                   // KEEP
+      case 1: break;                                                                                        // FB_ONLY
+      case 2: ref.write_rgb = ref.write_a = false; break;                                                   // ZB_ONLY
       default: ref.write_a = bits != 32 && o.rgb_only == gs::rgb_only_targets::thirty_two_bit_only; break;  // RGB_ONLY
     }
   }
@@ -215,26 +224,33 @@ reference_pixel pixel_reference(const gs::gs_registers& r, const gs::pixel_input
       ref.blend[c] = ref.cs[c];
       continue;
     }
-    auto pick = [&](gs::blend_colour s) { return s == gs::blend_colour::Cs ? ref.cs[c] : s == gs::blend_colour::Cd ? ref.cd[c] : 0; };
-    const int k = r.ALPHA_1.C == gs::blend_alpha::As ? as : r.ALPHA_1.C == gs::blend_alpha::Ad ? ref.cd[3] : r.ALPHA_1.FIX.value();
+    auto pick = [&](gs::blend_colour s) {
+      return s == gs::blend_colour::Cs ? ref.cs[c] : s == gs::blend_colour::Cd ? ref.cd[c] : 0;
+    };
+    const int k = r.ALPHA_1.C == gs::blend_alpha::As   ? as
+                  : r.ALPHA_1.C == gs::blend_alpha::Ad ? ref.cd[3]
+                                                       : r.ALPHA_1.FIX.value();
     const int product = (pick(r.ALPHA_1.A) - pick(r.ALPHA_1.B)) * k;
-    ref.blend[c] = (o.shift == gs::blend_shift::floor ? floor_shift7(product) : trunc_shift7(product)) + pick(r.ALPHA_1.D);
+    ref.blend[c] =
+        (o.shift == gs::blend_shift::floor ? floor_shift7(product) : trunc_shift7(product)) + pick(r.ALPHA_1.D);
   }
   // Dither.
   const bool dither = r.DTHE.DTHE && (o.dither_on == gs::dither_targets::all_formats || bits == 16);
   const int dm = r.DIMX.DM[in.y % 4][in.x % 4].value();
-  const int offset = dm < 4 ? dm
+  const int offset = dm < 4                                           ? dm
                      : o.dither == gs::dither_decode::twos_complement ? dm - 8
                      : o.dither == gs::dither_decode::sign_magnitude  ? 4 - dm
                                                                       : 3 - dm;  // inverted_magnitude
   for (int c = 0; c < 3; ++c) ref.dithered[c] = ref.blend[c] + (dither ? offset : 0);
   // COLCLAMP, FBA.
-  for (int c = 0; c < 3; ++c) ref.clamped[c] = r.COLCLAMP.CLAMP ? std::clamp(ref.dithered[c], 0, 255) : ref.dithered[c] & 0xFF;
+  for (int c = 0; c < 3; ++c)
+    ref.clamped[c] = r.COLCLAMP.CLAMP ? std::clamp(ref.dithered[c], 0, 255) : ref.dithered[c] & 0xFF;
   ref.clamped[3] = as;
   const int a_out = (r.FBA_1.FBA && bits != 24) ? (as | 0x80) : as;
   // Pack and merge.
   auto pack16 = [](int rr, int gg, int bb, int aa) {
-    return std::uint32_t(rr >> 3) | std::uint32_t(gg >> 3) << 5 | std::uint32_t(bb >> 3) << 10 | std::uint32_t(aa >> 7) << 15;
+    return std::uint32_t(rr >> 3) | std::uint32_t(gg >> 3) << 5 | std::uint32_t(bb >> 3) << 10 |
+           std::uint32_t(aa >> 7) << 15;
   };
   const std::uint32_t word = std::uint32_t(ref.clamped[0]) | std::uint32_t(ref.clamped[1]) << 8 |
                              std::uint32_t(ref.clamped[2]) << 16 | std::uint32_t(a_out) << 24;
@@ -251,8 +267,8 @@ reference_pixel pixel_reference(const gs::gs_registers& r, const gs::pixel_input
   return ref;
 }
 
-void check_simd_pixel(FuzzedDataProvider& in, const gs::gs_registers& regs, const gs::pixel_input& p, const gs::model_options& o,
-                      std::uint32_t expected) {
+void check_simd_pixel(FuzzedDataProvider& in, const gs::gs_registers& regs, const gs::pixel_input& p,
+                      const gs::model_options& o, std::uint32_t expected) {
   static gsdot3::simd::pixel_batch batch;
   const std::size_t lane = in.ConsumeIntegralInRange<std::size_t>(0, gsdot3::simd::pixel_batch::capacity - 1);
   batch.n = lane + 1;
@@ -266,8 +282,8 @@ void check_simd_pixel(FuzzedDataProvider& in, const gs::gs_registers& regs, cons
     gsdot3::simd::force_target(target.bits);
     gsdot3::simd::pixel_pipeline(regs, o, batch);
     require(batch.out[lane] == expected, [&] {
-      return "gs_simd pixel_pipeline (" + target.name + ", lane " + std::to_string(lane) + ") out " + hex(batch.out[lane], 8) +
-             ", gs::pixel_pipeline " + hex(expected, 8) + "; " + describe(regs, p, o);
+      return "gs_simd pixel_pipeline (" + target.name + ", lane " + std::to_string(lane) + ") out " +
+             hex(batch.out[lane], 8) + ", gs::pixel_pipeline " + hex(expected, 8) + "; " + describe(regs, p, o);
     });
   }
   gsdot3::simd::force_target(0);
@@ -280,19 +296,26 @@ void check_pixel(FuzzedDataProvider& in) {
   const gs::pixel_trace t = gs::pixel_pipeline(regs, p, o);
   const reference_pixel ref = pixel_reference(regs, p, o);
   auto stage = [&](const char* name, bool same) {
-    require(same, [&] { return std::string("pixel_pipeline stage '") + name + "' differs from the plain-int reference; " + describe(regs, p, o) + "\n" + gs::format_trace(t); });
+    require(same, [&] {
+      return std::string("pixel_pipeline stage '") + name + "' differs from the plain-int reference; " +
+             describe(regs, p, o) + "\n" + gs::format_trace(t);
+    });
   };
   const gs::rgba8 cs = t.tfx_out;
-  stage("tfx", cs.r.value() == ref.cs[0] && cs.g.value() == ref.cs[1] && cs.b.value() == ref.cs[2] && cs.a.value() == ref.cs[3]);
+  stage("tfx", cs.r.value() == ref.cs[0] && cs.g.value() == ref.cs[1] && cs.b.value() == ref.cs[2] &&
+                   cs.a.value() == ref.cs[3]);
   stage("alpha test", t.test.rgb == ref.write_rgb && t.test.a == ref.write_a);
-  stage("cd", t.cd.r.value() == ref.cd[0] && t.cd.g.value() == ref.cd[1] && t.cd.b.value() == ref.cd[2] && t.cd.a.value() == ref.cd[3]);
-  stage("blend", t.blend.r.value() == ref.blend[0] && t.blend.g.value() == ref.blend[1] && t.blend.b.value() == ref.blend[2]);
+  stage("cd", t.cd.r.value() == ref.cd[0] && t.cd.g.value() == ref.cd[1] && t.cd.b.value() == ref.cd[2] &&
+                  t.cd.a.value() == ref.cd[3]);
+  stage("blend",
+        t.blend.r.value() == ref.blend[0] && t.blend.g.value() == ref.blend[1] && t.blend.b.value() == ref.blend[2]);
   stage("dither", t.dithered.r.value() == ref.dithered[0] && t.dithered.g.value() == ref.dithered[1] &&
                       t.dithered.b.value() == ref.dithered[2]);
   stage("colclamp", t.clamped.r.value() == ref.clamped[0] && t.clamped.g.value() == ref.clamped[1] &&
                         t.clamped.b.value() == ref.clamped[2] && t.clamped.a.value() == ref.clamped[3]);
   require(t.out == ref.out, [&] {
-    return "pixel_pipeline out " + hex(t.out, 8) + ", reference " + hex(ref.out, 8) + "; " + describe(regs, p, o) + "\n" + gs::format_trace(t);
+    return "pixel_pipeline out " + hex(t.out, 8) + ", reference " + hex(ref.out, 8) + "; " + describe(regs, p, o) +
+           "\n" + gs::format_trace(t);
   });
   check_simd_pixel(in, regs, p, o, t.out);
 }
@@ -308,7 +331,8 @@ void check_registers(FuzzedDataProvider& in) {
     return;  // rejected: the documented outcome for a value the strict decoder refuses
   }
   const auto back = gs::register_value(regs, name);
-  require(back == value, [&] { return std::string(name) + "=" + hex(value, 16) + " decodes and re-encodes to " + hex(back, 16); });
+  require(back == value,
+          [&] { return std::string(name) + "=" + hex(value, 16) + " decodes and re-encodes to " + hex(back, 16); });
 }
 
 // ---- the proof layer ------------------------------------------------------------------------------
@@ -329,12 +353,17 @@ void check_proof_layer(FuzzedDataProvider& in) {
   const int product = (0x80 - a2) * b2;
   const int want = (floor ? floor_shift7(product) : trunc_shift7(product)) + a2;
   const int got = methods::offset_multiply(gs::u8::from_wrapped(a2), gs::u8::from_wrapped(b2), o).value();
-  require(got == want, [&] { return "offset_multiply(" + hex(a2, 2) + ", " + hex(b2, 2) + ") = " + std::to_string(got) + ", expected " + std::to_string(want) + options_text(o); });
+  require(got == want, [&] {
+    return "offset_multiply(" + hex(a2, 2) + ", " + hex(b2, 2) + ") = " + std::to_string(got) + ", expected " +
+           std::to_string(want) + options_text(o);
+  });
   // Post-filter additions and − 128 on the GS: modulo 256.
   const int sum = methods::add_wrapped(gs::u8::from_wrapped(a2), gs::u8::from_wrapped(b2), o).value();
-  require(sum == ((a2 + b2) & 0xFF), [&] { return "add_wrapped(" + hex(a2, 2) + ", " + hex(b2, 2) + ") = " + hex(sum, 2) + options_text(o); });
+  require(sum == ((a2 + b2) & 0xFF),
+          [&] { return "add_wrapped(" + hex(a2, 2) + ", " + hex(b2, 2) + ") = " + hex(sum, 2) + options_text(o); });
   const int minus = methods::minus_128(gs::u8::from_wrapped(a2), o).value();
-  require(minus == ((a2 - 128) & 0xFF), [&] { return "minus_128(" + hex(a2, 2) + ") = " + hex(minus, 2) + options_text(o); });
+  require(minus == ((a2 - 128) & 0xFF),
+          [&] { return "minus_128(" + hex(a2, 2) + ") = " + hex(minus, 2) + options_text(o); });
   // Four-pass: the table against one pass through the model.
   const int a = in.ConsumeIntegralInRange<int>(-127, 128), b = in.ConsumeIntegralInRange<int>(-128, 127);
   const int channel = in.ConsumeIntegralInRange<int>(0, 2);
@@ -342,10 +371,13 @@ void check_proof_layer(FuzzedDataProvider& in) {
   const std::uint32_t dpb = (dpb_other & ~(0xFFu << (8 * channel))) | std::uint32_t(128 - a) << (8 * channel);
   const std::uint32_t after = methods::four_pass_channel(dpb, channel, gs::u8::from_wrapped(b + 128), o);
   const int table_product = table_for<gsdot3::proofs::four_pass::table>(o).product(a, b);
-  require(int(after >> (8 * channel) & 0xFF) - 128 == table_product && (after & ~(0xFFu << (8 * channel))) == (dpb & ~(0xFFu << (8 * channel))), [&] {
-    return "four_pass table product(" + std::to_string(a) + ", " + std::to_string(b) + ") = " + std::to_string(table_product) +
-           ", four_pass_channel(" + hex(dpb, 8) + ", " + std::to_string(channel) + ") = " + hex(after, 8) + options_text(o);
-  });
+  require(int(after >> (8 * channel) & 0xFF) - 128 == table_product &&
+              (after & ~(0xFFu << (8 * channel))) == (dpb & ~(0xFFu << (8 * channel))),
+          [&] {
+            return "four_pass table product(" + std::to_string(a) + ", " + std::to_string(b) +
+                   ") = " + std::to_string(table_product) + ", four_pass_channel(" + hex(dpb, 8) + ", " +
+                   std::to_string(channel) + ") = " + hex(after, 8) + options_text(o);
+          });
   // Two-pass: the vertex-light table against the pixel through the model.
   const auto& normals = gsdot3::proofs::appendix2_normals();
   const auto& normal = normals[in.ConsumeIntegralInRange<std::size_t>(0, normals.size() - 1)];
@@ -354,9 +386,10 @@ void check_proof_layer(FuzzedDataProvider& in) {
   const int fast = table_for<gsdot3::proofs::two_pass::table>(o).value(normal, l);
   const int slow = gsdot3::proofs::two_pass::pixel(normal, gsdot3::proofs::two_pass::vertex_light(l), o).value;
   require(fast == slow, [&] {
-    return "two_pass table value " + std::to_string(fast) + " != pixel value " + std::to_string(slow) + " for normal (" +
-           std::to_string(normal.iX) + "," + std::to_string(normal.iY) + "," + std::to_string(normal.iZ) + ") light (" +
-           std::to_string(l[0]) + "," + std::to_string(l[1]) + "," + std::to_string(l[2]) + ")" + options_text(o);
+    return "two_pass table value " + std::to_string(fast) + " != pixel value " + std::to_string(slow) +
+           " for normal (" + std::to_string(normal.iX) + "," + std::to_string(normal.iY) + "," +
+           std::to_string(normal.iZ) + ") light (" + std::to_string(l[0]) + "," + std::to_string(l[1]) + "," +
+           std::to_string(l[2]) + ")" + options_text(o);
   });
 }
 

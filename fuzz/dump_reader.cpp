@@ -20,7 +20,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const gs_dump d = read_dump(decompress(std::span<const std::uint8_t>(data, size)));
     decode_paths(d);
     const auto once = write_dump(d);
-    gsdot3::fuzz::require(write_dump(read_dump(once)) == once, [] { return std::string("write(read(write(d))) != write(d)"); });
+    gsdot3::fuzz::require(write_dump(read_dump(once)) == once,
+                          [] { return std::string("write(read(write(d))) != write(d)"); });
     gs::mem::local_memory m;
     gs::packets::interpreter it(m, {.skip_unmodelled = true});
     it.replay(d);

@@ -26,8 +26,8 @@ void mismatch(i128 got, i128 want, const std::string& what) {
 
 namespace {
 
-using builtin_types =
-    type_list<std::int8_t, std::int16_t, std::int32_t, std::int64_t, std::uint8_t, std::uint16_t, std::uint32_t, std::uint64_t>;
+using builtin_types = type_list<std::int8_t, std::int16_t, std::int32_t, std::int64_t, std::uint8_t, std::uint16_t,
+                                std::uint32_t, std::uint64_t>;
 constexpr std::size_t builtin_count = 8;
 
 // ---- built-in integers --------------------------------------------------------------------------
@@ -59,7 +59,8 @@ void check_builtin_narrow(T v) {
     expect(fixed::narrow<N, S>(v, O), want, [&] { return cat({"narrow(..., ", fixed::name(O), ")", args()}); });
   });
   const auto c = fixed::checked<N, S>(v);
-  require(c.has_value() == in_range && (!c || *c == v), [&] { return "checked" + args() + ": wrong presence or value"; });
+  require(c.has_value() == in_range && (!c || *c == v),
+          [&] { return "checked" + args() + ": wrong presence or value"; });
   require(fixed::bit_range<N, S>::contains(v) == in_range, [&] { return "bit_range::contains" + args(); });
   expect(fixed::bit_range<N, S>::min, lo, [&] { return "bit_range::min" + args(); });
   expect(fixed::bit_range<N, S>::max, hi, [&] { return "bit_range::max" + args(); });

@@ -92,8 +92,8 @@ std::string cat(std::initializer_list<std::string_view> parts);
 // describe() names the operation and its operands; it runs only on a finding.
 template <typename Describe>
 [[gnu::always_inline]] inline void expect(i128 got, i128 want, Describe&& describe) {
-  if (got != want) [[unlikely]] mismatch(got, want, describe());
+  if (got != want) [[unlikely]]
+    mismatch(got, want, describe());
 }
-
 
 }  // namespace gsdot3::fuzz::fixed_ops

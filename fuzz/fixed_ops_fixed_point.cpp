@@ -30,7 +30,7 @@ std::optional<i128> from_double_ref(double d, int f, int w, bool sg, rounding r,
     return d < 0 ? range_min(w, sg) : range_max(w, sg);
   }
   int e = 0;
-  const double m = std::frexp(d, &e);  // d = m · 2^e, 0.5 <= |m| < 1
+  const double m = std::frexp(d, &e);                                  // d = m · 2^e, 0.5 <= |m| < 1
   const auto mantissa = static_cast<std::int64_t>(std::ldexp(m, 53));  // exact: 53 significant bits
   const int s = e - 53 + f;                                            // d · 2^F = mantissa · 2^s
   i128 x = 0;
@@ -52,7 +52,10 @@ void check_from_integer(FuzzedDataProvider& in) {
   auto each_source = [&](auto v) {
     for_each_overflow([&](auto oc) {
       constexpr overflow O = decltype(oc)::value;
-      expect(X::template from_integer<O>(v).raw(), narrow_ref(i128{v} * pow2(F), width_of<X>, signed_of<X>, O), [&] { return cat({format_name<X>(), "::from_integer<", fixed::name(O), ">(", type_name<decltype(v)>(), " ", hex128(v), ")"}); });
+      expect(X::template from_integer<O>(v).raw(), narrow_ref(i128{v} * pow2(F), width_of<X>, signed_of<X>, O), [&] {
+        return cat(
+            {format_name<X>(), "::from_integer<", fixed::name(O), ">(", type_name<decltype(v)>(), " ", hex128(v), ")"});
+      });
     });
   };
   each_source(in.ConsumeIntegral<std::int64_t>());
@@ -74,8 +77,10 @@ void check_from_double(FuzzedDataProvider& in) {
       constexpr overflow O = decltype(oc)::value;
       const auto got = X::template from_double<R, O>(d);
       const auto want = from_double_ref(d, F, width_of<X>, signed_of<X>, R, O);
-      auto what = [&] { return cat({format_name<X>(), "::from_double<", fixed::name(R), ",", fixed::name(O), ">(bits ",
-                    hex128(std::bit_cast<std::uint64_t>(d)), ")"}); };
+      auto what = [&] {
+        return cat({format_name<X>(), "::from_double<", fixed::name(R), ",", fixed::name(O), ">(bits ",
+                    hex128(std::bit_cast<std::uint64_t>(d)), ")"});
+      };
       require(got.has_value() == want.has_value(), [&] { return what() + ": wrong presence"; });
       if (got) expect(got->raw(), *want, [&] { return what(); });
     });
@@ -89,14 +94,18 @@ void check_same_format(FuzzedDataProvider& in) {
   const auto a = X::from_raw(in.ConsumeIntegral<Rep>());
   const auto b = X::from_raw(in.ConsumeIntegral<Rep>());
   const double want_double = std::ldexp(static_cast<double>(a.raw()), -F);  // exact: at most 32 bits
-  require(std::bit_cast<std::uint64_t>(a.to_double()) == std::bit_cast<std::uint64_t>(want_double), [&] { return cat({format_name<X>(), "::to_double(", hex128(a.raw()), ")"}); });
+  require(std::bit_cast<std::uint64_t>(a.to_double()) == std::bit_cast<std::uint64_t>(want_double), [&] {
+    return cat({format_name<X>(), "::to_double(", hex128(a.raw()), ")"});
+  });
   for_each_overflow([&](auto oc) {
     constexpr overflow O = decltype(oc)::value;
     auto what = [&](std::string_view op) {
       return cat({format_name<X>(), " ", op, "<", fixed::name(O), ">(", hex128(a.raw()), ", ", hex128(b.raw()), ")"});
     };
-    expect(fixed::add<O>(a, b).raw(), narrow_ref(i128{a.raw()} + b.raw(), width_of<X>, signed_of<X>, O), [&] { return what("add"); });
-    expect(fixed::sub<O>(a, b).raw(), narrow_ref(i128{a.raw()} - b.raw(), width_of<X>, signed_of<X>, O), [&] { return what("sub"); });
+    expect(fixed::add<O>(a, b).raw(), narrow_ref(i128{a.raw()} + b.raw(), width_of<X>, signed_of<X>, O),
+           [&] { return what("add"); });
+    expect(fixed::sub<O>(a, b).raw(), narrow_ref(i128{a.raw()} - b.raw(), width_of<X>, signed_of<X>, O),
+           [&] { return what("sub"); });
   });
   for_each_type(formats{}, [&](auto yc) {
     using Y = typename decltype(yc)::type;
@@ -106,8 +115,11 @@ void check_same_format(FuzzedDataProvider& in) {
       const i128 scaled = F2 >= F ? i128{a.raw()} * pow2(F2 - F) : exact_shift(a.raw(), F - F2, R);
       for_each_overflow([&](auto oc) {
         constexpr overflow O = decltype(oc)::value;
-        expect(a.template convert<R, O, typename Y::rep, F2>().raw(), narrow_ref(scaled, width_of<Y>, signed_of<Y>, O), [&] { return cat({format_name<X>(), "::convert<", fixed::name(R), ",", fixed::name(O), ",", format_name<Y>(), ">(",
-                      hex128(a.raw()), ")"}); });
+        expect(a.template convert<R, O, typename Y::rep, F2>().raw(), narrow_ref(scaled, width_of<Y>, signed_of<Y>, O),
+               [&] {
+                 return cat({format_name<X>(), "::convert<", fixed::name(R), ",", fixed::name(O), ",", format_name<Y>(),
+                             ">(", hex128(a.raw()), ")"});
+               });
       });
     });
   });
@@ -126,9 +138,12 @@ void check_mul(FuzzedDataProvider& in) {
         constexpr rounding R = decltype(rc)::value;
         for_each_overflow([&](auto oc) {
           constexpr overflow O = decltype(oc)::value;
-          expect(fixed::mul<R, O, typename Z::rep, Z::fraction_bits>(a, b).raw(),
-                 narrow_ref(exact_shift(product, shift, R), width_of<Z>, signed_of<Z>, O), [&] { return cat({"mul<", fixed::name(R), ",", fixed::name(O), ",", format_name<Z>(), ">(", format_name<X>(), " ",
-                               hex128(a.raw()), ", ", format_name<Y>(), " ", hex128(b.raw()), ")"}); });
+          expect(
+              fixed::mul<R, O, typename Z::rep, Z::fraction_bits>(a, b).raw(),
+              narrow_ref(exact_shift(product, shift, R), width_of<Z>, signed_of<Z>, O), [&] {
+                return cat({"mul<", fixed::name(R), ",", fixed::name(O), ",", format_name<Z>(), ">(", format_name<X>(),
+                            " ", hex128(a.raw()), ", ", format_name<Y>(), " ", hex128(b.raw()), ")"});
+              });
         });
       });
     }

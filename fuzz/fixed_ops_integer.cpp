@@ -36,14 +36,17 @@ void check_integer_conversions(fixed::integer<N, S> v) {
       constexpr signedness T = decltype(tc)::value;
       for_each_overflow([&](auto oc) {
         constexpr overflow O = decltype(oc)::value;
-        expect(v.template narrow<M, T, O>().value(), narrow_ref(v.value(), M, is_signed(T), O), [&] { return cat({"narrow<", int_name(M, T), ",", fixed::name(O), ">", arg()}); });
+        expect(v.template narrow<M, T, O>().value(), narrow_ref(v.value(), M, is_signed(T), O), [&] {
+          return cat({"narrow<", int_name(M, T), ",", fixed::name(O), ">", arg()});
+        });
       });
       // Implicit widening exists exactly when the target range contains the source range.
       constexpr bool contains = range_min(M, is_signed(T)) <= range_min(N, is_signed(S)) &&
                                 range_max(M, is_signed(T)) >= range_max(N, is_signed(S));
       static_assert(std::is_convertible_v<fixed::integer<N, S>, fixed::integer<M, T>> == contains);
       if constexpr (contains) {
-        expect(static_cast<fixed::integer<M, T>>(v).value(), v.value(), [&] { return "widen to " + int_name(M, T) + arg(); });
+        expect(static_cast<fixed::integer<M, T>>(v).value(), v.value(),
+               [&] { return "widen to " + int_name(M, T) + arg(); });
       }
     });
   });
@@ -57,7 +60,8 @@ void check_integer_shifts(fixed::integer<N, S> v) {
       for_each_rounding([&](auto rc) {
         constexpr rounding R = decltype(rc)::value;
         auto what = [&](std::string_view form) {
-          return cat({"shift_right<", fixed::name(R), ",", std::to_string(K), ">(", int_name(N, S), " ", hex128(v.value()), ")", form});
+          return cat({"shift_right<", fixed::name(R), ",", std::to_string(K), ">(", int_name(N, S), " ",
+                      hex128(v.value()), ")", form});
         };
         const i128 want = exact_shift(v.value(), K, R);
         expect(fixed::shift_right<R, K>(v).value(), want, [&] { return what(""); });
@@ -93,7 +97,8 @@ template <int A, signedness SA, int B, signedness SB>
 void check_integer_binary(FuzzedDataProvider& in) {
   using IA = fixed::integer<A, SA>;
   using IB = fixed::integer<B, SB>;
-  check_integer_binary(IA::from_wrapped(in.ConsumeIntegral<std::int64_t>()), IB::from_wrapped(in.ConsumeIntegral<std::int64_t>()));
+  check_integer_binary(IA::from_wrapped(in.ConsumeIntegral<std::int64_t>()),
+                       IB::from_wrapped(in.ConsumeIntegral<std::int64_t>()));
   // The corners of both ranges, where the widened result types are tight.
   for (auto a : {IA::from_wrapped(IA::min_value), IA::from_wrapped(IA::max_value)}) {
     for (auto b : {IB::from_wrapped(IB::min_value), IB::from_wrapped(IB::max_value)}) check_integer_binary(a, b);
@@ -124,7 +129,8 @@ void check_integer(FuzzedDataProvider& in) {
     pick_int(binary_widths{}, ib, [&](auto bc) {
       pick_signedness(in, [&](auto sac) {
         pick_signedness(in, [&](auto sbc) {
-          check_integer_binary<decltype(ac)::value, decltype(sac)::value, decltype(bc)::value, decltype(sbc)::value>(in);
+          check_integer_binary<decltype(ac)::value, decltype(sac)::value, decltype(bc)::value, decltype(sbc)::value>(
+              in);
         });
       });
     });

@@ -68,7 +68,8 @@ struct scene_reader {
     if (c < 8) return std::numeric_limits<float>::quiet_NaN();
     if (c < 16) return (c & 1) != 0 ? std::numeric_limits<float>::infinity() : -std::numeric_limits<float>::infinity();
     if (c < 24) return std::bit_cast<float>(in.ConsumeIntegral<std::uint32_t>());
-    constexpr std::array<float, 8> extreme = {1e30f, -1e30f, 1e-40f, -0.0f, std::numeric_limits<float>::max(), 1e-7f, 1e7f, -3e-39f};
+    constexpr std::array<float, 8> extreme = {1e30f, -1e30f, 1e-40f, -0.0f, std::numeric_limits<float>::max(),
+                                              1e-7f, 1e7f,   -3e-39f};
     if (c < 32) return extreme[c - 24];
     return static_cast<float>((c - 32) % 17) / 4.0f - 2.0f;
   }
@@ -174,8 +175,8 @@ aiTexture* read_texture(scene_reader& r) {
     t->mHeight = r.byte() % 4 + 1;
     t->pcData = new aiTexel[t->mWidth * t->mHeight];
     for (unsigned i = 0; i < t->mWidth * t->mHeight; ++i)
-      t->pcData[i] = {static_cast<unsigned char>(r.byte()), static_cast<unsigned char>(r.byte()), static_cast<unsigned char>(r.byte()),
-                      static_cast<unsigned char>(r.byte())};
+      t->pcData[i] = {static_cast<unsigned char>(r.byte()), static_cast<unsigned char>(r.byte()),
+                      static_cast<unsigned char>(r.byte()), static_cast<unsigned char>(r.byte())};
   } else {  // compressed: mWidth bytes of an image file
     t->mWidth = r.byte() % 64;
     t->mHeight = 0;
@@ -283,16 +284,17 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   gsdot3::fuzz::check_mesh(m.model);
   const pl::import_report& rep = m.report;
-  require(rep.instances == e.instances && rep.meshes == e.meshes && rep.dropped_points == e.points && rep.dropped_lines == e.lines &&
-              rep.triangles == m.model.triangles.size(),
+  require(rep.instances == e.instances && rep.meshes == e.meshes && rep.dropped_points == e.points &&
+              rep.dropped_lines == e.lines && rep.triangles == m.model.triangles.size(),
           [&] {
-            return "from_scene reports " + std::to_string(rep.instances) + " instances, " + std::to_string(rep.meshes) + " meshes, " +
-                   std::to_string(rep.dropped_points) + " points, " + std::to_string(rep.dropped_lines) + " lines, " +
-                   std::to_string(rep.triangles) + " triangles; the scene has " + std::to_string(e.instances) + ", " +
-                   std::to_string(e.meshes) + ", " + std::to_string(e.points) + ", " + std::to_string(e.lines) + ", " +
-                   std::to_string(m.model.triangles.size());
+            return "from_scene reports " + std::to_string(rep.instances) + " instances, " + std::to_string(rep.meshes) +
+                   " meshes, " + std::to_string(rep.dropped_points) + " points, " + std::to_string(rep.dropped_lines) +
+                   " lines, " + std::to_string(rep.triangles) + " triangles; the scene has " +
+                   std::to_string(e.instances) + ", " + std::to_string(e.meshes) + ", " + std::to_string(e.points) +
+                   ", " + std::to_string(e.lines) + ", " + std::to_string(m.model.triangles.size());
           });
-  require(m.normal_texture.has_value() == e.normal_map && (!e.normal_map || (m.normal_texture->slot == "normal") == e.normal_slot),
+  require(m.normal_texture.has_value() == e.normal_map &&
+              (!e.normal_map || (m.normal_texture->slot == "normal") == e.normal_slot),
           [&] { return std::string("from_scene's normal map does not match the instanced meshes' materials"); });
   return 0;
 }

@@ -56,20 +56,19 @@ const std::filesystem::path& scratch(const std::string& bytes) {
 
 void check_normal_map(const pl::normal_map& n) {
   auto power_of_two = [](int v) { return v >= 8 && v <= 1024 && (v & (v - 1)) == 0; };
-  require(power_of_two(n.width) && power_of_two(n.height), [&] {
-    return "normal map loader accepted " + std::to_string(n.width) + "x" + std::to_string(n.height);
-  });
-  require(n.index.size() == static_cast<std::size_t>(n.width) * static_cast<std::size_t>(n.height) && n.palette.size() <= 256 &&
-              !n.palette.empty(),
+  require(power_of_two(n.width) && power_of_two(n.height),
+          [&] { return "normal map loader accepted " + std::to_string(n.width) + "x" + std::to_string(n.height); });
+  require(n.index.size() == static_cast<std::size_t>(n.width) * static_cast<std::size_t>(n.height) &&
+              n.palette.size() <= 256 && !n.palette.empty(),
           [] { return std::string("normal map sizes inconsistent"); });
-  for (auto i : n.index) require(i < n.palette.size(), [] { return std::string("normal map index beyond its palette"); });
+  for (auto i : n.index)
+    require(i < n.palette.size(), [] { return std::string("normal map index beyond its palette"); });
 }
 
 void parse_mesh(const std::string& bytes, const char* extension) {
   try {
     check_mesh(pl::import_mesh_from_memory(bytes, extension).model);
-  } catch (const std::runtime_error&) {
-  }
+  } catch (const std::runtime_error&) {}
 }
 
 void parse_image(const std::string& bytes, bool y_up, bool grey_is_height, float strength) {
@@ -78,17 +77,16 @@ void parse_image(const std::string& bytes, bool y_up, bool grey_is_height, float
   s.grey_is_height = grey_is_height;
   s.height_strength = strength;
   try {
-    check_normal_map(pl::load_normal_map(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size(), "fuzz", s).map);
-  } catch (const std::runtime_error&) {
-  }
+    check_normal_map(
+        pl::load_normal_map(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size(), "fuzz", s).map);
+  } catch (const std::runtime_error&) {}
 }
 
 void parse_png(const std::string& bytes, bool height_map, float strength) {
   const auto& path = scratch(bytes);
   try {
     check_normal_map(height_map ? pl::load_height_map_png(path, strength) : pl::load_normal_map(path, {}).map);
-  } catch (const std::runtime_error&) {
-  }
+  } catch (const std::runtime_error&) {}
 }
 
 void parse_vectors(const std::string& bytes, bool ps2autotests) {
@@ -97,13 +95,13 @@ void parse_vectors(const std::string& bytes, bool ps2autotests) {
   gsdot3::vectors::verify_settings s;
   s.max_errors = 0;
   try {
-    const auto r = ps2autotests ? gsdot3::vectors::verify_ps2autotests(in, report, s) : gsdot3::vectors::verify_vectors(in, report, s);
+    const auto r = ps2autotests ? gsdot3::vectors::verify_ps2autotests(in, report, s)
+                                : gsdot3::vectors::verify_vectors(in, report, s);
     const std::string closing = std::to_string(r.passed) + " passed, " + std::to_string(r.failed) + " failed\n";
     const std::string text = report.str();
     require(text.size() >= closing.size() && text.compare(text.size() - closing.size(), closing.size(), closing) == 0,
             [&] { return "vector report does not end with '" + closing + "'"; });
-  } catch (const gsdot3::vectors::format_error&) {
-  }
+  } catch (const gsdot3::vectors::format_error&) {}
 }
 
 void parse_registers(FuzzedDataProvider& in) {
@@ -121,8 +119,7 @@ void parse_registers(FuzzedDataProvider& in) {
       gs::set_register(regs, name, value);
       // Accepted: the register holds exactly that value.
       require(gs::register_value(regs, name) == value, [&] { return "set_register(" + name + ") does not read back"; });
-    } catch (const gs::register_error&) {
-    }
+    } catch (const gs::register_error&) {}
   }
 }
 
@@ -147,7 +144,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   // leaked (suppressed above) and looped on malformed headers, so only OBJ and glTF/GLB are fuzzed
   // (gsdot3's conversion is the same for every format).
   static const char* const mesh_formats[] = {"obj", "glb", "gltf"};
-  const char* format = reader == 6 ? mesh_formats[in.ConsumeIntegralInRange<std::size_t>(0, std::size(mesh_formats) - 1)] : "obj";
+  const char* format =
+      reader == 6 ? mesh_formats[in.ConsumeIntegralInRange<std::size_t>(0, std::size(mesh_formats) - 1)] : "obj";
   const bool flag = reader == 7 && in.ConsumeBool();
   const std::string bytes = in.ConsumeRemainingBytesAsString();
   switch (reader) {

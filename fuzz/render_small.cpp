@@ -21,7 +21,9 @@ using gsdot3::fuzz::require;
 namespace pl = gsdot3::pipeline;
 
 float coordinate(FuzzedDataProvider& in, float range) { return in.ConsumeFloatingPointInRange<float>(-range, range); }
-glm::vec3 point(FuzzedDataProvider& in, float range) { return {coordinate(in, range), coordinate(in, range), coordinate(in, range)}; }
+glm::vec3 point(FuzzedDataProvider& in, float range) {
+  return {coordinate(in, range), coordinate(in, range), coordinate(in, range)};
+}
 glm::vec3 unit_vector(FuzzedDataProvider& in) {
   const glm::vec3 v = point(in, 1.0f);
   const float len = glm::length(v);
@@ -47,14 +49,19 @@ pl::scene random_scene(FuzzedDataProvider& in) {
   s.normals.width = s.normals.height = size;
   const int palette = in.ConsumeIntegralInRange<int>(1, 16);
   for (int i = 0; i < palette; ++i) s.normals.palette.push_back(unit_vector(in));
-  for (int i = 0; i < size * size; ++i) s.normals.index.push_back(in.ConsumeIntegralInRange<std::uint8_t>(0, static_cast<std::uint8_t>(palette - 1)));
+  for (int i = 0; i < size * size; ++i)
+    s.normals.index.push_back(in.ConsumeIntegralInRange<std::uint8_t>(0, static_cast<std::uint8_t>(palette - 1)));
   s.diffuse.width = s.diffuse.height = 8;
-  for (int i = 0; i < 64; ++i) s.diffuse.texels.push_back(0x80000000u | (in.ConsumeIntegral<std::uint32_t>() & 0xFFFFFFu));
+  for (int i = 0; i < 64; ++i)
+    s.diffuse.texels.push_back(0x80000000u | (in.ConsumeIntegral<std::uint32_t>() & 0xFFFFFFu));
   const int lights = in.ConsumeIntegralInRange<int>(1, 2);
   for (int i = 0; i < lights; ++i) {
-    s.lights.push_back({point(in, 4.0f), {in.ConsumeIntegral<std::uint8_t>(), in.ConsumeIntegral<std::uint8_t>(), in.ConsumeIntegral<std::uint8_t>()}});
+    s.lights.push_back(
+        {point(in, 4.0f),
+         {in.ConsumeIntegral<std::uint8_t>(), in.ConsumeIntegral<std::uint8_t>(), in.ConsumeIntegral<std::uint8_t>()}});
   }
-  s.ambient = {in.ConsumeIntegral<std::uint8_t>(), in.ConsumeIntegral<std::uint8_t>(), in.ConsumeIntegral<std::uint8_t>()};
+  s.ambient = {in.ConsumeIntegral<std::uint8_t>(), in.ConsumeIntegral<std::uint8_t>(),
+               in.ConsumeIntegral<std::uint8_t>()};
   s.view.eye = {coordinate(in, 1.0f), coordinate(in, 1.0f), in.ConsumeFloatingPointInRange<float>(2.0f, 5.0f)};
   s.view.fov_y_degrees = in.ConsumeFloatingPointInRange<float>(20.0f, 90.0f);
   return s;
@@ -82,9 +89,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   try {
     pl::compute_tangents(s.model);  // throws std::runtime_error for a degenerate triangle
     pl::validate(s.model);
-  } catch (const std::runtime_error&) {
-    return 0;
-  }
+  } catch (const std::runtime_error&) { return 0; }
   const auto m = static_cast<pl::method>(in.ConsumeIntegralInRange<int>(0, 2));
   pl::render_options o = random_options(in);
   const pl::prepared_scene ps = pl::prepare(s, in.ConsumeFloatingPointInRange<float>(0.0f, 360.0f), o.specular);
@@ -92,10 +97,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const pl::frame reference = pl::render(s, ps, m, o);
   o.path = pl::raster_path::cached;
   const pl::frame cached = pl::render(s, ps, m, o);
-  require(reference.colour == cached.colour && reference.dot == cached.dot && reference.visible_triangle == cached.visible_triangle,
+  require(reference.colour == cached.colour && reference.dot == cached.dot &&
+              reference.visible_triangle == cached.visible_triangle,
           [&] {
             std::size_t i = 0;
-            while (i < reference.colour.size() && i < cached.colour.size() && reference.colour[i] == cached.colour[i]) ++i;
+            while (i < reference.colour.size() && i < cached.colour.size() && reference.colour[i] == cached.colour[i])
+              ++i;
             return "render: reference and cached paths differ (method " + std::string(pl::name(m)) + ", " +
                    std::to_string(s.width) + "x" + std::to_string(s.height) + ", first colour difference at pixel " +
                    std::to_string(i) + ")";
@@ -104,8 +111,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   o.memory_path = true;
   const pl::frame memory = pl::render(s, ps, m, o);
   require(memory.colour == cached.colour && memory.dot == cached.dot, [&] {
-    return "render: memory path and value level differ (method " + std::string(pl::name(m)) + ", " + std::to_string(s.width) +
-           "x" + std::to_string(s.height) + ")";
+    return "render: memory path and value level differ (method " + std::string(pl::name(m)) + ", " +
+           std::to_string(s.width) + "x" + std::to_string(s.height) + ")";
   });
   return 0;
 }

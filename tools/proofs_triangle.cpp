@@ -8,7 +8,8 @@
 #include "triangle_args.hpp"
 
 int main(int argc, char** argv) {
-  CLI::App app{"Re-derives the triangle certificates, relaxation witnesses and certified bound of two-pass.max-s.interpolated"};
+  CLI::App app{
+      "Re-derives the triangle certificates, relaxation witnesses and certified bound of two-pass.max-s.interpolated"};
   app.require_subcommand(1);
   app.footer("Each subcommand prints its usage with --help; tools/README.md says which stored row each re-derives.");
   int rc = 0;

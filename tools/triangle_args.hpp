@@ -29,7 +29,9 @@ struct search_args {
 };
 
 inline void add_search_args(CLI::App& cmd, search_args& a) {
-  cmd.add_option("S", a.s, "The light scale s: the vertex lights are packed lights of L_s")->required()->check(CLI::Range(1, 127));
+  cmd.add_option("S", a.s, "The light scale s: the vertex lights are packed lights of L_s")
+      ->required()
+      ->check(CLI::Range(1, 127));
   cmd.add_flag("--truncate-to-8", a.truncate, "Run under gouraud_fraction=truncate_to_8 (default keep_fraction)");
 }
 

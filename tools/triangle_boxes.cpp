@@ -66,8 +66,8 @@ tt::triangle_case place(int s, const p::paper::packed_normal& nm, const std::arr
   point P{0, 0, 0};
   for (const auto& q : poly)
     for (std::size_t c = 0; c < 3; ++c) P[c] += q[c] / static_cast<double>(poly.size());
-  const point A = to_point(l[0]), u{l[1][0] - A[0], l[1][1] - A[1], l[1][2] - A[2]}, v{l[2][0] - A[0], l[2][1] - A[1], l[2][2] - A[2]},
-              w{P[0] - A[0], P[1] - A[1], P[2] - A[2]};
+  const point A = to_point(l[0]), u{l[1][0] - A[0], l[1][1] - A[1], l[1][2] - A[2]},
+              v{l[2][0] - A[0], l[2][1] - A[1], l[2][2] - A[2]}, w{P[0] - A[0], P[1] - A[1], P[2] - A[2]};
   const double uu = dot(u, u), uv = dot(u, v), vv = dot(v, v), den = uu * vv - uv * uv;
   if (std::fabs(den) < 1e-9) return k;  // collinear lights
   const double beta = (dot(w, u) * vv - dot(w, v) * uv) / den, gamma = (dot(w, v) * uu - dot(w, u) * uv) / den;
@@ -112,9 +112,11 @@ int run(const boxes_args& a) {
           for (int dy = -2; dy <= 2; ++dy)
             for (int dz = -2; dz <= 2; ++dz) {
               const p::ivec3 m{l[0] + dx, l[1] + dy, l[2] + dz};
-              if (std::abs(m[0]) > 127 || std::abs(m[1]) > 127 || std::abs(m[2]) > 127 || along(m) < best - 2 * len) continue;
+              if (std::abs(m[0]) > 127 || std::abs(m[1]) > 127 || std::abs(m[2]) > 127 || along(m) < best - 2 * len)
+                continue;
               if (std::find(boxes.begin(), boxes.end(), m) != boxes.end()) continue;
-              if (wraps(p::two_pass::pixel(nm, gs::fragment_colour::flat(tt::light_colour(m)), o).value)) boxes.push_back(m);
+              if (wraps(p::two_pass::pixel(nm, gs::fragment_colour::flat(tt::light_colour(m)), o).value))
+                boxes.push_back(m);
             }
       for (const auto& m : boxes) {
         std::vector<p::ivec3> near;
@@ -131,10 +133,13 @@ int run(const boxes_args& a) {
               const auto r = p::two_pass::pixel(nm, tt::pixel_light(k, o.setup), o);
               if (r.dot == r.value) continue;
               wrapped = true;
-              std::printf("    {%d, %d, %d, {{{%d, %d, %d}, {%d, %d, %d}, {%d, %d, %d}}}, {0, 0, 32752, 0, 0, 32752}, %d, %d},  "
-                          "// value %d, side %d, box m = (%d, %d, %d)\n",
-                          s, nm.iX, nm.iY, k.light[0][0], k.light[0][1], k.light[0][2], k.light[1][0], k.light[1][1], k.light[1][2],
-                          k.light[2][0], k.light[2][1], k.light[2][2], k.px, k.py, r.value, side, m[0], m[1], m[2]);
+              std::printf(
+                  "    {%d, %d, %d, {{{%d, %d, %d}, {%d, %d, %d}, {%d, %d, %d}}}, {0, 0, 32752, 0, 0, 32752}, %d, %d}, "
+                  " "
+                  "// value %d, side %d, box m = (%d, %d, %d)\n",
+                  s, nm.iX, nm.iY, k.light[0][0], k.light[0][1], k.light[0][2], k.light[1][0], k.light[1][1],
+                  k.light[1][2], k.light[2][0], k.light[2][1], k.light[2][2], k.px, k.py, r.value, side, m[0], m[1],
+                  m[2]);
               std::fflush(stdout);
             }
         if (wrapped) break;
@@ -150,11 +155,17 @@ int run(const boxes_args& a) {
 
 void gsdot3::tools::add_boxes_command(CLI::App& app, int& rc) {
   auto a = std::make_shared<boxes_args>();
-  CLI::App* cmd = app.add_subcommand(
-      "boxes", "Unit boxes of wrapping integer lights under per_pixel with truncate_to_8: the certificate row at s = 124 (per_pixel)");
-  cmd->footer("Prints up to three certificate rows, one per normal, and how many normals the bound leaves open. `124`: ~4 min.");
-  cmd->add_option("S", a->search.s, "The light scale s: the vertex lights are packed lights of L_s")->required()->check(CLI::Range(1, 127));
-  cmd->add_option("SHARD", a->shard, "Run the normals with index = SHARD mod COUNT only (default 0)")->check(CLI::NonNegativeNumber);
+  CLI::App* cmd = app.add_subcommand("boxes",
+                                     "Unit boxes of wrapping integer lights under per_pixel with truncate_to_8: the "
+                                     "certificate row at s = 124 (per_pixel)");
+  cmd->footer(
+      "Prints up to three certificate rows, one per normal, and how many normals the bound leaves open. `124`: ~4 "
+      "min.");
+  cmd->add_option("S", a->search.s, "The light scale s: the vertex lights are packed lights of L_s")
+      ->required()
+      ->check(CLI::Range(1, 127));
+  cmd->add_option("SHARD", a->shard, "Run the normals with index = SHARD mod COUNT only (default 0)")
+      ->check(CLI::NonNegativeNumber);
   cmd->add_option("COUNT", a->count, "(default 1)")->check(CLI::PositiveNumber);
   cmd->callback([a, &rc] {
     if (a->shard >= a->count) throw CLI::ValidationError("SHARD", "must be below COUNT");

@@ -68,7 +68,8 @@ double model_units(double units, const gs::model_options& o) {
   return o.gouraud == gs::gouraud_fraction::truncate_to_8 ? 128.0 * std::floor(units / 128.0) : units;
 }
 
-std::vector<candidate> corner_candidates(int s, const gs::model_options& o, const p::two_pass::table& t, std::size_t keep) {
+std::vector<candidate> corner_candidates(int s, const gs::model_options& o, const p::two_pass::table& t,
+                                         std::size_t keep) {
   const auto lights = p::packed_lights(s);
   // the best `keep` so far, worst first (a heap on rank); the prefilter rises with it
   std::vector<candidate> out;
@@ -91,7 +92,9 @@ std::vector<candidate> corner_candidates(int s, const gs::model_options& o, cons
     for (int side : {1, -1})
       for (int k = 0; k < 3; ++k)
         groups.push_back({(side > 0 ? e : -e - 1) + (side > 0 ? neg : 3 - neg) +
-                              (len * s + 32.0 * (l1 - std::abs(n[k])) + (o.gouraud == gs::gouraud_fraction::truncate_to_8 ? l1 : 0)) / 128.0,
+                              (len * s + 32.0 * (l1 - std::abs(n[k])) +
+                               (o.gouraud == gs::gouraud_fraction::truncate_to_8 ? l1 : 0)) /
+                                  128.0,
                           &nm, side, k});
   }
   std::stable_sort(groups.begin(), groups.end(), [](const group& a, const group& b) { return a.bound > b.bound; });
@@ -109,9 +112,12 @@ std::vector<candidate> corner_candidates(int s, const gs::model_options& o, cons
         // prefilter: the rank below is at most e·side + (n_σ·v + lag + |n|_1·(truncate_to_8's level))/128 + slack
         int lag = 0, l1 = 0;
         for (int c = 0; c < 3; ++c) lag += c != k ? std::abs(n[c]) * 32 : 0, l1 += std::abs(n[c]);
-        const double need = 128.0 * (floor_rank() - slack - (side > 0 ? e : -e - 1)) - lag - (o.gouraud == gs::gouraud_fraction::truncate_to_8 ? l1 : 0);
+        const double need = 128.0 * (floor_rank() - slack - (side > 0 ? e : -e - 1)) - lag -
+                            (o.gouraud == gs::gouraud_fraction::truncate_to_8 ? l1 : 0);
         for (const auto& v : lights) {
-          if (std::abs(n[0]) * sigma[0] * v[0] + std::abs(n[1]) * sigma[1] * v[1] + std::abs(n[2]) * sigma[2] * v[2] < need) continue;
+          if (std::abs(n[0]) * sigma[0] * v[0] + std::abs(n[1]) * sigma[1] * v[1] + std::abs(n[2]) * sigma[2] * v[2] <
+              need)
+            continue;
           p::ivec3 u = v;
           double real = e;
           int r2 = s * s;
@@ -141,7 +147,8 @@ std::vector<candidate> corner_candidates(int s, const gs::model_options& o, cons
               x = std::clamp(x, -128, 127);
             }
             const int value = t.value(nm, l);
-            rank = (side > 0 ? value : -value - 1) + (rank - slack - std::floor(rank - slack));  // ties: the smooth part
+            rank =
+                (side > 0 ? value : -value - 1) + (rank - slack - std::floor(rank - slack));  // ties: the smooth part
           }
           if (!fits || r2 < 0 || rank <= floor_rank()) continue;
           candidate cand{rank, nm.iX, nm.iY, side, v, u, k, {}};
@@ -164,8 +171,8 @@ std::vector<candidate> corner_candidates(int s, const gs::model_options& o, cons
 }
 
 // Step 2: the geometries whose lag channels' steps both truncate to 0, scored exactly.
-std::pair<tt::triangle_case, scored> best_geometry(tt::triangle_case c, const gs::model_options& o, const p::two_pass::table& t, int side,
-                                                   long& evaluated) {
+std::pair<tt::triangle_case, scored> best_geometry(tt::triangle_case c, const gs::model_options& o,
+                                                   const p::two_pass::table& t, int side, long& evaluated) {
   tt::triangle_case best_c = c;
   scored best;
   for (int a16 : {0, 4, 8, 16, 32})
@@ -175,7 +182,8 @@ std::pair<tt::triangle_case, scored> best_geometry(tt::triangle_case c, const gs
       for (int t16 = 1; t16 <= 16 * 160; t16 += t16 < 32 ? 1 : 16) {
         const double tp = t16 / 16.0;
         const double lo = xZ * (2048 - yZ) / (2048 - tp), hi = (xZ * yZ - 2048 * (yZ - tp)) / tp;
-        const int first = static_cast<int>(std::floor(16 * lo)) + 1, last = std::min(static_cast<int>(std::ceil(16 * hi)) - 1, first + 7);
+        const int first = static_cast<int>(std::floor(16 * lo)) + 1,
+                  last = std::min(static_cast<int>(std::ceil(16 * hi)) - 1, first + 7);
         for (int s16 = first; s16 <= last; ++s16) {
           c.xy16 = {0, yz - t16, xz - s16, 0, xz, yz};
           const scored sc = gsdot3::tools::score_near_vertices(c, o, t, side, 1, 4);
@@ -188,8 +196,8 @@ std::pair<tt::triangle_case, scored> best_geometry(tt::triangle_case c, const gs
 }
 
 // Step 3: steepest ascent over the coordinates and the lights.
-std::pair<tt::triangle_case, scored> climb(tt::triangle_case c, scored cur, const gs::model_options& o, const p::two_pass::table& t,
-                                           int side, long& evaluated) {
+std::pair<tt::triangle_case, scored> climb(tt::triangle_case c, scored cur, const gs::model_options& o,
+                                           const p::two_pass::table& t, int side, long& evaluated) {
   for (int round = 0; round < 200; ++round) {
     tt::triangle_case best_c = c;
     scored best = cur;
@@ -243,16 +251,19 @@ int run(const corner_args& a) {
         auto [gc, gs_] = best_geometry(c, o, t, k.side, evaluated);
         auto [fc, fs] = climb(gc, gs_, o, t, k.side, evaluated);
         if (total(fs) > total(overall)) overall = fs;
-        std::fprintf(stderr, "candidate %zu (rank %.3f, n = (%d, %d), side %+d): geometry %d (%.3f), climbed %d (%.3f); %ld evaluated\n", i,
-                     k.rank, k.iX, k.iY, k.side, gs_.value, gs_.smooth, fs.value, fs.smooth, evaluated);
+        std::fprintf(
+            stderr,
+            "candidate %zu (rank %.3f, n = (%d, %d), side %+d): geometry %d (%.3f), climbed %d (%.3f); %ld evaluated\n",
+            i, k.rank, k.iX, k.iY, k.side, gs_.value, gs_.smooth, fs.value, fs.smooth, evaluated);
         if (fs.value >= 128) {
           gsdot3::tools::print_certificate_row(fc, fs, args.option_name());
           return 0;
         }
       }
   }
-  std::printf("s = %d (%s): no wrap found (%zu candidates, %ld cases evaluated, best wrap-side value %d, smooth %.3f)\n", s,
-              args.option_name(), cands.size(), evaluated, overall.value, overall.smooth);
+  std::printf(
+      "s = %d (%s): no wrap found (%zu candidates, %ld cases evaluated, best wrap-side value %d, smooth %.3f)\n", s,
+      args.option_name(), cands.size(), evaluated, overall.value, overall.smooth);
   return 1;
 }
 }  // namespace
@@ -260,9 +271,11 @@ int run(const corner_args& a) {
 void gsdot3::tools::add_corner_command(CLI::App& app, int& rc) {
   auto a = std::make_shared<corner_args>();
   CLI::App* cmd = app.add_subcommand("corner", "The corner model: the certificate rows at s = 89 (one per option)");
-  cmd->footer("Prints the first wrapping case as a certificate row (exit status 0), or the best value reached (1); "
-              "a line per candidate on stderr. Minutes.");
+  cmd->footer(
+      "Prints the first wrapping case as a certificate row (exit status 0), or the best value reached (1); "
+      "a line per candidate on stderr. Minutes.");
   add_search_args(*cmd, a->search);
-  cmd->add_option("CANDIDATES", a->keep, "How many of the best-ranked lattice candidates to try (default 300)")->check(CLI::PositiveNumber);
+  cmd->add_option("CANDIDATES", a->keep, "How many of the best-ranked lattice candidates to try (default 300)")
+      ->check(CLI::PositiveNumber);
   cmd->callback([a, &rc] { rc = run(*a); });
 }

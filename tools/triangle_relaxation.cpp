@@ -130,8 +130,10 @@ evaluation evaluate(const relaxation& r, const geometry& g, double side = 2047, 
           th[free[q]] = m1;
           const double f1 = r.dual(g, b, pattern, th);
           th[free[q]] = m2;
-          if (f1 < r.dual(g, b, pattern, th)) hi = m2;
-          else lo = m1;
+          if (f1 < r.dual(g, b, pattern, th))
+            hi = m2;
+          else
+            lo = m1;
         }
         th[free[q]] = (lo + hi) / 2;
       }
@@ -158,7 +160,8 @@ found search(const relaxation& r, int starts, int evals, unsigned seed) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> any(0, 2047);
   std::normal_distribution<double> gauss(0, 1);
-  const geometry fixed[] = {corner_case(2047, 845, 2047, 2047), corner_case(845, 2047, 2047, 2047), corner_case(880, 1520, 2033, 2047)};
+  const geometry fixed[] = {corner_case(2047, 845, 2047, 2047), corner_case(845, 2047, 2047, 2047),
+                            corner_case(880, 1520, 2033, 2047)};
   found best;
   for (int k = 0; k < starts; ++k) {
     geometry g = k < 3 ? fixed[k] : corner_case(any(rng), any(rng), any(rng), any(rng));
@@ -166,10 +169,13 @@ found search(const relaxation& r, int starts, int evals, unsigned seed) {
     double step = 300;
     for (int i = 0; i < evals; ++i) {
       geometry n = g;
-      for (double* v : {&n.v[0][1], &n.v[1][0], &n.v[2][0], &n.v[2][1]}) *v = std::clamp(*v + step * gauss(rng), 0.0, 2047.0);
+      for (double* v : {&n.v[0][1], &n.v[1][0], &n.v[2][0], &n.v[2][1]})
+        *v = std::clamp(*v + step * gauss(rng), 0.0, 2047.0);
       const evaluation e = evaluate(r, n);
-      if (e.lower > cur.lower) g = n, cur = e;
-      else step = std::max(0.25, step * 0.985);
+      if (e.lower > cur.lower)
+        g = n, cur = e;
+      else
+        step = std::max(0.25, step * 0.985);
     }
     if (cur.lower > best.e.lower) best = {g, cur};
   }
@@ -187,10 +193,13 @@ side_threshold thresholds(const p::paper::packed_normal& nm, const p::two_pass::
 }
 
 void print_found(const found& f, double threshold) {
-  std::printf("  lower %.3f upper %.3f threshold %.3f margin %+.3f at (%.2f, %.2f), (%.2f, %.2f), (%.2f, %.2f), p = vertex %d\n",
-              f.e.lower, f.e.upper, threshold, f.e.lower - threshold, f.g.v[0][0], f.g.v[0][1], f.g.v[1][0], f.g.v[1][1], f.g.v[2][0],
-              f.g.v[2][1], f.g.p);
-  for (int k = 0; k < 3; ++k) std::printf("    light %d = (%.3f, %.3f, %.3f)\n", k, f.e.l[k][0], f.e.l[k][1], f.e.l[k][2]);
+  std::printf(
+      "  lower %.3f upper %.3f threshold %.3f margin %+.3f at (%.2f, %.2f), (%.2f, %.2f), (%.2f, %.2f), p = vertex "
+      "%d\n",
+      f.e.lower, f.e.upper, threshold, f.e.lower - threshold, f.g.v[0][0], f.g.v[0][1], f.g.v[1][0], f.g.v[1][1],
+      f.g.v[2][0], f.g.v[2][1], f.g.p);
+  for (int k = 0; k < 3; ++k)
+    std::printf("    light %d = (%.3f, %.3f, %.3f)\n", k, f.e.l[k][0], f.e.l[k][1], f.e.l[k][2]);
 }
 
 struct relaxation_args {
@@ -216,13 +225,17 @@ int run(const relaxation_args& a) {
 
 void gsdot3::tools::add_relaxation_command(CLI::App& app, int& rc) {
   auto a = std::make_shared<relaxation_args>();
-  CLI::App* cmd = app.add_subcommand("relaxation", "The continuous relaxation of the error bound for one normal: the keep_fraction relaxation witness");
-  cmd->footer("Prints the best point found (vertices, lights to three decimals) and its margin over each side's threshold; "
-              "a positive margin: the bound's statements admit a wrap. `84 -89 -65 4 150`: ~6 s.");
+  CLI::App* cmd = app.add_subcommand(
+      "relaxation",
+      "The continuous relaxation of the error bound for one normal: the keep_fraction relaxation witness");
+  cmd->footer(
+      "Prints the best point found (vertices, lights to three decimals) and its margin over each side's threshold; "
+      "a positive margin: the bound's statements admit a wrap. `84 -89 -65 4 150`: ~6 s.");
   add_search_args(*cmd, a->search);
   cmd->add_option("IX", a->iX, "The normal pack(IX, IY)")->required()->check(CLI::Range(-127, 127));
   cmd->add_option("IY", a->iY, "")->required()->check(CLI::Range(-127, 127));
-  cmd->add_option("STARTS", a->starts, "Search starts: three fixed geometries, then random ones (default 8)")->check(CLI::PositiveNumber);
+  cmd->add_option("STARTS", a->starts, "Search starts: three fixed geometries, then random ones (default 8)")
+      ->check(CLI::PositiveNumber);
   cmd->add_option("EVALS", a->evals, "Steps per start (default 400)")->check(CLI::NonNegativeNumber);
   cmd->callback([a, &rc] { rc = run(*a); });
 }

@@ -31,7 +31,8 @@ inline scored score_near_vertices(const proofs::two_pass::triangle::triangle_cas
   namespace tt = proofs::two_pass::triangle;
   namespace pl = pipeline;
   scored best;
-  const auto setup = pl::setup_triangle({pl::xy124{c.xy16[0], c.xy16[1]}, pl::xy124{c.xy16[2], c.xy16[3]}, pl::xy124{c.xy16[4], c.xy16[5]}});
+  const auto setup = pl::setup_triangle(
+      {pl::xy124{c.xy16[0], c.xy16[1]}, pl::xy124{c.xy16[2], c.xy16[3]}, pl::xy124{c.xy16[4], c.xy16[5]}});
   if (setup.area2 == 0) return best;
   const auto nm = proofs::paper::pack_normal_from(c.iX, c.iY);
   const int e = t.alpha_error(nm);
@@ -66,13 +67,16 @@ struct found {
   scored sc;
   int side = 1;
 };
-inline bool better(const scored& x, const scored& y) { return x.value > y.value || (x.value == y.value && x.smooth > y.smooth); }
+inline bool better(const scored& x, const scored& y) {
+  return x.value > y.value || (x.value == y.value && x.smooth > y.smooth);
+}
 
 // The case under a sign pattern: n_x negated if fx = −1, n_y if fy = −1, the wrap side if fs = −1;
 // channel c of every light is negated where σ_c = sign n_c · side changes, so every folded value
 // σ_c·(L_c − 128) and the geometry stay as they are (the GS's truncations toward zero are odd) and
 // only the floors and the alpha error move.
-inline proofs::two_pass::triangle::triangle_case flipped(proofs::two_pass::triangle::triangle_case c, int fx, int fy, int fs) {
+inline proofs::two_pass::triangle::triangle_case flipped(proofs::two_pass::triangle::triangle_case c, int fx, int fy,
+                                                         int fs) {
   const int f[3] = {fx * fs, fy * fs, fs};
   c.iX *= fx, c.iY *= fy;
   for (auto& l : c.light)
@@ -82,8 +86,9 @@ inline proofs::two_pass::triangle::triangle_case flipped(proofs::two_pass::trian
 
 // The best score of case c (wrap side `side`, pixels near the vertices in `vertices`) over the
 // Appendix 2 normals within ±nr of its own (same signs) and, with `signs`, every sign pattern.
-inline found explore(const proofs::two_pass::triangle::triangle_case& c, int side, int nr, bool signs, const gs::model_options& o,
-                     const proofs::two_pass::table& t, const std::set<std::pair<int, int>>& normals, unsigned vertices = 4) {
+inline found explore(const proofs::two_pass::triangle::triangle_case& c, int side, int nr, bool signs,
+                     const gs::model_options& o, const proofs::two_pass::table& t,
+                     const std::set<std::pair<int, int>>& normals, unsigned vertices = 4) {
   found best{c, score_near_vertices(c, o, t, side, 2, vertices), side};
   for (int fs = 1; fs >= (signs ? -1 : 1); fs -= 2)
     for (int fy = 1; fy >= (signs ? -1 : 1); fy -= 2)
@@ -103,12 +108,14 @@ inline found explore(const proofs::two_pass::triangle::triangle_case& c, int sid
 
 // One certificate row, as in two_pass_triangle.cpp's table (the pixel from `at`); `what` names the
 // row in its heading ("wrap", or "best" for a search's best case that does not wrap).
-inline void print_certificate_row(const proofs::two_pass::triangle::triangle_case& k, const scored& at, const char* option,
-                                  const char* what = "wrap") {
-  std::printf("s = %d (%s): %s at pixel (%d, %d)\n    {%d, %d, %d, {{{%d, %d, %d}, {%d, %d, %d}, {%d, %d, %d}}}, {%d, %d, %d, %d, %d, %d}, %d, %d},\n",
-              k.s, option, what, at.px, at.py, k.s, k.iX, k.iY, k.light[0][0], k.light[0][1], k.light[0][2], k.light[1][0], k.light[1][1],
-              k.light[1][2], k.light[2][0], k.light[2][1], k.light[2][2], k.xy16[0], k.xy16[1], k.xy16[2], k.xy16[3], k.xy16[4], k.xy16[5],
-              at.px, at.py);
+inline void print_certificate_row(const proofs::two_pass::triangle::triangle_case& k, const scored& at,
+                                  const char* option, const char* what = "wrap") {
+  std::printf(
+      "s = %d (%s): %s at pixel (%d, %d)\n    {%d, %d, %d, {{{%d, %d, %d}, {%d, %d, %d}, {%d, %d, %d}}}, {%d, %d, %d, "
+      "%d, %d, %d}, %d, %d},\n",
+      k.s, option, what, at.px, at.py, k.s, k.iX, k.iY, k.light[0][0], k.light[0][1], k.light[0][2], k.light[1][0],
+      k.light[1][1], k.light[1][2], k.light[2][0], k.light[2][1], k.light[2][2], k.xy16[0], k.xy16[1], k.xy16[2],
+      k.xy16[3], k.xy16[4], k.xy16[5], at.px, at.py);
 }
 
 }  // namespace gsdot3::tools

@@ -62,7 +62,10 @@ int run(const gsdot3::tools::search_args& args) {
           p::ivec3 lc{};
           for (const auto& l : lights) {
             const p::ivec3 c{l[0] + D[0], l[1] + D[1], l[2] + D[2]};
-            if (is_light(c)) { lb = &l, lc = c; break; }
+            if (is_light(c)) {
+              lb = &l, lc = c;
+              break;
+            }
           }
           if (lb == nullptr) continue;
           const int H16 = 32752;
@@ -77,7 +80,8 @@ int run(const gsdot3::tools::search_args& args) {
             if ((nm.iX >= 0) != (sx == 1) || (nm.iY >= 0) != (sy == 1)) continue;
             const int e = t.alpha_error(nm);
             for (const auto& la : lights) {
-              const long nl = static_cast<long>(nm.iX) * la[0] + static_cast<long>(nm.iY) * la[1] + static_cast<long>(nm.iZ) * la[2];
+              const long nl = static_cast<long>(nm.iX) * la[0] + static_cast<long>(nm.iY) * la[1] +
+                              static_cast<long>(nm.iZ) * la[2];
               // only lights whose vertex value is within 26 of the wrap (the construction adds < 28)
               if (top ? nl / 128 + e < 100 : nl / 128 + e > -101) continue;
               const tt::triangle_case k{s, nm.iX, nm.iY, {la, *lb, lc}, {W16, 0, 0, H16, W16, H16}, px, py};
@@ -86,10 +90,11 @@ int run(const gsdot3::tools::search_args& args) {
               const auto r = p::two_pass::pixel(nm, light, o);
               best_top = std::max(best_top, r.value), best_bottom = std::min(best_bottom, r.value);
               if (r.value != r.dot) {
-                std::printf("s = %d (%s): wrap, value %d, DPB dot %d (%lld cases evaluated)\n"
-                            "    {%d, %d, %d, {{{%d, %d, %d}, {%d, %d, %d}, {%d, %d, %d}}}, {%d, 0, 0, %d, %d, %d}, %d, %d},\n",
-                            s, args.option_name(), r.value, r.dot, evaluated, s, nm.iX, nm.iY, la[0], la[1],
-                            la[2], (*lb)[0], (*lb)[1], (*lb)[2], lc[0], lc[1], lc[2], W16, H16, W16, H16, px, py);
+                std::printf(
+                    "s = %d (%s): wrap, value %d, DPB dot %d (%lld cases evaluated)\n"
+                    "    {%d, %d, %d, {{{%d, %d, %d}, {%d, %d, %d}, {%d, %d, %d}}}, {%d, 0, 0, %d, %d, %d}, %d, %d},\n",
+                    s, args.option_name(), r.value, r.dot, evaluated, s, nm.iX, nm.iY, la[0], la[1], la[2], (*lb)[0],
+                    (*lb)[1], (*lb)[2], lc[0], lc[1], lc[2], W16, H16, W16, H16, px, py);
                 return 0;
               }
             }
@@ -97,15 +102,19 @@ int run(const gsdot3::tools::search_args& args) {
           break;  // one W per pattern: the largest W whose fractions are all near 1
         }
       }
-  std::printf("s = %d: no wrapping pixel in the searched set (%lld cases, values %d .. %d)\n", s, evaluated, best_bottom, best_top);
+  std::printf("s = %d: no wrapping pixel in the searched set (%lld cases, values %d .. %d)\n", s, evaluated,
+              best_bottom, best_top);
   return 1;
 }
 }  // namespace
 
 void gsdot3::tools::add_search_command(CLI::App& app, int& rc) {
   auto args = std::make_shared<search_args>();
-  CLI::App* cmd = app.add_subcommand("search", "The one-axis construction: the certificate rows at s = 100 (one per option) and 122..125");
-  cmd->footer("Prints the first wrapping case as a certificate row (exit status 0), or that the searched set has none (1). Seconds.");
+  CLI::App* cmd = app.add_subcommand(
+      "search", "The one-axis construction: the certificate rows at s = 100 (one per option) and 122..125");
+  cmd->footer(
+      "Prints the first wrapping case as a certificate row (exit status 0), or that the searched set has none (1). "
+      "Seconds.");
   add_search_args(*cmd, *args);
   cmd->callback([args, &rc] { rc = run(*args); });
 }

@@ -83,7 +83,8 @@ int run(const steep_args& a) {
               const int xY16 = yX16 + 16 * 128 * d1 + t1, xZ16 = yX16 + 16 * 128 * d2 + t2 - yZ16;
               if (xY16 > max124 || xZ16 > max124 || xZ16 < 0) continue;
               // edge vectors X→Y, X→Z in pixels; a channel's steps g solve M·g = 128·(Δ_Y, Δ_Z)
-              const double ax = xY16 / 16.0, ay = -yX16 / 16.0, bx = xZ16 / 16.0, by = (yZ16 - yX16) / 16.0, det = ax * by - bx * ay;
+              const double ax = xY16 / 16.0, ay = -yX16 / 16.0, bx = xZ16 / 16.0, by = (yZ16 - yX16) / 16.0,
+                           det = ax * by - bx * ay;
               const double lag_x = 128 * (d1 * by - d2 * ay) / det, lag_y = 128 * (d2 * ax - d1 * bx) / det;
               if (!(lag_x > 0.99 && lag_x < 1.0 && lag_y > 0.99 && lag_y < 1.0)) continue;
               for (int K = 1; K <= 15; ++K) {
@@ -96,7 +97,8 @@ int run(const steep_args& a) {
                   }
                 for (int e1 = static_cast<int>(std::ceil(lo1)); e1 <= static_cast<int>(std::floor(hi1)); ++e1)
                   for (int e2 = static_cast<int>(std::ceil(lo2)); e2 <= static_cast<int>(std::floor(hi2)); ++e2) {
-                    const double gx = sg[c3] * 128 * (e1 * by - e2 * ay) / det, gy = sg[c3] * 128 * (e2 * ax - e1 * bx) / det;
+                    const double gx = sg[c3] * 128 * (e1 * by - e2 * ay) / det,
+                                 gy = sg[c3] * 128 * (e2 * ax - e1 * bx) / det;
                     if (!(gx < -0.99 && gx > -1.0 && gy > 0.5 && gy - std::trunc(gy) < 0.006)) continue;
                     for (int i = -a.box; i <= a.box; ++i)
                       for (int j = -a.box; j <= a.box; ++j)
@@ -105,7 +107,8 @@ int run(const steep_args& a) {
                           p::ivec3 ly = lx, lz = lx;
                           ly[ca] -= sg[ca] * d1, ly[cb] -= sg[cb] * d1, ly[c3] += e1;
                           lz[ca] -= sg[ca] * d2, lz[cb] -= sg[cb] * d2, lz[c3] += e2;
-                          if (!p::is_packed_light(s, lx) || !p::is_packed_light(s, ly) || !p::is_packed_light(s, lz)) continue;
+                          if (!p::is_packed_light(s, lx) || !p::is_packed_light(s, ly) || !p::is_packed_light(s, lz))
+                            continue;
                           const tt::triangle_case c{s, a.iX, a.iY, {lx, ly, lz}, {0, yX16, xY16, 0, xZ16, yZ16}, 0, 0};
                           tl::found f{c, tl::score_near_vertices(c, o, t, a.side, 2, 4), a.side};
                           ++evaluated;
@@ -116,15 +119,18 @@ int run(const steep_args& a) {
                           if (tl::better(f.sc, best.sc)) best = f;
                           if (f.sc.value >= 128) {
                             tl::print_certificate_row(f.c, f.sc, args.option_name());
-                            std::printf("(side %+d; %lld cases evaluated, %lld explored)\n", f.side, evaluated, explored);
+                            std::printf("(side %+d; %lld cases evaluated, %lld explored)\n", f.side, evaluated,
+                                        explored);
                             return 0;
                           }
                         }
                   }
               }
             }
-  std::printf("s = %d (%s): no wrap, best wrap-side value %d (smooth %.3f) at (%d, %d), side %+d, %lld cases evaluated, %lld explored; its case:\n",
-              s, args.option_name(), best.sc.value, best.sc.smooth, best.sc.px, best.sc.py, best.side, evaluated, explored);
+  std::printf(
+      "s = %d (%s): no wrap, best wrap-side value %d (smooth %.3f) at (%d, %d), side %+d, %lld cases evaluated, %lld "
+      "explored; its case:\n",
+      s, args.option_name(), best.sc.value, best.sc.smooth, best.sc.px, best.sc.py, best.side, evaluated, explored);
   tl::print_certificate_row(best.c, best.sc, args.option_name(), "best");
   return 1;
 }
@@ -132,25 +138,37 @@ int run(const steep_args& a) {
 
 void gsdot3::tools::add_steep_command(CLI::App& app, int& rc) {
   auto a = std::make_shared<steep_args>();
-  CLI::App* cmd = app.add_subcommand("steep", "The steep third-channel construction: the certificate rows at s = 86, 85 (one per option) and 84 (truncate_to_8)");
-  cmd->footer("Prints the first wrapping case as a certificate row (exit status 0), or the best case reached (1). Seconds to minutes.");
+  CLI::App* cmd = app.add_subcommand("steep",
+                                     "The steep third-channel construction: the certificate rows at s = 86, 85 (one "
+                                     "per option) and 84 (truncate_to_8)");
+  cmd->footer(
+      "Prints the first wrapping case as a certificate row (exit status 0), or the best case reached (1). Seconds to "
+      "minutes.");
   add_search_args(*cmd, a->search);
   cmd->add_option("IX", a->iX, "The normal pack(IX, IY)")->required();
   cmd->add_option("IY", a->iY, "")->required();
-  cmd->add_option("SIDE", a->side, "The wrap side: 1 top (value >= 128), -1 bottom (<= -129)")->required()->check(CLI::IsMember({1, -1}));
-  cmd->add_option("THIRD", a->third, "The channel that gets the steep y step (0..2)")->required()->check(CLI::Range(0, 2));
+  cmd->add_option("SIDE", a->side, "The wrap side: 1 top (value >= 128), -1 bottom (<= -129)")
+      ->required()
+      ->check(CLI::IsMember({1, -1}));
+  cmd->add_option("THIRD", a->third, "The channel that gets the steep y step (0..2)")
+      ->required()
+      ->check(CLI::Range(0, 2));
   cmd->add_option("LX0", a->lx[0], "X's light, the centre of the box searched")->required();
   cmd->add_option("LX1", a->lx[1], "")->required();
   cmd->add_option("LX2", a->lx[2], "")->required();
-  cmd->add_option("D1", a->d1, "The lag channels' fall from X to Y, levels (searched ±2)")->required()->check(CLI::Range(3, 255));
+  cmd->add_option("D1", a->d1, "The lag channels' fall from X to Y, levels (searched ±2)")
+      ->required()
+      ->check(CLI::Range(3, 255));
   cmd->add_option("D2", a->d2, "The lag channels' fall from X to Z, levels (searched ±2)")->required();
   cmd->add_option("YX_LO", a->yx_lo, "X's y, pixels: from")->required()->check(CLI::Range(0, 2047));
   cmd->add_option("YX_HI", a->yx_hi, "to")->required()->check(CLI::Range(0, 2047));
   cmd->add_option("BOX", a->box, "X's light runs over LX ± BOX per channel (default 5)")->check(CLI::NonNegativeNumber);
   cmd->add_option("T1", a->t1, "Y's x offsets 1, 3, .. T1 sixteenths (default 60)");
   cmd->add_option("T2", a->t2, "Z's x offsets 1, 5, .. T2 sixteenths (default 200)");
-  cmd->add_option("NR", a->nr, "Also score the normals within ±NR of (IX, IY) (default 0)")->check(CLI::NonNegativeNumber);
-  cmd->add_option("SIGNS", a->signs, "1: also every sign pattern of (n_x, n_y, side) (default 0)")->check(CLI::IsMember({0, 1}));
+  cmd->add_option("NR", a->nr, "Also score the normals within ±NR of (IX, IY) (default 0)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("SIGNS", a->signs, "1: also every sign pattern of (n_x, n_y, side) (default 0)")
+      ->check(CLI::IsMember({0, 1}));
   cmd->add_option("MIN", a->min_smooth, "The smooth part from which NR and SIGNS apply (default 125.5)");
   cmd->callback([a, &rc] {
     if (a->yx_lo > a->yx_hi) throw CLI::ValidationError("YX_LO", "must not exceed YX_HI");

@@ -65,39 +65,45 @@ int run(const gsdot3::tools::search_args& args) {
         for (int c = 0; c < 3; ++c) dp[c] = d[static_cast<std::size_t>(c)] - nd * nh[c], perp2 += dp[c] * dp[c];
         if (perp2 / 4 >= double(s) * s) continue;
         const double cz = std::sqrt(double(s) * s - perp2 / 4);
-        const int cx = static_cast<int>(std::lround(cz * nh[0] - dp[0] / 2)), cy = static_cast<int>(std::lround(cz * nh[1] - dp[1] / 2)),
+        const int cx = static_cast<int>(std::lround(cz * nh[0] - dp[0] / 2)),
+                  cy = static_cast<int>(std::lround(cz * nh[1] - dp[1] / 2)),
                   cw = static_cast<int>(std::lround(cz * nh[2] - dp[2] / 2));
         for (int i = -2; i <= 2; ++i)
           for (int j = -2; j <= 2; ++j)
             for (int l = -2; l <= 2; ++l) {
-          const p::ivec3 lz{cx + i, cy + j, cw + l};
-          if (!p::is_packed_light(s, lz)) continue;
-          const p::ivec3 lx{lz[0] + d[0], lz[1] + d[1], lz[2] + d[2]};
-          if (!p::is_packed_light(s, lx)) continue;
-          for (const auto& [x, y] : pixels) {
-            const tt::triangle_case c{s, nm.iX, nm.iY, {lx, lx, lz}, xy16, x, y};
-            const auto r = p::two_pass::pixel(nm, tt::pixel_light(c), o);
-            ++evaluated;
-            best = std::max(best, side > 0 ? r.value : -r.value - 1);
-            if (r.value != r.dot) {
-              std::printf("s = %d (%s): wrap, value %d (%lld cases evaluated)\n"
-                          "    {%d, %d, %d, {{{%d, %d, %d}, {%d, %d, %d}, {%d, %d, %d}}}, {0, %d, %d, 0, %d, %d}, %d, %d},\n",
-                          s, args.option_name(), r.value, evaluated, s,
-                          nm.iX, nm.iY, lx[0], lx[1], lx[2], lx[0], lx[1], lx[2], lz[0], lz[1], lz[2], E, E, E, E, x, y);
-              return 0;
-            }
-          }
+              const p::ivec3 lz{cx + i, cy + j, cw + l};
+              if (!p::is_packed_light(s, lz)) continue;
+              const p::ivec3 lx{lz[0] + d[0], lz[1] + d[1], lz[2] + d[2]};
+              if (!p::is_packed_light(s, lx)) continue;
+              for (const auto& [x, y] : pixels) {
+                const tt::triangle_case c{s, nm.iX, nm.iY, {lx, lx, lz}, xy16, x, y};
+                const auto r = p::two_pass::pixel(nm, tt::pixel_light(c), o);
+                ++evaluated;
+                best = std::max(best, side > 0 ? r.value : -r.value - 1);
+                if (r.value != r.dot) {
+                  std::printf(
+                      "s = %d (%s): wrap, value %d (%lld cases evaluated)\n"
+                      "    {%d, %d, %d, {{{%d, %d, %d}, {%d, %d, %d}, {%d, %d, %d}}}, {0, %d, %d, 0, %d, %d}, %d, "
+                      "%d},\n",
+                      s, args.option_name(), r.value, evaluated, s, nm.iX, nm.iY, lx[0], lx[1], lx[2], lx[0], lx[1],
+                      lx[2], lz[0], lz[1], lz[2], E, E, E, E, x, y);
+                  return 0;
+                }
+              }
             }
       }
-  std::printf("s = %d: no wrapping pixel in the searched set (%lld cases, best wrap-side value %d)\n", s, evaluated, best);
+  std::printf("s = %d: no wrapping pixel in the searched set (%lld cases, best wrap-side value %d)\n", s, evaluated,
+              best);
   return 1;
 }
 }  // namespace
 
 void gsdot3::tools::add_two_axis_command(CLI::App& app, int& rc) {
   auto args = std::make_shared<search_args>();
-  CLI::App* cmd = app.add_subcommand("two-axis", "The two-axis construction: the certificate rows at s = 91 (one per option)");
-  cmd->footer("Prints the first wrapping case as a certificate row (exit status 0), or the best wrap-side value (1). Seconds.");
+  CLI::App* cmd =
+      app.add_subcommand("two-axis", "The two-axis construction: the certificate rows at s = 91 (one per option)");
+  cmd->footer(
+      "Prints the first wrapping case as a certificate row (exit status 0), or the best wrap-side value (1). Seconds.");
   add_search_args(*cmd, *args);
   cmd->callback([args, &rc] { rc = run(*args); });
 }

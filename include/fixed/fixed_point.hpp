@@ -94,7 +94,9 @@ class fixed_point {
     }
   }
 
-  explicit constexpr operator double() const noexcept { return static_cast<double>(raw_) / static_cast<double>(std::int64_t{1} << F); }
+  explicit constexpr operator double() const noexcept {
+    return static_cast<double>(raw_) / static_cast<double>(std::int64_t{1} << F);
+  }
   constexpr double to_double() const noexcept { return static_cast<double>(*this); }
 
   // To another fraction width: shifting right rounds as R, shifting left or widening never loses.
@@ -106,8 +108,7 @@ class fixed_point {
     } else if constexpr (F2 > F) {
       r = static_cast<std::int64_t>(static_cast<std::uint64_t>(r) << (F2 - F));
     }
-    return fixed_point<Rep2, F2>::from_raw(
-        static_cast<Rep2>(narrow<width_v<Rep2>, fixed_point<Rep2, F2>::sign, O>(r)));
+    return fixed_point<Rep2, F2>::from_raw(static_cast<Rep2>(narrow<width_v<Rep2>, fixed_point<Rep2, F2>::sign, O>(r)));
   }
 
   friend constexpr bool operator==(fixed_point, fixed_point) noexcept = default;

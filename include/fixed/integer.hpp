@@ -66,8 +66,7 @@ class integer {
   // Widening to a type whose range contains this one's (never loses information).
   template <int M, signedness T>
   constexpr operator integer<M, T>() const noexcept
-    requires(bit_range<M, T>::min <= range::min && bit_range<M, T>::max >= range::max)
-  {
+      requires(bit_range<M, T>::min <= range::min && bit_range<M, T>::max >= range::max) {
     return integer<M, T>::from_wrapped(v_);
   }
 
@@ -106,8 +105,7 @@ using s17 = sint<17>;
 
 namespace detail {
 constexpr signedness either_signed(signedness a, signedness b) {
-  return a == signedness::is_signed || b == signedness::is_signed ? signedness::is_signed
-                                                                   : signedness::is_unsigned;
+  return a == signedness::is_signed || b == signedness::is_signed ? signedness::is_signed : signedness::is_unsigned;
 }
 // Width that holds the union of two ranges.
 constexpr int union_bits(int na, signedness sa, int nb, signedness sb) {

@@ -18,9 +18,7 @@ enum class overflow {
   saturate,  // clamp to the nearest representable value
 };
 
-constexpr const char* name(overflow o) noexcept {
-  return o == overflow::wrap ? "wrap" : "saturate";
-}
+constexpr const char* name(overflow o) noexcept { return o == overflow::wrap ? "wrap" : "saturate"; }
 
 enum class signedness { is_signed, is_unsigned };
 

@@ -20,8 +20,7 @@ enum class rounding {
   nearest_ties_even,  // to nearest, exact halves to the even neighbour (banker's rounding)
 };
 
-inline constexpr rounding all_roundings[] = {rounding::floor, rounding::toward_zero,
-                                             rounding::nearest_ties_up,
+inline constexpr rounding all_roundings[] = {rounding::floor, rounding::toward_zero, rounding::nearest_ties_up,
                                              rounding::nearest_ties_even};
 
 constexpr const char* name(rounding r) noexcept {
@@ -51,9 +50,8 @@ constexpr T shift_right(T value, int shift) noexcept {
     // -1/2 goes up under both nearest modes, 0 being the even neighbour).
     if constexpr (std::is_unsigned_v<T>) {
       constexpr T half_range = static_cast<T>(T{1} << (width_v<T> - 1));
-      const bool up = shift == width_v<T> &&
-                      ((R == rounding::nearest_ties_up && value >= half_range) ||
-                       (R == rounding::nearest_ties_even && value > half_range));
+      const bool up = shift == width_v<T> && ((R == rounding::nearest_ties_up && value >= half_range) ||
+                                              (R == rounding::nearest_ties_even && value > half_range));
       return static_cast<T>(up ? 1 : 0);
     } else {
       return static_cast<T>(R == rounding::floor && value < 0 ? -1 : 0);
@@ -62,7 +60,7 @@ constexpr T shift_right(T value, int shift) noexcept {
   const U mask = static_cast<U>((U{1} << shift) - 1U);
   const U half = static_cast<U>(U{1} << (shift - 1));
   const U rem = static_cast<U>(static_cast<U>(value) & mask);  // value - floor(value/2^k)*2^k
-  const T q = static_cast<T>(value >> shift);  // floor: C++20 defines >> of a negative as arithmetic
+  const T q = static_cast<T>(value >> shift);                  // floor: C++20 defines >> of a negative as arithmetic
   bool up = false;
   switch (R) {
     case rounding::floor: up = false; break;
@@ -70,9 +68,7 @@ constexpr T shift_right(T value, int shift) noexcept {
       if constexpr (std::is_signed_v<T>) up = value < 0 && rem != 0;
       break;
     case rounding::nearest_ties_up: up = rem >= half; break;
-    case rounding::nearest_ties_even:
-      up = rem > half || (rem == half && (static_cast<U>(q) & 1U) != 0);
-      break;
+    case rounding::nearest_ties_even: up = rem > half || (rem == half && (static_cast<U>(q) & 1U) != 0); break;
   }
   return static_cast<T>(q + (up ? 1 : 0));
 }

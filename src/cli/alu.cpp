@@ -28,11 +28,16 @@ std::uint64_t parse_digits(const std::string& what, const std::string& text, std
   for (std::size_t i = first; i < text.size(); ++i) {
     const char ch = text[i];
     int d;
-    if (ch >= '0' && ch <= '9') d = ch - '0';
-    else if (hex && ch >= 'a' && ch <= 'f') d = ch - 'a' + 10;
-    else if (hex && ch >= 'A' && ch <= 'F') d = ch - 'A' + 10;
-    else throw usage_error(what + ": malformed number '" + text + "'" + (hex ? "" : " (hex needs a 0x prefix)"));
-    if (v > (max - static_cast<std::uint64_t>(d)) / base) throw usage_error(what + ": value '" + text + "' out of range");
+    if (ch >= '0' && ch <= '9')
+      d = ch - '0';
+    else if (hex && ch >= 'a' && ch <= 'f')
+      d = ch - 'a' + 10;
+    else if (hex && ch >= 'A' && ch <= 'F')
+      d = ch - 'A' + 10;
+    else
+      throw usage_error(what + ": malformed number '" + text + "'" + (hex ? "" : " (hex needs a 0x prefix)"));
+    if (v > (max - static_cast<std::uint64_t>(d)) / base)
+      throw usage_error(what + ": value '" + text + "' out of range");
     v = v * base + static_cast<std::uint64_t>(d);
   }
   return v;
@@ -67,9 +72,7 @@ void run_alu(const alu_args& a) {
     if (name == "RGBAQ") throw usage_error("--reg: give the vertex colour with --vertex, not RGBAQ");
     try {
       gs::set_register(regs, name, parse_number("--reg " + name, value, ~std::uint64_t{0}));
-    } catch (const gs::register_error& e) {
-      throw usage_error(std::string("--reg: ") + e.what());
-    }
+    } catch (const gs::register_error& e) { throw usage_error(std::string("--reg: ") + e.what()); }
   }
   const gs::model_options opts = a.model.resolve();
   if (regs.PRIM.TME && a.texel.empty()) throw usage_error("PRIM.TME = 1 needs --texel");
@@ -77,8 +80,7 @@ void run_alu(const alu_args& a) {
   if (gs::bits_of(regs.FRAME_1.PSM) == gs::pixel_bits::b16 && dst > 0xFFFFu)
     throw usage_error("--dst: a 16-bit frame (FRAME_1.PSM) holds a 16-bit word, got " + a.dst);
   const gs::pixel_input in{gs::fragment_colour::flat(gs::rgba8::from_u32(parse_colour("--vertex", a.vertex))),
-                           gs::rgba8::from_u32(a.texel.empty() ? 0u : parse_colour("--texel", a.texel)), dst, a.x,
-                           a.y};
+                           gs::rgba8::from_u32(a.texel.empty() ? 0u : parse_colour("--texel", a.texel)), dst, a.x, a.y};
   const gs::pixel_trace t = gs::pixel_pipeline(regs, in, opts);
   if (a.trace) std::cout << gs::format_trace(t);
   char buf[16];
@@ -100,17 +102,19 @@ std::string option_help() {
 
 void add_alu_command(CLI::App& app, context& ctx) {
   auto args = std::make_shared<alu_args>();
-  CLI::App* cmd = app.add_subcommand("alu", "One pixel through the modeled GS: prints the new frame-buffer word 0xAABBGGRR");
+  CLI::App* cmd =
+      app.add_subcommand("alu", "One pixel through the modeled GS: prints the new frame-buffer word 0xAABBGGRR");
   cmd->footer(
       "Prints the new frame-buffer word as 0xAABBGGRR (A8B8G8R8, alpha in the top byte; 16-bit frames: 0x0000XXXX).\n"
       "Unset registers are neutral: PRIM = 0 (no texture, no blending), TEX0_1 = 0, ALPHA_1 = 0, TEST_1 = 0 (no "
       "alpha test), FRAME_1 = 0 (PSMCT32, FBMSK = 0), COLCLAMP = 1 (clamp), PABE = 0, FBA_1 = 0, DTHE = 0, DIMX = 0. "
       "--dst defaults to 0x00000000, --x and --y to 0.\nModel options (--option NAME=VALUE):" +
       option_help());
-  cmd->add_option("--reg", args->regs,
-                  "Register NAME=VALUE, VALUE a 64-bit number (0x hex or decimal). NAME: PRIM, TEX0_1, ALPHA_1, TEST_1, "
-                  "FRAME_1, COLCLAMP, PABE, FBA_1, DTHE, DIMX (GS manual bit layouts; reserved values are errors). "
-                  "Repeatable; the last one wins.");
+  cmd->add_option(
+      "--reg", args->regs,
+      "Register NAME=VALUE, VALUE a 64-bit number (0x hex or decimal). NAME: PRIM, TEX0_1, ALPHA_1, TEST_1, "
+      "FRAME_1, COLCLAMP, PABE, FBA_1, DTHE, DIMX (GS manual bit layouts; reserved values are errors). "
+      "Repeatable; the last one wins.");
   cmd->add_option("--vertex", args->vertex, "Vertex (flat fragment) colour AABBGGRR, hex")->required();
   cmd->add_option("--texel", args->texel, "Texel colour AABBGGRR after CLUT/filtering; required when PRIM.TME = 1");
   cmd->add_option("--dst", args->dst, "Old frame-buffer word, hex (default 00000000)");

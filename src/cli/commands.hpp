@@ -28,7 +28,7 @@ void add_mesh_info_command(CLI::App& app, context& ctx);  // a mesh file as the 
 void add_prove_command(CLI::App& app, context& ctx);
 void add_pvr_bump_command(CLI::App& app, context& ctx);  // seed 004 bump textures
 void add_quality_command(CLI::App& app, context& ctx);   // seed 000 comparative quality sentences
-void add_render_command(CLI::App& app, context& ctx);  // render and report
+void add_render_command(CLI::App& app, context& ctx);    // render and report
 void add_ssbump_command(CLI::App& app, context& ctx);
 void add_vectors_command(CLI::App& app, context& ctx);
 void add_dump_info_command(CLI::App& app, context& ctx);  // PCSX2 GS dumps

@@ -24,8 +24,9 @@ void run(const args& o, context& ctx) {
 
 void add_compare_command(CLI::App& app, context& ctx) {
   auto o = std::make_shared<args>();
-  auto* cmd = app.add_subcommand("compare", "Per-pixel differences of two PNG frames of the same size: counts, "
-                                            "a heat map, the first differing pixels in hex (exit 1 when they differ)");
+  auto* cmd = app.add_subcommand("compare",
+                                 "Per-pixel differences of two PNG frames of the same size: counts, "
+                                 "a heat map, the first differing pixels in hex (exit 1 when they differ)");
   cmd->add_option("A", o->a, "First PNG (e.g. the model's frame)")->required();
   cmd->add_option("B", o->b, "Second PNG (e.g. an emulator's or a console's screenshot)")->required();
   cmd->add_option("--heat", o->heat, "Write a heat map PNG: differing pixels red (brighter = larger), others dimmed A");

@@ -97,7 +97,8 @@ void print_json(const args& a, const std::vector<cost::frame_cost>& frames) {
 // The seed's performance sentences on the embedded scene (pipeline/performance_claims.hpp).
 void print_claims(const args& a) {
   const pipeline::scene s = pipeline::default_scene();
-  const auto rows = pipeline::performance_rows(s, {}, a.o, [](const std::string& m) { std::cerr << "gsdot3: " << m << "\n"; });
+  const auto rows =
+      pipeline::performance_rows(s, {}, a.o, [](const std::string& m) { std::cerr << "gsdot3: " << m << "\n"; });
   const std::string scene = "the embedded scene (512x448, " + std::to_string(s.lights.size()) + " point lights)";
   if (a.markdown) {
     std::cout << pipeline::performance_markdown(rows, scene);
@@ -106,14 +107,18 @@ void print_claims(const args& a) {
   if (a.json) {
     nlohmann::json j = nlohmann::json::array();
     for (const auto& r : rows)
-      j.push_back({{"claim", r.claim}, {"paper", r.paper}, {"statement", r.statement}, {"figures", r.figures},
+      j.push_back({{"claim", r.claim},
+                   {"paper", r.paper},
+                   {"statement", r.statement},
+                   {"figures", r.figures},
                    {"verdict", r.verdict}});
     std::cout << j.dump(1) << "\n";
     return;
   }
   std::cout << "seed 000's performance sentences on " << scene << ", GS cost model defaults (docs/cost.md)\n";
   for (const auto& r : rows)
-    std::cout << r.claim << " (" << r.paper << "): " << r.verdict << "\n  " << r.statement << "\n  " << r.figures << "\n";
+    std::cout << r.claim << " (" << r.paper << "): " << r.verdict << "\n  " << r.statement << "\n  " << r.figures
+              << "\n";
 }
 
 void run(args a) {
@@ -127,15 +132,11 @@ void run(args a) {
   gs::dump::gs_dump d;
   try {
     d = gs::dump::load_dump(a.file);
-  } catch (const gs::dump::dump_error& e) {
-    throw usage_error(e.what());
-  }
+  } catch (const gs::dump::dump_error& e) { throw usage_error(e.what()); }
   std::vector<cost::frame_cost> frames;
   try {
     frames = cost::price_dump(d, a.o);
-  } catch (const gs::dump::dump_error& e) {
-    throw usage_error(a.file + ": " + e.what());
-  }
+  } catch (const gs::dump::dump_error& e) { throw usage_error(a.file + ": " + e.what()); }
   if (a.json)
     print_json(a, frames);
   else

@@ -23,8 +23,9 @@ void add_dump_command(CLI::App& app, context& ctx) {
   auto video = std::make_shared<std::string>("ntsc");
   auto max_packet = std::make_shared<std::size_t>(gs::packets::default_max_packet_bytes);
   auto* cmd = app.add_subcommand(
-      "dump", "Write one GS method's frame (the memory path's buffers) as a PCSX2 GS dump (.gs, .gs.xz, .gs.zst): "
-              "header, version-8 state, the GIF packets of every pass, display registers, a vsync");
+      "dump",
+      "Write one GS method's frame (the memory path's buffers) as a PCSX2 GS dump (.gs, .gs.xz, .gs.zst): "
+      "header, version-8 state, the GIF packets of every pass, display registers, a vsync");
   cmd->add_option("--out", *out, "the dump file; .xz or .zst (any case) compresses it")->required();
   cmd->add_option("--video", *video, "video mode the display registers set: ntsc, pal or vesa")
       ->check(CLI::IsMember({"ntsc", "pal", "vesa"}))
@@ -48,17 +49,13 @@ void add_dump_command(CLI::App& app, context& ctx) {
       fp = pipeline::build_frame_packets(st.in.s, ps, st.methods[0], st.options);
     } catch (const std::invalid_argument& e) {
       throw usage_error(e.what());
-    } catch (const pipeline::texture_does_not_fit& e) {
-      throw usage_error(e.what());
-    }
+    } catch (const pipeline::texture_does_not_fit& e) { throw usage_error(e.what()); }
     std::cerr << "gsdot3: writing " << *out << "\n";
     gs::dump::gs_dump d;
     try {
       d = pipeline::frame_dump(fp, {*gs::packets::video_mode_named(*video), *max_packet});
       gs::dump::save_dump(*out, d);
-    } catch (const gs::dump::dump_error& e) {
-      throw usage_error(e.what());
-    } catch (const std::invalid_argument& e) {
+    } catch (const gs::dump::dump_error& e) { throw usage_error(e.what()); } catch (const std::invalid_argument& e) {
       throw usage_error(e.what());
     }
     std::size_t transfers = 0, largest = 0;
@@ -67,8 +64,8 @@ void add_dump_command(CLI::App& app, context& ctx) {
     if (largest > gs::packets::pcsx2_path_buffer_bytes)
       std::cerr << "gsdot3: warning: a transfer of " << largest << " bytes exceeds PCSX2's 9 MiB GIF path buffer\n";
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    std::cout << *out << ": " << pipeline::name(st.methods[0]) << ", state version " << gs::dump::state_version_written << ", "
-              << fp.gif.size() << " bytes of GIF packets in " << transfers << " transfers (largest " << largest
+    std::cout << *out << ": " << pipeline::name(st.methods[0]) << ", state version " << gs::dump::state_version_written
+              << ", " << fp.gif.size() << " bytes of GIF packets in " << transfers << " transfers (largest " << largest
               << " bytes), " << *video << ", " << fp.triangles << " triangles, " << fp.sprites
               << " sprites; displayed: DISPFB1 FBP " << fp.buffers.output() << " FBW " << fp.buffers.fbw << " PSMCT32, "
               << st.in.s.width << "x" << st.in.s.height << "; " << seconds << " s\n";
@@ -77,7 +74,8 @@ void add_dump_command(CLI::App& app, context& ctx) {
     const gs::model_options defaults{};
     for (const auto& row : gs::option_catalogue())
       if (gs::option_value(st.options.model, row.name) != gs::option_value(defaults, row.name))
-        differ += " --model-option " + std::string(row.name) + "=" + std::string(gs::option_value(st.options.model, row.name));
+        differ += " --model-option " + std::string(row.name) + "=" +
+                  std::string(gs::option_value(st.options.model, row.name));
     std::cout << "replay under the same model options: gsdot3 replay " << *out << differ << "\n";
     ctx.exit_code = 0;
   });

@@ -29,14 +29,10 @@ void run(const std::string& file) {
   std::vector<dump::path_stream> paths;
   try {
     d = dump::load_dump(file);
-  } catch (const dump::dump_error& e) {
-    throw usage_error(e.what());
-  }
+  } catch (const dump::dump_error& e) { throw usage_error(e.what()); }
   try {
     paths = dump::decode_paths(d);
-  } catch (const dump::dump_error& e) {
-    throw usage_error(file + ": " + e.what());
-  }
+  } catch (const dump::dump_error& e) { throw usage_error(file + ": " + e.what()); }
   std::cout << "file " << file << "\n"
             << "layout " << (d.new_layout ? "new (0xFFFFFFFF, GSDumpHeader)" : "old (CRC, state size)") << "\n"
             << "state_version " << d.state_version << "\n"
@@ -58,7 +54,8 @@ void run(const std::string& file) {
         std::cout << "state " << f.name << " = " << hex(dump::state_get(d.state, hi)) << "_"
                   << hex(dump::state_get(d.state, lo)).substr(2) << "\n";
       } else {
-        std::cout << "state " << f.name << " = " << hex(dump::state_get(d.state, f), static_cast<int>(2 * f.size)) << "\n";
+        std::cout << "state " << f.name << " = " << hex(dump::state_get(d.state, f), static_cast<int>(2 * f.size))
+                  << "\n";
       }
     }
   } else {
@@ -70,8 +67,8 @@ void run(const std::string& file) {
     if (p.type == dump::packet_type::transfer) ++transfers[p.path];
   }
   std::cout << "packets " << d.packets.size() << ": transfer " << by_type[0] << " (path 0: " << transfers[0]
-            << ", 1: " << transfers[1] << ", 2: " << transfers[2] << ", 3: " << transfers[3] << "), vsync " << by_type[1]
-            << ", readFIFO2 " << by_type[2] << ", registers " << by_type[3] << "\n";
+            << ", 1: " << transfers[1] << ", 2: " << transfers[2] << ", 3: " << transfers[3] << "), vsync "
+            << by_type[1] << ", readFIFO2 " << by_type[2] << ", registers " << by_type[3] << "\n";
   for (unsigned i = 0; i < 4; ++i) {
     std::array<std::size_t, 3> flg{};
     std::size_t tags = 0, writes = 0, image_qwords = 0;
@@ -81,8 +78,8 @@ void run(const std::string& file) {
       if (e.what == pk::gif_event::kind::image) image_qwords += e.data.size() / 16;
     }
     std::cout << "path " << i << ": " << tags << " GIF tags (PACKED " << flg[0] << ", REGLIST " << flg[1] << ", IMAGE "
-              << flg[2] << "), " << writes << " register writes (" << paths[i].unused_writes << " to unused addresses), "
-              << image_qwords << " IMAGE qwords\n";
+              << flg[2] << "), " << writes << " register writes (" << paths[i].unused_writes
+              << " to unused addresses), " << image_qwords << " IMAGE qwords\n";
   }
   std::cout << "notices " << d.notices.size() << "\n";
   print_dump_notes(file, d, paths);
@@ -92,8 +89,9 @@ void run(const std::string& file) {
 
 void add_dump_info_command(CLI::App& app, context&) {
   auto file = std::make_shared<std::string>();
-  auto* cmd = app.add_subcommand("dump-info", "What a PCSX2 GS dump (.gs, .gs.xz, .gs.zst) holds: header, state "
-                                              "registers, packet counts, GIF tags per path");
+  auto* cmd = app.add_subcommand("dump-info",
+                                 "What a PCSX2 GS dump (.gs, .gs.xz, .gs.zst) holds: header, state "
+                                 "registers, packet counts, GIF tags per path");
   cmd->add_option("FILE", *file, "The dump")->required();
   cmd->callback([file] { run(*file); });
 }

@@ -48,13 +48,13 @@ std::string hex_pixel(const std::uint8_t* p) {
 
 }  // namespace
 
-std::uint64_t compare_pngs(const std::string& file_a, const std::string& file_b, const std::string& heat_file, int first_n,
-                           std::ostream& out) {
+std::uint64_t compare_pngs(const std::string& file_a, const std::string& file_b, const std::string& heat_file,
+                           int first_n, std::ostream& out) {
   if (first_n < 0) throw usage_error("--first: must be >= 0");
   const rgba_image a = read_rgba(file_a), b = read_rgba(file_b);
   if (a.width != b.width || a.height != b.height)
-    throw usage_error("sizes differ: " + file_a + " is " + std::to_string(a.width) + "x" + std::to_string(a.height) + ", " +
-                      file_b + " is " + std::to_string(b.width) + "x" + std::to_string(b.height));
+    throw usage_error("sizes differ: " + file_a + " is " + std::to_string(a.width) + "x" + std::to_string(a.height) +
+                      ", " + file_b + " is " + std::to_string(b.width) + "x" + std::to_string(b.height));
   const std::uint64_t n = std::uint64_t{a.width} * a.height;
   std::uint64_t differ = 0;
   std::array<std::uint64_t, 4> per_channel{}, max_diff{};
@@ -87,13 +87,14 @@ std::uint64_t compare_pngs(const std::string& file_a, const std::string& file_b,
                       " " + hex_pixel(pb));
   }
   out << "size " << a.width << "x" << a.height << "\n"
-            << "differing pixels " << differ << " of " << n << "\n"
-            << "channels differing R " << per_channel[0] << ", G " << per_channel[1] << ", B " << per_channel[2] << ", A "
-            << per_channel[3] << "\n"
-            << "max difference R " << max_diff[0] << ", G " << max_diff[1] << ", B " << max_diff[2] << ", A " << max_diff[3]
-            << "\n"
-            << "largest channel difference: 1: " << histogram[0];
-  for (int k = 1; k < 8; ++k) out << ", " << (1 << k) << "-" << ((2 << k) - 1) << ": " << histogram[static_cast<std::size_t>(k)];
+      << "differing pixels " << differ << " of " << n << "\n"
+      << "channels differing R " << per_channel[0] << ", G " << per_channel[1] << ", B " << per_channel[2] << ", A "
+      << per_channel[3] << "\n"
+      << "max difference R " << max_diff[0] << ", G " << max_diff[1] << ", B " << max_diff[2] << ", A " << max_diff[3]
+      << "\n"
+      << "largest channel difference: 1: " << histogram[0];
+  for (int k = 1; k < 8; ++k)
+    out << ", " << (1 << k) << "-" << ((2 << k) - 1) << ": " << histogram[static_cast<std::size_t>(k)];
   out << "\n";
   if (!first.empty()) {
     out << "first differing pixels (x, y): A B as 0xRRGGBBAA\n";
@@ -102,9 +103,7 @@ std::uint64_t compare_pngs(const std::string& file_a, const std::string& file_b,
   if (!heat_file.empty()) {
     try {
       pipeline::write_png(heat_file, heat);
-    } catch (const std::runtime_error& e) {
-      throw usage_error(e.what());
-    }
+    } catch (const std::runtime_error& e) { throw usage_error(e.what()); }
     out << "heat map " << heat_file << "\n";
   }
   return differ;

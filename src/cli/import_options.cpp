@@ -6,30 +6,40 @@
 namespace gsdot3::cli {
 
 void add_import_options(CLI::App* cmd, import_args& a) {
-  cmd->add_option("--normals", a.normals, "normals generated for a mesh without them: smooth (angle-weighted) | flat")->capture_default_str();
-  cmd->add_option("--uv-projection", a.uv_projection, "generate UVs for a mesh without them: box | sphere | planar");
-  cmd->add_option("--tangents", a.tangents, "auto (the file's tangents, e.g. glTF TANGENT, else MikkTSpace) | mikktspace (always computed)")
+  cmd->add_option("--normals", a.normals, "normals generated for a mesh without them: smooth (angle-weighted) | flat")
       ->capture_default_str();
-  cmd->add_option("--duplicates", a.duplicates,
-                  "triangles with the positions and winding of an earlier one: drop (each surface drawn once) | keep (drawn "
-                  "twice: every GS pass that blends into the frame, Cs + Cd, Cd - Cs, (Cs - Cd)*As + Cd with COLCLAMP off, "
-                  "applies twice and wraps modulo 256; the float reference is unaffected). Counted either way")
+  cmd->add_option("--uv-projection", a.uv_projection, "generate UVs for a mesh without them: box | sphere | planar");
+  cmd->add_option("--tangents", a.tangents,
+                  "auto (the file's tangents, e.g. glTF TANGENT, else MikkTSpace) | mikktspace (always computed)")
+      ->capture_default_str();
+  cmd->add_option(
+         "--duplicates", a.duplicates,
+         "triangles with the positions and winding of an earlier one: drop (each surface drawn once) | keep (drawn "
+         "twice: every GS pass that blends into the frame, Cs + Cd, Cd - Cs, (Cs - Cd)*As + Cd with COLCLAMP off, "
+         "applies twice and wraps modulo 256; the float reference is unaffected). Counted either way")
       ->capture_default_str();
 }
 
 pipeline::import_options parse_import_options(const import_args& a) {
   pipeline::import_options import;
-  if (a.normals != "smooth" && a.normals != "flat") throw usage_error("--normals: expected flat or smooth, got '" + a.normals + "'");
+  if (a.normals != "smooth" && a.normals != "flat")
+    throw usage_error("--normals: expected flat or smooth, got '" + a.normals + "'");
   import.normals = a.normals == "flat" ? pipeline::normals_mode::flat : pipeline::normals_mode::smooth;
   if (!a.uv_projection.empty()) {
-    if (a.uv_projection == "box") import.uvs = pipeline::uv_projection::box;
-    else if (a.uv_projection == "sphere") import.uvs = pipeline::uv_projection::sphere;
-    else if (a.uv_projection == "planar") import.uvs = pipeline::uv_projection::planar;
-    else throw usage_error("--uv-projection: expected box, sphere or planar, got '" + a.uv_projection + "'");
+    if (a.uv_projection == "box")
+      import.uvs = pipeline::uv_projection::box;
+    else if (a.uv_projection == "sphere")
+      import.uvs = pipeline::uv_projection::sphere;
+    else if (a.uv_projection == "planar")
+      import.uvs = pipeline::uv_projection::planar;
+    else
+      throw usage_error("--uv-projection: expected box, sphere or planar, got '" + a.uv_projection + "'");
   }
-  if (a.tangents != "auto" && a.tangents != "mikktspace") throw usage_error("--tangents: expected auto or mikktspace, got '" + a.tangents + "'");
+  if (a.tangents != "auto" && a.tangents != "mikktspace")
+    throw usage_error("--tangents: expected auto or mikktspace, got '" + a.tangents + "'");
   import.tangents = a.tangents == "auto" ? pipeline::tangent_mode::automatic : pipeline::tangent_mode::mikktspace;
-  if (a.duplicates != "drop" && a.duplicates != "keep") throw usage_error("--duplicates: expected drop or keep, got '" + a.duplicates + "'");
+  if (a.duplicates != "drop" && a.duplicates != "keep")
+    throw usage_error("--duplicates: expected drop or keep, got '" + a.duplicates + "'");
   import.duplicates = a.duplicates == "drop" ? pipeline::duplicates_mode::drop : pipeline::duplicates_mode::keep;
   return import;
 }

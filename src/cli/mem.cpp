@@ -49,9 +49,17 @@ void run_addr(const addr_args& a) {
   const bool nibble = mem::value_bits(p) == 4;
   const std::string half = nibble ? (at.bit == 0 ? "lo" : "hi") : "";
   if (a.json) {
-    nlohmann::json j = {{"psm", a.psm}, {"bp", a.bp},          {"bw", a.bw},           {"x", a.x},
-                        {"y", a.y},     {"address", hex},      {"page", at.page()},    {"block", at.block()},
-                        {"column", at.column()}, {"bit", at.bit}, {"bits", at.bits}};
+    nlohmann::json j = {{"psm", a.psm},
+                        {"bp", a.bp},
+                        {"bw", a.bw},
+                        {"x", a.x},
+                        {"y", a.y},
+                        {"address", hex},
+                        {"page", at.page()},
+                        {"block", at.block()},
+                        {"column", at.column()},
+                        {"bit", at.bit},
+                        {"bits", at.bits}};
     if (nibble) j["nibble"] = half;
     std::cout << j.dump(2) << "\n";
     return;
@@ -70,13 +78,12 @@ struct view_args {
 void run_view(const view_args& a) {
   const mem::psm base = psm_arg("--base", a.base), view = psm_arg("--as", a.as);
   if (a.scale < 1 || a.scale > 16) throw usage_error("--scale: out of range 1..16");
-  if (a.colour != "channel" && a.colour != "pixel") throw usage_error("--colour: channel or pixel, got '" + a.colour + "'");
+  if (a.colour != "channel" && a.colour != "pixel")
+    throw usage_error("--colour: channel or pixel, got '" + a.colour + "'");
   const pipeline::image img = pipeline::page_overlay_image(base, view, a.colour, a.scale);
   try {
     pipeline::write_png(a.out, img);
-  } catch (const std::runtime_error& e) {
-    throw usage_error(e.what());
-  }
+  } catch (const std::runtime_error& e) { throw usage_error(e.what()); }
   std::cout << a.out << "\n";
 }
 
@@ -87,10 +94,12 @@ void add_mem_command(CLI::App& app, context&) {
   cmd->require_subcommand(1);
 
   auto args = std::make_shared<addr_args>();
-  auto* addr = cmd->add_subcommand("addr", "Where pixel/texel (X, Y) lives: byte address (0x..., .lo/.hi for "
-                                           "4-bit formats), then page, block, column");
+  auto* addr = cmd->add_subcommand("addr",
+                                   "Where pixel/texel (X, Y) lives: byte address (0x..., .lo/.hi for "
+                                   "4-bit formats), then page, block, column");
   addr->add_option("--psm", args->psm, "Storage format: " + psm_list())->capture_default_str();
-  addr->add_option("--bp", args->bp, "Base pointer in 256-byte blocks (as TBP0, DBP, CBP count)")->capture_default_str();
+  addr->add_option("--bp", args->bp, "Base pointer in 256-byte blocks (as TBP0, DBP, CBP count)")
+      ->capture_default_str();
   addr->add_option("--bw", args->bw, "Buffer width in 64-pixel units (TBW, FBW, DBW)")->capture_default_str();
   addr->add_option("X", args->x, "x coordinate (0..2047)")->required();
   addr->add_option("Y", args->y, "y coordinate (0..2047)")->required();
@@ -98,13 +107,15 @@ void add_mem_command(CLI::App& app, context&) {
   addr->callback([args] { run_addr(*args); });
 
   auto vargs = std::make_shared<view_args>();
-  auto* view = cmd->add_subcommand("view", "Draw one page of format --as lying over the page of format --base "
-                                           "(e.g. a PSMCT32 page read as PSMT8) as a PNG");
+  auto* view = cmd->add_subcommand("view",
+                                   "Draw one page of format --as lying over the page of format --base "
+                                   "(e.g. a PSMCT32 page read as PSMT8) as a PNG");
   view->add_option("--base", vargs->base, "Format the page was written in")->capture_default_str();
   view->add_option("--as", vargs->as, "Format the page is read as (the picture's pixels)")->capture_default_str();
   view->add_option("--colour", vargs->colour,
                    "channel: which part of the base pixel (R red, G green, B blue, A grey); pixel: which base "
-                   "pixel (red = x, green = y)")->capture_default_str();
+                   "pixel (red = x, green = y)")
+      ->capture_default_str();
   view->add_option("--scale", vargs->scale, "Pixels per texel (block edges drawn from 3 up)")->capture_default_str();
   view->add_option("-o,--out", vargs->out, "PNG file (written atomically)")->capture_default_str();
   view->callback([vargs] { run_view(*vargs); });

@@ -15,8 +15,8 @@ void model_args::add_to(CLI::App* cmd, const std::string& what) {
   const std::string tail = what.empty() ? "" : " " + what;
   cmd->add_option(flag, options, "GS model option NAME=VALUE" + tail + " (repeatable; `gsdot3 alu --help` lists them)");
   cmd->add_option("--profile", profile,
-                  "GS model options of an emulator" + tail + " (" + gs::profile_names() + ", docs/evidence.md); " + flag +
-                      " overrides it");
+                  "GS model options of an emulator" + tail + " (" + gs::profile_names() + ", docs/evidence.md); " +
+                      flag + " overrides it");
 }
 
 gs::model_options model_args::resolve() const {

@@ -15,9 +15,7 @@ namespace gsdot3::cli {
 inline void write_output(const std::filesystem::path& file, std::string_view bytes, std::string_view option) {
   try {
     pipeline::write_file_atomically(file, bytes);
-  } catch (const std::runtime_error& e) {
-    throw usage_error(std::string(option) + ": " + e.what());
-  }
+  } catch (const std::runtime_error& e) { throw usage_error(std::string(option) + ": " + e.what()); }
 }
 
 }  // namespace gsdot3::cli

@@ -50,9 +50,7 @@ void run_probe(const probe_args& a) {
   if (!a.out.empty()) {
     try {
       gs::dump::save_dump(a.out, pr::probe_dump());
-    } catch (const std::exception& e) {
-      throw usage_error("--out: " + std::string(e.what()));
-    }
+    } catch (const std::exception& e) { throw usage_error("--out: " + std::string(e.what())); }
     std::cerr << "gsdot3 probe: wrote " << a.out << "\n";
   }
   if (!a.png.empty()) {
@@ -62,9 +60,7 @@ void run_probe(const probe_args& a) {
       for (std::size_t c = 0; c < 3; ++c) img.data[3 * i + c] = static_cast<std::uint8_t>(frame[i] >> (8 * c));
     try {
       pipeline::write_png(a.png, img);
-    } catch (const std::exception& e) {
-      throw usage_error("--png: " + std::string(e.what()));
-    }
+    } catch (const std::exception& e) { throw usage_error("--png: " + std::string(e.what())); }
     std::cerr << "gsdot3 probe: wrote the model's frame to " << a.png << "\n";
   }
   std::cout << legend();
@@ -82,19 +78,19 @@ pr::rgb_frame read_screenshot(const std::string& file) {
     } else {
       throw usage_error(file + ": not a PNG or BMP image");
     }
-  } catch (const usage_error&) {
-    throw;
-  } catch (const std::exception& e) {
+  } catch (const usage_error&) { throw; } catch (const std::exception& e) {
     throw usage_error(e.what());
   }
   if (img.width != pr::frame_width || img.height != pr::frame_height)
     throw usage_error(file + ": the screenshot is " + std::to_string(img.width) + "x" + std::to_string(img.height) +
-                      "; the probe frame is " + std::to_string(pr::frame_width) + "x" + std::to_string(pr::frame_height) +
+                      "; the probe frame is " + std::to_string(pr::frame_width) + "x" +
+                      std::to_string(pr::frame_height) +
                       " (scaled, cropped or bordered screenshots are refused: save the frame buffer at its own size)");
   pr::rgb_frame f(static_cast<std::size_t>(img.width) * static_cast<std::size_t>(img.height));
   for (std::size_t i = 0; i < f.size(); ++i) {
     const std::uint8_t* p = &img.data[i * static_cast<std::size_t>(img.channels)];
-    f[i] = img.channels == 1 ? std::uint32_t{p[0]} * 0x010101u : std::uint32_t{p[0]} << 16 | std::uint32_t{p[1]} << 8 | p[2];
+    f[i] = img.channels == 1 ? std::uint32_t{p[0]} * 0x010101u
+                             : std::uint32_t{p[0]} << 16 | std::uint32_t{p[1]} << 8 | p[2];
   }
   return f;
 }

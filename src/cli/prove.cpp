@@ -31,8 +31,8 @@ struct prove_args {
   model_args model{"--option"};
   bool json = false, markdown = false, no_variants = false, list = false, brute_force = false;
   unsigned threads = 0;
-  std::string shard, output;        // --shard K/N, --output FILE
-  std::vector<std::string> parts;   // prove merge PARTS...
+  std::string shard, output;       // --shard K/N, --output FILE
+  std::vector<std::string> parts;  // prove merge PARTS...
 };
 
 // The ledger text on stdout, or into FILE through a temporary name and a rename (no half-written file).
@@ -128,16 +128,15 @@ void run_merge(const prove_args& a, context& ctx) {
       std::fprintf(stderr, "gsdot3 prove merge: %llu chunks were in no part and were computed here\n",
                    static_cast<unsigned long long>(m.recomputed_chunks));
     emit(ledger_as({m.result}, a), a.output);
-  } catch (const std::invalid_argument& e) {
-    throw usage_error(std::string("merge: ") + e.what());
-  }
+  } catch (const std::invalid_argument& e) { throw usage_error(std::string("merge: ") + e.what()); }
   ctx.exit_code = 0;
 }
 }  // namespace
 
 void add_prove_command(CLI::App& app, context& ctx) {
   auto args = std::make_shared<prove_args>();
-  auto* cmd = app.add_subcommand("prove", "Settle the paper's claims on the modeled GS: proven, refuted (with witnesses) or bound");
+  auto* cmd = app.add_subcommand(
+      "prove", "Settle the paper's claims on the modeled GS: proven, refuted (with witnesses) or bound");
   cmd->add_option("--claim", args->claims, "Claim id to run (repeatable; default: the whole catalogue)");
   args->model.add_to(cmd, "for the base run");
   cmd->add_flag("--json", args->json, "Print the ledger as one JSON document");
@@ -145,25 +144,31 @@ void add_prove_command(CLI::App& app, context& ctx) {
   cmd->add_flag("--no-variants", args->no_variants, "Skip the re-runs under the other option values");
   cmd->add_option("--threads", args->threads, "Worker threads (default: all cores)")->check(CLI::Range(1U, 256U));
   cmd->add_flag("--list", args->list, "List the claim ids and exit");
-  cmd->add_option("--shard", args->shard,
-                  "K/N: evaluate only the K-th of N deterministic slices of the claim's sweeps (0 <= K < N) and write a "
-                  "partial ledger (needs one --claim and --json; combine the N parts with `prove merge`)");
+  cmd->add_option(
+      "--shard", args->shard,
+      "K/N: evaluate only the K-th of N deterministic slices of the claim's sweeps (0 <= K < N) and write a "
+      "partial ledger (needs one --claim and --json; combine the N parts with `prove merge`)");
   cmd->add_option("-o,--output", args->output, "Write the ledger to FILE (atomically) instead of stdout");
-  cmd->add_flag("--brute-force", args->brute_force,
-                "Claims with a direct enumeration beside their reduction run it instead. two-pass.max-s.interpolated: "
-                "the bound's per-channel statements (proofs/triangle_brute_force.hpp), for every channel c and both wrap "
-                "sides sigma, exact against the rational plane P_c; a channel is aligned on an axis where sigma times its "
-                "exact gradient is < 0, p = r + (a, b) from the reference pixel r: (A) sigma*L_c(p) < sigma*P_c(p) + W where the channel is aligned on at most one axis, (B) < "
-                "sigma*P_c(p) + 1 + a + b and (C) < sigma*P_c(w) + W where it is aligned on both, and the bound's point w "
-                "in the closed triangle; at every pixel centre of 2^24 cases (8x8-lattice triangles of the full 2048^2 "
-                "window x ordered triples of 4 lights of L_122) in 65536 chunks: a cluster run, split it with --shard "
-                "(its cases depend on no model or domain option, so they are checked once, without variants)");
-  auto* merge = cmd->add_subcommand("merge", "Combine the partial ledgers of `prove --claim ID --shard K/N --json` (K = 0..N-1) into the ledger of the unsplit run");
+  cmd->add_flag(
+      "--brute-force", args->brute_force,
+      "Claims with a direct enumeration beside their reduction run it instead. two-pass.max-s.interpolated: "
+      "the bound's per-channel statements (proofs/triangle_brute_force.hpp), for every channel c and both wrap "
+      "sides sigma, exact against the rational plane P_c; a channel is aligned on an axis where sigma times its "
+      "exact gradient is < 0, p = r + (a, b) from the reference pixel r: (A) sigma*L_c(p) < sigma*P_c(p) + W where the "
+      "channel is aligned on at most one axis, (B) < "
+      "sigma*P_c(p) + 1 + a + b and (C) < sigma*P_c(w) + W where it is aligned on both, and the bound's point w "
+      "in the closed triangle; at every pixel centre of 2^24 cases (8x8-lattice triangles of the full 2048^2 "
+      "window x ordered triples of 4 lights of L_122) in 65536 chunks: a cluster run, split it with --shard "
+      "(its cases depend on no model or domain option, so they are checked once, without variants)");
+  auto* merge = cmd->add_subcommand("merge",
+                                    "Combine the partial ledgers of `prove --claim ID --shard K/N --json` (K = 0..N-1) "
+                                    "into the ledger of the unsplit run");
   merge->add_option("parts", args->parts, "Partial ledger files, one per shard, any order")->check(CLI::ExistingFile);
   merge->allow_extras();  // the second and later PARTS (every option takes one value, main.cpp)
   merge->add_flag("--json", args->json, "Print the ledger as one JSON document");
   merge->add_flag("--markdown", args->markdown, "Print the ledger as Markdown");
-  merge->add_option("--threads", args->threads, "Worker threads for chunks no part holds (default: all cores)")->check(CLI::Range(1U, 256U));
+  merge->add_option("--threads", args->threads, "Worker threads for chunks no part holds (default: all cores)")
+      ->check(CLI::Range(1U, 256U));
   merge->add_option("-o,--output", args->output, "Write the ledger to FILE (atomically) instead of stdout");
   merge->callback([args, merge, &ctx] {
     for (const auto& extra : merge->remaining()) {

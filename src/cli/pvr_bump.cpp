@@ -39,9 +39,7 @@ input_normals read_input(const pvr_bump_args& a) {
   pipeline::image img;
   try {
     img = pipeline::read_texture_image_png(a.in, a.height);
-  } catch (const std::runtime_error& e) {
-    throw usage_error(e.what());
-  }
+  } catch (const std::runtime_error& e) { throw usage_error(e.what()); }
   input_normals n{img.width, img.height, {}};
   const auto ch = static_cast<std::size_t>(img.channels);
   if (a.height) {
@@ -67,18 +65,17 @@ void run_pvr_bump(const pvr_bump_args& a) {
     const std::uint16_t word = t.packed();  // S << 8 | R, written little-endian
     raw.push_back(static_cast<std::uint8_t>(word & 0xFF));
     raw.push_back(static_cast<std::uint8_t>(word >> 8));
-    const glm::dvec3 d = pvr::decode_normal(t, rounding == pvr::texel_rounding::kallistios ? pvr::azimuth_scale::flycast_255 : scale);
+    const glm::dvec3 d =
+        pvr::decode_normal(t, rounding == pvr::texel_rounding::kallistios ? pvr::azimuth_scale::flycast_255 : scale);
     for (int c = 0; c < 3; ++c) preview.data.push_back(static_cast<std::uint8_t>(std::lround(d[c] * 127.5 + 127.5)));
   }
   write_output(a.out, std::string_view(reinterpret_cast<const char*>(raw.data()), raw.size()), "--out");
   const std::string pv = a.preview.empty() ? a.out + ".preview.png" : a.preview;
   try {
     pipeline::write_png(pv, preview);
-  } catch (const std::runtime_error& e) {
-    throw usage_error(e.what());
-  }
-  std::fprintf(stderr, "gsdot3 pvr-bump: %dx%d texels -> %s (%zu bytes), preview %s\n", in.width, in.height, a.out.c_str(), raw.size(),
-               pv.c_str());
+  } catch (const std::runtime_error& e) { throw usage_error(e.what()); }
+  std::fprintf(stderr, "gsdot3 pvr-bump: %dx%d texels -> %s (%zu bytes), preview %s\n", in.width, in.height,
+               a.out.c_str(), raw.size(), pv.c_str());
 }
 }  // namespace
 
@@ -92,7 +89,8 @@ void add_pvr_bump_command(CLI::App& app, context& ctx) {
   cmd->add_option("in", args->in, "Input PNG")->required();
   cmd->add_option("out", args->out, "Output raw 16-bit texture")->required();
   cmd->add_flag("--height-map", args->height, "The input is a height map (grey levels; central differences)");
-  cmd->add_option("--strength", args->strength, "Height map slope scale (grey levels per texel)")->capture_default_str();
+  cmd->add_option("--strength", args->strength, "Height map slope scale (grey levels per texel)")
+      ->capture_default_str();
   cmd->add_option("--rounding", args->rounding,
                   "kallistios: pvrtex's (u8)(x·255 + 0.5) with S ^ 0xFF, azimuth /255 | nearest: round to nearest")
       ->check(CLI::IsMember({"kallistios", "nearest"}))

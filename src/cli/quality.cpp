@@ -26,10 +26,14 @@ struct args {
 nlohmann::json to_json(const pipeline::quality_scene& q) {
   nlohmann::json j;
   for (const auto& e : q.methods)
-    j[std::string(pipeline::name(e.m))] = {{"rmse_vs_renormalised", e.vs_renormalised}, {"rmse_vs_unnormalised", e.vs_unnormalised},
-                                           {"rmse_after_gain", e.after_gain},          {"gain", e.gain},
-                                           {"rmse_sign_change_triangles", e.sign_change}, {"samples", e.samples},
-                                           {"sign_change_samples", e.sign_change_samples}, {"gs_pixel_ops", e.pixel_ops}};
+    j[std::string(pipeline::name(e.m))] = {{"rmse_vs_renormalised", e.vs_renormalised},
+                                           {"rmse_vs_unnormalised", e.vs_unnormalised},
+                                           {"rmse_after_gain", e.after_gain},
+                                           {"gain", e.gain},
+                                           {"rmse_sign_change_triangles", e.sign_change},
+                                           {"samples", e.samples},
+                                           {"sign_change_samples", e.sign_change_samples},
+                                           {"gs_pixel_ops", e.pixel_ops}};
   return j;
 }
 
@@ -43,30 +47,41 @@ void run(const args& a, context& ctx) {
   std::fprintf(stderr, "gsdot3 quality: the embedded scene\n");
   scenes.push_back(pipeline::measure_quality("embedded", pipeline::default_scene(), o));
   for (unsigned k = 0; k < a.scenes; ++k) {
-    std::fprintf(stderr, "gsdot3 quality: random scene %u of %u (seed %llu)\n", k + 1, a.scenes, static_cast<unsigned long long>(a.seed + k));
-    scenes.push_back(pipeline::measure_quality("random-" + std::to_string(a.seed + k), pipeline::random_quality_scene(a.seed + k), o));
+    std::fprintf(stderr, "gsdot3 quality: random scene %u of %u (seed %llu)\n", k + 1, a.scenes,
+                 static_cast<unsigned long long>(a.seed + k));
+    scenes.push_back(pipeline::measure_quality("random-" + std::to_string(a.seed + k),
+                                               pipeline::random_quality_scene(a.seed + k), o));
   }
   const auto rows = pipeline::quality_rows(scenes);
   if (a.json) {
     nlohmann::json j;
     j["options"] = {{"s", a.s}, {"random_scenes", a.scenes}, {"first_seed", a.seed}};
-    for (const auto& opt : gs::option_catalogue()) j["options"]["model"][std::string(opt.name)] = std::string(gs::option_value(o.model, opt.name));
+    for (const auto& opt : gs::option_catalogue())
+      j["options"]["model"][std::string(opt.name)] = std::string(gs::option_value(o.model, opt.name));
     for (const auto& q : scenes) j["scenes"][q.name] = to_json(q);
     for (const auto& r : rows) {
       nlohmann::json pairs = nlohmann::json::array();
       for (const auto& [b, x] : r.per_scene) pairs.push_back({b, x});
-      j["rows"].push_back({{"claim", r.claim}, {"paper", r.paper}, {"metric", r.metric}, {"better", std::string(pipeline::name(r.better))},
-                           {"other", std::string(pipeline::name(r.other))}, {"verdict", r.verdict}, {"holds_on", r.holds_on},
+      j["rows"].push_back({{"claim", r.claim},
+                           {"paper", r.paper},
+                           {"metric", r.metric},
+                           {"better", std::string(pipeline::name(r.better))},
+                           {"other", std::string(pipeline::name(r.other))},
+                           {"verdict", r.verdict},
+                           {"holds_on", r.holds_on},
                            {"per_scene_better_other", pairs}});
     }
     std::printf("%s\n", j.dump(2).c_str());
     ctx.exit_code = 0;
     return;
   }
-  std::printf("seed 000's comparative sentences on the embedded scene and %u random scenes (seeds %llu..%llu), s = %d, dot-product\n"
-              "error in 1/128 units; 'holds': the method the paper calls better is lower on every scene. Per row: the embedded\n"
-              "scene's pair (claimed better vs other), then the random scenes' smallest and largest ratio better/other.\n",
-              a.scenes, static_cast<unsigned long long>(a.seed), static_cast<unsigned long long>(a.seed + a.scenes - 1), a.s);
+  std::printf(
+      "seed 000's comparative sentences on the embedded scene and %u random scenes (seeds %llu..%llu), s = %d, "
+      "dot-product\n"
+      "error in 1/128 units; 'holds': the method the paper calls better is lower on every scene. Per row: the "
+      "embedded\n"
+      "scene's pair (claimed better vs other), then the random scenes' smallest and largest ratio better/other.\n",
+      a.scenes, static_cast<unsigned long long>(a.seed), static_cast<unsigned long long>(a.seed + a.scenes - 1), a.s);
   std::string claim;
   for (const auto& r : rows) {
     if (r.claim != claim) {
@@ -80,8 +95,8 @@ void run(const args& a, context& ctx) {
       lo = std::min(lo, q);
       hi = std::max(hi, q);
     }
-    std::printf("  %-28s %-14s embedded %10.4g vs %-10.4g", r.metric.c_str(), r.verdict.c_str(), r.per_scene.front().first,
-                r.per_scene.front().second);
+    std::printf("  %-28s %-14s embedded %10.4g vs %-10.4g", r.metric.c_str(), r.verdict.c_str(),
+                r.per_scene.front().first, r.per_scene.front().second);
     if (r.per_scene.size() > 1) std::printf(" random ratio %.3f..%.3f", lo, hi);
     std::printf("\n");
   }
@@ -91,7 +106,8 @@ void run(const args& a, context& ctx) {
 
 void add_quality_command(CLI::App& app, context& ctx) {
   auto a = std::make_shared<args>();
-  auto* cmd = app.add_subcommand("quality", "seed 000's comparative quality sentences, evaluated on the embedded and seeded random scenes");
+  auto* cmd = app.add_subcommand(
+      "quality", "seed 000's comparative quality sentences, evaluated on the embedded and seeded random scenes");
   cmd->add_option("--scenes", a->scenes, "random scenes besides the embedded one (0 to 64)")->capture_default_str();
   cmd->add_option("--seed", a->seed, "seed of the first random scene (scene k uses seed + k)")->capture_default_str();
   cmd->add_option("--s", a->s, "two-pass tolight scale (section 3.5)")->capture_default_str();

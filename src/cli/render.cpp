@@ -25,7 +25,8 @@ namespace gsdot3::cli {
 namespace {
 
 struct render_args {
-  std::string out = "gsdot3-out", method = "all", mesh, normal_map, size = "512x448", filter = "nearest", path = "cached";
+  std::string out = "gsdot3-out", method = "all", mesh, normal_map, size = "512x448", filter = "nearest",
+              path = "cached";
   std::string camera, height_map;
   std::string normal_map_y = "up", view, export_mesh;
   import_args import;
@@ -48,14 +49,13 @@ std::vector<float> parse_floats(const std::string& what, const std::string& text
     float f = 0;
     try {
       f = std::stof(tok, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
+    } catch (const std::exception&) { used = 0; }
     if (used != tok.size() || tok.empty() || !std::isfinite(f))
       throw usage_error(what + ": '" + tok + "' is not a finite number (in '" + text + "')");
     v.push_back(f);
   }
-  if (v.size() != n) throw usage_error(what + ": expected " + std::to_string(n) + " comma-separated numbers, got '" + text + "'");
+  if (v.size() != n)
+    throw usage_error(what + ": expected " + std::to_string(n) + " comma-separated numbers, got '" + text + "'");
   return v;
 }
 
@@ -68,7 +68,8 @@ pipeline::point_light parse_light(const std::string& text) {
   if (hex.size() != 6 || hex.find_first_not_of("0123456789abcdefABCDEF") != std::string::npos)
     throw usage_error("--light: colour must be 6 hex digits RRGGBB, got '" + hex + "'");
   const unsigned long c = std::stoul(hex, nullptr, 16);
-  return {{p[0], p[1], p[2]}, {static_cast<std::uint8_t>(c >> 16), static_cast<std::uint8_t>(c >> 8), static_cast<std::uint8_t>(c)}};
+  return {{p[0], p[1], p[2]},
+          {static_cast<std::uint8_t>(c >> 16), static_cast<std::uint8_t>(c >> 8), static_cast<std::uint8_t>(c)}};
 }
 
 std::pair<int, int> parse_size(const std::string& text) {
@@ -87,9 +88,12 @@ struct method_choice {
   std::vector<const pipeline::scheme_method*> schemes;
 };
 method_choice parse_methods(const std::string& list) {
-  const std::vector<pipeline::method> gs_methods{pipeline::method::two_pass, pipeline::method::four_pass, pipeline::method::baseline};
+  const std::vector<pipeline::method> gs_methods{pipeline::method::two_pass, pipeline::method::four_pass,
+                                                 pipeline::method::baseline};
   method_choice c;
-  auto add_gs = [&](pipeline::method m) { if (std::find(c.gs.begin(), c.gs.end(), m) == c.gs.end()) c.gs.push_back(m); };
+  auto add_gs = [&](pipeline::method m) {
+    if (std::find(c.gs.begin(), c.gs.end(), m) == c.gs.end()) c.gs.push_back(m);
+  };
   auto add_scheme = [&](const pipeline::scheme_method* m) {
     if (std::find(c.schemes.begin(), c.schemes.end(), m) == c.schemes.end()) c.schemes.push_back(m);
   };
@@ -101,7 +105,8 @@ method_choice parse_methods(const std::string& list) {
         for (const auto& sm : pipeline::scheme_methods()) add_scheme(&sm);
       continue;
     }
-    const auto gm = std::find_if(gs_methods.begin(), gs_methods.end(), [&](pipeline::method m) { return pipeline::name(m) == name; });
+    const auto gm = std::find_if(gs_methods.begin(), gs_methods.end(),
+                                 [&](pipeline::method m) { return pipeline::name(m) == name; });
     if (gm != gs_methods.end()) {
       add_gs(*gm);
     } else if (const auto* sm = pipeline::find_scheme_method(name)) {
@@ -109,11 +114,14 @@ method_choice parse_methods(const std::string& list) {
     } else {
       std::string known = "two-pass, four-pass, baseline";
       for (const auto& m : pipeline::scheme_methods()) known += ", " + std::string(m.name);
-      throw usage_error("--method: unknown method '" + name + "' (expected a comma-separated list of " + known + ", gs or all)");
+      throw usage_error("--method: unknown method '" + name + "' (expected a comma-separated list of " + known +
+                        ", gs or all)");
     }
   }
   // The float reference and the schemes take the visible triangle per pixel from a GS render.
-  if (c.gs.empty()) throw usage_error("--method: name at least one GS method (two-pass, four-pass, baseline): the others are drawn on its geometry");
+  if (c.gs.empty())
+    throw usage_error(
+        "--method: name at least one GS method (two-pass, four-pass, baseline): the others are drawn on its geometry");
   return c;
 }
 
@@ -125,11 +133,15 @@ scene_setup setup(const render_args& a) {
   const method_choice chosen = parse_methods(a.method);
   req.methods = chosen.gs;
   req.schemes = chosen.schemes;
-  if (a.s < 1 || a.s > 127) throw usage_error("--s: the tolight scale must be 1..127 (it is packed as a signed char), got " + std::to_string(a.s));
+  if (a.s < 1 || a.s > 127)
+    throw usage_error("--s: the tolight scale must be 1..127 (it is packed as a signed char), got " +
+                      std::to_string(a.s));
   req.options.s = a.s;
-  if (a.filter != "nearest" && a.filter != "bilinear") throw usage_error("--filter: expected nearest or bilinear, got '" + a.filter + "'");
+  if (a.filter != "nearest" && a.filter != "bilinear")
+    throw usage_error("--filter: expected nearest or bilinear, got '" + a.filter + "'");
   req.options.bilinear = a.filter == "bilinear";
-  if (a.path != "cached" && a.path != "reference") throw usage_error("--path: expected cached or reference, got '" + a.path + "'");
+  if (a.path != "cached" && a.path != "reference")
+    throw usage_error("--path: expected cached or reference, got '" + a.path + "'");
   req.options.path = a.path == "cached" ? pipeline::raster_path::cached : pipeline::raster_path::reference;
   if (a.threads < 1 || a.threads > 64) throw usage_error("--threads: expected 1..64");
   req.options.threads = a.threads;
@@ -142,9 +154,12 @@ scene_setup setup(const render_args& a) {
   const auto [w, h] = parse_size(a.size);
   req.options.memory_path = a.memory_path;
   req.options.simd = !a.scalar;
-  if (a.dpb_clear == "z-trick") req.options.dpb_clear = pipeline::dpb_clear_mode::z_trick;
-  else if (a.dpb_clear == "z-trick-psmz32") req.options.dpb_clear = pipeline::dpb_clear_mode::z_trick_psmz32;
-  else if (a.dpb_clear != "explicit") throw usage_error("--dpb-clear: expected explicit, z-trick or z-trick-psmz32, got '" + a.dpb_clear + "'");
+  if (a.dpb_clear == "z-trick")
+    req.options.dpb_clear = pipeline::dpb_clear_mode::z_trick;
+  else if (a.dpb_clear == "z-trick-psmz32")
+    req.options.dpb_clear = pipeline::dpb_clear_mode::z_trick_psmz32;
+  else if (a.dpb_clear != "explicit")
+    throw usage_error("--dpb-clear: expected explicit, z-trick or z-trick-psmz32, got '" + a.dpb_clear + "'");
   if ((a.memory_path || a.dpb_clear != "explicit") && 4 * ((w + 63) / 64) * ((h + 31) / 32) > 512)
     throw usage_error("--memory-path: four " + a.size + " PSMCT32 buffers do not fit in the GS's 4 MiB (512 pages)");
   std::vector<pipeline::point_light> lights;
@@ -154,9 +169,12 @@ scene_setup setup(const render_args& a) {
 
   const pipeline::import_options import = parse_import_options(a.import);
 
-  if (!a.normal_map.empty() && !a.height_map.empty()) throw usage_error("--normal-map and --height-map exclude each other");
-  if (!a.height_map.empty() && !(a.bump > 0.0f && a.bump <= 100.0f)) throw usage_error("--bump: expected a strength in (0, 100]");
-  if (a.normal_map_y != "up" && a.normal_map_y != "down") throw usage_error("--normal-map-y: expected up or down, got '" + a.normal_map_y + "'");
+  if (!a.normal_map.empty() && !a.height_map.empty())
+    throw usage_error("--normal-map and --height-map exclude each other");
+  if (!a.height_map.empty() && !(a.bump > 0.0f && a.bump <= 100.0f))
+    throw usage_error("--bump: expected a strength in (0, 100]");
+  if (a.normal_map_y != "up" && a.normal_map_y != "down")
+    throw usage_error("--normal-map-y: expected up or down, got '" + a.normal_map_y + "'");
   pipeline::scene_request sr;
   sr.mesh = a.mesh;
   sr.normal_map = a.normal_map;
@@ -175,9 +193,7 @@ scene_setup setup(const render_args& a) {
   progress("building the scene");
   try {
     req.in = pipeline::make_scene(sr, progress);
-  } catch (const std::runtime_error& e) {
-    throw usage_error(e.what());
-  }
+  } catch (const std::runtime_error& e) { throw usage_error(e.what()); }
   return req;
 }
 
@@ -186,9 +202,8 @@ std::string ps2_text(const pipeline::console_time& t) {
   if (!t.frame) return "; PS2 not priced: " + t.not_priced;
   const std::uint64_t c = t.frame->cycles.total();
   char buf[160];
-  std::snprintf(buf, sizeof buf, "; PS2 %.3f ms (%llu GS cycles, %.1f %% of an NTSC field)",
-                gs::cost::seconds(c) * 1e3, static_cast<unsigned long long>(c),
-                100.0 * gs::cost::seconds(c) * gs::cost::ntsc_hz);
+  std::snprintf(buf, sizeof buf, "; PS2 %.3f ms (%llu GS cycles, %.1f %% of an NTSC field)", gs::cost::seconds(c) * 1e3,
+                static_cast<unsigned long long>(c), 100.0 * gs::cost::seconds(c) * gs::cost::ntsc_hz);
   return buf;
 }
 
@@ -198,9 +213,7 @@ void run(const render_args& a, bool html, context& ctx) {
   if (!a.export_mesh.empty()) {
     try {
       pipeline::export_mesh_glb(in.s.model, a.export_mesh);
-    } catch (const std::runtime_error& e) {
-      throw usage_error(e.what());
-    }
+    } catch (const std::runtime_error& e) { throw usage_error(e.what()); }
     progress("wrote " + a.export_mesh + " (the mesh as drawn: centred and scaled to its unit bounding sphere)");
   }
   pipeline::report_request req;
@@ -219,17 +232,16 @@ void run(const render_args& a, bool html, context& ctx) {
   pipeline::report_summary sum;
   try {
     sum = pipeline::write_report(s, req);
-  } catch (const std::runtime_error& e) {
-    throw usage_error(e.what());
-  }
+  } catch (const std::runtime_error& e) { throw usage_error(e.what()); }
   for (const auto& m : sum.methods)
     std::cerr << "gsdot3: " << pipeline::name(m.m) << ": max |e| " << m.vs_renormalised.max_abs << ", RMSE "
               << m.vs_renormalised.rmse << ", within ±1 " << 100.0 * m.vs_renormalised.within_1 << "%, wraps "
-              << m.vs_renormalised.wraps << ", frame " << m.seconds * 1000.0 << " ms"
-              << (a.cost ? ps2_text(m.ps2) : "") << "\n";
+              << m.vs_renormalised.wraps << ", frame " << m.seconds * 1000.0 << " ms" << (a.cost ? ps2_text(m.ps2) : "")
+              << "\n";
   for (const auto& m : sum.schemes)
-    std::cerr << "gsdot3: " << m.m->name << ": max |e| " << m.vs_renormalised.max_abs << ", RMSE " << m.vs_renormalised.rmse
-              << ", within ±1 " << 100.0 * m.vs_renormalised.within_1 << "%, frame " << m.seconds * 1000.0 << " ms\n";
+    std::cerr << "gsdot3: " << m.m->name << ": max |e| " << m.vs_renormalised.max_abs << ", RMSE "
+              << m.vs_renormalised.rmse << ", within ±1 " << 100.0 * m.vs_renormalised.within_1 << "%, frame "
+              << m.seconds * 1000.0 << " ms\n";
   std::cout << (html ? sum.html : sum.json).string() << "\n";
   ctx.exit_code = 0;
 }
@@ -237,35 +249,46 @@ void run(const render_args& a, bool html, context& ctx) {
 void add_options(CLI::App* cmd, render_args& a) {
   std::string methods = "comma-separated: two-pass, four-pass, baseline";
   for (const auto& m : pipeline::scheme_methods()) methods += ", " + std::string(m.name);
-  cmd->add_option("--method", a.method, methods + "; gs = the three GS methods, all = every method")->capture_default_str();
-  cmd->add_option("--mesh", a.mesh,
-                  "mesh file read by assimp: OBJ, glTF 2.0 (.gltf, .glb), PLY, FBX, Collada, ...; all its meshes merged with "
-                  "their node transforms; default: the embedded head");
-  add_import_options(cmd, a.import);
-  cmd->add_option("--normal-map", a.normal_map,
-                  "tangent-space normal map, PNG, JPEG or TGA of any size (resampled to power-of-two sides 8..1024), quantised "
-                  "to 256 entries; default: the mesh material's (glTF normalTexture, MTL norm/bump), else the procedural one");
-  cmd->add_option("--normal-map-y", a.normal_map_y, "the normal map's green channel points up (OpenGL, glTF) | down (DirectX) the image")
+  cmd->add_option("--method", a.method, methods + "; gs = the three GS methods, all = every method")
       ->capture_default_str();
-  cmd->add_option("--height-map", a.height_map,
-                  "8-bit grey PNG height map (power-of-two sides) turned into the normal map (instead of --normal-map)");
+  cmd->add_option(
+      "--mesh", a.mesh,
+      "mesh file read by assimp: OBJ, glTF 2.0 (.gltf, .glb), PLY, FBX, Collada, ...; all its meshes merged with "
+      "their node transforms; default: the embedded head");
+  add_import_options(cmd, a.import);
+  cmd->add_option(
+      "--normal-map", a.normal_map,
+      "tangent-space normal map, PNG, JPEG or TGA of any size (resampled to power-of-two sides 8..1024), quantised "
+      "to 256 entries; default: the mesh material's (glTF normalTexture, MTL norm/bump), else the procedural one");
+  cmd->add_option("--normal-map-y", a.normal_map_y,
+                  "the normal map's green channel points up (OpenGL, glTF) | down (DirectX) the image")
+      ->capture_default_str();
+  cmd->add_option(
+      "--height-map", a.height_map,
+      "8-bit grey PNG height map (power-of-two sides) turned into the normal map (instead of --normal-map)");
   cmd->add_option("--bump", a.bump, "height-map slope scale (per grey level)")->capture_default_str();
-  cmd->add_option("--light", a.lights,
-                  "point light X,Y,Z:RRGGBB (world position; colour in hex, 0x80 = 1.0); repeat for more lights; "
-                  "default: green 109820 at -2.2,1.4,2.2 and blue 1038B0 at 2.6,-0.2,0.4 (for a framed mesh: turned with --view)");
-  cmd->add_option("--camera", a.camera,
-                  "camera position X,Y,Z looking at the origin (default: embedded scene 0,0.15,3.6; a mesh is framed, and "
-                  "centred and scaled to its unit bounding sphere, so X,Y,Z are in units of its radius from its centre)");
-  cmd->add_option("--view", a.view, "frame the model from AZIMUTH,ELEVATION in degrees (0,0: from +z; 90,0: from +x); default 0,0 for a mesh");
+  cmd->add_option(
+      "--light", a.lights,
+      "point light X,Y,Z:RRGGBB (world position; colour in hex, 0x80 = 1.0); repeat for more lights; "
+      "default: green 109820 at -2.2,1.4,2.2 and blue 1038B0 at 2.6,-0.2,0.4 (for a framed mesh: turned with --view)");
+  cmd->add_option(
+      "--camera", a.camera,
+      "camera position X,Y,Z looking at the origin (default: embedded scene 0,0.15,3.6; a mesh is framed, and "
+      "centred and scaled to its unit bounding sphere, so X,Y,Z are in units of its radius from its centre)");
+  cmd->add_option(
+      "--view", a.view,
+      "frame the model from AZIMUTH,ELEVATION in degrees (0,0: from +z; 90,0: from +x); default 0,0 for a mesh");
   cmd->add_option("--size", a.size, "frame size WxH")->capture_default_str();
   cmd->add_option("--s", a.s, "two-pass tolight scale s (section 3.5), 1..127")->capture_default_str();
   cmd->add_option("--filter", a.filter, "normal-map sampling: nearest | bilinear")->capture_default_str();
   cmd->add_option("--specular", a.specular,
                   "specular instead of diffuse (section 3.7): half vectors, and the ILP raised to this power (1..256)");
-  cmd->add_option("--path", a.path, "rasteriser path: cached (fast) | reference (re-rasterise every pass)")->capture_default_str();
+  cmd->add_option("--path", a.path, "rasteriser path: cached (fast) | reference (re-rasterise every pass)")
+      ->capture_default_str();
   cmd->add_option("--threads", a.threads, "frame bands rendered in parallel")->capture_default_str();
-  cmd->add_flag("--memory-path", a.memory_path,
-                "frame buffers in the modelled GS local memory; post filter as PSMT8 channel-fetch sprites (same frames)");
+  cmd->add_flag(
+      "--memory-path", a.memory_path,
+      "frame buffers in the modelled GS local memory; post filter as PSMT8 channel-fetch sprites (same frames)");
   cmd->add_flag("--scalar", a.scalar,
                 "every pixel through the scalar gs::pixel_pipeline instead of the SIMD units (gs_simd; same frames)");
   cmd->add_option("--dpb-clear", a.dpb_clear,
@@ -296,7 +319,8 @@ void add_cost_options(CLI::App* cmd, render_args& a) {
 
 void add_render_command(CLI::App& app, context& ctx) {
   auto args = std::make_shared<render_args>();
-  auto* render = app.add_subcommand("render", "Render the scene with each method through the GS model; PNGs + report.json");
+  auto* render =
+      app.add_subcommand("render", "Render the scene with each method through the GS model; PNGs + report.json");
   render->add_option("--out", args->out, "output directory (created if missing)")->capture_default_str();
   render->add_option("--export-mesh", args->export_mesh, export_mesh_help);
   add_options(render, *args);
@@ -305,7 +329,8 @@ void add_render_command(CLI::App& app, context& ctx) {
 
   auto rargs = std::make_shared<render_args>();
   auto* report = app.add_subcommand(
-      "report", "Render and compare with the float dot product; writes report.html (+ PNGs, report.json) and prints its path");
+      "report",
+      "Render and compare with the float dot product; writes report.html (+ PNGs, report.json) and prints its path");
   report->add_option("--out", rargs->out, "output directory (created if missing)")->capture_default_str();
   report->add_option("--export-mesh", rargs->export_mesh, export_mesh_help);
   add_options(report, *rargs);

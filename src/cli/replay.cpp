@@ -49,9 +49,7 @@ buffer_arg parse_buffer(const std::string& s) {
     if (used != fbp.size()) throw std::invalid_argument(fbp);
     b.fbw = static_cast<unsigned>(std::stoul(fbw, &used));
     if (used != fbw.size()) throw std::invalid_argument(fbw);
-  } catch (const std::exception&) {
-    throw usage_error("--buffer: FBP and FBW must be numbers, got '" + s + "'");
-  }
+  } catch (const std::exception&) { throw usage_error("--buffer: FBP and FBW must be numbers, got '" + s + "'"); }
   if (b.fbp > 511) throw usage_error("--buffer: FBP " + std::to_string(b.fbp) + " out of range 0..511 (8 KiB pages)");
   if (b.fbw < 1 || b.fbw > 63) throw usage_error("--buffer: FBW " + std::to_string(b.fbw) + " out of range 1..63");
   const auto p = mem::parse_psm(psm);
@@ -96,9 +94,7 @@ struct args {
 void write_picture(const std::filesystem::path& file, const pipeline::image& img) {
   try {
     pipeline::write_png(file, img);
-  } catch (const std::runtime_error& e) {
-    throw usage_error(e.what());
-  }
+  } catch (const std::runtime_error& e) { throw usage_error(e.what()); }
   std::cout << file.string() << "\n";
 }
 
@@ -109,9 +105,7 @@ void run(const args& a, context& ctx) {
   gs::dump::gs_dump d;
   try {
     d = gs::dump::load_dump(a.file);
-  } catch (const gs::dump::dump_error& e) {
-    throw usage_error(e.what());
-  }
+  } catch (const gs::dump::dump_error& e) { throw usage_error(e.what()); }
   mem::local_memory m;
   gs::packets::interpreter it(m, {.model = a.model.resolve(), .skip_unmodelled = a.skip_unmodelled});
   try {
@@ -126,7 +120,8 @@ void run(const args& a, context& ctx) {
     std::cout << "transfer at byte " << t.offset << ": " << t.trxreg.RRW.value() << "x" << t.trxreg.RRH.value() << " "
               << mem::name_of(t.bitbltbuf.DPSM) << " to DBP " << t.bitbltbuf.DBP.value() << " DBW "
               << t.bitbltbuf.DBW.value() << " at (" << t.trxpos.DSAX.value() << ", " << t.trxpos.DSAY.value() << ")\n";
-  for (const auto& u : it.unmodelled_features()) std::cout << "unmodelled at byte " << u.offset << ": " << u.what << "\n";
+  for (const auto& u : it.unmodelled_features())
+    std::cout << "unmodelled at byte " << u.offset << ": " << u.what << "\n";
   std::cout << "primitives drawn " << it.primitives_drawn() << " (" << it.pixels_drawn() << " pixels), skipped "
             << it.primitives_skipped() << "\n";
   const gs::packets::display_state disp = gs::packets::decode_display(it.privileged());
@@ -141,33 +136,30 @@ void run(const args& a, context& ctx) {
   std::optional<pipeline::staged_directory> out;  // the PNGs appear together or not at all
   try {
     out.emplace(a.out);
-  } catch (const std::runtime_error& e) {
-    throw usage_error("--out: " + std::string(e.what()));
-  }
+  } catch (const std::runtime_error& e) { throw usage_error("--out: " + std::string(e.what())); }
   int compared = 0;
   if (disp.frame && disp.frame->width > 0 && disp.frame->height > 0) {
     const auto file = out->path() / "display.png";
-    write_picture(file, picture(m, disp.frame->buffer, disp.frame->x, disp.frame->y, disp.frame->width, disp.frame->height));
+    write_picture(file,
+                  picture(m, disp.frame->buffer, disp.frame->x, disp.frame->y, disp.frame->width, disp.frame->height));
     if (!a.expect.empty()) compared = compare_pngs(file.string(), a.expect, a.heat, 10, std::cout) == 0 ? 0 : 1;
   }
   for (const auto& b : bufs) {
     unsigned h = a.height;
     if (h == 0)  // the lowest row any transfer into this buffer wrote
       for (const auto& t : it.transfers())
-        if (t.bitbltbuf.DBP.value() == static_cast<int>(b.fbp * 32) && t.bitbltbuf.DBW.value() == static_cast<int>(b.fbw))
+        if (t.bitbltbuf.DBP.value() == static_cast<int>(b.fbp * 32) &&
+            t.bitbltbuf.DBW.value() == static_cast<int>(b.fbw))
           h = std::max(h, static_cast<unsigned>(t.trxpos.DSAY.value() + t.trxreg.RRH.value()));
     if (h == 0) throw usage_error("--buffer " + b.text + ": no transfer wrote it; give --height");
-    const auto file = out->path() /
-                      ("buffer_" + std::to_string(b.fbp) + "_" + std::to_string(b.fbw) + "_" +
-                       std::string(mem::name_of(b.psm)) + ".png");
+    const auto file = out->path() / ("buffer_" + std::to_string(b.fbp) + "_" + std::to_string(b.fbw) + "_" +
+                                     std::string(mem::name_of(b.psm)) + ".png");
     const mem::buffer buf{fixed::uint<14>::from_wrapped(b.fbp * 32), fixed::uint<6>::from_wrapped(b.fbw), b.psm};
     write_picture(file, picture(m, buf, 0, 0, 64 * b.fbw, h));
   }
   try {
     out->commit();
-  } catch (const std::runtime_error& e) {
-    throw usage_error("--out: " + std::string(e.what()));
-  }
+  } catch (const std::runtime_error& e) { throw usage_error("--out: " + std::string(e.what())); }
   ctx.exit_code = compared;
 }
 
@@ -175,8 +167,9 @@ void run(const args& a, context& ctx) {
 
 void add_replay_command(CLI::App& app, context& ctx) {
   auto a = std::make_shared<args>();
-  auto* cmd = app.add_subcommand("replay", "Run a PCSX2 GS dump through the model (register writes, IMAGE "
-                                           "transfers, drawing) and write the displayed frame and buffers as PNG");
+  auto* cmd = app.add_subcommand("replay",
+                                 "Run a PCSX2 GS dump through the model (register writes, IMAGE "
+                                 "transfers, drawing) and write the displayed frame and buffers as PNG");
   cmd->add_option("FILE", a->file, "The dump (.gs, .gs.xz, .gs.zst)")->required();
   cmd->add_option("--buffer", a->buffers, "A buffer to write: FBP (8 KiB pages),FBW (64 pixels),PSM; repeatable");
   cmd->add_option("--height", a->height, "Rows to write (default: the lowest row the dump's transfers wrote)");
@@ -184,8 +177,9 @@ void add_replay_command(CLI::App& app, context& ctx) {
   cmd->add_flag("--skip-unmodelled", a->skip_unmodelled,
                 "Skip (and list) primitives using what the model lacks (fog, AA1, points, lines, mip-mapping, ...) "
                 "instead of stopping");
-  cmd->add_option("--expect", a->expect, "Compare the displayed frame with this PNG (a screenshot), as `gsdot3 compare` "
-                                         "does; exit 1 when they differ");
+  cmd->add_option("--expect", a->expect,
+                  "Compare the displayed frame with this PNG (a screenshot), as `gsdot3 compare` "
+                  "does; exit 1 when they differ");
   cmd->add_option("--heat", a->heat, "With --expect: write the heat map PNG here");
   a->model.add_to(cmd, "the drawing runs under (as `gsdot3 dump` printed for its dumps)");
   cmd->callback([a, &ctx] { run(*a, ctx); });

@@ -2,7 +2,8 @@
 //   gsdot3 ssbump from-normal IN.png OUT.png [--rounding truncate|nearest] [--threads N]
 //   gsdot3 ssbump from-height IN.png OUT.png --scale S [--rays 250] [--bias 0.55] [--tile 1|0]
 //                 [--filter-radius 10] [--filter-threshold 0.00784314] [--height alpha|grey|auto] [--rounding ...]
-// PNG in (any PNG, as RGBA by pipeline::read_png_rgba; 16-bit reduced to 8), RGB PNG out (written atomically). Progress on stderr.
+// PNG in (any PNG, as RGBA by pipeline::read_png_rgba; 16-bit reduced to 8), RGB PNG out (written atomically). Progress
+// on stderr.
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -60,9 +61,7 @@ v::quantise rounding_of(const std::string& s) {
 pipeline::rgba_image read(const std::string& file) {
   try {
     return pipeline::read_png_rgba(file);
-  } catch (const std::runtime_error& e) {
-    throw usage_error(e.what());
-  }
+  } catch (const std::runtime_error& e) { throw usage_error(e.what()); }
 }
 
 void write(const std::string& file, const std::vector<v::texel>& texels, int w, int h) {
@@ -71,9 +70,7 @@ void write(const std::string& file, const std::vector<v::texel>& texels, int w, 
   for (const auto& t : texels) img.data.insert(img.data.end(), {t.r, t.g, t.b});
   try {
     pipeline::write_png(file, img);
-  } catch (const std::runtime_error& e) {
-    throw usage_error(e.what());
-  }
+  } catch (const std::runtime_error& e) { throw usage_error(e.what()); }
 }
 
 void run_from_normal(const ssbump_args& a) {
@@ -86,7 +83,8 @@ void run_from_normal(const ssbump_args& a) {
   auto work = [&] {
     for (int y = next++; y < img.height; y = next++) {
       for (int x = 0; x < img.width; ++x) {
-        const std::size_t i = static_cast<std::size_t>(y) * static_cast<std::size_t>(img.width) + static_cast<std::size_t>(x);
+        const std::size_t i =
+            static_cast<std::size_t>(y) * static_cast<std::size_t>(img.width) + static_cast<std::size_t>(x);
         out[i] = v::ssbump_texel(v::normal2ssbump({img.rgba[4 * i], img.rgba[4 * i + 1], img.rgba[4 * i + 2]}), q);
       }
       report(static_cast<double>(++done) / img.height);
@@ -103,16 +101,20 @@ void run_from_normal(const ssbump_args& a) {
 
 void run_from_height(const ssbump_args& a) {
   const auto q = rounding_of(a.rounding);
-  if (!(a.scale > 0)) throw usage_error("--scale: the bump (elevation) scale must be > 0, got " + std::to_string(a.scale));
+  if (!(a.scale > 0))
+    throw usage_error("--scale: the bump (elevation) scale must be > 0, got " + std::to_string(a.scale));
   if (a.rays < 0 || a.rays > 100000) throw usage_error("--rays: expected 0..100000, got " + std::to_string(a.rays));
-  if (a.tile != 0 && a.tile != 1) throw usage_error("--tile: expected 1 (Source's 3×3 tiling) or 0, got " + std::to_string(a.tile));
-  if (a.radius < 0 || a.radius > 64) throw usage_error("--filter-radius: expected 0..64, got " + std::to_string(a.radius));
+  if (a.tile != 0 && a.tile != 1)
+    throw usage_error("--tile: expected 1 (Source's 3×3 tiling) or 0, got " + std::to_string(a.tile));
+  if (a.radius < 0 || a.radius > 64)
+    throw usage_error("--filter-radius: expected 0..64, got " + std::to_string(a.radius));
   if (!(a.threshold > 0)) throw usage_error("--filter-threshold: must be > 0");
   if (a.height != "auto" && a.height != "alpha" && a.height != "grey")
     throw usage_error("--height: expected auto, alpha or grey, got '" + a.height + "'");
   const auto img = read(a.in);
   const bool alpha = a.height == "alpha" || (a.height == "auto" && img.has_alpha);
-  if (a.height == "alpha" && !img.has_alpha) throw usage_error(a.in + ": --height alpha, but the image has no alpha channel");
+  if (a.height == "alpha" && !img.has_alpha)
+    throw usage_error(a.in + ": --height alpha, but the image has no alpha channel");
   std::vector<float> h(static_cast<std::size_t>(img.width) * static_cast<std::size_t>(img.height));
   for (std::size_t i = 0; i < h.size(); ++i) h[i] = static_cast<float>(img.rgba[4 * i + (alpha ? 3 : 0)]) / 255.0f;
   progress report("height2ssbump " + a.in);
@@ -130,29 +132,38 @@ void run_from_height(const ssbump_args& a) {
 }  // namespace
 
 void add_ssbump_command(CLI::App& app, context&) {
-  auto* cmd = app.add_subcommand("ssbump", "Self-shadowed bump maps (seed 001): Source's normal2ssbump and height2ssbump");
+  auto* cmd =
+      app.add_subcommand("ssbump", "Self-shadowed bump maps (seed 001): Source's normal2ssbump and height2ssbump");
   cmd->require_subcommand(1);
   auto args = std::make_shared<ssbump_args>();
   auto common = [&](CLI::App* s) {
     s->add_option("in", args->in, "Input PNG (8-bit)")->required();
     s->add_option("out", args->out, "Output RGB PNG")->required();
-    s->add_option("--rounding", args->rounding, "8-bit writer: truncate (Source's PixRGBA8) or nearest")->capture_default_str();
+    s->add_option("--rounding", args->rounding, "8-bit writer: truncate (Source's PixRGBA8) or nearest")
+        ->capture_default_str();
     s->add_option("--threads", args->threads, "Worker threads (0 = all cores)")->capture_default_str();
   };
-  auto* n = cmd->add_subcommand("from-normal",
-                                "normal2ssbump: each RGB8 normal texel N = 2t − 1 → D_i = saturate(N·B_i)² / Σ, with Source's float basis");
+  auto* n = cmd->add_subcommand(
+      "from-normal",
+      "normal2ssbump: each RGB8 normal texel N = 2t − 1 → D_i = saturate(N·B_i)² / Σ, with Source's float basis");
   common(n);
   n->callback([args] { run_from_normal(*args); });
-  auto* h = cmd->add_subcommand("from-height",
-                                "height2ssbump: bilateral pre-filter, 3×3 normals, ray-cast directional occlusion per basis vector");
+  auto* h = cmd->add_subcommand(
+      "from-height",
+      "height2ssbump: bilateral pre-filter, 3×3 normals, ray-cast directional occlusion per basis vector");
   common(h);
   h->add_option("--scale", args->scale, "Bump (elevation) scale, Source's required second argument")->required();
-  h->add_option("--rays", args->rays, "Rays per texel over the upper hemisphere (Source: -r, default 250)")->capture_default_str();
+  h->add_option("--rays", args->rays, "Rays per texel over the upper hemisphere (Source: -r, default 250)")
+      ->capture_default_str();
   h->add_option("--bias", args->bias, "Ray origin raised above the surface (Source: 0.55)")->capture_default_str();
-  h->add_option("--tile", args->tile, "1: trace against Source's 3×3 tiling (NREPS_TILE = 1); 0: the map alone")->capture_default_str();
-  h->add_option("--filter-radius", args->radius, "Bilateral pre-filter radius, 0 = off (Source: -f, default 10)")->capture_default_str();
-  h->add_option("--filter-threshold", args->threshold, "Bilateral edge threshold (Source: 2/255)")->capture_default_str();
-  h->add_option("--height", args->height, "Height from alpha (as Source), grey/red, or auto (alpha if present)")->capture_default_str();
+  h->add_option("--tile", args->tile, "1: trace against Source's 3×3 tiling (NREPS_TILE = 1); 0: the map alone")
+      ->capture_default_str();
+  h->add_option("--filter-radius", args->radius, "Bilateral pre-filter radius, 0 = off (Source: -f, default 10)")
+      ->capture_default_str();
+  h->add_option("--filter-threshold", args->threshold, "Bilateral edge threshold (Source: 2/255)")
+      ->capture_default_str();
+  h->add_option("--height", args->height, "Height from alpha (as Source), grey/red, or auto (alpha if present)")
+      ->capture_default_str();
   h->callback([args] { run_from_height(*args); });
 }
 

@@ -111,7 +111,7 @@ int run_ver(const ver_args& a) {
     // A gsdot3 vector file, or (same --format) a `gsdot3 probe decode` recording, told apart by its header.
     const std::string text{std::istreambuf_iterator<char>(*in), std::istreambuf_iterator<char>()};
     std::istringstream body(text);
-    const v::verify_result r = a.format == "ps2autotests" ? v::verify_ps2autotests(body, std::cout, s)
+    const v::verify_result r = a.format == "ps2autotests"  ? v::verify_ps2autotests(body, std::cout, s)
                                : probe::is_recording(text) ? probe::verify_recording(body, std::cout, s)
                                                            : v::verify_vectors(body, std::cout, s);
     return r.failed > 0 ? 1 : 0;
@@ -132,14 +132,16 @@ std::string units_help() {
 }  // namespace
 
 void add_vectors_command(CLI::App& app, context& ctx) {
-  auto* cmd = app.add_subcommand("vectors", "TestFloat-style test vectors: generate (gen) and verify (ver), see docs/vectors.md");
+  auto* cmd = app.add_subcommand("vectors",
+                                 "TestFloat-style test vectors: generate (gen) and verify (ver), see docs/vectors.md");
   cmd->require_subcommand(1);
 
   auto gen = std::make_shared<gen_args>();
-  auto* g = cmd->add_subcommand("gen", "Write test cases with the model's expected outputs (one per line) to stdout or -o FILE." +
-                                           units_help());
+  auto* g = cmd->add_subcommand(
+      "gen", "Write test cases with the model's expected outputs (one per line) to stdout or -o FILE." + units_help());
   g->add_option("--unit", gen->unit, "Unit: " + std::string(v::unit_names()))->required();
-  g->add_option("--level", gen->level, "1: boundary patterns x every mode; 2: level 1 + weighted random cases; all: exhaustive")
+  g->add_option("--level", gen->level,
+                "1: boundary patterns x every mode; 2: level 1 + weighted random cases; all: exhaustive")
       ->check(CLI::IsMember({"1", "2", "all"}))
       ->capture_default_str();
   g->add_option("--seed", gen->seed, "Seed of the level-2 random cases")->capture_default_str();
@@ -150,14 +152,17 @@ void add_vectors_command(CLI::App& app, context& ctx) {
   g->callback([gen] { run_gen(*gen); });
 
   auto ver = std::make_shared<ver_args>();
-  auto* r = cmd->add_subcommand("ver",
-                                "Check each line's observed outputs against the model. Prints each mismatch as\n"
-                                "'inputs => observed expected: value', malformed lines as 'line N: malformed: why', and\n"
-                                "the closing line 'N passed, M failed'. Exit 1 when anything failed, 2 on a bad header.");
+  auto* r =
+      cmd->add_subcommand("ver",
+                          "Check each line's observed outputs against the model. Prints each mismatch as\n"
+                          "'inputs => observed expected: value', malformed lines as 'line N: malformed: why', and\n"
+                          "the closing line 'N passed, M failed'. Exit 1 when anything failed, 2 on a bad header.");
   r->add_option("file", ver->file, "Vector file, or - for stdin")->capture_default_str();
   r->add_option("--errors", ver->errors, "Failures printed in full (0 = all); all are counted")->capture_default_str();
   r->add_flag("--errorstop", ver->errorstop, "Stop at the first failure (mismatch or malformed line)");
-  r->add_option("--format", ver->format, "gsdot3 (vector files and gsdot3 probe decode recordings, told apart by the header) | ps2autotests (gs/blend.expected recordings)")
+  r->add_option("--format", ver->format,
+                "gsdot3 (vector files and gsdot3 probe decode recordings, told apart by the header) | ps2autotests "
+                "(gs/blend.expected recordings)")
       ->check(CLI::IsMember({"gsdot3", "ps2autotests"}))
       ->capture_default_str();
   r->add_option("--option", ver->options, "Model option NAME=VALUE, over the file's header. Repeatable.");

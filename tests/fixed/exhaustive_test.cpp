@@ -56,7 +56,8 @@ void sweep_shift_right(sweep& s, int max_shift) {
         const T got_runtime = fixed::shift_right(v, k, R);
         s.check(got == want && got_runtime == want, [&] {
           return describe(fixed::name(R), " shift_right(", fixed::hex(v), ", ", k, ") = ", fixed::hex(got),
-                          " (run-time mode ", fixed::hex(got_runtime), "), reference ", fixed::hex(static_cast<T>(want)));
+                          " (run-time mode ", fixed::hex(got_runtime), "), reference ",
+                          fixed::hex(static_cast<T>(want)));
         });
       }
     }
@@ -160,8 +161,7 @@ TEST(FixedExhaustive, IntegerArithmeticSmallDomains) {
   every_pair<fixed::s9, fixed::u8>([&](auto a, auto b, std::int64_t x, std::int64_t y) {
     const fixed::s17 p = a * b;
     const fixed::s10 d = a - b;
-    s.check(p.value() == x * y && d.value() == x - y,
-            [&] { return describe(a, " *,- ", b, ": ", p, ", ", d); });
+    s.check(p.value() == x * y && d.value() == x - y, [&] { return describe(a, " *,- ", b, ": ", p, ", ", d); });
   });
   every_pair<fixed::s10, fixed::u8>([&](auto a, auto b, std::int64_t x, std::int64_t y) {
     const fixed::s11 sum = a + b;

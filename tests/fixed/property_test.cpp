@@ -22,10 +22,9 @@ __extension__ typedef __int128 i128;  // exact reference arithmetic for 64-bit i
 template <class T>
 rc::Gen<T> values() {
   using L = std::numeric_limits<T>;
-  return rc::gen::weightedOneOf<T>(
-      {{3, rc::gen::arbitrary<T>()},
-       {1, rc::gen::element<T>(L::min(), L::max(), static_cast<T>(L::min() + 1), static_cast<T>(L::max() - 1), 0, 1,
-                               static_cast<T>(-1))}});
+  return rc::gen::weightedOneOf<T>({{3, rc::gen::arbitrary<T>()},
+                                    {1, rc::gen::element<T>(L::min(), L::max(), static_cast<T>(L::min() + 1),
+                                                            static_cast<T>(L::max() - 1), 0, 1, static_cast<T>(-1))}});
 }
 
 // Shifts from 0 to 8 beyond the width of T.
@@ -203,10 +202,14 @@ TEST(FixedProperty, ProductMatchesWideReference) {
     fixed_ref::for_each_rounding([&]<rounding R>() {
       const i128 ab = fixed_ref::divide_pow2<i128>(i128{a.raw()} * b.raw(), 8, R);
       const i128 ac = fixed_ref::divide_pow2<i128>(i128{a.raw()} * c.raw(), 8, R);
-      RC_ASSERT((i128{fixed::mul<R, overflow::wrap, std::uint32_t, 8>(a, b).raw()} == fixed_ref::wrap<i128>(ab, 32, false)));
-      RC_ASSERT((i128{fixed::mul<R, overflow::saturate, std::int32_t, 8>(a, b).raw()} == fixed_ref::saturate<i128>(ab, 32, true)));
-      RC_ASSERT((i128{fixed::mul<R, overflow::wrap, std::int32_t, 8>(a, c).raw()} == fixed_ref::wrap<i128>(ac, 32, true)));
-      RC_ASSERT((i128{fixed::mul<R, overflow::saturate, std::uint32_t, 8>(a, c).raw()} == fixed_ref::saturate<i128>(ac, 32, false)));
+      RC_ASSERT(
+          (i128{fixed::mul<R, overflow::wrap, std::uint32_t, 8>(a, b).raw()} == fixed_ref::wrap<i128>(ab, 32, false)));
+      RC_ASSERT((i128{fixed::mul<R, overflow::saturate, std::int32_t, 8>(a, b).raw()} ==
+                 fixed_ref::saturate<i128>(ab, 32, true)));
+      RC_ASSERT(
+          (i128{fixed::mul<R, overflow::wrap, std::int32_t, 8>(a, c).raw()} == fixed_ref::wrap<i128>(ac, 32, true)));
+      RC_ASSERT((i128{fixed::mul<R, overflow::saturate, std::uint32_t, 8>(a, c).raw()} ==
+                 fixed_ref::saturate<i128>(ac, 32, false)));
     });
   }));
 }

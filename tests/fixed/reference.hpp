@@ -26,7 +26,7 @@ constexpr W divide_pow2(W v, int k, fixed::rounding r) {
   const W q = v / d;
   const W rem = v % d;
   if (rem == 0) return q;
-  const W other = rem > 0 ? q + 1 : q - 1;   // the neighbour of v / 2^k on the far side from 0
+  const W other = rem > 0 ? q + 1 : q - 1;  // the neighbour of v / 2^k on the far side from 0
   const W twice_rem = 2 * (rem > 0 ? rem : -rem);
   switch (r) {
     case fixed::rounding::floor: return rem > 0 ? q : other;
@@ -42,11 +42,17 @@ constexpr W divide_pow2(W v, int k, fixed::rounding r) {
 }
 
 template <class W>
-constexpr W lowest(int n, bool is_signed) { return is_signed ? -pow2<W>(n - 1) : 0; }
+constexpr W lowest(int n, bool is_signed) {
+  return is_signed ? -pow2<W>(n - 1) : 0;
+}
 template <class W>
-constexpr W highest(int n, bool is_signed) { return (is_signed ? pow2<W>(n - 1) : pow2<W>(n)) - 1; }
+constexpr W highest(int n, bool is_signed) {
+  return (is_signed ? pow2<W>(n - 1) : pow2<W>(n)) - 1;
+}
 template <class W>
-constexpr bool fits(W v, int n, bool is_signed) { return lowest<W>(n, is_signed) <= v && v <= highest<W>(n, is_signed); }
+constexpr bool fits(W v, int n, bool is_signed) {
+  return lowest<W>(n, is_signed) <= v && v <= highest<W>(n, is_signed);
+}
 
 // The representative of v mod 2^n in the n-bit range.
 template <class W>

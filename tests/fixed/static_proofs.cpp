@@ -33,7 +33,7 @@ constexpr bool rounding_identity(rounding r, std::int64_t v, int k, std::int64_t
   const std::int64_t d = std::int64_t{1} << k;  // 2^k (a shift of 1, not of the value)
   const std::int64_t e = v - q * d;
   switch (r) {
-    case rounding::floor: return 0 <= e && e < d;                     // q <= v/d < q + 1
+    case rounding::floor: return 0 <= e && e < d;  // q <= v/d < q + 1
     case rounding::toward_zero: return v >= 0 ? 0 <= e && e < d : -d < e && e <= 0;
     case rounding::nearest_ties_up: return -d <= 2 * e && 2 * e < d;  // q - 1/2 < v/d <= q + 1/2
     case rounding::nearest_ties_even:
@@ -70,7 +70,9 @@ constexpr bool overflow_page_holds() {
     const std::int64_t w = fixed::wrap<N, S>(v);
     const std::int64_t s = fixed::saturate<N, S>(v);
     const bool holds = range::min <= w && w <= range::max && (x - w) % modulus == 0 &&
-                       s == (in_range ? x : x < range::min ? range::min : range::max) &&
+                       s == (in_range         ? x
+                             : x < range::min ? range::min
+                                              : range::max) &&
                        fixed::narrow<N, S, fixed::overflow::wrap>(v) == w &&
                        fixed::narrow<N, S, fixed::overflow::saturate>(v) == s;
     if (!holds) return false;
@@ -131,9 +133,13 @@ static_assert(every_shift_proven<std::uint16_t, 0>(), "rounding identities, uint
 
 static_assert(overflow_proven_all<std::int16_t, 8, signedness::is_signed>(), "overflow identities, all int16_t to s8");
 static_assert(overflow_proven_all<std::int16_t, 9, signedness::is_signed>(), "overflow identities, all int16_t to s9");
-static_assert(overflow_proven_all<std::int16_t, 8, signedness::is_unsigned>(), "overflow identities, all int16_t to u8");
-static_assert(overflow_proven_all<std::int16_t, 9, signedness::is_unsigned>(), "overflow identities, all int16_t to u9");
-static_assert(overflow_proven_all<std::uint16_t, 8, signedness::is_unsigned>(), "overflow identities, all uint16_t to u8");
-static_assert(overflow_proven_all<std::uint16_t, 9, signedness::is_unsigned>(), "overflow identities, all uint16_t to u9");
+static_assert(overflow_proven_all<std::int16_t, 8, signedness::is_unsigned>(),
+              "overflow identities, all int16_t to u8");
+static_assert(overflow_proven_all<std::int16_t, 9, signedness::is_unsigned>(),
+              "overflow identities, all int16_t to u9");
+static_assert(overflow_proven_all<std::uint16_t, 8, signedness::is_unsigned>(),
+              "overflow identities, all uint16_t to u8");
+static_assert(overflow_proven_all<std::uint16_t, 9, signedness::is_unsigned>(),
+              "overflow identities, all uint16_t to u9");
 
 }  // namespace

@@ -34,15 +34,15 @@ struct shift_case {
 
 TEST(FixedRounding, HandCheckedQuotients) {
   const shift_case cases[] = {
-      {5, 1, 2, 2, 3, 2},            // 2.5
-      {7, 1, 3, 3, 4, 4},            // 3.5
-      {-5, 1, -3, -2, -2, -2},       // -2.5
-      {-7, 1, -4, -3, -3, -4},       // -3.5
-      {-1, 4, -1, 0, 0, 0},          // -0.0625
-      {-8, 4, -1, 0, 0, 0},          // -0.5: ties up -> 0, ties even -> 0
-      {-24, 4, -2, -1, -1, -2},      // -1.5
-      {-9, 4, -1, 0, -1, -1},        // -0.5625
-      {383, 7, 2, 2, 3, 3},          // 2.9921875
+      {5, 1, 2, 2, 3, 2},                   // 2.5
+      {7, 1, 3, 3, 4, 4},                   // 3.5
+      {-5, 1, -3, -2, -2, -2},              // -2.5
+      {-7, 1, -4, -3, -3, -4},              // -3.5
+      {-1, 4, -1, 0, 0, 0},                 // -0.0625
+      {-8, 4, -1, 0, 0, 0},                 // -0.5: ties up -> 0, ties even -> 0
+      {-24, 4, -2, -1, -1, -2},             // -1.5
+      {-9, 4, -1, 0, -1, -1},               // -0.5625
+      {383, 7, 2, 2, 3, 3},                 // 2.9921875
       {-65280, 7, -510, -510, -510, -510},  // (-256)(255) / 128 = -510 exactly
       {-65281, 7, -511, -510, -510, -510},  // -510.0078125
       {100, 0, 100, 100, 100, 100},
@@ -137,12 +137,12 @@ TEST(FixedOverflow, RangeBounds) {
 
 TEST(FixedInteger, ResultTypesAreTheDatapathWidths) {
   using fixed::s9, fixed::s10, fixed::s11, fixed::s17, fixed::u8;
-  static_assert(std::is_same_v<decltype(u8{} - u8{}), s9>);           // [-255, 255]
+  static_assert(std::is_same_v<decltype(u8{} - u8{}), s9>);              // [-255, 255]
   static_assert(std::is_same_v<decltype(u8{} + u8{}), fixed::uint<9>>);  // [0, 510]
   static_assert(std::is_same_v<decltype(u8{} * u8{}), fixed::uint<16>>);
-  static_assert(std::is_same_v<decltype(s9{} * u8{}), s17>);          // [-65280, 65025]
-  static_assert(std::is_same_v<decltype(s9{} - u8{}), s10>);          // [-511, 255]
-  static_assert(std::is_same_v<decltype(s10{} + u8{}), s11>);         // [-512, 766]
+  static_assert(std::is_same_v<decltype(s9{} * u8{}), s17>);              // [-65280, 65025]
+  static_assert(std::is_same_v<decltype(s9{} - u8{}), s10>);              // [-511, 255]
+  static_assert(std::is_same_v<decltype(s10{} + u8{}), s11>);             // [-512, 766]
   static_assert(std::is_same_v<decltype(s9{} * s9{}), fixed::sint<18>>);  // up to +2^16
   // floor and truncation of s17 by 2^7 fit s10; to nearest can reach 2^9 and needs s11.
   static_assert(std::is_same_v<decltype(fixed::shift_right<rounding::floor, 7>(s17{})), s10>);
@@ -187,7 +187,7 @@ TEST(FixedInteger, HashFollowsEquality) {
 
 // ---- fixed_point ------------------------------------------------------------------------------
 
-using colour = fixed::gs_colour;       // u8, 0x80 = 1.0
+using colour = fixed::gs_colour;  // u8, 0x80 = 1.0
 using q8_8 = fixed::fixed_point<std::int16_t, 8>;
 
 template <rounding R, overflow O, class T = q8_8>
@@ -242,7 +242,8 @@ TEST(FixedPoint, FromDouble) {
   // (bits 0xfeffffffffffffff) times 2^31 overflows a double to -inf, yet d is finite and a multiple of
   // 2^956, so d·2^31 mod 2^32 = 0: wrap gives 0, not nullopt.
   using q0_31 = fixed::fixed_point<std::int32_t, 31>;
-  EXPECT_EQ((raw_of<rounding::floor, overflow::wrap, q0_31>(-0x1.fffffffffffffp+1008)), 0);  // run time: the product overflows
+  EXPECT_EQ((raw_of<rounding::floor, overflow::wrap, q0_31>(-0x1.fffffffffffffp+1008)),
+            0);  // run time: the product overflows
   // 2^51 + 1/2 (exact in a double) at F = 0: ties to even 2^51 -> wraps to 0; ties up -> 1.
   using i32 = fixed::fixed_point<std::int32_t, 0>;
   static_assert(raw_of<rounding::nearest_ties_even, overflow::wrap, i32>(0x1p51 + 0.5) == 0);
@@ -254,7 +255,8 @@ TEST(FixedPoint, FromDouble) {
 TEST(FixedPoint, ConvertAddSubMul) {
   using i32 = fixed::fixed_point<std::int32_t, 0>;
   // 0xff = 1.9921875: floor 1, nearest 2; as 8.8 it is raw 0x1fe.
-  static_assert(colour::from_raw(0xff).convert<rounding::floor, overflow::saturate, std::int32_t, 0>() == i32::from_raw(1));
+  static_assert(colour::from_raw(0xff).convert<rounding::floor, overflow::saturate, std::int32_t, 0>() ==
+                i32::from_raw(1));
   static_assert(colour::from_raw(0xff).convert<rounding::nearest_ties_up, overflow::saturate, std::int32_t, 0>() ==
                 i32::from_raw(2));
   static_assert(colour::from_raw(0xff).convert<rounding::floor, overflow::saturate, std::int16_t, 8>() ==
@@ -265,9 +267,15 @@ TEST(FixedPoint, ConvertAddSubMul) {
   static_assert(fixed::sub<overflow::saturate>(colour::from_raw(0x10), colour::from_raw(0x20)).raw() == 0x00);
   static_assert(fixed::sub<overflow::wrap>(colour::from_raw(0x10), colour::from_raw(0x20)).raw() == 0xf0);
   // 1.0 · 1.0 = 1.0; 0xff · 0xff = 65025 / 128 = 508.0078: floor 508 -> wraps to 252, saturates to 255.
-  static_assert(fixed::mul<rounding::floor, overflow::wrap, std::uint8_t, 7>(colour::from_raw(0x80), colour::from_raw(0x80)).raw() == 0x80);
-  static_assert(fixed::mul<rounding::floor, overflow::wrap, std::uint8_t, 7>(colour::from_raw(0xff), colour::from_raw(0xff)).raw() == 252);
-  static_assert(fixed::mul<rounding::floor, overflow::saturate, std::uint8_t, 7>(colour::from_raw(0xff), colour::from_raw(0xff)).raw() == 255);
+  static_assert(
+      fixed::mul<rounding::floor, overflow::wrap, std::uint8_t, 7>(colour::from_raw(0x80), colour::from_raw(0x80))
+          .raw() == 0x80);
+  static_assert(
+      fixed::mul<rounding::floor, overflow::wrap, std::uint8_t, 7>(colour::from_raw(0xff), colour::from_raw(0xff))
+          .raw() == 252);
+  static_assert(
+      fixed::mul<rounding::floor, overflow::saturate, std::uint8_t, 7>(colour::from_raw(0xff), colour::from_raw(0xff))
+          .raw() == 255);
   // (2^32 - 1)^2 = 2^64 - 2^33 + 1 exceeds int64: saturates to 0xffffffff, wraps to 1.
   using u32 = fixed::fixed_point<std::uint32_t, 0>;
   constexpr auto big = u32::from_raw(0xffffffffU);
@@ -276,8 +284,9 @@ TEST(FixedPoint, ConvertAddSubMul) {
   static_assert(fixed::mul<rounding::floor, overflow::saturate, std::int32_t, 0>(big, big).raw() == 0x7fffffff);
   // -2^31 · (2^32 - 1) = -2^63 + 2^31 fits int64; saturates to -2^31.
   using s32 = fixed::fixed_point<std::int32_t, 0>;
-  static_assert(fixed::mul<rounding::floor, overflow::saturate, std::int32_t, 0>(s32::from_raw(std::numeric_limits<std::int32_t>::min()), big).raw() ==
-                std::numeric_limits<std::int32_t>::min());
+  static_assert(fixed::mul<rounding::floor, overflow::saturate, std::int32_t, 0>(
+                    s32::from_raw(std::numeric_limits<std::int32_t>::min()), big)
+                    .raw() == std::numeric_limits<std::int32_t>::min());
   SUCCEED();
 }
 

@@ -22,7 +22,8 @@ using gs::ztst;
 std::uint32_t stored_by_shift(zbuf_psm p, std::uint32_t zd) {
   switch (p) {
     case zbuf_psm::PSMZ24: return (zd << 8) >> 8;
-    case zbuf_psm::PSMZ16: case zbuf_psm::PSMZ16S: return (zd << 16) >> 16;
+    case zbuf_psm::PSMZ16:
+    case zbuf_psm::PSMZ16S: return (zd << 16) >> 16;
     default: return zd;
   }
 }
@@ -34,9 +35,9 @@ std::uint32_t clamped(zbuf_psm p, std::uint32_t z) {
 }
 
 TEST(DepthTest, EveryTestAndFormatOnTheEdgeValues) {
-  const std::vector<std::uint32_t> values = {0u,        1u,          0x7FFFu,     0xFFFFu,     0x10000u,   0x10001u,
-                                             0x808080u, 0xFFFFFEu,   0xFFFFFFu,   0x1000000u,  0x1000001u, 0x7FFFFFFFu,
-                                             0x80000000u, 0xFF000000u, 0xFFFFFFFEu, 0xFFFFFFFFu, 0xAB123456u};
+  const std::vector<std::uint32_t> values = {
+      0u,         1u,         0x7FFFu,     0xFFFFu,     0x10000u,    0x10001u,    0x808080u,   0xFFFFFEu,  0xFFFFFFu,
+      0x1000000u, 0x1000001u, 0x7FFFFFFFu, 0x80000000u, 0xFF000000u, 0xFFFFFFFEu, 0xFFFFFFFFu, 0xAB123456u};
   long checked = 0;
   for (const zbuf_psm p : {zbuf_psm::PSMZ32, zbuf_psm::PSMZ24, zbuf_psm::PSMZ16, zbuf_psm::PSMZ16S})
     for (const bool zte : {false, true})

@@ -79,7 +79,8 @@ TEST_F(evidence, EveryOptionHasOneRowWithEveryValue) {
     name.append(opt.name).append("`");
     const auto n = std::count_if(rows.begin(), rows.end(), [&](const auto& r) { return r.size() > 1 && r[1] == name; });
     ASSERT_EQ(n, 1) << opt.name;
-    const auto& r = *std::find_if(rows.begin(), rows.end(), [&](const auto& r) { return r.size() > 1 && r[1] == name; });
+    const auto& r =
+        *std::find_if(rows.begin(), rows.end(), [&](const auto& r) { return r.size() > 1 && r[1] == name; });
     std::string values;
     for (auto v : opt.values) values.append(values.empty() ? "`" : ", `").append(v).append("`");
     EXPECT_EQ(r[2], values) << opt.name;
@@ -100,7 +101,8 @@ TEST_F(evidence, ProfileColumnsEqualTheProfileTable) {
       const std::string& cell = r[3 + i];
       EXPECT_FALSE(cell.empty()) << r[0] << " " << p.name << ": every row names each profile's behaviour";
       if (option.empty()) continue;  // a defect or agreement row: text only
-      const auto it = std::find_if(p.values.begin(), p.values.end(), [&](const auto& kv) { return kv.first == option; });
+      const auto it =
+          std::find_if(p.values.begin(), p.values.end(), [&](const auto& kv) { return kv.first == option; });
       ASSERT_NE(it, p.values.end()) << p.name << " does not set " << option;
       EXPECT_EQ(first_code(cell), it->second) << r[0] << " " << p.name;
     }

@@ -117,7 +117,8 @@ TEST(GsArithExhaustive, TextureFunctionAllModes) {
               const std::uint32_t texel = gs_ref::word(t, 255 - t, t, t);
               const int g = 32767 - f;
               const gs::fragment_colour frag{gs::gouraud_channel::from_wrapped(f), gs::gouraud_channel::from_wrapped(g),
-                                             gs::gouraud_channel::from_wrapped(f), gs::gouraud_channel::from_wrapped(f)};
+                                             gs::gouraud_channel::from_wrapped(f),
+                                             gs::gouraud_channel::from_wrapped(f)};
               const auto got = gs::texture_function(static_cast<gs::tfx>(fn), static_cast<gs::tcc>(cc),
                                                     rgba8::from_u32(texel), frag, o);
               const auto want = gs_ref::texture_function(fn, cc == 1, texel, {f, g, f, f}, keep);
@@ -147,8 +148,8 @@ TEST(GsArithExhaustive, DitherAllEntries) {
     for (auto decode : {gs::dither_decode::twos_complement, gs::dither_decode::sign_magnitude}) {
       gs::model_options o;
       o.dither = decode;
-      const int off = decode == gs::dither_decode::twos_complement ? gs_ref::dither_twos(dm)
-                                                                   : gs_ref::dither_sign_magnitude(dm);
+      const int off =
+          decode == gs::dither_decode::twos_complement ? gs_ref::dither_twos(dm) : gs_ref::dither_sign_magnitude(dm);
       for (int v = -509; v <= 763; ++v)
         for (unsigned pos = 0; pos < 16; ++pos) {
           const auto w = gs::s11::from_wrapped(v);
@@ -200,12 +201,12 @@ TEST(GsArithExhaustive, Pack16AllColours) {
 }
 
 // FBA over every alpha byte × every frame format × FBA (256 × 8 × 2 cases); the FBMSK merge on a
-// smaller instance, all (new, old, mask) bytes (2^24 cases; every 17th old under sanitizers), and at each of the 32 bit positions all
-// 8 (new, old, mask) bit combinations. Reduction: masked_merge is a bitwise function, so its value at
-// one bit depends only on that bit of each operand; the byte instance checks that independence by
-// brute force, the per-position sweep covers every bit of the 32-bit word.
+// smaller instance, all (new, old, mask) bytes (2^24 cases; every 17th old under sanitizers), and at each of the 32 bit
+// positions all 8 (new, old, mask) bit combinations. Reduction: masked_merge is a bitwise function, so its value at one
+// bit depends only on that bit of each operand; the byte instance checks that independence by brute force, the
+// per-position sweep covers every bit of the 32-bit word.
 TEST(GsArithExhaustive, FbaAndMergeAll) {
-  const gs::frame_psm all_psm[] = {gs::frame_psm::PSMCT32, gs::frame_psm::PSMCT24, gs::frame_psm::PSMCT16,
+  const gs::frame_psm all_psm[] = {gs::frame_psm::PSMCT32,  gs::frame_psm::PSMCT24, gs::frame_psm::PSMCT16,
                                    gs::frame_psm::PSMCT16S, gs::frame_psm::PSMZ32,  gs::frame_psm::PSMZ24,
                                    gs::frame_psm::PSMZ16,   gs::frame_psm::PSMZ16S};
   for (auto psm : all_psm)
@@ -213,14 +214,16 @@ TEST(GsArithExhaustive, FbaAndMergeAll) {
       for (int a = 0; a < 256; ++a) {
         const bool is24 = psm == gs::frame_psm::PSMCT24 || psm == gs::frame_psm::PSMZ24;
         const int want = fba && !is24 ? (a < 128 ? a + 128 : a) : a;
-        ASSERT_EQ(gs::apply_fba(rgba8::from_u32(gs_ref::word(1, 2, 3, a)), fba, psm).to_u32(), gs_ref::word(1, 2, 3, want))
+        ASSERT_EQ(gs::apply_fba(rgba8::from_u32(gs_ref::word(1, 2, 3, a)), fba, psm).to_u32(),
+                  gs_ref::word(1, 2, 3, want))
             << static_cast<int>(psm) << " " << fba << " " << a;
       }
   unsigned long long merge_cases = 0;
   for (std::uint32_t fresh = 0; fresh < 256; ++fresh)
     for (std::uint32_t old = 0; old < 256; old += static_cast<std::uint32_t>(big_stride)) {
       int bad = 0;
-      for (std::uint32_t mask = 0; mask < 256; ++mask) bad += gs::masked_merge(fresh, old, mask) != gs_ref::merge(fresh, old, mask);
+      for (std::uint32_t mask = 0; mask < 256; ++mask)
+        bad += gs::masked_merge(fresh, old, mask) != gs_ref::merge(fresh, old, mask);
       merge_cases += 256;
       if (bad != 0) FAIL() << fresh << " " << old;
     }
@@ -290,9 +293,7 @@ class register_sweep {
     gs::gs_registers regs;
     const bool ok = gs_test::decodes(regs, name, v);
     ASSERT_EQ(ok, valid) << name << " " << std::hex << v;
-    if (ok) {
-      ASSERT_EQ(gs::register_value(regs, name), v) << name << " " << std::hex << v;
-    }
+    if (ok) { ASSERT_EQ(gs::register_value(regs, name), v) << name << " " << std::hex << v; }
   }
   template <typename F>
   void all_below(const char* name, std::uint64_t count, F valid) {
@@ -332,8 +333,8 @@ TEST(GsArithExhaustive, RegisterFieldsAll) {
   }
   for (std::uint64_t f = 0; f < 16; ++f) {
     r.check("TEX0_1", f << 51, f == 0 || f == 2 || f == 0xA);  // CPSM
-    r.check("TEX0_1", f << 26, f <= 10);                        // TW
-    r.check("TEX0_1", f << 30, f <= 10);                        // TH
+    r.check("TEX0_1", f << 26, f <= 10);                       // TW
+    r.check("TEX0_1", f << 30, f <= 10);                       // TH
   }
   report("register fields", r.cases());
 }

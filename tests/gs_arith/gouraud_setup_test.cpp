@@ -10,7 +10,9 @@ using gs::gouraud_setup;
 using gs::rgba8;
 
 // Vertex at whole pixel (x, y) with red channel r (the other channels 0, alpha 0x80).
-gs::gouraud_vertex at(int x, int y, int r) { return {16 * x, 16 * y, rgba8::from_u32(0x80000000u | static_cast<unsigned>(r))}; }
+gs::gouraud_vertex at(int x, int y, int r) {
+  return {16 * x, 16 * y, rgba8::from_u32(0x80000000u | static_cast<unsigned>(r))};
+}
 
 int red(const gs::gouraud_plane& p, int x, int y, gouraud_setup s) { return gs::gouraud_colour(p, x, y, s).r.value(); }
 

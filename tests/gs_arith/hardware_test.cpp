@@ -19,8 +19,8 @@
 
 namespace {
 
-const std::filesystem::path shared_hw_dir = GSDOT3_HW_DIR;   // ../shared/hw, the original recordings
-const std::filesystem::path data_dir = GSDOT3_HW_DATA_DIR;    // tests/data/hw, their re-encoding
+const std::filesystem::path shared_hw_dir = GSDOT3_HW_DIR;  // ../shared/hw, the original recordings
+const std::filesystem::path data_dir = GSDOT3_HW_DATA_DIR;  // tests/data/hw, their re-encoding
 
 struct blend_record {
   std::string mode;  // "ABCD" digits
@@ -64,9 +64,9 @@ std::vector<pixel_case> read_pixel_cases(const std::filesystem::path& file) {
       continue;
     }
     pixel_case c{};
-    const int n = std::sscanf(line.c_str(), "%llx %llx %llx %llx %llx %x %x %x %x %llx %x %x %x %x %x %x %x %x => %x", &c.prim,
-                              &c.tex0, &c.alpha, &c.test, &c.frame, &c.colclamp, &c.pabe, &c.fba, &c.dthe, &c.dimx, &c.cf[0],
-                              &c.cf[1], &c.cf[2], &c.cf[3], &c.texel, &c.dst, &c.x, &c.y, &c.out);
+    const int n = std::sscanf(line.c_str(), "%llx %llx %llx %llx %llx %x %x %x %x %llx %x %x %x %x %x %x %x %x => %x",
+                              &c.prim, &c.tex0, &c.alpha, &c.test, &c.frame, &c.colclamp, &c.pabe, &c.fba, &c.dthe,
+                              &c.dimx, &c.cf[0], &c.cf[1], &c.cf[2], &c.cf[3], &c.texel, &c.dst, &c.x, &c.y, &c.out);
     if (n == 19) out.push_back(c);
   }
   return out;
@@ -103,7 +103,7 @@ std::uint32_t draw(const gs::gs_registers& regs, std::uint32_t vertex, std::uint
 }
 
 std::uint32_t replay(const blend_record& r, const gs::model_options& o) {
-  gs::gs_registers regs;  // FRAME_1 = PSMCT32, FBMSK 0; COLCLAMP = 1; no dither, PABE, FBA
+  gs::gs_registers regs;              // FRAME_1 = PSMCT32, FBMSK 0; COLCLAMP = 1; no dither, PABE, FBA
   gs::set_register(regs, "PRIM", 6);  // SPRITE, no blending
   const std::uint32_t frame = draw(regs, r.dst, 0x00000000u, o);
   gs::set_register(regs, "PRIM", 6 | 1 << 6);  // SPRITE, ABE = 1
@@ -189,8 +189,8 @@ TEST(GsArithHardware, ReencodedCasesReplayAsPixelVectors) {
       gs::set_register(regs, "DTHE", c.dthe);
       gs::set_register(regs, "DIMX", c.dimx);
       auto ch = [](unsigned v) { return gs::gouraud_channel::from_wrapped(v); };
-      const gs::pixel_input px{{ch(c.cf[0]), ch(c.cf[1]), ch(c.cf[2]), ch(c.cf[3])}, gs::rgba8::from_u32(c.texel), c.dst,
-                               c.x, c.y};
+      const gs::pixel_input px{
+          {ch(c.cf[0]), ch(c.cf[1]), ch(c.cf[2]), ch(c.cf[3])}, gs::rgba8::from_u32(c.texel), c.dst, c.x, c.y};
       EXPECT_EQ(gs::pixel_pipeline(regs, px, gs::model_options{}).out, c.out) << name;
     }
   }
@@ -210,8 +210,8 @@ TEST(GsArithHardware, SimpleTexture) {
       gs::set_register(regs, "TEX0_1", 0);         // PSMCT32, TCC = RGB, TFX = MODULATE
       const gs::pixel_input px{gs::fragment_colour::flat(gs::rgba8::from_u32(0x80808080u)),
                                gs::rgba8::from_u32(0xFF808080u), 0u, 0, 0};
-      EXPECT_EQ(gs::pixel_pipeline(regs, px, o).out, recorded) << gs::option_value(o, "tfx_rounding") << " "
-                                                               << gs::option_value(o, "gouraud_fraction");
+      EXPECT_EQ(gs::pixel_pipeline(regs, px, o).out, recorded)
+          << gs::option_value(o, "tfx_rounding") << " " << gs::option_value(o, "gouraud_fraction");
     }
   }
 }

@@ -28,9 +28,7 @@ inline gs::write_enables alpha_test_of(bool ate, int method, int aref, int afail
 inline bool decodes(gs::gs_registers& regs, std::string_view name, std::uint64_t v) {
   try {
     gs::set_register(regs, name, v);
-  } catch (const gs::register_error&) {
-    return false;
-  }
+  } catch (const gs::register_error&) { return false; }
   return true;
 }
 

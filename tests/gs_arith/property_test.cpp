@@ -186,10 +186,9 @@ RC_GTEST_PROP(GsArithProperty, OptionsIrrelevantWithoutTheirUnits, ()) {
 RC_GTEST_PROP(GsArithProperty, DecodeEncodeIdentityOrError, ()) {
   const auto name = gs::register_names[*rc::gen::inRange<std::size_t>(0, std::size(gs::register_names))];
   // Sparse values reach the valid encodings often; dense ones exercise the reserved bits.
-  const std::uint64_t v = *rc::gen::oneOf(rc::gen::arbitrary<std::uint64_t>(),
-                                           rc::gen::map(rc::gen::arbitrary<std::uint64_t>(), [](std::uint64_t x) {
-                                             return x & (x >> 7) & (x >> 13);
-                                           }));
+  const std::uint64_t v = *rc::gen::oneOf(
+      rc::gen::arbitrary<std::uint64_t>(),
+      rc::gen::map(rc::gen::arbitrary<std::uint64_t>(), [](std::uint64_t x) { return x & (x >> 7) & (x >> 13); }));
   gs::gs_registers regs;
   if (gs_test::decodes(regs, name, v)) RC_ASSERT(gs::register_value(regs, name) == v);
 }
@@ -258,7 +257,8 @@ RC_GTEST_PROP(GsArithProperty, GouraudTriangleMatchesBarycentric, ()) {
   const auto t = random_gouraud_triangle(256, 1);  // the green channel
   RC_PRE(gs_ref::plane_det(t.rv) != 0);
   RC_ASSERT(t.plane.has_value());
-  RC_ASSERT(static_cast<long long>(gs::gouraud_at(*t.plane, t.x, t.y).g.value()) == gs_ref::gouraud_plane_at(t.rv, t.xr, t.yr, t.x, t.y));
+  RC_ASSERT(static_cast<long long>(gs::gouraud_at(*t.plane, t.x, t.y).g.value()) ==
+            gs_ref::gouraud_plane_at(t.rv, t.xr, t.yr, t.x, t.y));
 }
 
 // gouraud_setup = per_pixel against the same barycentric formulation read at the pixel itself (the
@@ -267,7 +267,8 @@ RC_GTEST_PROP(GsArithProperty, GouraudExactAtMatchesBarycentric, ()) {
   const auto t = random_gouraud_triangle(2048, 0);  // the red channel
   RC_PRE(gs_ref::plane_det(t.rv) != 0);
   RC_ASSERT(t.plane.has_value());
-  RC_ASSERT(static_cast<long long>(gs::gouraud_exact_at(*t.plane, t.x, t.y).r.value()) == gs_ref::gouraud_exact_at(t.rv, t.x, t.y));
+  RC_ASSERT(static_cast<long long>(gs::gouraud_exact_at(*t.plane, t.x, t.y).r.value()) ==
+            gs_ref::gouraud_exact_at(t.rv, t.x, t.y));
   RC_ASSERT(gs::gouraud_colour(*t.plane, t.xr, t.yr, gs::gouraud_setup::per_pixel) ==
             gs::gouraud_colour(*t.plane, t.xr, t.yr, gs::gouraud_setup::plane_steps));
 }

@@ -70,16 +70,15 @@ constexpr int colclamp(int v, bool clamp) { return clamp ? clamp255(v) : ((v % 2
 constexpr bool atst_passes(int method, int a, int aref) {
   const int sign = (a > aref) - (a < aref);  // −1, 0, +1
   // For each method: passes when sign is −1, 0, +1.
-  constexpr bool table[8][3] = {{false, false, false}, {true, true, true},   {true, false, false},
-                                {true, true, false},   {false, true, false}, {false, true, true},
-                                {false, false, true},  {true, false, true}};
+  constexpr bool table[8][3] = {{false, false, false}, {true, true, true},  {true, false, false}, {true, true, false},
+                                {false, true, false},  {false, true, true}, {false, false, true}, {true, false, true}};
   return table[method][sign + 1];
 }
 // {rgb, a, z} written. AFAIL 0 KEEP, 1 FB_ONLY, 2 ZB_ONLY, 3 RGB_ONLY (32-bit only, else FB_ONLY).
 constexpr std::array<bool, 3> alpha_test(bool ate, int method, int aref, int afail, int a, bool target32) {
   if (!ate || atst_passes(method, a, aref)) return {true, true, true};
-  const std::array<bool, 3> table[4] = {{false, false, false}, {true, true, false}, {false, false, true},
-                                        {true, !target32, false}};
+  const std::array<bool, 3> table[4] = {
+      {false, false, false}, {true, true, false}, {false, false, true}, {true, !target32, false}};
   return table[afail];
 }
 

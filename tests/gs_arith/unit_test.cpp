@@ -50,8 +50,8 @@ TEST(TextureFunction, AllModesAgainstTable) {
             const auto got = gs::texture_function(static_cast<gs::tfx>(fn), static_cast<gs::tcc>(cc),
                                                   rgba8::from_u32(texel), frag, o);
             const auto want = gs_ref::texture_function(fn, cc == 1, texel, {f, 0x7FFF - f, f ^ 0x1555, f}, keep);
-            ASSERT_EQ(got.to_u32(), want) << "tfx " << fn << " tcc " << cc << " keep " << keep << " texel " << hex(texel)
-                                          << " cf87 " << hex(static_cast<unsigned>(f));
+            ASSERT_EQ(got.to_u32(), want) << "tfx " << fn << " tcc " << cc << " keep " << keep << " texel "
+                                          << hex(texel) << " cf87 " << hex(static_cast<unsigned>(f));
           }
 }
 
@@ -62,8 +62,11 @@ TEST(TextureFunction, OffPassesIntegerPart) {
 
 // ---------------------------------------------------------------- alpha blend
 TEST(AlphaBlend, All81ModesOnSampleColours) {
-  const std::uint32_t pairs[][2] = {{0xffff00ff, 0xff00ff00}, {0x40402040, 0x80204020}, {0x00000000, 0xffffffff},
-                                    {0x80ff80ff, 0x01020304}, {0xfe7f0181, 0x7f80fe01}};
+  const std::uint32_t pairs[][2] = {{0xffff00ff, 0xff00ff00},
+                                    {0x40402040, 0x80204020},
+                                    {0x00000000, 0xffffffff},
+                                    {0x80ff80ff, 0x01020304},
+                                    {0xfe7f0181, 0x7f80fe01}};
   for (int A = 0; A < 3; ++A)
     for (int B = 0; B < 3; ++B)
       for (int C = 0; C < 3; ++C)
@@ -200,9 +203,8 @@ TEST(FrameWrite, Pack16AndRead16) {
 TEST(FrameWrite, TwentyFourBitTarget) {
   // The blender reads Ad as 0x80; the top byte of memory is never written, FBA does not apply.
   EXPECT_EQ(gs::frame_read(gs::frame_psm::PSMCT24, 0x11223344u).to_u32(), 0x80223344u);
-  EXPECT_EQ(gs::frame_write(gs::frame_psm::PSMCT24, gs::apply_fba(rgba8::from_u32(0x00aabbccu), true,
-                                                                    gs::frame_psm::PSMCT24),
-                            0x11223344u, 0),
+  EXPECT_EQ(gs::frame_write(gs::frame_psm::PSMCT24,
+                            gs::apply_fba(rgba8::from_u32(0x00aabbccu), true, gs::frame_psm::PSMCT24), 0x11223344u, 0),
             0x11aabbccu);
 }
 
@@ -212,8 +214,7 @@ TEST(FrameWrite, FbmskMergeAndFba) {
       const rgba8 c = rgba8::from_u32(0x01234567u);
       EXPECT_EQ(gs::frame_write(gs::frame_psm::PSMCT32, c, old, mask), gs_ref::merge(0x01234567u, old, mask));
       EXPECT_EQ(gs::frame_write(gs::frame_psm::PSMCT16, c, old & 0xffffu, mask),
-                gs_ref::merge(gs_ref::pack16(0x01234567u), old & 0xffffu,
-                              gs_ref::pack16(mask) | 0xffff0000u));
+                gs_ref::merge(gs_ref::pack16(0x01234567u), old & 0xffffu, gs_ref::pack16(mask) | 0xffff0000u));
     }
   EXPECT_EQ(gs::apply_fba(rgba8::from_u32(0x00000000u), true, gs::frame_psm::PSMCT32).to_u32(), 0x80000000u);
   EXPECT_EQ(gs::apply_fba(rgba8::from_u32(0x7f000000u), true, gs::frame_psm::PSMCT16).to_u32(), 0xff000000u);
@@ -262,9 +263,7 @@ TEST(Gouraud, TrianglePlaneThroughPixelAlignedVertices) {
   EXPECT_FALSE(gs::gouraud_triangle(v0, v0, v2, 10, 20).has_value());
 }
 
-TEST(Gouraud, FlatTakesLastVertex) {
-  EXPECT_EQ(gs::flat_shading(rgba8::from_u32(0x11223344u)).g.value(), 0x33 * 128);
-}
+TEST(Gouraud, FlatTakesLastVertex) { EXPECT_EQ(gs::flat_shading(rgba8::from_u32(0x11223344u)).g.value(), 0x33 * 128); }
 
 // ---------------------------------------------------------------- bilinear
 TEST(Bilinear, Lerp16_4Sweep) {
@@ -280,8 +279,7 @@ TEST(Bilinear, FootprintSubtractsHalfTexel) {
             (gs::texel_footprint{2, 1, gs::u4::from_wrapped(0), gs::u4::from_wrapped(8)}));
   EXPECT_EQ(gs::footprint(0, 3, gs::bilinear_mode::lerp16_4),
             (gs::texel_footprint{-1, -1, gs::u4::from_wrapped(8), gs::u4::from_wrapped(11)}));
-  EXPECT_EQ(gs::footprint(40, 31, gs::bilinear_mode::nearest),
-            (gs::texel_footprint{2, 1, gs::u4{}, gs::u4{}}));
+  EXPECT_EQ(gs::footprint(40, 31, gs::bilinear_mode::nearest), (gs::texel_footprint{2, 1, gs::u4{}, gs::u4{}}));
 }
 
 TEST(Bilinear, FilterHorizontalThenVertical) {
@@ -311,7 +309,9 @@ TEST(Bilinear, WeightedSum4IsTheDoubleSumTruncated) {
 }
 
 TEST(Bilinear, SampleWeightedSum4UsesTheLerpFootprint) {
-  auto fetch = [](std::int32_t u, std::int32_t v) { return rgba8::from_u32(static_cast<std::uint32_t>(u * 40 + v * 3)); };
+  auto fetch = [](std::int32_t u, std::int32_t v) {
+    return rgba8::from_u32(static_cast<std::uint32_t>(u * 40 + v * 3));
+  };
   // u = 3 + 15/16 + 1/2 texels: footprint u0 = 3, wu = 15 (as lerp16_4); v = 5.5: v0 = 5, wv = 0.
   const auto got = gs::sample(fetch, 16 * 3 + 15 + 8, 16 * 5 + 8, gs::bilinear_mode::weighted_sum_4);
   const int want = gs_ref::weighted_sum_4(3 * 40 + 15, 4 * 40 + 15, 3 * 40 + 18, 4 * 40 + 18, 15, 0);
@@ -343,7 +343,8 @@ TEST(Clut, Csm1PositionMatchesPcsx2Derivation) {
 
 TEST(Clut, LookupT8T4T8H) {
   std::array<rgba8, 256> image{};
-  for (int p = 0; p < 256; ++p) image[static_cast<std::size_t>(p)] = rgba8::from_u32(0xff000000u | static_cast<std::uint32_t>(p));
+  for (int p = 0; p < 256; ++p)
+    image[static_cast<std::size_t>(p)] = rgba8::from_u32(0xff000000u | static_cast<std::uint32_t>(p));
   const auto buf = gs::load_csm1_t8(image);
   for (int i = 0; i < 256; ++i)
     ASSERT_EQ(gs::clut_t8(buf, u8v(i)).to_u32() & 0xffu, static_cast<std::uint32_t>(gs_ref::csm1_position(i)));
@@ -351,10 +352,12 @@ TEST(Clut, LookupT8T4T8H) {
   EXPECT_EQ(gs::t8h_index(0x17aabbccu).value(), 0x17);
 
   std::array<rgba8, 16> small{};
-  for (int p = 0; p < 16; ++p) small[static_cast<std::size_t>(p)] = rgba8::from_u32(0x11000000u + static_cast<std::uint32_t>(p));
+  for (int p = 0; p < 16; ++p)
+    small[static_cast<std::size_t>(p)] = rgba8::from_u32(0x11000000u + static_cast<std::uint32_t>(p));
   const auto buf4 = gs::load_csm1_t4(buf, small, gs::u5::from_wrapped(3));
   for (int i = 0; i < 16; ++i) {
-    EXPECT_EQ(gs::clut_t4(buf4, gs::u4::from_wrapped(i), gs::u5::from_wrapped(3)).to_u32(), 0x11000000u + static_cast<std::uint32_t>(i));
+    EXPECT_EQ(gs::clut_t4(buf4, gs::u4::from_wrapped(i), gs::u5::from_wrapped(3)).to_u32(),
+              0x11000000u + static_cast<std::uint32_t>(i));
     EXPECT_EQ(gs::clut_t4(buf4, gs::u4::from_wrapped(i), gs::u5::from_wrapped(0)), buf[static_cast<std::size_t>(i)]);
   }
   // PSMT8 with CSA: group offset clamps at entry 240 (PCSX2 ReadCLUT_T32_I8).
@@ -416,10 +419,17 @@ TEST(Registers, DecodeKnownValues) {
 }
 
 TEST(Registers, RoundTripThroughNames) {
-  const std::pair<const char*, std::uint64_t> values[] = {
-      {"PRIM", 0x7fe},      {"RGBAQ", 0xfedcba9876543210ull}, {"TEX0_1", 0xff92aab6694fffffull},
-      {"ALPHA_1", 0xab000000a6ull}, {"TEST_1", 0x7ffff}, {"FRAME_1", 0x123456783a3f01ffull},
-      {"COLCLAMP", 0}, {"PABE", 1}, {"FBA_1", 1}, {"DTHE", 1}, {"DIMX", 0x7777777777777777ull}};
+  const std::pair<const char*, std::uint64_t> values[] = {{"PRIM", 0x7fe},
+                                                          {"RGBAQ", 0xfedcba9876543210ull},
+                                                          {"TEX0_1", 0xff92aab6694fffffull},
+                                                          {"ALPHA_1", 0xab000000a6ull},
+                                                          {"TEST_1", 0x7ffff},
+                                                          {"FRAME_1", 0x123456783a3f01ffull},
+                                                          {"COLCLAMP", 0},
+                                                          {"PABE", 1},
+                                                          {"FBA_1", 1},
+                                                          {"DTHE", 1},
+                                                          {"DIMX", 0x7777777777777777ull}};
   for (const auto& [name, v] : values) {
     gs::gs_registers regs;
     gs::set_register(regs, name, v);
@@ -429,18 +439,31 @@ TEST(Registers, RoundTripThroughNames) {
 
 TEST(Registers, NeutralDefaultsAreZeroExceptColclamp) {
   const gs::gs_registers regs;
-  for (auto name : gs::register_names)
-    EXPECT_EQ(gs::register_value(regs, name), name == "COLCLAMP" ? 1u : 0u) << name;
+  for (auto name : gs::register_names) EXPECT_EQ(gs::register_value(regs, name), name == "COLCLAMP" ? 1u : 0u) << name;
 }
 
 TEST(Registers, ReservedValuesThrow) {
-  const std::pair<const char*, std::uint64_t> bad[] = {
-      {"ALPHA_1", 3},           {"ALPHA_1", 3 << 2},      {"ALPHA_1", 3 << 4},  {"ALPHA_1", 3 << 6},
-      {"ALPHA_1", 1ull << 40},  {"ALPHA_1", 1ull << 8},   {"PRIM", 7},          {"PRIM", 1 << 11},
-      {"TEX0_1", 0x15ull << 20}, {"TEX0_1", 11ull << 26}, {"TEX0_1", 11ull << 30}, {"TEX0_1", 1ull << 51},
-      {"TEST_1", 1 << 19},      {"FRAME_1", 0x13ull << 24}, {"FRAME_1", 1 << 9},  {"COLCLAMP", 2},
-      {"PABE", 1ull << 63},     {"FBA_1", 2},             {"DTHE", 2},          {"DIMX", 8},
-      {"DIMX", 1ull << 63}};
+  const std::pair<const char*, std::uint64_t> bad[] = {{"ALPHA_1", 3},
+                                                       {"ALPHA_1", 3 << 2},
+                                                       {"ALPHA_1", 3 << 4},
+                                                       {"ALPHA_1", 3 << 6},
+                                                       {"ALPHA_1", 1ull << 40},
+                                                       {"ALPHA_1", 1ull << 8},
+                                                       {"PRIM", 7},
+                                                       {"PRIM", 1 << 11},
+                                                       {"TEX0_1", 0x15ull << 20},
+                                                       {"TEX0_1", 11ull << 26},
+                                                       {"TEX0_1", 11ull << 30},
+                                                       {"TEX0_1", 1ull << 51},
+                                                       {"TEST_1", 1 << 19},
+                                                       {"FRAME_1", 0x13ull << 24},
+                                                       {"FRAME_1", 1 << 9},
+                                                       {"COLCLAMP", 2},
+                                                       {"PABE", 1ull << 63},
+                                                       {"FBA_1", 2},
+                                                       {"DTHE", 2},
+                                                       {"DIMX", 8},
+                                                       {"DIMX", 1ull << 63}};
   for (const auto& [name, v] : bad) {
     gs::gs_registers regs;
     EXPECT_THROW(gs::set_register(regs, name, v), gs::register_error) << name << " " << hex(v);
@@ -458,8 +481,8 @@ TEST(Registers, ReservedValuesThrow) {
 // ---------------------------------------------------------------- pixel pipeline scenarios
 gs::pixel_trace run(const gs::gs_registers& regs, std::uint32_t vertex, std::uint32_t texel, std::uint32_t dst,
                     unsigned x = 0, unsigned y = 0, gs::model_options o = {}) {
-  return gs::pixel_pipeline(
-      regs, {gs::fragment_colour::flat(rgba8::from_u32(vertex)), rgba8::from_u32(texel), dst, x, y}, o);
+  return gs::pixel_pipeline(regs,
+                            {gs::fragment_colour::flat(rgba8::from_u32(vertex)), rgba8::from_u32(texel), dst, x, y}, o);
 }
 
 TEST(PixelPipeline, RedOnlyPassWithFbmsk) {
@@ -472,7 +495,7 @@ TEST(PixelPipeline, TwentyFourBitBlendReadsAd0x80) {
   gs::gs_registers regs;
   gs::set_register(regs, "PRIM", 1 << 6);
   gs::set_register(regs, "ALPHA_1", 2u << 6 | 1u << 4 | 2u << 2 | 0u);  // (Cs − 0)·Ad + 0
-  gs::set_register(regs, "FRAME_1", 0x01ull << 24);                       // PSMCT24
+  gs::set_register(regs, "FRAME_1", 0x01ull << 24);                     // PSMCT24
   // Ad reads as 0x80, so Cs passes unchanged; the top byte of memory (0x33) is kept.
   EXPECT_EQ(run(regs, 0x00405060u, 0, 0x33000000u).out, 0x33405060u);
 }

@@ -26,7 +26,7 @@ using writes = std::vector<std::pair<std::uint8_t, std::uint64_t>>;
 
 constexpr std::uint8_t PRIM = 0x00, XYZ2 = 0x05, SCISSOR_1 = 0x40, TEST_1 = 0x47, FRAME_1 = 0x4C, ZBUF_1 = 0x4E,
                        PRMODECONT = 0x1A, XYOFFSET_1 = 0x18;
-constexpr std::uint64_t frame(std::uint64_t fbp, std::uint64_t fbw) { return fbp | fbw << 16; }  // PSMCT32
+constexpr std::uint64_t frame(std::uint64_t fbp, std::uint64_t fbw) { return fbp | fbw << 16; }         // PSMCT32
 constexpr std::uint64_t zbuf(std::uint64_t zbp, bool zmsk) { return zbp | std::uint64_t{zmsk} << 32; }  // PSMZ32
 constexpr std::uint64_t xyz(std::uint64_t x, std::uint64_t y) { return (x << 4) | (y << 4) << 16; }
 constexpr std::uint64_t scissor(std::uint64_t x1, std::uint64_t y1) { return (x1 - 1) << 16 | (y1 - 1) << 48; }
@@ -40,8 +40,13 @@ struct bench {
 
 packet_builder prologue(std::uint64_t fbw, std::uint64_t zbp, bool zmsk, std::uint64_t sc) {
   packet_builder pb;
-  pb.ad(writes{{PRMODECONT, 1}, {XYOFFSET_1, 0}, {SCISSOR_1, sc}, {FRAME_1, frame(0, fbw)}, {ZBUF_1, zbuf(zbp, zmsk)},
-               {TEST_1, test_z_always}, {PRIM, 6}});
+  pb.ad(writes{{PRMODECONT, 1},
+               {XYOFFSET_1, 0},
+               {SCISSOR_1, sc},
+               {FRAME_1, frame(0, fbw)},
+               {ZBUF_1, zbuf(zbp, zmsk)},
+               {TEST_1, test_z_always},
+               {PRIM, 6}});
   return pb;
 }
 

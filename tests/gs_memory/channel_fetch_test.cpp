@@ -27,18 +27,18 @@ TEST(GsMemoryChannelFetch, EveryPixelsChannelIsFetchedExactlyOnce) {
             for (std::uint32_t y = s.y0; y < s.y1; ++y)
               for (std::uint32_t x = s.x0; x < s.x1; ++x) {
                 ++covered[y * 64 + x];
-                const auto u = wrap_texel(f.CLAMP.WMS, s.u0 + static_cast<std::int32_t>(x - s.x0), fixed::u4::literal(7),
-                                          f.CLAMP.MINU, f.CLAMP.MAXU);
-                const auto v = wrap_texel(f.CLAMP.WMT, s.v0 + static_cast<std::int32_t>(y - s.y0), fixed::u4::literal(6),
-                                          f.CLAMP.MINV, f.CLAMP.MAXV);
-                const location texel = locate(buffer{fixed::uint<14>::from_wrapped(page_bp),
-                                                     fixed::uint<6>::from_wrapped(2 * fbw), psm::PSMT8},
-                                              u, v);
-                const location pixel = locate(buffer{fixed::uint<14>::from_wrapped(dbp), fixed::uint<6>::from_wrapped(fbw),
-                                                     psm::PSMCT32},
-                                              64 * px + x, 32 * py + y);
-                ASSERT_EQ(texel.byte, pixel.byte + c)
-                    << "FBW " << fbw << " channel " << c << " page (" << px << ", " << py << ") pixel (" << x << ", " << y << ")";
+                const auto u = wrap_texel(f.CLAMP.WMS, s.u0 + static_cast<std::int32_t>(x - s.x0),
+                                          fixed::u4::literal(7), f.CLAMP.MINU, f.CLAMP.MAXU);
+                const auto v = wrap_texel(f.CLAMP.WMT, s.v0 + static_cast<std::int32_t>(y - s.y0),
+                                          fixed::u4::literal(6), f.CLAMP.MINV, f.CLAMP.MAXV);
+                const location texel = locate(
+                    buffer{fixed::uint<14>::from_wrapped(page_bp), fixed::uint<6>::from_wrapped(2 * fbw), psm::PSMT8},
+                    u, v);
+                const location pixel =
+                    locate(buffer{fixed::uint<14>::from_wrapped(dbp), fixed::uint<6>::from_wrapped(fbw), psm::PSMCT32},
+                           64 * px + x, 32 * py + y);
+                ASSERT_EQ(texel.byte, pixel.byte + c) << "FBW " << fbw << " channel " << c << " page (" << px << ", "
+                                                      << py << ") pixel (" << x << ", " << y << ")";
                 ++fetched;
               }
           for (int n : covered) ASSERT_EQ(n, 1);

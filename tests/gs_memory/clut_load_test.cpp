@@ -114,7 +114,8 @@ TEST(GsMemoryClut, SixteenBitLoadsShareTheBufferWithThirtyTwoBitEntries) {
   t.CLD = u3::from_wrapped(1);
   s = load_clut(m, t, s);
   for (std::uint32_t i = 0; i < 256; ++i)
-    ASSERT_EQ(s.buffer[i].to_u32(), i >= 16 && i < 32 ? (0x7000u + i - 16) << 16 | 0x3344u : 0x11223344u) << "entry " << i;
+    ASSERT_EQ(s.buffer[i].to_u32(), i >= 16 && i < 32 ? (0x7000u + i - 16) << 16 | 0x3344u : 0x11223344u)
+        << "entry " << i;
 }
 
 TEST(GsMemoryRegisters, TexclutFields) {

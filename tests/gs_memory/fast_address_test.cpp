@@ -39,7 +39,8 @@ TEST(FastAddress, RowPlusColumnIsTheAddressForEvery32And16BitLayout) {
   std::uint64_t checked = 0;
   for (const layout l : sum_layouts) {
     for (const std::uint32_t bw : {1u, 2u, 3u, 5u, 8u, 10u, 16u, 63u})
-      for (const std::uint32_t bp : base_pointers) checked += expect_row_column(l, bp, bw, 64 * bw, 2 * page_size(l).h + 3);
+      for (const std::uint32_t bp : base_pointers)
+        checked += expect_row_column(l, bp, bw, 64 * bw, 2 * page_size(l).h + 3);
     for (const std::uint32_t bp : {0u, 16383u}) checked += expect_row_column(l, bp, 8, 512, 2048);
   }
   std::printf("checked %llu (layout, BW, BP, x, y) coordinates\n", static_cast<unsigned long long>(checked));
@@ -57,7 +58,8 @@ TEST(FastAddress, Psmt8AndPsmt4AreNotRowPlusColumn) {
     int not_sums = 0;
     for (std::uint32_t y = 0; y < pg.h; ++y)
       for (std::uint32_t x = 0; x < pg.w; ++x)
-        not_sums += tables::unit_address(l, 0, bw, x, y) != tables::unit_address(l, 0, bw, x, 0) + tables::unit_address(l, 0, bw, 0, y);
+        not_sums += tables::unit_address(l, 0, bw, x, y) !=
+                    tables::unit_address(l, 0, bw, x, 0) + tables::unit_address(l, 0, bw, 0, y);
     EXPECT_GT(not_sums, 0) << test::name(l);
   }
 }
@@ -72,7 +74,7 @@ TEST(FastAddress, TexelTablesAreLocateAndReadPixelForEveryTexel) {
   };
   // The channel fetch's PSMT8 page (TBW = 2·FBW), a 256² normal map, its PSMT8H view, the sphere map
   // and a diffuse texture (PSMCT32), a PSMZ32 view.
-  const texture textures[] = {{psm::PSMT8, 16, 128, 64}, {psm::PSMT8, 4, 256, 256}, {psm::PSMT8H, 8, 512, 64},
+  const texture textures[] = {{psm::PSMT8, 16, 128, 64}, {psm::PSMT8, 4, 256, 256},   {psm::PSMT8H, 8, 512, 64},
                               {psm::PSMCT32, 1, 64, 64}, {psm::PSMCT32, 4, 256, 128}, {psm::PSMZ32, 8, 512, 64}};
   std::uint64_t checked = 0;
   for (const texture& t : textures) {
@@ -81,8 +83,10 @@ TEST(FastAddress, TexelTablesAreLocateAndReadPixelForEveryTexel) {
       const buffer b{fixed::uint<14>::from_wrapped(bp), fixed::uint<6>::from_wrapped(t.bw), t.p};
       for (std::uint32_t v = 0; v < t.h; ++v)
         for (std::uint32_t u = 0; u < t.w; ++u) {
-          ASSERT_EQ(a.byte(u, v, bp), locate(b, u, v).byte) << "PSM " << static_cast<int>(t.p) << " BP " << bp << " (" << u << ", " << v << ")";
-          ASSERT_EQ(a.read(m, u, v, bp), m.read_pixel(b, u, v)) << "PSM " << static_cast<int>(t.p) << " BP " << bp << " (" << u << ", " << v << ")";
+          ASSERT_EQ(a.byte(u, v, bp), locate(b, u, v).byte)
+              << "PSM " << static_cast<int>(t.p) << " BP " << bp << " (" << u << ", " << v << ")";
+          ASSERT_EQ(a.read(m, u, v, bp), m.read_pixel(b, u, v))
+              << "PSM " << static_cast<int>(t.p) << " BP " << bp << " (" << u << ", " << v << ")";
           ++checked;
         }
     }
@@ -91,7 +95,6 @@ TEST(FastAddress, TexelTablesAreLocateAndReadPixelForEveryTexel) {
   EXPECT_THROW(texel_addresses(psm::PSMCT16, 1, 64, 64), std::invalid_argument);
   std::printf("checked %llu (texture, BP, u, v) texels\n", static_cast<unsigned long long>(checked));
 }
-
 
 // The byte-by-byte reference: the value's bits little-endian from at.byte, starting at bit at.bit.
 std::uint32_t read_bytes(const local_memory& m, const location& at) {
@@ -114,13 +117,15 @@ TEST(FastAddress, WordWiseReadAndWriteAreTheByteWiseReading) {
     for (std::uint32_t y = 0; y < pg.h; ++y)
       for (std::uint32_t x = 0; x < 2 * pg.w; ++x) {
         const location at = locate(b, x, y);
-        ASSERT_LE(8 * (at.byte % 4) + at.bit + at.bits, 32u) << "PSM " << static_cast<int>(p) << " (" << x << ", " << y << ")";
+        ASSERT_LE(8 * (at.byte % 4) + at.bit + at.bits, 32u)
+            << "PSM " << static_cast<int>(p) << " (" << x << ", " << y << ")";
         ASSERT_EQ(m.read(at), read_bytes(m, at)) << "PSM " << static_cast<int>(p) << " (" << x << ", " << y << ")";
         const std::uint32_t word = at.byte / 4, before = m.words()[word], v = static_cast<std::uint32_t>(rng());
         m.write(at, v);
         const std::uint64_t mask = ((std::uint64_t{1} << at.bits) - 1) << (8 * (at.byte % 4) + at.bit);
         ASSERT_EQ(read_bytes(m, at), v & ((std::uint64_t{1} << at.bits) - 1));
-        ASSERT_EQ(m.words()[word] & ~mask, before & ~mask) << "PSM " << static_cast<int>(p) << " (" << x << ", " << y << ")";
+        ASSERT_EQ(m.words()[word] & ~mask, before & ~mask)
+            << "PSM " << static_cast<int>(p) << " (" << x << ", " << y << ")";
         ++checked;
       }
   }

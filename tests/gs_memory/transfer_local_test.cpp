@@ -37,13 +37,15 @@ TEST(GsMemoryTransfer, LocalToHostReturnsThePixelsPacked) {
     const trxpos_reg pos{u<11>(11), u<11>(3), u<11>(0), u<11>(0), u<2>(0)};
     const std::vector<std::uint8_t> data = local_to_host(m, b, pos, {u<12>(19), u<12>(7)}, {xdir::local_to_host});
     ASSERT_EQ(data.size(), transfer_bytes(p, 19, 7));
-    for (std::size_t i = 0; i < values.size(); ++i) ASSERT_EQ(unpack(data, value_bits(p), i), values[i]) << static_cast<int>(p) << " pixel " << i;
+    for (std::size_t i = 0; i < values.size(); ++i)
+      ASSERT_EQ(unpack(data, value_bits(p), i), values[i]) << static_cast<int>(p) << " pixel " << i;
     // Host -> local of those bytes elsewhere and back gives the same bytes.
-    host_to_local(m, {u<14>(0), u<6>(0), psm::PSMCT32, u<14>(2048), u<6>(2), p}, {u<11>(0), u<11>(0), u<11>(5), u<11>(1), u<2>(0)},
-                  {u<12>(19), u<12>(7)}, {}, data);
-    EXPECT_EQ(local_to_host(m, {u<14>(2048), u<6>(2), p, u<14>(0), u<6>(0), psm::PSMCT32}, {u<11>(5), u<11>(1), u<11>(0), u<11>(0), u<2>(0)},
-                            {u<12>(19), u<12>(7)}, {xdir::local_to_host}),
-              data);
+    host_to_local(m, {u<14>(0), u<6>(0), psm::PSMCT32, u<14>(2048), u<6>(2), p},
+                  {u<11>(0), u<11>(0), u<11>(5), u<11>(1), u<2>(0)}, {u<12>(19), u<12>(7)}, {}, data);
+    EXPECT_EQ(
+        local_to_host(m, {u<14>(2048), u<6>(2), p, u<14>(0), u<6>(0), psm::PSMCT32},
+                      {u<11>(5), u<11>(1), u<11>(0), u<11>(0), u<2>(0)}, {u<12>(19), u<12>(7)}, {xdir::local_to_host}),
+        data);
     EXPECT_THROW(local_to_host(m, b, pos, {u<12>(19), u<12>(7)}, {xdir::host_to_local}), std::invalid_argument);
   }
 }
@@ -63,11 +65,13 @@ TEST(GsMemoryTransfer, LocalToLocalCopiesEveryPairOfEqualSizedFormats) {
         for (std::uint32_t x = 0; x < 21; ++x) expect[y * 21 + x] = m.read_pixel(src, 40 + x, 17 + y);
       const local_memory before = m;
       const bitbltbuf_reg b{u<14>(64), u<6>(3), sp, u<14>(512), u<6>(2), dp};
-      local_to_local(m, b, {u<11>(40), u<11>(17), u<11>(70), u<11>(2), u<2>(0)}, {u<12>(21), u<12>(9)}, {xdir::local_to_local});
+      local_to_local(m, b, {u<11>(40), u<11>(17), u<11>(70), u<11>(2), u<2>(0)}, {u<12>(21), u<12>(9)},
+                     {xdir::local_to_local});
       std::vector<bool> written(256 * 1024 * 2, false);  // nibbles
       for (std::uint32_t y = 0; y < 9; ++y)
         for (std::uint32_t x = 0; x < 21; ++x) {
-          ASSERT_EQ(m.read_pixel(dst, 70 + x, 2 + y), expect[y * 21 + x]) << static_cast<int>(sp) << " -> " << static_cast<int>(dp);
+          ASSERT_EQ(m.read_pixel(dst, 70 + x, 2 + y), expect[y * 21 + x])
+              << static_cast<int>(sp) << " -> " << static_cast<int>(dp);
           const location at = locate(dst, 70 + x, 2 + y);
           for (unsigned n = 0; n < at.bits / 4; ++n) written[(at.byte * 8 + at.bit) / 4 + n] = true;
         }
@@ -94,7 +98,8 @@ TEST(GsMemoryTransfer, DirOrdersAnOverlappingCopy) {
       const bool far_end = vertical ? (dir & 1) != 0 : (dir & 2) != 0;
       for (std::uint32_t i = 0; i < 8; ++i) {
         const std::uint32_t expect = i == 0 ? 100 : far_end ? 100 + i - 1 : 100;
-        ASSERT_EQ(m.read_pixel(b, vertical ? 0 : i, vertical ? i : 0), expect) << "DIR " << dir << (vertical ? " column" : " row") << " pixel " << i;
+        ASSERT_EQ(m.read_pixel(b, vertical ? 0 : i, vertical ? i : 0), expect)
+            << "DIR " << dir << (vertical ? " column" : " row") << " pixel " << i;
       }
     }
 }
@@ -104,11 +109,12 @@ TEST(GsMemoryTransfer, LocalToLocalWrapsAt2048AndRejectsWhatIsNotModelled) {
   const buffer src{u<14>(0), u<6>(32), psm::PSMCT32}, dst{u<14>(8192), u<6>(1), psm::PSMCT32};
   for (std::uint32_t x : {2046u, 2047u, 0u, 1u}) m.write_pixel(src, x, 5, 0xC0DE0000u + x);
   const bitbltbuf_reg b{u<14>(0), u<6>(32), psm::PSMCT32, u<14>(8192), u<6>(1), psm::PSMCT32};
-  local_to_local(m, b, {u<11>(2046), u<11>(5), u<11>(0), u<11>(0), u<2>(0)}, {u<12>(4), u<12>(1)}, {xdir::local_to_local});
+  local_to_local(m, b, {u<11>(2046), u<11>(5), u<11>(0), u<11>(0), u<2>(0)}, {u<12>(4), u<12>(1)},
+                 {xdir::local_to_local});
   const std::uint32_t xs[] = {2046u, 2047u, 0u, 1u};
   for (std::uint32_t i = 0; i < 4; ++i) EXPECT_EQ(m.read_pixel(dst, i, 0), 0xC0DE0000u + xs[i]);
-  EXPECT_THROW(local_to_local(m, {u<14>(0), u<6>(1), psm::PSMCT32, u<14>(64), u<6>(1), psm::PSMCT16}, {}, {u<12>(1), u<12>(1)},
-                              {xdir::local_to_local}),
+  EXPECT_THROW(local_to_local(m, {u<14>(0), u<6>(1), psm::PSMCT32, u<14>(64), u<6>(1), psm::PSMCT16}, {},
+                              {u<12>(1), u<12>(1)}, {xdir::local_to_local}),
                std::invalid_argument);
   EXPECT_THROW(local_to_local(m, b, {}, {u<12>(1), u<12>(1)}, {xdir::host_to_local}), std::invalid_argument);
 }

@@ -24,7 +24,7 @@ fixed::uint<N> u(std::uint32_t v) {
 
 TEST(GsMemoryRegisters, FieldPositionsByHand) {
   const auto b = decode_bitbltbuf(std::uint64_t{0x1234} << 32 | std::uint64_t{10} << 48 | std::uint64_t{0x13} << 56 |
-                                   0x0fffu | std::uint64_t{3} << 16 | std::uint64_t{0x02} << 24);
+                                  0x0fffu | std::uint64_t{3} << 16 | std::uint64_t{0x02} << 24);
   EXPECT_EQ(b.DBP.value(), 0x1234);
   EXPECT_EQ(b.DBW.value(), 10);
   EXPECT_EQ(b.DPSM, psm::PSMT8);
@@ -53,8 +53,8 @@ TEST(GsMemoryRegisters, FieldPositionsByHand) {
 }
 
 TEST(GsMemoryRegisters, ReservedBitsAndUnknownFormatsAreErrors) {
-  EXPECT_THROW(decode_bitbltbuf(std::uint64_t{1} << 14), register_error);           // padding
-  EXPECT_THROW(decode_bitbltbuf(std::uint64_t{0x03} << 56), register_error);        // DPSM 3
+  EXPECT_THROW(decode_bitbltbuf(std::uint64_t{1} << 14), register_error);     // padding
+  EXPECT_THROW(decode_bitbltbuf(std::uint64_t{0x03} << 56), register_error);  // DPSM 3
   EXPECT_THROW(decode_trxpos(std::uint64_t{1} << 11), register_error);
   EXPECT_THROW(decode_trxpos(std::uint64_t{1} << 61), register_error);
   EXPECT_THROW(decode_trxreg(std::uint64_t{1} << 12), register_error);
@@ -64,7 +64,8 @@ TEST(GsMemoryRegisters, ReservedBitsAndUnknownFormatsAreErrors) {
 
 TEST(GsMemoryRegisters, EncodeInvertsDecode) {
   std::mt19937_64 rng(3);
-  const std::uint64_t bitblt_fields = 0x3f3fbfff3f3f3fffull & ~(std::uint64_t{0xc0} << 56) & ~(std::uint64_t{0xc0} << 24);
+  const std::uint64_t bitblt_fields =
+      0x3f3fbfff3f3f3fffull & ~(std::uint64_t{0xc0} << 56) & ~(std::uint64_t{0xc0} << 24);
   for (int i = 0; i < 20000; ++i) {
     const std::uint64_t v = rng();
     auto keep = [&](auto decode, std::uint64_t mask) {
@@ -130,8 +131,8 @@ TEST(GsMemoryClut, Csm1LoadFromUploadedImageEqualsThePalette) {
     for (unsigned k = 0; k < 4; ++k) image[(y * 16 + x) * 4 + k] = static_cast<std::uint8_t>(palette[i] >> (8 * k));
   }
   local_memory m;
-  host_to_local(m, bitbltbuf_reg{u<14>(0), u<6>(0), psm::PSMCT32, u<14>(3000), u<6>(1), psm::PSMCT32},
-                trxpos_reg{}, trxreg_reg{u<12>(16), u<12>(16)}, trxdir_reg{}, image);
+  host_to_local(m, bitbltbuf_reg{u<14>(0), u<6>(0), psm::PSMCT32, u<14>(3000), u<6>(1), psm::PSMCT32}, trxpos_reg{},
+                trxreg_reg{u<12>(16), u<12>(16)}, trxdir_reg{}, image);
   tex0_reg t;
   t.PSM = psm::PSMT8;
   t.CBP = u<14>(3000);
@@ -145,8 +146,8 @@ TEST(GsMemoryClut, Csm1LoadFromUploadedImageEqualsThePalette) {
   std::vector<std::uint8_t> small(8 * 2 * 4);
   for (std::uint32_t i = 0; i < 16; ++i)
     for (unsigned k = 0; k < 4; ++k) small[i * 4 + k] = static_cast<std::uint8_t>(palette[200 + i] >> (8 * k));
-  host_to_local(m, bitbltbuf_reg{u<14>(0), u<6>(0), psm::PSMCT32, u<14>(3004), u<6>(1), psm::PSMCT32},
-                trxpos_reg{}, trxreg_reg{u<12>(8), u<12>(2)}, trxdir_reg{}, small);
+  host_to_local(m, bitbltbuf_reg{u<14>(0), u<6>(0), psm::PSMCT32, u<14>(3004), u<6>(1), psm::PSMCT32}, trxpos_reg{},
+                trxreg_reg{u<12>(8), u<12>(2)}, trxdir_reg{}, small);
   t.PSM = psm::PSMT4;
   t.CBP = u<14>(3004);
   t.CSA = fixed::u5::from_wrapped(3);
@@ -161,9 +162,13 @@ TEST(GsMemoryClut, LoadControlTable) {
   tex0_reg t;
   t.PSM = psm::PSMT8;
   t.CBP = u<14>(64);
-  struct row { unsigned cld, cbp0_before, cbp1_before; bool loads; unsigned cbp0_after, cbp1_after; };
-  const row rows[] = {{0, 0, 0, false, 0, 0},   {1, 0, 0, true, 0, 0},     {2, 0, 0, true, 64, 0},
-                      {3, 0, 0, true, 0, 64},   {4, 64, 0, false, 64, 0},  {4, 5, 0, true, 64, 0},
+  struct row {
+    unsigned cld, cbp0_before, cbp1_before;
+    bool loads;
+    unsigned cbp0_after, cbp1_after;
+  };
+  const row rows[] = {{0, 0, 0, false, 0, 0},   {1, 0, 0, true, 0, 0},    {2, 0, 0, true, 64, 0},
+                      {3, 0, 0, true, 0, 64},   {4, 64, 0, false, 64, 0}, {4, 5, 0, true, 64, 0},
                       {5, 0, 64, false, 0, 64}, {5, 0, 5, true, 0, 64}};
   for (const auto& r : rows) {
     t.CLD = u3::from_wrapped(r.cld);
@@ -191,8 +196,10 @@ TEST(GsMemoryWrap, FourModesAgainstAReference) {
           const auto TW = fixed::u4::from_wrapped(tw);
           const std::int32_t lo = std::min<std::int32_t>(static_cast<std::int32_t>(a), n - 1);
           const std::int32_t hi = std::min<std::int32_t>(static_cast<std::int32_t>(b), n - 1);
-          ASSERT_EQ(wrap_texel(wrap_mode::REPEAT, c, TW, u<10>(a), u<10>(b)), static_cast<std::uint32_t>(((c % n) + n) % n));
-          ASSERT_EQ(wrap_texel(wrap_mode::CLAMP, c, TW, u<10>(a), u<10>(b)), static_cast<std::uint32_t>(std::clamp(c, 0, n - 1)));
+          ASSERT_EQ(wrap_texel(wrap_mode::REPEAT, c, TW, u<10>(a), u<10>(b)),
+                    static_cast<std::uint32_t>(((c % n) + n) % n));
+          ASSERT_EQ(wrap_texel(wrap_mode::CLAMP, c, TW, u<10>(a), u<10>(b)),
+                    static_cast<std::uint32_t>(std::clamp(c, 0, n - 1)));
           if (lo <= hi) {
             ASSERT_EQ(wrap_texel(wrap_mode::REGION_CLAMP, c, TW, u<10>(a), u<10>(b)),
                       static_cast<std::uint32_t>(std::clamp(c, lo, hi)));

@@ -48,24 +48,28 @@ TEST(GsMemoryLayout, FormulationsAgreeOnEveryCoordinateOfAPage) {
 // Values read off the GS User's Manual's section 8 figures by hand (block arrangement of a page,
 // column and pixel order inside a block), not from the tables.
 TEST(GsMemoryLayout, KnownValuesFromTheManualFigures) {
-  struct known { psm p; std::uint32_t x, y, byte; unsigned bit; };
+  struct known {
+    psm p;
+    std::uint32_t x, y, byte;
+    unsigned bit;
+  };
   const known cases[] = {
-      {psm::PSMCT32, 0, 0, 0, 0},       {psm::PSMCT32, 1, 0, 4, 0},      // pixel 1 = word 1
-      {psm::PSMCT32, 0, 1, 8, 0},       {psm::PSMCT32, 2, 0, 16, 0},     // 2×2 word groups
-      {psm::PSMCT32, 0, 2, 64, 0},      {psm::PSMCT32, 8, 0, 256, 0},    // column 1, block 1
-      {psm::PSMCT32, 0, 8, 512, 0},     {psm::PSMCT32, 32, 0, 4096, 0},  // block 2, block 16
-      {psm::PSMCT32, 63, 31, 8188, 0},  {psm::PSMCT32, 64, 0, 8192, 0},  // last word, next page
-      {psm::PSMZ32, 0, 0, 6144, 0},     {psm::PSMZ32, 32, 16, 0, 0},     // Z: quarters swapped
-      {psm::PSMCT16, 8, 0, 2, 0},       {psm::PSMCT16, 1, 0, 4, 0},      // halfwords 1, 2
-      {psm::PSMCT16, 0, 8, 256, 0},     {psm::PSMCT16, 16, 0, 512, 0},   // block 1 below, 2 right
-      {psm::PSMCT16S, 32, 0, 4096, 0},  {psm::PSMCT16S, 0, 32, 1024, 0}, // 16S: blocks 16, 4
-      {psm::PSMZ16, 0, 0, 6144, 0},     {psm::PSMZ16S, 0, 0, 6144, 0},
-      {psm::PSMT8, 1, 0, 4, 0},         {psm::PSMT8, 8, 0, 2, 0},        // byte 0 of word 1; byte 2
-      {psm::PSMT8, 16, 0, 256, 0},      {psm::PSMT8, 0, 16, 512, 0},
-      {psm::PSMT4, 1, 0, 4, 0},         {psm::PSMT4, 8, 0, 1, 0},        // nibble 8 = byte 4 lo; nibble 2
-      {psm::PSMT4, 0, 16, 256, 0},      {psm::PSMT4, 32, 0, 512, 0},
-      {psm::PSMT8H, 1, 0, 7, 0},        {psm::PSMT4HL, 1, 0, 7, 0},      // top byte of word 1
-      {psm::PSMT4HH, 1, 0, 7, 4},       {psm::PSMCT24, 1, 0, 4, 0},
+      {psm::PSMCT32, 0, 0, 0, 0},      {psm::PSMCT32, 1, 0, 4, 0},       // pixel 1 = word 1
+      {psm::PSMCT32, 0, 1, 8, 0},      {psm::PSMCT32, 2, 0, 16, 0},      // 2×2 word groups
+      {psm::PSMCT32, 0, 2, 64, 0},     {psm::PSMCT32, 8, 0, 256, 0},     // column 1, block 1
+      {psm::PSMCT32, 0, 8, 512, 0},    {psm::PSMCT32, 32, 0, 4096, 0},   // block 2, block 16
+      {psm::PSMCT32, 63, 31, 8188, 0}, {psm::PSMCT32, 64, 0, 8192, 0},   // last word, next page
+      {psm::PSMZ32, 0, 0, 6144, 0},    {psm::PSMZ32, 32, 16, 0, 0},      // Z: quarters swapped
+      {psm::PSMCT16, 8, 0, 2, 0},      {psm::PSMCT16, 1, 0, 4, 0},       // halfwords 1, 2
+      {psm::PSMCT16, 0, 8, 256, 0},    {psm::PSMCT16, 16, 0, 512, 0},    // block 1 below, 2 right
+      {psm::PSMCT16S, 32, 0, 4096, 0}, {psm::PSMCT16S, 0, 32, 1024, 0},  // 16S: blocks 16, 4
+      {psm::PSMZ16, 0, 0, 6144, 0},    {psm::PSMZ16S, 0, 0, 6144, 0},
+      {psm::PSMT8, 1, 0, 4, 0},        {psm::PSMT8, 8, 0, 2, 0},  // byte 0 of word 1; byte 2
+      {psm::PSMT8, 16, 0, 256, 0},     {psm::PSMT8, 0, 16, 512, 0},
+      {psm::PSMT4, 1, 0, 4, 0},        {psm::PSMT4, 8, 0, 1, 0},  // nibble 8 = byte 4 lo; nibble 2
+      {psm::PSMT4, 0, 16, 256, 0},     {psm::PSMT4, 32, 0, 512, 0},
+      {psm::PSMT8H, 1, 0, 7, 0},       {psm::PSMT4HL, 1, 0, 7, 0},  // top byte of word 1
+      {psm::PSMT4HH, 1, 0, 7, 4},      {psm::PSMCT24, 1, 0, 4, 0},
   };
   for (const auto& c : cases) {
     const location at = locate(buf(c.p, 0, page_size(layout_of(c.p)).w / 64), c.x, c.y);
@@ -120,7 +124,8 @@ TEST(GsMemoryLayout, PageOverlayIsTheChannelFetchMapping) {
         const location tv = locate(buf(view, 0, pv.w / 64), i % pv.w, i / pv.w);
         const location tb = locate(buf(base, 0, pb.w / 64), ov[i].x, ov[i].y);
         const std::uint32_t word_bit = tb.byte * 8 + tb.bit - upper_shift(base);
-        ASSERT_EQ(tv.byte * 8 + tv.bit, word_bit + ov[i].bit) << static_cast<int>(base) << " / " << static_cast<int>(view);
+        ASSERT_EQ(tv.byte * 8 + tv.bit, word_bit + ov[i].bit)
+            << static_cast<int>(base) << " / " << static_cast<int>(view);
       }
     }
 }
@@ -163,9 +168,16 @@ TEST(GsMemoryPixels, RoundTripAndNoOtherBitChanges) {
 TEST(GsMemoryPixels, UpperFormatsAliasTheTopBitsOfPsmct32Words) {
   std::mt19937 rng(7);
   local_memory m;
-  struct alias { psm p; psm base; std::uint32_t field; unsigned shift; };
-  const alias cases[] = {{psm::PSMT8H, psm::PSMCT32, 0xffu, 24}, {psm::PSMT4HL, psm::PSMCT32, 0xfu, 24},
-                         {psm::PSMT4HH, psm::PSMCT32, 0xfu, 28}, {psm::PSMCT24, psm::PSMCT32, 0xffffffu, 0},
+  struct alias {
+    psm p;
+    psm base;
+    std::uint32_t field;
+    unsigned shift;
+  };
+  const alias cases[] = {{psm::PSMT8H, psm::PSMCT32, 0xffu, 24},
+                         {psm::PSMT4HL, psm::PSMCT32, 0xfu, 24},
+                         {psm::PSMT4HH, psm::PSMCT32, 0xfu, 28},
+                         {psm::PSMCT24, psm::PSMCT32, 0xffffffu, 0},
                          {psm::PSMZ24, psm::PSMZ32, 0xffffffu, 0}};
   for (const auto& c : cases)
     for (std::uint32_t y = 0; y < 64; ++y)

@@ -38,7 +38,8 @@ std::vector<row> table_after(const std::string& heading) {
     std::stringstream cs(line.substr(1));
     for (std::string c; std::getline(cs, c, '|');) cells.push_back(c.substr(1, c.size() - 2));
     if (cells.size() < 3 || cells[0].empty() || !std::isdigit(static_cast<unsigned char>(cells[0][0]))) continue;
-    rows.push_back({static_cast<std::uint32_t>(std::stoul(cells[0])), static_cast<std::uint32_t>(std::stoul(cells[1])), cells[2]});
+    rows.push_back(
+        {static_cast<std::uint32_t>(std::stoul(cells[0])), static_cast<std::uint32_t>(std::stoul(cells[1])), cells[2]});
   }
   return rows;
 }
@@ -64,14 +65,21 @@ TEST(DocsLayout, HeaderFieldsSitWhereTheTableSays) {
   d.screenshot.assign(2 * 3 * 4, 0);
   const auto b = gs::dump::write_dump(d);
   auto le32 = [&](std::uint32_t at) {
-    return std::uint32_t{b[at]} | std::uint32_t{b[at + 1]} << 8 | std::uint32_t{b[at + 2]} << 16 | std::uint32_t{b[at + 3]} << 24;
+    return std::uint32_t{b[at]} | std::uint32_t{b[at + 1]} << 8 | std::uint32_t{b[at + 2]} << 16 |
+           std::uint32_t{b[at + 3]} << 24;
   };
   // What each documented field holds for this dump (header_size = 36 + 4 + 24).
-  const std::map<std::string, std::uint32_t> want{
-      {"0xFFFFFFFF (marks the new layout)", 0xFFFFFFFFu}, {"header_size: 36 + serial size + screenshot size", 64},
-      {"state_version", 8}, {"state_size", 4194760}, {"serial_offset (from byte 8; 36)", 36}, {"serial_size", 4},
-      {"crc (the game's CRC)", 0x12345678}, {"screenshot_width", 2}, {"screenshot_height", 3},
-      {"screenshot_offset (from byte 8; 36 + serial size)", 40}, {"screenshot_size (width × height × 4, RGBA)", 24}};
+  const std::map<std::string, std::uint32_t> want{{"0xFFFFFFFF (marks the new layout)", 0xFFFFFFFFu},
+                                                  {"header_size: 36 + serial size + screenshot size", 64},
+                                                  {"state_version", 8},
+                                                  {"state_size", 4194760},
+                                                  {"serial_offset (from byte 8; 36)", 36},
+                                                  {"serial_size", 4},
+                                                  {"crc (the game's CRC)", 0x12345678},
+                                                  {"screenshot_width", 2},
+                                                  {"screenshot_height", 3},
+                                                  {"screenshot_offset (from byte 8; 36 + serial size)", 40},
+                                                  {"screenshot_size (width × height × 4, RGBA)", 24}};
   const auto rows = table_after("## The file");
   ASSERT_EQ(rows.size(), want.size());
   for (const row& r : rows) {

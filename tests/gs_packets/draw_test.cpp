@@ -32,7 +32,9 @@ constexpr std::uint64_t frame(std::uint64_t fbp, std::uint64_t fbw, std::uint64_
 constexpr std::uint64_t scissor(std::uint64_t x0, std::uint64_t x1, std::uint64_t y0, std::uint64_t y1) {
   return x0 | x1 << 16 | y0 << 32 | y1 << 48;
 }
-constexpr std::uint64_t xyz(std::uint64_t x16, std::uint64_t y16, std::uint64_t z = 0) { return x16 | y16 << 16 | z << 32; }
+constexpr std::uint64_t xyz(std::uint64_t x16, std::uint64_t y16, std::uint64_t z = 0) {
+  return x16 | y16 << 16 | z << 32;
+}
 constexpr std::uint64_t rgbaq(std::uint64_t r, std::uint64_t g, std::uint64_t b, std::uint64_t a) {
   return r | g << 8 | b << 16 | a << 24 | std::uint64_t{0x3F800000} << 32;
 }
@@ -96,7 +98,10 @@ TEST(Draw, FlatSpriteFillsCeilOfItsCornersRightAndBottomExcluded) {
 TEST(Draw, BitsOutsideTheFieldsAreIgnoredReservedFieldValuesNamed) {
   fixture f;
   // FRAME_1 with bits 9 and 22 set (between FBP / FBW / PSM: no field there) draws as FRAME_1 = FBP 0, FBW 1.
-  run(f.it, {{FRAME_1, frame(0, 1) | 1 << 9 | 1 << 22}, {PRIM, SPRITE}, {RGBAQ, rgbaq(6, 6, 6, 6)}, {XYZ2, xyz(0, 0)},
+  run(f.it, {{FRAME_1, frame(0, 1) | 1 << 9 | 1 << 22},
+             {PRIM, SPRITE},
+             {RGBAQ, rgbaq(6, 6, 6, 6)},
+             {XYZ2, xyz(0, 0)},
              {XYZ2, xyz(16, 16)}});
   EXPECT_EQ(f.px(0, 0), 0x06060606u);
   // ALPHA_1.A = 3 is reserved: the primitive is not drawn and the register is named.
@@ -116,8 +121,12 @@ TEST(Draw, ZbufBitsOutsideTheFieldsAreIgnoredAReservedPsmNamed) {
   fixture f;
   const mem::buffer zb{fixed::uint<14>::from_wrapped(16 * 32), fixed::uint<6>::from_wrapped(1), mem::psm::PSMZ32};
   const std::uint64_t always = 1 << 16 | 1 << 17;
-  run(f.it, {{ZBUF_1, 16 | 1 << 9 | std::uint64_t{1} << 28 | std::uint64_t{1} << 40}, {TEST_1, always}, {PRIM, SPRITE},
-             {RGBAQ, rgbaq(7, 7, 7, 7)}, {XYZ2, xyz(0, 0, 321)}, {XYZ2, xyz(16, 16, 321)}});
+  run(f.it, {{ZBUF_1, 16 | 1 << 9 | std::uint64_t{1} << 28 | std::uint64_t{1} << 40},
+             {TEST_1, always},
+             {PRIM, SPRITE},
+             {RGBAQ, rgbaq(7, 7, 7, 7)},
+             {XYZ2, xyz(0, 0, 321)},
+             {XYZ2, xyz(16, 16, 321)}});
   EXPECT_EQ(f.px(0, 0), 0x07070707u);
   EXPECT_EQ(f.px(0, 0, zb), 321u);
   mem::local_memory m;
@@ -133,13 +142,19 @@ TEST(Draw, XyoffsetAndScissorPlaceAndClipThePrimitive) {
   fixture f;
   // OFX = 100 px, OFY = 50 px: vertex (101, 52) .. (103, 53) lands on window (1, 2) .. (3, 3).
   run(f.it, {{XYOFFSET_1, std::uint64_t{100 * 16} | std::uint64_t{50 * 16} << 32},
-             {PRIM, SPRITE}, {RGBAQ, rgbaq(9, 9, 9, 9)}, {XYZ2, xyz(101 * 16, 52 * 16)}, {XYZ2, xyz(103 * 16, 53 * 16)}});
+             {PRIM, SPRITE},
+             {RGBAQ, rgbaq(9, 9, 9, 9)},
+             {XYZ2, xyz(101 * 16, 52 * 16)},
+             {XYZ2, xyz(103 * 16, 53 * 16)}});
   EXPECT_EQ(f.px(1, 2), 0x09090909u);
   EXPECT_EQ(f.px(2, 2), 0x09090909u);
   EXPECT_EQ(f.count_nonzero(), 2);
   // SCISSOR 2..3 × 0..63 clips a 0..8 sprite to columns 2 and 3.
   fixture g;
-  run(g.it, {{SCISSOR_1, scissor(2, 3, 0, 63)}, {PRIM, SPRITE}, {RGBAQ, rgbaq(5, 5, 5, 5)}, {XYZ2, xyz(0, 0)},
+  run(g.it, {{SCISSOR_1, scissor(2, 3, 0, 63)},
+             {PRIM, SPRITE},
+             {RGBAQ, rgbaq(5, 5, 5, 5)},
+             {XYZ2, xyz(0, 0)},
              {XYZ2, xyz(8 * 16, 16)}});
   EXPECT_EQ(g.px(2, 0), 0x05050505u);
   EXPECT_EQ(g.px(3, 0), 0x05050505u);
@@ -149,14 +164,23 @@ TEST(Draw, XyoffsetAndScissorPlaceAndClipThePrimitive) {
 TEST(Draw, ContextTwoUsesItsOwnFrameOffsetAndScissorAlsoThroughPrmode) {
   fixture f;
   const mem::buffer fb8{fixed::uint<14>::from_wrapped(8 * 32), fixed::uint<6>::from_wrapped(1), mem::psm::PSMCT32};
-  run(f.it, {{FRAME_2, frame(8, 1)}, {SCISSOR_2, scissor(0, 63, 0, 63)}, {XYOFFSET_2, 16},  // OFX 1 px
-             {PRIM, SPRITE | CTXT}, {RGBAQ, rgbaq(7, 7, 7, 7)}, {XYZ2, xyz(16, 0)}, {XYZ2, xyz(48, 16)}});
+  run(f.it, {{FRAME_2, frame(8, 1)},
+             {SCISSOR_2, scissor(0, 63, 0, 63)},
+             {XYOFFSET_2, 16},  // OFX 1 px
+             {PRIM, SPRITE | CTXT},
+             {RGBAQ, rgbaq(7, 7, 7, 7)},
+             {XYZ2, xyz(16, 0)},
+             {XYZ2, xyz(48, 16)}});
   EXPECT_EQ(f.count_nonzero(), 0);  // context 1's frame untouched
   EXPECT_EQ(f.px(0, 0, fb8), 0x07070707u);
   EXPECT_EQ(f.px(1, 0, fb8), 0x07070707u);
   EXPECT_EQ(f.count_nonzero(fb8), 2);
   // PRMODECONT.AC = 0: CTXT comes from PRMODE, PRIM's own CTXT bit is ignored.
-  run(f.it, {{PRMODECONT, 0}, {PRMODE, CTXT}, {PRIM, SPRITE}, {RGBAQ, rgbaq(3, 3, 3, 3)}, {XYZ2, xyz(16, 32)},
+  run(f.it, {{PRMODECONT, 0},
+             {PRMODE, CTXT},
+             {PRIM, SPRITE},
+             {RGBAQ, rgbaq(3, 3, 3, 3)},
+             {XYZ2, xyz(16, 32)},
              {XYZ2, xyz(32, 48)}});
   EXPECT_EQ(f.px(0, 2, fb8), 0x03030303u);
   EXPECT_EQ(f.count_nonzero(), 0);
@@ -166,10 +190,18 @@ TEST(Draw, DepthTestGequalGreaterAndZmsk) {
   fixture f;
   const mem::buffer zb{fixed::uint<14>::from_wrapped(16 * 32), fixed::uint<6>::from_wrapped(1), mem::psm::PSMZ32};
   const std::uint64_t gequal = 1 << 16 | 2 << 17, greater = 1 << 16 | 3 << 17;
-  run(f.it, {{ZBUF_1, 16}, {TEST_1, gequal}, {PRIM, SPRITE},
-             {RGBAQ, rgbaq(255, 0, 0, 1)}, {XYZ2, xyz(0, 0, 100)}, {XYZ2, xyz(64, 64, 100)},    // A: 0..3, Z 100
-             {RGBAQ, rgbaq(0, 255, 0, 1)}, {XYZ2, xyz(32, 32, 50)}, {XYZ2, xyz(96, 96, 50)},    // B: 2..5, Z 50
-             {RGBAQ, rgbaq(0, 0, 255, 1)}, {XYZ2, xyz(48, 48, 200)}, {XYZ2, xyz(80, 80, 200)}}); // C: 3..4, Z 200
+  run(f.it, {{ZBUF_1, 16},
+             {TEST_1, gequal},
+             {PRIM, SPRITE},
+             {RGBAQ, rgbaq(255, 0, 0, 1)},
+             {XYZ2, xyz(0, 0, 100)},
+             {XYZ2, xyz(64, 64, 100)},  // A: 0..3, Z 100
+             {RGBAQ, rgbaq(0, 255, 0, 1)},
+             {XYZ2, xyz(32, 32, 50)},
+             {XYZ2, xyz(96, 96, 50)},  // B: 2..5, Z 50
+             {RGBAQ, rgbaq(0, 0, 255, 1)},
+             {XYZ2, xyz(48, 48, 200)},
+             {XYZ2, xyz(80, 80, 200)}});  // C: 3..4, Z 200
   EXPECT_EQ(f.px(1, 1), 0x010000FFu);
   EXPECT_EQ(f.px(2, 2), 0x010000FFu);  // B's 50 < A's 100 fails GEQUAL
   EXPECT_EQ(f.px(5, 5), 0x0100FF00u);
@@ -182,8 +214,11 @@ TEST(Draw, DepthTestGequalGreaterAndZmsk) {
   // GREATER with an equal Z fails; GEQUAL passes; ZMSK = 1 leaves Z as it was.
   run(f.it, {{TEST_1, greater}, {RGBAQ, rgbaq(1, 1, 1, 1)}, {XYZ2, xyz(16, 16, 100)}, {XYZ2, xyz(32, 32, 100)}});
   EXPECT_EQ(f.px(1, 1), 0x010000FFu);
-  run(f.it, {{TEST_1, gequal}, {ZBUF_1, 16 | std::uint64_t{1} << 32}, {RGBAQ, rgbaq(2, 2, 2, 2)},
-             {XYZ2, xyz(16, 16, 300)}, {XYZ2, xyz(32, 32, 300)}});
+  run(f.it, {{TEST_1, gequal},
+             {ZBUF_1, 16 | std::uint64_t{1} << 32},
+             {RGBAQ, rgbaq(2, 2, 2, 2)},
+             {XYZ2, xyz(16, 16, 300)},
+             {XYZ2, xyz(32, 32, 300)}});
   EXPECT_EQ(f.px(1, 1), 0x02020202u);
   EXPECT_EQ(f.px(1, 1, zb), 100u);
 }
@@ -200,12 +235,14 @@ void expect_gouraud_triangle_plane_on_the_fill_rules_pixels(gs::gouraud_setup se
   writes ws{{XYOFFSET_1, std::uint64_t{2048 * 16} | std::uint64_t{2048 * 16} << 32}, {PRIM, TRIANGLE | IIP}};
   for (std::size_t k = 0; k < 3; ++k) {
     ws.push_back({RGBAQ, rgbaq(c[k].r.value(), c[k].g.value(), c[k].b.value(), c[k].a.value())});
-    ws.push_back({XYZ2, xyz(static_cast<std::uint64_t>(w[k][0] + 2048 * 16), static_cast<std::uint64_t>(w[k][1] + 2048 * 16))});
+    ws.push_back(
+        {XYZ2, xyz(static_cast<std::uint64_t>(w[k][0] + 2048 * 16), static_cast<std::uint64_t>(w[k][1] + 2048 * 16))});
   }
   run(f.it, ws);
   // Reference pixel: the top-left pixel, (ceil 2.25, ceil 1.5) = (3, 2), in the 2048-offset space.
-  const auto plane = gs::gouraud_triangle({w[0][0] + 32768, w[0][1] + 32768, c[0]}, {w[1][0] + 32768, w[1][1] + 32768, c[1]},
-                                          {w[2][0] + 32768, w[2][1] + 32768, c[2]}, 3 + 2048, 2 + 2048);
+  const auto plane =
+      gs::gouraud_triangle({w[0][0] + 32768, w[0][1] + 32768, c[0]}, {w[1][0] + 32768, w[1][1] + 32768, c[1]},
+                           {w[2][0] + 32768, w[2][1] + 32768, c[2]}, 3 + 2048, 2 + 2048);
   ASSERT_TRUE(plane);
   const gs::triangle_setup t = gs::setup_triangle({gs::xy124{36, 24}, gs::xy124{332, 96}, gs::xy124{88, 276}});
   int covered = 0;
@@ -214,7 +251,8 @@ void expect_gouraud_triangle_plane_on_the_fill_rules_pixels(gs::gouraud_setup se
       std::uint32_t want = 0;
       if (gs::covers(t, x, y)) {
         const gs::fragment_colour cf = gs::gouraud_colour(*plane, x + 2048, y + 2048, setup);
-        want = gs::rgba8{gs::integer_part(cf.r), gs::integer_part(cf.g), gs::integer_part(cf.b), gs::integer_part(cf.a)}.to_u32();
+        want = gs::rgba8{gs::integer_part(cf.r), gs::integer_part(cf.g), gs::integer_part(cf.b), gs::integer_part(cf.a)}
+                   .to_u32();
         ++covered;
       }
       ASSERT_EQ(f.px(x, y), want) << x << "," << y;
@@ -239,10 +277,10 @@ TEST(Draw, FlatRightTriangleCoversTheTopLeftRulesTenPixels) {
 }
 
 TEST(Draw, VertexQueueStripFanListAndXyz3) {
-  const writes square_strip{{PRIM, STRIP}, {RGBAQ, rgbaq(1, 1, 1, 1)}, {XYZ2, xyz(0, 0)}, {XYZ2, xyz(128, 0)},
-                            {XYZ2, xyz(0, 128)}, {XYZ2, xyz(128, 128)}};
-  const writes square_fan{{PRIM, FAN}, {RGBAQ, rgbaq(1, 1, 1, 1)}, {XYZ2, xyz(0, 0)}, {XYZ2, xyz(128, 0)},
-                          {XYZ2, xyz(128, 128)}, {XYZ2, xyz(0, 128)}};
+  const writes square_strip{{PRIM, STRIP},       {RGBAQ, rgbaq(1, 1, 1, 1)}, {XYZ2, xyz(0, 0)},
+                            {XYZ2, xyz(128, 0)}, {XYZ2, xyz(0, 128)},        {XYZ2, xyz(128, 128)}};
+  const writes square_fan{{PRIM, FAN},         {RGBAQ, rgbaq(1, 1, 1, 1)}, {XYZ2, xyz(0, 0)},
+                          {XYZ2, xyz(128, 0)}, {XYZ2, xyz(128, 128)},      {XYZ2, xyz(0, 128)}};
   for (const writes& w : {square_strip, square_fan}) {
     fixture f;
     run(f.it, w);
@@ -252,13 +290,21 @@ TEST(Draw, VertexQueueStripFanListAndXyz3) {
     EXPECT_EQ(f.count_nonzero(), 64);
   }
   fixture list;  // TRIANGLE: the fourth vertex starts the next triangle; x + y < 8 is 8 + 7 + ... + 1 = 36
-  run(list.it, {{PRIM, TRIANGLE}, {RGBAQ, rgbaq(1, 1, 1, 1)}, {XYZ2, xyz(0, 0)}, {XYZ2, xyz(128, 0)},
-                {XYZ2, xyz(0, 128)}, {XYZ2, xyz(128, 128)}});
+  run(list.it, {{PRIM, TRIANGLE},
+                {RGBAQ, rgbaq(1, 1, 1, 1)},
+                {XYZ2, xyz(0, 0)},
+                {XYZ2, xyz(128, 0)},
+                {XYZ2, xyz(0, 128)},
+                {XYZ2, xyz(128, 128)}});
   EXPECT_EQ(list.it.primitives_drawn(), 1u);
   EXPECT_EQ(list.count_nonzero(), 36);
   fixture xyz3;  // the third vertex through XYZ3: only the strip's second triangle, x + y >= 8: 64 − 36
-  run(xyz3.it, {{PRIM, STRIP}, {RGBAQ, rgbaq(1, 1, 1, 1)}, {XYZ2, xyz(0, 0)}, {XYZ2, xyz(128, 0)},
-                {XYZ3, xyz(0, 128)}, {XYZ2, xyz(128, 128)}});
+  run(xyz3.it, {{PRIM, STRIP},
+                {RGBAQ, rgbaq(1, 1, 1, 1)},
+                {XYZ2, xyz(0, 0)},
+                {XYZ2, xyz(128, 0)},
+                {XYZ3, xyz(0, 128)},
+                {XYZ2, xyz(128, 128)}});
   EXPECT_EQ(xyz3.it.primitives_drawn(), 1u);
   EXPECT_EQ(xyz3.count_nonzero(), 28);
   EXPECT_EQ(xyz3.px(7, 1), 0x01010101u);
@@ -271,13 +317,17 @@ TEST(Draw, TexturedSpriteReadsPsmt8ThroughTheClutLoadedOnTex0) {
   // The 16×16 PSMT8 texture (index y·16 + x) at block 2048, TBW 2; the CLUT image, PSMCT32 16×16, at
   // block 4096, CLUT raster position p holding clut_word(p).
   const writes tex_upload{{0x50, std::uint64_t{2048} << 32 | std::uint64_t{2} << 48 | std::uint64_t{0x13} << 56},
-                          {0x51, 0}, {0x52, 16 | std::uint64_t{16} << 32}, {0x53, 0}};
+                          {0x51, 0},
+                          {0x52, 16 | std::uint64_t{16} << 32},
+                          {0x53, 0}};
   pb.ad(tex_upload);
   std::vector<std::uint8_t> idx(256);
   for (unsigned i = 0; i < 256; ++i) idx[i] = static_cast<std::uint8_t>(i);
   pb.image(idx);
-  const writes clut_upload{{0x50, std::uint64_t{4096} << 32 | std::uint64_t{1} << 48}, {0x51, 0},
-                           {0x52, 16 | std::uint64_t{16} << 32}, {0x53, 0}};
+  const writes clut_upload{{0x50, std::uint64_t{4096} << 32 | std::uint64_t{1} << 48},
+                           {0x51, 0},
+                           {0x52, 16 | std::uint64_t{16} << 32},
+                           {0x53, 0}};
   pb.ad(clut_upload);
   std::vector<std::uint8_t> words;
   for (unsigned p = 0; p < 256; ++p)
@@ -285,12 +335,13 @@ TEST(Draw, TexturedSpriteReadsPsmt8ThroughTheClutLoadedOnTex0) {
   pb.image(words);
   // TEX0: TBP0 2048, TBW 2 (bit 14), PSMT8 (bit 20), TW = TH = 4, TCC = RGBA (bit 34), TFX = DECAL
   // (bit 35), CBP 4096 (bit 37), CPSM PSMCT32, CSM1, CLD = 1 (bit 61).
-  const std::uint64_t tex0 = 2048 | 2 << 14 | std::uint64_t{0x13} << 20 | std::uint64_t{4} << 26 | std::uint64_t{4} << 30 |
-                             std::uint64_t{1} << 34 | std::uint64_t{1} << 35 | std::uint64_t{4096} << 37 |
-                             std::uint64_t{1} << 61;
+  const std::uint64_t tex0 = 2048 | 2 << 14 | std::uint64_t{0x13} << 20 | std::uint64_t{4} << 26 |
+                             std::uint64_t{4} << 30 | std::uint64_t{1} << 34 | std::uint64_t{1} << 35 |
+                             std::uint64_t{4096} << 37 | std::uint64_t{1} << 61;
   // UV (0.5, 0.5) .. (16.5, 16.5) over pixels 0..15: pixel x samples texel x (nearest, TEX1 = 0).
-  const writes draw{{TEX0_1, tex0}, {TEX1_1, 0}, {PRIM, SPRITE | TME | FST}, {RGBAQ, rgbaq(128, 128, 128, 128)},
-                    {UV, 8 | 8 << 16}, {XYZ2, xyz(0, 0)}, {UV, 264 | 264 << 16}, {XYZ2, xyz(256, 256)}};
+  const writes draw{
+      {TEX0_1, tex0},    {TEX1_1, 0},       {PRIM, SPRITE | TME | FST}, {RGBAQ, rgbaq(128, 128, 128, 128)},
+      {UV, 8 | 8 << 16}, {XYZ2, xyz(0, 0)}, {UV, 264 | 264 << 16},      {XYZ2, xyz(256, 256)}};
   pb.ad(draw, true);
   const auto bytes = pb.bytes();
   for (const gif_event& e : decode_gif(bytes)) f.it.apply(e, 16u * e.offset);
@@ -307,23 +358,33 @@ TEST(Draw, Psmt8ThroughASixteenBitClutIsWidenedWithTexa) {
   // The 16×16 PSMT8 texture (index y·16 + x) at block 2048, TBW 2; a PSMCT16 CLUT image 16×16 at block
   // 4096 whose raster position p holds (p & 31) | 0x8000 for odd p (red p & 31, A bit set), p << 5 for
   // even p (green, A bit clear). TEXA TA0 0x11, TA1 0x99, AEM 0.
-  pb.ad(writes{{0x50, std::uint64_t{2048} << 32 | std::uint64_t{2} << 48 | std::uint64_t{0x13} << 56}, {0x51, 0},
-               {0x52, 16 | std::uint64_t{16} << 32}, {0x53, 0}});
+  pb.ad(writes{{0x50, std::uint64_t{2048} << 32 | std::uint64_t{2} << 48 | std::uint64_t{0x13} << 56},
+               {0x51, 0},
+               {0x52, 16 | std::uint64_t{16} << 32},
+               {0x53, 0}});
   std::vector<std::uint8_t> idx(256);
   for (unsigned i = 0; i < 256; ++i) idx[i] = static_cast<std::uint8_t>(i);
   pb.image(idx);
-  pb.ad(writes{{0x50, std::uint64_t{4096} << 32 | std::uint64_t{1} << 48 | std::uint64_t{2} << 56}, {0x51, 0},
-               {0x52, 16 | std::uint64_t{16} << 32}, {0x53, 0}});
+  pb.ad(writes{{0x50, std::uint64_t{4096} << 32 | std::uint64_t{1} << 48 | std::uint64_t{2} << 56},
+               {0x51, 0},
+               {0x52, 16 | std::uint64_t{16} << 32},
+               {0x53, 0}});
   auto half = [](unsigned p) { return p % 2 == 1 ? (p & 31u) | 0x8000u : (p & 31u) << 5; };
   std::vector<std::uint8_t> halves;
-  for (unsigned p = 0; p < 256; ++p) halves.push_back(static_cast<std::uint8_t>(half(p))), halves.push_back(static_cast<std::uint8_t>(half(p) >> 8));
+  for (unsigned p = 0; p < 256; ++p)
+    halves.push_back(static_cast<std::uint8_t>(half(p))), halves.push_back(static_cast<std::uint8_t>(half(p) >> 8));
   pb.image(halves);
   // TEX0 as the PSMCT32-CLUT test but CPSM = PSMCT16 (2, bit 51).
-  const std::uint64_t tex0 = 2048 | 2 << 14 | std::uint64_t{0x13} << 20 | std::uint64_t{4} << 26 | std::uint64_t{4} << 30 |
-                             std::uint64_t{1} << 34 | std::uint64_t{1} << 35 | std::uint64_t{4096} << 37 |
-                             std::uint64_t{2} << 51 | std::uint64_t{1} << 61;
-  pb.ad(writes{{0x3B, 0x11 | std::uint64_t{0x99} << 32}, {TEX0_1, tex0}, {PRIM, SPRITE | TME | FST}, {UV, 8 | 8 << 16},
-               {XYZ2, xyz(0, 0)}, {UV, 264 | 264 << 16}, {XYZ2, xyz(256, 256)}},
+  const std::uint64_t tex0 = 2048 | 2 << 14 | std::uint64_t{0x13} << 20 | std::uint64_t{4} << 26 |
+                             std::uint64_t{4} << 30 | std::uint64_t{1} << 34 | std::uint64_t{1} << 35 |
+                             std::uint64_t{4096} << 37 | std::uint64_t{2} << 51 | std::uint64_t{1} << 61;
+  pb.ad(writes{{0x3B, 0x11 | std::uint64_t{0x99} << 32},
+               {TEX0_1, tex0},
+               {PRIM, SPRITE | TME | FST},
+               {UV, 8 | 8 << 16},
+               {XYZ2, xyz(0, 0)},
+               {UV, 264 | 264 << 16},
+               {XYZ2, xyz(256, 256)}},
         true);
   const auto bytes = pb.bytes();
   for (const gif_event& e : decode_gif(bytes)) f.it.apply(e, 16u * e.offset);
@@ -340,16 +401,23 @@ TEST(Draw, SixteenBitTexelsTakeTheirAlphaFromTexa) {
   fixture f;
   packet_builder pb;
   // Three PSMCT16 texels at block 2048: 0x801F (red, A bit 1), 0x0000 (black, A bit 0), 0x03E0 (green).
-  const writes upload{{0x50, std::uint64_t{2048} << 32 | std::uint64_t{1} << 48 | std::uint64_t{2} << 56}, {0x51, 0},
-                      {0x52, 3 | std::uint64_t{1} << 32}, {0x53, 0}};
+  const writes upload{{0x50, std::uint64_t{2048} << 32 | std::uint64_t{1} << 48 | std::uint64_t{2} << 56},
+                      {0x51, 0},
+                      {0x52, 3 | std::uint64_t{1} << 32},
+                      {0x53, 0}};
   pb.ad(upload);
   const std::vector<std::uint8_t> texels{0x1F, 0x80, 0x00, 0x00, 0xE0, 0x03};
   pb.image(texels);
   // TEXA TA0 0x40, AEM 1 (bit 15), TA1 0x90 (bit 32); TEX0 PSMCT16, TW 2, TH 0, TCC RGBA, DECAL.
   const std::uint64_t tex0 = 2048 | 1 << 14 | std::uint64_t{2} << 20 | std::uint64_t{2} << 26 | std::uint64_t{1} << 34 |
                              std::uint64_t{1} << 35;
-  const writes draw{{0x3B, 0x40 | 1 << 15 | std::uint64_t{0x90} << 32}, {TEX0_1, tex0}, {PRIM, SPRITE | TME | FST},
-                    {UV, 8 | 8 << 16}, {XYZ2, xyz(0, 0)}, {UV, 56 | 24 << 16}, {XYZ2, xyz(48, 16)}};
+  const writes draw{{0x3B, 0x40 | 1 << 15 | std::uint64_t{0x90} << 32},
+                    {TEX0_1, tex0},
+                    {PRIM, SPRITE | TME | FST},
+                    {UV, 8 | 8 << 16},
+                    {XYZ2, xyz(0, 0)},
+                    {UV, 56 | 24 << 16},
+                    {XYZ2, xyz(48, 16)}};
   pb.ad(draw, true);
   const auto bytes = pb.bytes();
   for (const gif_event& e : decode_gif(bytes)) f.it.apply(e, 16u * e.offset);
@@ -363,8 +431,8 @@ TEST(Draw, SixteenBitTexelsTakeTheirAlphaFromTexa) {
 TEST(Draw, AClutThatCouldNotBeLoadedStaysUnmodelledUntilALoadSucceeds) {
   // PSMT8 4×4 texture, CBP 4096; CLD = 6 (reserved: refused), then CLD = 0 (no load: still refused), then
   // CLD = 1 (a CSM1 PSMCT32 load: drawn).
-  const std::uint64_t t8 = 2048 | 2 << 14 | std::uint64_t{0x13} << 20 | std::uint64_t{2} << 26 | std::uint64_t{2} << 30 |
-                           std::uint64_t{4096} << 37;
+  const std::uint64_t t8 = 2048 | 2 << 14 | std::uint64_t{0x13} << 20 | std::uint64_t{2} << 26 |
+                           std::uint64_t{2} << 30 | std::uint64_t{4096} << 37;
   const writes sprite{{PRIM, SPRITE | TME | FST}, {UV, 0}, {XYZ2, xyz(0, 0)}, {UV, 64 | 64 << 16}, {XYZ2, xyz(64, 64)}};
   mem::local_memory m;
   interpreter it(m, {.skip_unmodelled = true});
@@ -389,15 +457,24 @@ TEST(Draw, UnmodelledFeaturesAreNamedAndSkipped) {
       {{{PRIM, SPRITE | FGE}, {XYZ2, xyz(0, 0)}, {XYZ2, xyz(32, 32)}}, "SPRITE: PRIM.FGE = 1 (fog)"},
       {{{PRIM, TRIANGLE | AA1}, {XYZ2, xyz(0, 0)}, {XYZ2, xyz(32, 0)}, {XYZ2, xyz(0, 32)}},
        "TRIANGLE: PRIM.AA1 = 1 (anti-aliasing)"},
-      {{{PRIM, 1}, {XYZ2, xyz(0, 0)}, {XYZ2, xyz(32, 32)}}, "LINE: PRIM.PRIM = LINE (points and lines are not modelled)"},
+      {{{PRIM, 1}, {XYZ2, xyz(0, 0)}, {XYZ2, xyz(32, 32)}},
+       "LINE: PRIM.PRIM = LINE (points and lines are not modelled)"},
       // TEX1: MXL 1 (bit 2), MMIN NEAREST_MIPMAP_NEAREST (2, bit 6), LCM 1, K = +1.0 (16, bit 32): minified.
-      {{{TEX0_1, std::uint64_t{4} << 26 | std::uint64_t{4} << 30}, {TEX1_1, 1 | 1 << 2 | 2 << 6 | std::uint64_t{16} << 32},
-        {PRIM, SPRITE | TME | FST}, {XYZ2, xyz(0, 0)}, {XYZ2, xyz(32, 32)}},
+      {{{TEX0_1, std::uint64_t{4} << 26 | std::uint64_t{4} << 30},
+        {TEX1_1, 1 | 1 << 2 | 2 << 6 | std::uint64_t{16} << 32},
+        {PRIM, SPRITE | TME | FST},
+        {XYZ2, xyz(0, 0)},
+        {XYZ2, xyz(32, 32)}},
        "SPRITE: context 1 mip-mapping (TEX1.MMIN = 2, MXL = 1)"},
       // ST/Q texturing (FST = 0) with Q = 0.0 (RGBAQ bits 32-63) and S = T = 1.0: S/Q is not a number the
       // model can sample at (the fuzzer's regression-stq-nan); TEX1.LCM = 1 so the LOD needs no Q.
-      {{{TEX0_1, std::uint64_t{4} << 26 | std::uint64_t{4} << 30}, {TEX1_1, 1}, {PRIM, SPRITE | TME}, {RGBAQ, 0x80808080},
-        {0x02, 0x3F800000 | std::uint64_t{0x3F800000} << 32}, {XYZ2, xyz(0, 0)}, {XYZ2, xyz(32, 32)}},
+      {{{TEX0_1, std::uint64_t{4} << 26 | std::uint64_t{4} << 30},
+        {TEX1_1, 1},
+        {PRIM, SPRITE | TME},
+        {RGBAQ, 0x80808080},
+        {0x02, 0x3F800000 | std::uint64_t{0x3F800000} << 32},
+        {XYZ2, xyz(0, 0)},
+        {XYZ2, xyz(32, 32)}},
        "SPRITE: PRIM.FST = 0 with S/Q or T/Q not a finite number (Q = 0, or a NaN / infinite S, T or Q)"},
   };
   for (const named& c : cases) {
@@ -455,7 +532,8 @@ TEST(Display, TheRegisterPacketSelectsReadCircuitOnesRectangle) {
   // Both circuits on: circuit 1 shown, the merge circuit named; neither: no frame.
   std::vector<std::uint8_t> regs = it.privileged();
   regs[0] = 3;
-  EXPECT_EQ(decode_display(regs).unmodelled, "PMODE: both read circuits enabled; the merge circuit is not modelled (circuit 1 shown)");
+  EXPECT_EQ(decode_display(regs).unmodelled,
+            "PMODE: both read circuits enabled; the merge circuit is not modelled (circuit 1 shown)");
   regs[0] = 0;
   EXPECT_FALSE(decode_display(regs).frame);
 }

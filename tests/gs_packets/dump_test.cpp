@@ -62,29 +62,29 @@ TEST(StateLayout, OffsetsWorkedByHand) {
 TEST(Dump, NewLayoutByteByByte) {
   const auto b = write_dump(sample());
   EXPECT_EQ(le32(b, 0), 0xFFFFFFFFu);
-  EXPECT_EQ(le32(b, 4), 36u + 6 + 8);  // header size = GSDumpHeader + serial + screenshot
-  EXPECT_EQ(le32(b, 8), 8u);           // state_version
-  EXPECT_EQ(le32(b, 12), 4194760u);    // state_size
-  EXPECT_EQ(le32(b, 16), 36u);         // serial_offset (from the start of GSDumpHeader)
-  EXPECT_EQ(le32(b, 20), 6u);          // serial_size
-  EXPECT_EQ(le32(b, 24), 0x12345678u); // crc
+  EXPECT_EQ(le32(b, 4), 36u + 6 + 8);   // header size = GSDumpHeader + serial + screenshot
+  EXPECT_EQ(le32(b, 8), 8u);            // state_version
+  EXPECT_EQ(le32(b, 12), 4194760u);     // state_size
+  EXPECT_EQ(le32(b, 16), 36u);          // serial_offset (from the start of GSDumpHeader)
+  EXPECT_EQ(le32(b, 20), 6u);           // serial_size
+  EXPECT_EQ(le32(b, 24), 0x12345678u);  // crc
   EXPECT_EQ(le32(b, 28), 2u);
   EXPECT_EQ(le32(b, 32), 1u);
-  EXPECT_EQ(le32(b, 36), 42u);         // screenshot_offset = 36 + 6
+  EXPECT_EQ(le32(b, 36), 42u);  // screenshot_offset = 36 + 6
   EXPECT_EQ(le32(b, 40), 8u);
   EXPECT_EQ(std::string(b.begin() + 44, b.begin() + 50), "gsdot3");
   EXPECT_EQ(b[50], 1);
   EXPECT_EQ(b[57], 8);
   const std::size_t state = 58;
-  EXPECT_EQ(le32(b, state), 8u);                 // the blob's own version
-  EXPECT_EQ(le32(b, state + 4 + 8), 1u);         // PRMODECONT.AC = 1
-  EXPECT_EQ(le32(b, state + 204), 0x000A0000u);  // FRAME_1
+  EXPECT_EQ(le32(b, state), 8u);                     // the blob's own version
+  EXPECT_EQ(le32(b, state + 4 + 8), 1u);             // PRMODECONT.AC = 1
+  EXPECT_EQ(le32(b, state + 204), 0x000A0000u);      // FRAME_1
   EXPECT_EQ(le32(b, state + 4194756), 0x3F800000u);  // Q = 1.0f
   const std::size_t regs = state + 4194760;
   EXPECT_EQ(b[regs], 0x55);
   const std::size_t pk0 = regs + 8192;
-  EXPECT_EQ(b[pk0], 0);      // transfer
-  EXPECT_EQ(b[pk0 + 1], 2);  // PATH3
+  EXPECT_EQ(b[pk0], 0);                  // transfer
+  EXPECT_EQ(b[pk0 + 1], 2);              // PATH3
   EXPECT_EQ(le32(b, pk0 + 2), 16u * 4);  // A+D tag + 1 write, IMAGE tag + 1 qword
   const std::size_t pk1 = pk0 + 6 + 64;
   EXPECT_EQ(b[pk1], 3);
@@ -170,9 +170,7 @@ std::string error_of(const std::vector<std::uint8_t>& b) {
   try {
     const gs_dump d = read_dump(b);
     decode_paths(d);
-  } catch (const dump_error& e) {
-    return e.what();
-  }
+  } catch (const dump_error& e) { return e.what(); }
   return "no error";
 }
 
@@ -186,19 +184,23 @@ TEST(Dump, MalformedDumpsGiveOneLineErrors) {
   bad = good;
   bad[12] = 100;  // state_size 100 for version 8
   bad[13] = bad[14] = bad[15] = 0;
-  EXPECT_EQ(error_of(bad).rfind("byte 58: state size 100 does not fit the version 8 layout (version 8 has 4194760)", 0), 0u) << error_of(bad);
+  EXPECT_EQ(error_of(bad).rfind("byte 58: state size 100 does not fit the version 8 layout (version 8 has 4194760)", 0),
+            0u)
+      << error_of(bad);
   bad = good;
   bad[8] = 99;  // the header's state_version differs from the blob's (8): the blob's is used
   EXPECT_EQ(error_of(bad), "no error");
   bad = good;
   bad[58] = 99;  // the blob's version 99 (and the header's, below): refused as PCSX2's Defrost refuses it
   bad[8] = 99;
-  EXPECT_EQ(error_of(bad), "byte 58: state version 99: GS: Savestate version is incompatible.  Load aborted. "
-                           "(PCSX2's GSState::Defrost loads versions 0..9)");
+  EXPECT_EQ(error_of(bad),
+            "byte 58: state version 99: GS: Savestate version is incompatible.  Load aborted. "
+            "(PCSX2's GSState::Defrost loads versions 0..9)");
   bad = good;
   bad[16] = 60;  // serial (6 bytes) at 60: outside the 50-byte header
-  EXPECT_EQ(error_of(bad), "byte 8: serial at 60 (+6) lies outside the header of 50 bytes: GSDump header is corrupted. "
-                           "(PCSX2 GSDumpFile::ReadFile)");
+  EXPECT_EQ(error_of(bad),
+            "byte 8: serial at 60 (+6) lies outside the header of 50 bytes: GSDump header is corrupted. "
+            "(PCSX2 GSDumpFile::ReadFile)");
   bad = good;
   const std::size_t transfer_at = 58 + 4194760 + 8192;
   bad.resize(transfer_at + 3);  // a transfer header cut: refused (ReadFile's GET_WORD fails)
@@ -211,8 +213,8 @@ TEST(Dump, MalformedDumpsGiveOneLineErrors) {
   gs_dump d = sample();
   d.packets = {{packet_type::transfer, 1, 0, 0, {5, 0, 0, 0, 0, 0, 0, 0x08, 0, 0, 0, 0, 0, 0, 0, 0}, 0}};
   EXPECT_EQ(error_of(write_dump(d)), "byte " + std::to_string(58 + 4194760 + 8192 + 6) + " (path 1 transfer at byte " +
-                                          std::to_string(58 + 4194760 + 8192) +
-                                          "): qword 0: GIF tag NLOOP 5 needs 5 data qwords, 0 left");
+                                         std::to_string(58 + 4194760 + 8192) +
+                                         "): qword 0: GIF tag NLOOP 5 needs 5 data qwords, 0 left");
 }
 
 // The leniencies of PCSX2's reader (dump.hpp's notices), one each, with the byte offsets worked out
@@ -227,9 +229,10 @@ TEST(DumpLeniency, TruncatedLastPacketIsDropped) {
   ASSERT_EQ(d.notices.size(), 1u);
   EXPECT_EQ(d.notices[0].name, "truncated_last_packet");
   EXPECT_EQ(d.notices[0].offset, good.size() - 5);
-  EXPECT_EQ(describe(d.notices[0]), "byte " + std::to_string(good.size() - 5) +
-                                        ": truncated_last_packet: the last packet needs 4 bytes, the dump has 1; dropped, "
-                                        "as PCSX2's GSDumpFile::ReadFile does");
+  EXPECT_EQ(describe(d.notices[0]),
+            "byte " + std::to_string(good.size() - 5) +
+                ": truncated_last_packet: the last packet needs 4 bytes, the dump has 1; dropped, "
+                "as PCSX2's GSDumpFile::ReadFile does");
   EXPECT_EQ(d.packets.size(), 3u);
   // A transfer whose data is cut: dropped too, the packets before it kept.
   bad = good;

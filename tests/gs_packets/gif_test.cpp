@@ -63,7 +63,9 @@ TEST(GifTag, RoundTripClearsOnlyTheUnusedBits) {
 TEST(Decoder, PackedVertexWithPre) {
   // RGBA R 0x11 G 0x22 B 0x33 A 0x44: G at bit 32, B at bit 64, A at bit 96.
   // UV U 0x1234 V 0x0ABC: V at bit 32.  XYZ2 X 0x8000 Y 0x8100 Z 0x10: Y at bit 32, Z at bit 64.
-  const auto b = bytes_of({sprite_tag, {0x0000002200000011ull, 0x0000004400000033ull}, {0x00000ABC00001234ull, 0},
+  const auto b = bytes_of({sprite_tag,
+                           {0x0000002200000011ull, 0x0000004400000033ull},
+                           {0x00000ABC00001234ull, 0},
                            {0x0000810000008000ull, 0x10}});
   const auto ev = decode_gif(b);
   ASSERT_EQ(ev.size(), 5u);
@@ -92,15 +94,15 @@ TEST(Decoder, XyzF2WithAdcGoesToXyzF3AndStSetsQ) {
   // ST S 0x40000000 T 0x3F000000 Q 0x3E800000 (Q at bit 64).
   // XYZF2 X 0x10 Y 0x20 Z 0xABCDEF (bit 68) F 0x7F (bit 100) ADC 1 (bit 111):
   //   hi = 0xABCDEF<<4 | 0x7F<<36 | 1<<47 = 0x000087F00ABCDEF0.
-  const auto b = bytes_of({tag, {0x3F00000040000000ull, 0x3E800000ull}, {0xFFull, 0},
-                           {0x0000002000000010ull, 0x000087F00ABCDEF0ull}});
+  const auto b = bytes_of(
+      {tag, {0x3F00000040000000ull, 0x3E800000ull}, {0xFFull, 0}, {0x0000002000000010ull, 0x000087F00ABCDEF0ull}});
   const auto ev = decode_gif(b);
   ASSERT_EQ(ev.size(), 4u);
   EXPECT_EQ(ev[1].address, 0x02);
   EXPECT_EQ(ev[1].value, 0x3F00000040000000ull);
   EXPECT_EQ(ev[2].value, 0x3E800000000000FFull);  // Q from the ST just before
-  EXPECT_EQ(ev[3].address, 0x0C);                  // XYZF3: ADC = 1
-  EXPECT_EQ(ev[3].value, 0x7FABCDEF00200010ull);   // X | Y<<16 | Z<<32 | F<<56
+  EXPECT_EQ(ev[3].address, 0x0C);                 // XYZF3: ADC = 1
+  EXPECT_EQ(ev[3].value, 0x7FABCDEF00200010ull);  // X | Y<<16 | Z<<32 | F<<56
 }
 
 TEST(Decoder, AdReglistImage) {
@@ -110,8 +112,14 @@ TEST(Decoder, AdReglistImage) {
   const qword rl_tag{0x3400000000000001ull, 0x510ull};
   // IMAGE: NLOOP 2 | EOP | FLG 2<<58.
   const qword im_tag{0x0800000000008002ull, 0};
-  const auto b = bytes_of({ad_tag, {0xA0000ull, 0x4C}, {0, 0x53}, rl_tag, {0x6, 0x3F800000FF0000FFull},
-                           {0x0000001000200010ull, 0}, im_tag, {0x0706050403020100ull, 0x0F0E0D0C0B0A0908ull},
+  const auto b = bytes_of({ad_tag,
+                           {0xA0000ull, 0x4C},
+                           {0, 0x53},
+                           rl_tag,
+                           {0x6, 0x3F800000FF0000FFull},
+                           {0x0000001000200010ull, 0},
+                           im_tag,
+                           {0x0706050403020100ull, 0x0F0E0D0C0B0A0908ull},
                            {0x1716151413121110ull, 0x1F1E1D1C1B1A1918ull}});
   const auto ev = decode_gif(b);
   ASSERT_EQ(ev.size(), 9u);
@@ -139,9 +147,7 @@ TEST(Decoder, MalformedInputNamesTheOffset) {
   auto message = [](const std::vector<std::uint8_t>& b) {
     try {
       decode_gif(b);
-    } catch (const packet_error& e) {
-      return std::string(e.what());
-    }
+    } catch (const packet_error& e) { return std::string(e.what()); }
     return std::string("no error");
   };
   // IMAGE NLOOP 2 with one data qword, after one complete NLOOP-0 tag.
@@ -159,7 +165,7 @@ TEST(Builder, WhatItBuildsDecodesToTheSameWrites) {
   pb.ad(env);
   const unsigned descs[] = {desc::RGBAQ, desc::UV, desc::XYZ2};
   const qword verts[] = {packed_rgba(1, 2, 3, 4), packed_uv(0x3FFF, 7), packed_xyz2(0x100, 0x200, 9, false),
-                         packed_rgba(5, 6, 7, 8), packed_uv(1, 2), packed_xyz2(0x300, 0x400, 10, true)};
+                         packed_rgba(5, 6, 7, 8), packed_uv(1, 2),      packed_xyz2(0x300, 0x400, 10, true)};
   pb.packed(6u, descs, verts);
   const unsigned rl[] = {desc::PRIM, desc::RGBAQ, desc::XYZ2};
   const std::uint64_t vals[] = {3, 0x3F80000001020304ull, 0x0000000500060007ull};
@@ -175,11 +181,19 @@ TEST(Builder, WhatItBuildsDecodesToTheSameWrites) {
     if (e.what == gif_event::kind::reg_write) w.emplace_back(e.address, e.value);
     if (e.what == gif_event::kind::image) data.assign(e.data.begin(), e.data.end());
   }
-  const std::vector<std::pair<std::uint8_t, std::uint64_t>> expect = {
-      {0x4C, 0x000A0000}, {0x50, 0x0002000000000000ull}, {0x53, 0}, {0x00, 6},
-      {0x01, 0x3F80000004030201ull}, {0x03, 0x00073FFF}, {0x05, 0x0000000902000100ull},
-      {0x01, 0x3F80000008070605ull}, {0x03, 0x00020001}, {0x0D, 0x0000000A04000300ull},  // ADC -> XYZ3
-      {0x00, 3}, {0x01, 0x3F80000001020304ull}, {0x05, 0x0000000500060007ull}};
+  const std::vector<std::pair<std::uint8_t, std::uint64_t>> expect = {{0x4C, 0x000A0000},
+                                                                      {0x50, 0x0002000000000000ull},
+                                                                      {0x53, 0},
+                                                                      {0x00, 6},
+                                                                      {0x01, 0x3F80000004030201ull},
+                                                                      {0x03, 0x00073FFF},
+                                                                      {0x05, 0x0000000902000100ull},
+                                                                      {0x01, 0x3F80000008070605ull},
+                                                                      {0x03, 0x00020001},
+                                                                      {0x0D, 0x0000000A04000300ull},  // ADC -> XYZ3
+                                                                      {0x00, 3},
+                                                                      {0x01, 0x3F80000001020304ull},
+                                                                      {0x05, 0x0000000500060007ull}};
   EXPECT_EQ(w, expect);
   ASSERT_EQ(data.size(), 48u);  // 40 bytes padded to 3 qwords
   for (std::size_t i = 0; i < 48; ++i) EXPECT_EQ(data[i], i < 40 ? img[i] : 0);

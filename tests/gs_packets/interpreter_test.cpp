@@ -104,10 +104,8 @@ TEST(Interpreter, LoadsStateVersions4To9AtTheirOwnOffsets) {
     std::uint32_t version, size, frame_1, frame_2, memory;
   };
   const layout_case cases[] = {
-      {8, 4194760, 124 + 10 * 8, 220 + 10 * 8, 372},
-      {7, 4194760, 124 + 10 * 8, 220 + 10 * 8, 372},
-      {6, 4194760 + 24, 132 + 11 * 8, 236 + 11 * 8, 396},
-      {4, 4194760 + 80, 132 + 11 * 8, 264 + 11 * 8, 452},
+      {8, 4194760, 124 + 10 * 8, 220 + 10 * 8, 372},           {7, 4194760, 124 + 10 * 8, 220 + 10 * 8, 372},
+      {6, 4194760 + 24, 132 + 11 * 8, 236 + 11 * 8, 396},      {4, 4194760 + 80, 132 + 11 * 8, 264 + 11 * 8, 452},
       {9, 4194760 + 61, 124 + 10 * 8, 220 + 10 * 8, 372 + 61},
   };
   for (const layout_case& c : cases) {
@@ -138,10 +136,8 @@ TEST(Interpreter, LoadsStateVersions4To9AtTheirOwnOffsets) {
 TEST(Interpreter, LocalToLocalCopiesWhenTrxdirIsWritten) {
   dump::gs_dump d = upload_dump();
   packet_builder pb;
-  const std::pair<std::uint8_t, std::uint64_t> copy[] = {{0x50, 0x0001000000010000ull},
-                                                         {0x51, 0x0005000A00010002ull},
-                                                         {0x52, 0x0000000200000004ull},
-                                                         {0x53, 2}};
+  const std::pair<std::uint8_t, std::uint64_t> copy[] = {
+      {0x50, 0x0001000000010000ull}, {0x51, 0x0005000A00010002ull}, {0x52, 0x0000000200000004ull}, {0x53, 2}};
   pb.ad(copy, true);
   d.packets.insert(d.packets.begin() + 1, {dump::packet_type::transfer, 2, 0, 0, pb.bytes(), 0});
   gs::mem::local_memory m;

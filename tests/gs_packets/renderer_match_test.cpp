@@ -23,7 +23,8 @@ namespace mem = gs::mem;
 using namespace gs::packets;
 
 // MODULATE with the texture's alpha, blended (Cs − Cd)·As + Cd, COLCLAMP on.
-constexpr gs::alpha_reg blend{gs::blend_colour::Cs, gs::blend_colour::Cd, gs::blend_alpha::As, gs::blend_colour::Cd, gs::u8{}};
+constexpr gs::alpha_reg blend{gs::blend_colour::Cs, gs::blend_colour::Cd, gs::blend_alpha::As, gs::blend_colour::Cd,
+                              gs::u8{}};
 constexpr pl::pass_regs textured_blend{true, true, gs::tfx::MODULATE, gs::tcc::RGBA, blend, true, 0};
 
 // Under each gouraud_setup (both sides take it from their options).
@@ -57,26 +58,30 @@ void expect_the_renderers_frame(gs::gouraud_setup setup) {
   o.model.setup = setup;
   std::vector<std::uint32_t> z(W * H, 0), frame(W * H, 0x40808080u);
   std::vector<std::int32_t> visible(W * H, -1);
-  pl::detail::band_renderer r(ps, o, pl::scissor{0, 0, W, H}, pl::detail::z_view{pl::detail::row_view{z.data(), W}, {}, false},
-                              visible);
+  pl::detail::band_renderer r(ps, o, pl::scissor{0, 0, W, H},
+                              pl::detail::z_view{pl::detail::row_view{z.data(), W}, {}, false}, visible);
   const pl::texture_ref tex{T, T, nullptr, nullptr, texels.data(), false, o.model.bilinear, nullptr, {}};
   const auto attr = pl::detail::attributes(
       ps, o.model.setup, [&](std::uint32_t v) { return colours[v]; },
       [](const pl::prepared_triangle& t, int k) {
-        return std::pair<std::int32_t, std::int32_t>{t.uv16[static_cast<std::size_t>(k)][0], t.uv16[static_cast<std::size_t>(k)][1]};
+        return std::pair<std::int32_t, std::int32_t>{t.uv16[static_cast<std::size_t>(k)][0],
+                                                     t.uv16[static_cast<std::size_t>(k)][1]};
       });
   r.draw<textured_blend>(&tex, attr, pl::detail::row_view{frame.data(), W});
 
-  // The packets: FRAME_1 FBP 0 FBW 1; ZBUF_1 page 8 PSMZ24 ZMSK (the renderer's Z buffer); TEST ZTE GEQUAL; XYOFFSET 2048 px;
-  // SCISSOR 0..63; the texture PSMCT32 16×16 at block 1024 (TBW 1), uploaded; TEX0 TW = TH = 4,
-  // TCC RGBA, TFX MODULATE; TEX1 MMAG = MMIN = LINEAR; CLAMP REPEAT; ALPHA A = Cs, B = Cd, C = As, D = Cd.
+  // The packets: FRAME_1 FBP 0 FBW 1; ZBUF_1 page 8 PSMZ24 ZMSK (the renderer's Z buffer); TEST ZTE GEQUAL; XYOFFSET
+  // 2048 px; SCISSOR 0..63; the texture PSMCT32 16×16 at block 1024 (TBW 1), uploaded; TEX0 TW = TH = 4, TCC RGBA, TFX
+  // MODULATE; TEX1 MMAG = MMIN = LINEAR; CLAMP REPEAT; ALPHA A = Cs, B = Cd, C = As, D = Cd.
   mem::local_memory m;
   const mem::buffer fb{fixed::uint<14>::from_wrapped(0), fixed::uint<6>::from_wrapped(1), mem::psm::PSMCT32};
   for (std::uint32_t y = 0; y < H; ++y)
     for (std::uint32_t x = 0; x < W; ++x) m.write_pixel(fb, x, y, 0x40808080u);
   packet_builder pb;
   const std::vector<std::pair<std::uint8_t, std::uint64_t>> upload{
-      {0x50, std::uint64_t{1024} << 32 | std::uint64_t{1} << 48}, {0x51, 0}, {0x52, T | std::uint64_t{T} << 32}, {0x53, 0}};
+      {0x50, std::uint64_t{1024} << 32 | std::uint64_t{1} << 48},
+      {0x51, 0},
+      {0x52, T | std::uint64_t{T} << 32},
+      {0x53, 0}};
   pb.ad(upload);
   std::vector<std::uint8_t> bytes;
   for (const std::uint32_t t : texels)
@@ -85,10 +90,18 @@ void expect_the_renderers_frame(gs::gouraud_setup setup) {
   const std::uint64_t tex0 = 1024 | std::uint64_t{1} << 14 | std::uint64_t{4} << 26 | std::uint64_t{4} << 30 |
                              std::uint64_t{1} << 34;  // TFX MODULATE = 0
   std::vector<std::pair<std::uint8_t, std::uint64_t>> w{
-      {0x1A, 1}, {0x46, 1}, {0x4C, std::uint64_t{1} << 16}, {0x4E, 8 | 1 << 24 | std::uint64_t{1} << 32},
-      {0x47, 1 << 16 | 2 << 17}, {0x18, std::uint64_t{2048 * 16} | std::uint64_t{2048 * 16} << 32},
-      {0x40, 63 << 16 | std::uint64_t{63} << 48}, {0x06, tex0}, {0x14, 1 << 5 | 1 << 6}, {0x08, 0},
-      {0x42, 0 | 1 << 2 | 0 << 4 | 1 << 6}, {0x00, 3 | 1 << 3 | 1 << 4 | 1 << 6 | 1 << 8}};
+      {0x1A, 1},
+      {0x46, 1},
+      {0x4C, std::uint64_t{1} << 16},
+      {0x4E, 8 | 1 << 24 | std::uint64_t{1} << 32},
+      {0x47, 1 << 16 | 2 << 17},
+      {0x18, std::uint64_t{2048 * 16} | std::uint64_t{2048 * 16} << 32},
+      {0x40, 63 << 16 | std::uint64_t{63} << 48},
+      {0x06, tex0},
+      {0x14, 1 << 5 | 1 << 6},
+      {0x08, 0},
+      {0x42, 0 | 1 << 2 | 0 << 4 | 1 << 6},
+      {0x00, 3 | 1 << 3 | 1 << 4 | 1 << 6 | 1 << 8}};
   for (const auto& t : ps.triangles)
     for (std::size_t k = 0; k < 3; ++k) {
       const gs::rgba8 c = colours[t.vertex[k]];

@@ -20,9 +20,7 @@ TEST(VideoMode, Smode1AsRecorded) {
     const std::uint64_t s = pk::encode(pk::smode1_for(m));
     const unsigned cmod = (s >> 13) & 3, lc = (s >> 3) & 0x7F;
     EXPECT_EQ(cmod, m == pk::video_mode::ntsc ? 2u : m == pk::video_mode::pal ? 3u : 0u);
-    if (m == pk::video_mode::vesa) {
-      EXPECT_TRUE(lc != 22 && lc != 32);
-    }
+    if (m == pk::video_mode::vesa) { EXPECT_TRUE(lc != 22 && lc != 32); }
     // VCK = 13.5 MHz · LC / ((T1248 + 1) · SPML · RC): 27 MHz / 4 = 13.5 MHz per pixel for TV (640 × 4 VCK
     // per line), 25.3125 MHz for VESA.
     const double vck = 13.5e6 * lc / ((((s >> 10) & 3) + 1) * ((s >> 21) & 15) * (s & 7));

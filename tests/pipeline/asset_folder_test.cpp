@@ -49,7 +49,9 @@ void write(const fs::path& p, const std::string& text) {
 std::string gltf(const std::string& uri) {
   return R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],)"
          R"("meshes":[{"primitives":[{"attributes":{"POSITION":0,"TEXCOORD_0":1}}]}],)"
-         R"("buffers":[{"uri":")" + uri + R"(","byteLength":60}],)"
+         R"("buffers":[{"uri":")" +
+         uri +
+         R"(","byteLength":60}],)"
          R"("bufferViews":[{"buffer":0,"byteOffset":0,"byteLength":36},{"buffer":0,"byteOffset":36,"byteLength":24}],)"
          R"("accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,0]},)"
          R"({"bufferView":1,"componentType":5126,"count":3,"type":"VEC2"}]})";
@@ -82,7 +84,7 @@ TEST(AssetFolder, OutsideFolderJudgesTheResolvedPath) {
   const std::string m = (dir / "m").string();
   EXPECT_EQ(outside_folder(dir / "m", m + "/maps/n.png"), "");
   EXPECT_EQ(outside_folder(dir / "m", m + "/maps/../n.png"), "");  // still inside
-  EXPECT_EQ(outside_folder(dir / "m", m + "//etc/passwd"), "");     // opened as m/etc/passwd
+  EXPECT_EQ(outside_folder(dir / "m", m + "//etc/passwd"), "");    // opened as m/etc/passwd
   EXPECT_NE(outside_folder(dir / "m", m + "/../n.png"), "");
   EXPECT_NE(outside_folder(dir / "m", "/etc/passwd"), "");
   EXPECT_NE(outside_folder(dir / "m", m + "/file:///etc/passwd"), "");
@@ -131,7 +133,8 @@ TEST(StagedDirectory, AnExistingFolderKeepsWhatTheRunDidNotWrite) {
   EXPECT_EQ(a, "new");
   EXPECT_EQ(notes, "mine");
   EXPECT_TRUE(fs::exists(out / "report.html"));
-  EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1) << "a staging folder was left behind";
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1)
+      << "a staging folder was left behind";
   write(dir / "file", "x");
   EXPECT_THROW(staged_directory(dir / "file"), std::runtime_error);  // not a directory
   fs::remove_all(dir);

@@ -24,13 +24,15 @@ constexpr child_limits generous{std::size_t{1} << 30, 30, 60};
 
 TEST(ChildProcess, ResultAndErrorComeBack) {
   EXPECT_EQ(run_in_child([] { return std::string(100000, 'x') + "end"; }, generous), std::string(100000, 'x') + "end");
-  expect_error([] { run_in_child([]() -> std::string { throw std::runtime_error("bad header at byte 7"); }, generous); },
-               "bad header at byte 7");
+  expect_error(
+      [] { run_in_child([]() -> std::string { throw std::runtime_error("bad header at byte 7"); }, generous); },
+      "bad header at byte 7");
 }
 
 TEST(ChildProcess, ChildAllocatesUpToItsCap) {
   // 256 MiB under a 1 GiB cap (no cap under ASan, whose shadow would make every new mapping fail).
-  const std::string got = run_in_child([] { return std::to_string(std::vector<char>(std::size_t{256} << 20, 'a').size() >> 20); }, generous);
+  const std::string got = run_in_child(
+      [] { return std::to_string(std::vector<char>(std::size_t{256} << 20, 'a').size() >> 20); }, generous);
   EXPECT_EQ(got, "256");
 }
 
@@ -53,8 +55,15 @@ TEST(ChildProcess, StdinReadsAsEmpty) {
 }
 
 TEST(ChildProcess, ChildThatWaitsIsStoppedAtTheWallDeadline) {
-  expect_error([] { run_in_child([]() -> std::string { for (;;) ::pause(); }, {std::size_t{1} << 30, 30, 1}); },
-               "the reader did not finish within 1 s and was stopped");
+  expect_error(
+      [] {
+        run_in_child(
+            []() -> std::string {
+              for (;;) ::pause();
+            },
+            {std::size_t{1} << 30, 30, 1});
+      },
+      "the reader did not finish within 1 s and was stopped");
 }
 
 TEST(ChildProcess, ChildThatLoopsIsStoppedAtTheCpuLimit) {

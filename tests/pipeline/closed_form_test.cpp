@@ -21,7 +21,8 @@ int byte_of(std::uint32_t word, int c) { return static_cast<int>((word >> (8 * c
 // a signed shift right by 7 (offset by 128)"; R+G+B mod 256.
 int four_pass_expected(glm::vec3 n, glm::vec3 T) {
   const st c = sphere_coordinates(T);
-  const int u = std::min(static_cast<int>(std::lround(c.s * 1024)) >> 4, 63), v = std::min(static_cast<int>(std::lround(c.t * 1024)) >> 4, 63);
+  const int u = std::min(static_cast<int>(std::lround(c.s * 1024)) >> 4, 63),
+            v = std::min(static_cast<int>(std::lround(c.t * 1024)) >> 4, 63);
   const std::uint32_t sph = sphere_map(64, 64)[static_cast<std::size_t>(v * 64 + u)];
   int sum = 0;
   for (int k = 0; k < 3; ++k) {
@@ -68,16 +69,19 @@ void check(method m, glm::vec3 n, glm::vec3 T, int expected) {
         const bool inside = x >= 8 && x < 56 && y >= 8 && y < 40;
         const int got = f.dot[0][static_cast<std::size_t>(y * q.s.width + x)];
         ASSERT_EQ(got, inside ? expected : 0x80)
-            << name(m) << " pixel " << x << "," << y << " n=(" << n.x << "," << n.y << "," << n.z << ") T=(" << T.x << ","
-            << T.y << "," << T.z << ") got 0x" << std::hex << got << " expected 0x" << (inside ? expected : 0x80);
+            << name(m) << " pixel " << x << "," << y << " n=(" << n.x << "," << n.y << "," << n.z << ") T=(" << T.x
+            << "," << T.y << "," << T.z << ") got 0x" << std::hex << got << " expected 0x"
+            << (inside ? expected : 0x80);
       }
   }
 }
 
 std::vector<std::pair<glm::vec3, glm::vec3>> cases() {
-  std::vector<std::pair<glm::vec3, glm::vec3>> c = {
-      {{0, 0, 1}, {0, 0, 1}}, {{0, 0, 1}, {1, 0, 0.2f}}, {{0.5f, -0.3f, 0.8f}, {-0.4f, 0.6f, 0.7f}},
-      {{-0.7f, 0.1f, 0.7f}, {0.7f, -0.1f, 0.7f}}, {{0.2f, 0.9f, 0.3f}, {0.3f, 0.5f, 0.8f}}};
+  std::vector<std::pair<glm::vec3, glm::vec3>> c = {{{0, 0, 1}, {0, 0, 1}},
+                                                    {{0, 0, 1}, {1, 0, 0.2f}},
+                                                    {{0.5f, -0.3f, 0.8f}, {-0.4f, 0.6f, 0.7f}},
+                                                    {{-0.7f, 0.1f, 0.7f}, {0.7f, -0.1f, 0.7f}},
+                                                    {{0.2f, 0.9f, 0.3f}, {0.3f, 0.5f, 0.8f}}};
   std::mt19937 rng(3);
   std::normal_distribution<float> g;
   while (c.size() < 40) {
@@ -88,15 +92,21 @@ std::vector<std::pair<glm::vec3, glm::vec3>> cases() {
 }
 
 TEST(ClosedForm, FourPass) {
-  for (auto [n, T] : cases()) check(method::four_pass, glm::normalize(n), glm::normalize(T), four_pass_expected(glm::normalize(n), glm::normalize(T)));
+  for (auto [n, T] : cases())
+    check(method::four_pass, glm::normalize(n), glm::normalize(T),
+          four_pass_expected(glm::normalize(n), glm::normalize(T)));
 }
 
 TEST(ClosedForm, TwoPass) {
-  for (auto [n, T] : cases()) check(method::two_pass, glm::normalize(n), glm::normalize(T), two_pass_expected(glm::normalize(n), glm::normalize(T), 122));
+  for (auto [n, T] : cases())
+    check(method::two_pass, glm::normalize(n), glm::normalize(T),
+          two_pass_expected(glm::normalize(n), glm::normalize(T), 122));
 }
 
 TEST(ClosedForm, Baseline) {
-  for (auto [n, T] : cases()) check(method::baseline, glm::normalize(n), glm::normalize(T), baseline_expected(glm::normalize(n), glm::normalize(T)));
+  for (auto [n, T] : cases())
+    check(method::baseline, glm::normalize(n), glm::normalize(T),
+          baseline_expected(glm::normalize(n), glm::normalize(T)));
 }
 
 // The head-on case in numbers: n = T = (0, 0, 1) is a dot product of 1.0 (128). Four-pass: 127·127 >> 7

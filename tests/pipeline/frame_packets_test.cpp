@@ -44,13 +44,23 @@ const scene& small_scene() {
 // The pass table by name (lookup of a drawn pass's decoded registers).
 const std::vector<std::pair<std::string, const pass_regs*>>& table() {
   using namespace passes;
-  static const std::vector<std::pair<std::string, const pass_regs*>> t = {
-      {"fill", &step1_ambient},           {"two_pass_positive", &two_pass_positive}, {"two_pass_negative", &two_pass_negative},
-      {"two_pass_add_alpha", &two_pass_add_alpha}, {"four_pass_sphere", &four_pass_sphere}, {"four_pass_x", &four_pass_x},
-      {"four_pass_y", &four_pass_y},      {"four_pass_z", &four_pass_z},             {"baseline_add", &baseline_add},
-      {"baseline_subtract", &baseline_subtract}, {"post_add_into_red", &post_add_into_red}, {"ilp_into_lab", &ilp_into_lab},
-      {"diffuse_layer", &diffuse_layer},  {"multiply_red", &multiply_red},           {"multiply_green", &multiply_green},
-      {"multiply_blue", &multiply_blue},  {"move_into_alpha", &move_into_alpha}};
+  static const std::vector<std::pair<std::string, const pass_regs*>> t = {{"fill", &step1_ambient},
+                                                                          {"two_pass_positive", &two_pass_positive},
+                                                                          {"two_pass_negative", &two_pass_negative},
+                                                                          {"two_pass_add_alpha", &two_pass_add_alpha},
+                                                                          {"four_pass_sphere", &four_pass_sphere},
+                                                                          {"four_pass_x", &four_pass_x},
+                                                                          {"four_pass_y", &four_pass_y},
+                                                                          {"four_pass_z", &four_pass_z},
+                                                                          {"baseline_add", &baseline_add},
+                                                                          {"baseline_subtract", &baseline_subtract},
+                                                                          {"post_add_into_red", &post_add_into_red},
+                                                                          {"ilp_into_lab", &ilp_into_lab},
+                                                                          {"diffuse_layer", &diffuse_layer},
+                                                                          {"multiply_red", &multiply_red},
+                                                                          {"multiply_green", &multiply_green},
+                                                                          {"multiply_blue", &multiply_blue},
+                                                                          {"move_into_alpha", &move_into_alpha}};
   return t;
 }
 
@@ -117,15 +127,14 @@ std::vector<std::string> expected_passes(method m, std::size_t lights) {
     p.push_back("sprite fill DPB");
     switch (m) {
       case method::two_pass:
-        p.insert(p.end(), {"triangle two_pass_positive DPB", "triangle two_pass_negative DPB", "sprite two_pass_add_alpha DPB"});
+        p.insert(p.end(),
+                 {"triangle two_pass_positive DPB", "triangle two_pass_negative DPB", "sprite two_pass_add_alpha DPB"});
         break;
       case method::four_pass:
         p.insert(p.end(), {"triangle four_pass_sphere DPB", "triangle four_pass_x DPB", "triangle four_pass_y DPB",
                            "triangle four_pass_z DPB"});
         break;
-      case method::baseline:
-        p.insert(p.end(), {"triangle baseline_add DPB", "triangle baseline_subtract DPB"});
-        break;
+      case method::baseline: p.insert(p.end(), {"triangle baseline_add DPB", "triangle baseline_subtract DPB"}); break;
     }
     p.insert(p.end(), {"sprite post_add_into_red DPB", "sprite ilp_into_lab LAB"});
   }
@@ -163,26 +172,46 @@ TEST_P(FramePackets, EveryRegisterWriteDecodesToTheValueWritten) {
     const std::string n(pk::gs_register_name_of(e.address).value_or("?"));
     ++seen[n];
     const std::uint64_t v = e.value;
-    if (n == "PRIM") EXPECT_EQ(gs::encode(gs::decode_prim(v)), v);
-    else if (n == "RGBAQ") EXPECT_EQ(gs::encode(gs::decode_rgbaq(v)), v);
-    else if (n == "TEX0_1") EXPECT_EQ(gs::encode(gs::decode_tex0(v)), v);
-    else if (n == "ALPHA_1") EXPECT_EQ(gs::encode(gs::decode_alpha(v)), v);
-    else if (n == "TEST_1") EXPECT_EQ(gs::encode(gs::decode_test(v)), v);
-    else if (n == "FRAME_1") EXPECT_EQ(gs::encode(gs::decode_frame(v)), v);
-    else if (n == "COLCLAMP") EXPECT_EQ(gs::encode(gs::decode_colclamp(v)), v);
-    else if (n == "PABE") EXPECT_EQ(v, 0u);
-    else if (n == "FBA_1") EXPECT_EQ(v, 0u);
-    else if (n == "DTHE") EXPECT_EQ(v, 0u);
-    else if (n == "CLAMP_1") EXPECT_EQ(gs::mem::encode(gs::mem::decode_clamp(v)), v);
-    else if (n == "BITBLTBUF") EXPECT_EQ(gs::mem::encode(gs::mem::decode_bitbltbuf(v)), v);
-    else if (n == "TRXPOS") EXPECT_EQ(gs::mem::encode(gs::mem::decode_trxpos(v)), v);
-    else if (n == "TRXREG") EXPECT_EQ(gs::mem::encode(gs::mem::decode_trxreg(v)), v);
-    else if (n == "TRXDIR") EXPECT_TRUE(v == 0u || v == 2u) << v;  // host -> local, local -> local
-    else if (n == "TEXFLUSH") EXPECT_EQ(v, 0u);
-    else if (n == "UV") EXPECT_EQ(v & ~(0x3FFFull | 0x3FFFull << 16), 0u);  // U 0-13, V 16-29
-    else if (n == "XYZ2") EXPECT_LT(v >> 32, 1ull << 24);                    // Z fits PSMZ24
-    else if (n == "PRMODECONT") EXPECT_EQ(v, 1u);  // AC = 1: PRIM (not PRMODE) gives the attributes
-    else if (n == "XYOFFSET_1") EXPECT_EQ(v, (std::uint64_t{2048 << 4} << 32) | (2048 << 4));
+    if (n == "PRIM")
+      EXPECT_EQ(gs::encode(gs::decode_prim(v)), v);
+    else if (n == "RGBAQ")
+      EXPECT_EQ(gs::encode(gs::decode_rgbaq(v)), v);
+    else if (n == "TEX0_1")
+      EXPECT_EQ(gs::encode(gs::decode_tex0(v)), v);
+    else if (n == "ALPHA_1")
+      EXPECT_EQ(gs::encode(gs::decode_alpha(v)), v);
+    else if (n == "TEST_1")
+      EXPECT_EQ(gs::encode(gs::decode_test(v)), v);
+    else if (n == "FRAME_1")
+      EXPECT_EQ(gs::encode(gs::decode_frame(v)), v);
+    else if (n == "COLCLAMP")
+      EXPECT_EQ(gs::encode(gs::decode_colclamp(v)), v);
+    else if (n == "PABE")
+      EXPECT_EQ(v, 0u);
+    else if (n == "FBA_1")
+      EXPECT_EQ(v, 0u);
+    else if (n == "DTHE")
+      EXPECT_EQ(v, 0u);
+    else if (n == "CLAMP_1")
+      EXPECT_EQ(gs::mem::encode(gs::mem::decode_clamp(v)), v);
+    else if (n == "BITBLTBUF")
+      EXPECT_EQ(gs::mem::encode(gs::mem::decode_bitbltbuf(v)), v);
+    else if (n == "TRXPOS")
+      EXPECT_EQ(gs::mem::encode(gs::mem::decode_trxpos(v)), v);
+    else if (n == "TRXREG")
+      EXPECT_EQ(gs::mem::encode(gs::mem::decode_trxreg(v)), v);
+    else if (n == "TRXDIR")
+      EXPECT_TRUE(v == 0u || v == 2u) << v;  // host -> local, local -> local
+    else if (n == "TEXFLUSH")
+      EXPECT_EQ(v, 0u);
+    else if (n == "UV")
+      EXPECT_EQ(v & ~(0x3FFFull | 0x3FFFull << 16), 0u);  // U 0-13, V 16-29
+    else if (n == "XYZ2")
+      EXPECT_LT(v >> 32, 1ull << 24);  // Z fits PSMZ24
+    else if (n == "PRMODECONT")
+      EXPECT_EQ(v, 1u);  // AC = 1: PRIM (not PRMODE) gives the attributes
+    else if (n == "XYOFFSET_1")
+      EXPECT_EQ(v, (std::uint64_t{2048 << 4} << 32) | (2048 << 4));
     else if (n == "SCISSOR_1") {
       const auto x0 = bits(v, 0, 11), x1 = bits(v, 16, 11), y0 = bits(v, 32, 11), y1 = bits(v, 48, 11);
       EXPECT_EQ(v, x0 | x1 << 16 | y0 << 32 | y1 << 48);
@@ -201,9 +230,10 @@ TEST_P(FramePackets, EveryRegisterWriteDecodesToTheValueWritten) {
       ADD_FAILURE() << "unexpected register " << n << " = 0x" << std::hex << v;
     }
   }
-  for (const char* n : {"PRIM", "TEX0_1", "TEX1_1", "CLAMP_1", "ALPHA_1", "TEST_1", "FRAME_1", "ZBUF_1", "XYOFFSET_1",
-                        "SCISSOR_1", "PRMODECONT", "COLCLAMP", "DTHE", "PABE", "FBA_1", "BITBLTBUF", "TRXPOS", "TRXREG", "TRXDIR",
-                        "RGBAQ", "UV", "XYZ2"})
+  for (const char* n :
+       {"PRIM",       "TEX0_1",    "TEX1_1",     "CLAMP_1",  "ALPHA_1", "TEST_1", "FRAME_1", "ZBUF_1",
+        "XYOFFSET_1", "SCISSOR_1", "PRMODECONT", "COLCLAMP", "DTHE",    "PABE",   "FBA_1",   "BITBLTBUF",
+        "TRXPOS",     "TRXREG",    "TRXDIR",     "RGBAQ",    "UV",      "XYZ2"})
     EXPECT_GT(seen[n], 0) << n << " is never written";
 }
 
@@ -225,14 +255,15 @@ TEST_P(FramePackets, CopiesTheLabIntoTheOutputByOneLocalToLocalTransfer) {
     const std::uint64_t blt = regs[addr("BITBLTBUF")], pos = regs[addr("TRXPOS")], size = regs[addr("TRXREG")],
                         clip = regs[addr("SCISSOR_1")];
     const std::uint64_t P = fp.buffers.pages, fbw = static_cast<std::uint64_t>((s.width + 63) / 64);
-    EXPECT_EQ(bits(blt, 0, 14), 32 * P);      // SBP: the LAB
-    EXPECT_EQ(bits(blt, 16, 6), fbw);         // SBW
-    EXPECT_EQ(bits(blt, 24, 6), 0u);          // SPSM = PSMCT32
-    EXPECT_EQ(bits(blt, 32, 14), 32 * 2 * P); // DBP: the output
-    EXPECT_EQ(bits(blt, 48, 6), fbw);         // DBW
-    EXPECT_EQ(bits(blt, 56, 6), 0u);          // DPSM = PSMCT32
-    const std::uint64_t x0 = bits(clip, 0, 11), x1 = bits(clip, 16, 11), y0 = bits(clip, 32, 11), y1 = bits(clip, 48, 11);
-    EXPECT_EQ(pos, x0 | y0 << 16 | x0 << 32 | y0 << 48);  // SSAX, SSAY, DSAX, DSAY; DIR = 0
+    EXPECT_EQ(bits(blt, 0, 14), 32 * P);       // SBP: the LAB
+    EXPECT_EQ(bits(blt, 16, 6), fbw);          // SBW
+    EXPECT_EQ(bits(blt, 24, 6), 0u);           // SPSM = PSMCT32
+    EXPECT_EQ(bits(blt, 32, 14), 32 * 2 * P);  // DBP: the output
+    EXPECT_EQ(bits(blt, 48, 6), fbw);          // DBW
+    EXPECT_EQ(bits(blt, 56, 6), 0u);           // DPSM = PSMCT32
+    const std::uint64_t x0 = bits(clip, 0, 11), x1 = bits(clip, 16, 11), y0 = bits(clip, 32, 11),
+                        y1 = bits(clip, 48, 11);
+    EXPECT_EQ(pos, x0 | y0 << 16 | x0 << 32 | y0 << 48);   // SSAX, SSAY, DSAX, DSAY; DIR = 0
     EXPECT_EQ(size, (x1 + 1 - x0) | (y1 + 1 - y0) << 32);  // RRW, RRH
     EXPECT_GT(x1, x0);
     EXPECT_GT(y1, y0);
@@ -262,7 +293,8 @@ TEST_P(FramePackets, TrianglesAreThePreparedScenes) {
                        bits(e.value, 16, 16) == static_cast<std::uint64_t>(t.setup.v[k].y + 32768) &&
                        bits(e.value, 32, 32) == static_cast<std::uint64_t>(t.z24[k]);
     // The normal-map passes send uv16; the four-pass sphere pass its own (checked only for range).
-    const bool uv_nm = bits(uv, 0, 14) == static_cast<std::uint64_t>(t.uv16[k][0]) && bits(uv, 16, 14) == static_cast<std::uint64_t>(t.uv16[k][1]);
+    const bool uv_nm = bits(uv, 0, 14) == static_cast<std::uint64_t>(t.uv16[k][0]) &&
+                       bits(uv, 16, 14) == static_cast<std::uint64_t>(t.uv16[k][1]);
     if (!xy_ok || !(uv_nm || GetParam() == method::four_pass)) ++mismatches;
   }
   EXPECT_EQ(mismatches, 0u);
@@ -356,17 +388,18 @@ TEST_P(FramePackets, DumpHoldsTheStreamAndDisplaysTheOutputBuffer) {
     return v;
   };
   const std::uint64_t pmode = priv(0x0000), dispfb1 = priv(0x0070), display1 = priv(0x0080);
-  EXPECT_EQ(bits(pmode, 0, 1), 1u);     // EN1
-  EXPECT_EQ(bits(pmode, 1, 1), 0u);     // EN2
-  EXPECT_EQ(bits(pmode, 2, 3), 1u);     // CRTMD = 001
-  EXPECT_EQ(bits(pmode, 8, 8), 0xFFu);  // ALP: circuit 1 only
+  EXPECT_EQ(bits(pmode, 0, 1), 1u);                       // EN1
+  EXPECT_EQ(bits(pmode, 1, 1), 0u);                       // EN2
+  EXPECT_EQ(bits(pmode, 2, 3), 1u);                       // CRTMD = 001
+  EXPECT_EQ(bits(pmode, 8, 8), 0xFFu);                    // ALP: circuit 1 only
   EXPECT_EQ(bits(dispfb1, 0, 9), 2u * fp.buffers.pages);  // FBP: the output buffer, 2P
   EXPECT_EQ(bits(dispfb1, 9, 6), static_cast<std::uint64_t>((s.width + 63) / 64));
-  EXPECT_EQ(bits(dispfb1, 15, 5), 0u);  // PSMCT32
+  EXPECT_EQ(bits(dispfb1, 15, 5), 0u);       // PSMCT32
   EXPECT_EQ(bits(priv(0x0010), 13, 2), 2u);  // SMODE1.CMOD: NTSC
   EXPECT_EQ(bits(priv(0x0020), 0, 1), 1u);   // SMODE2.INT
   EXPECT_EQ((bits(display1, 32, 12) + 1) % (bits(display1, 23, 4) + 1), 0u);
-  EXPECT_EQ((bits(display1, 32, 12) + 1) / (bits(display1, 23, 4) + 1), static_cast<std::uint64_t>(s.width));  // DW / MAGH
+  EXPECT_EQ((bits(display1, 32, 12) + 1) / (bits(display1, 23, 4) + 1),
+            static_cast<std::uint64_t>(s.width));                               // DW / MAGH
   EXPECT_EQ(bits(display1, 44, 11) + 1, static_cast<std::uint64_t>(s.height));  // DH
   EXPECT_EQ(gs::dump::state_get(d.state, *gs::dump::state_field_v8("PRMODECONT")), 1u);
 }
@@ -383,8 +416,13 @@ TEST(FramePacketsLimits, RefusesWhatItDoesNotWrite) {
   EXPECT_THROW(build_frame_packets(wide, prepare(wide), method::two_pass, render_options{}), std::invalid_argument);
 }
 
-INSTANTIATE_TEST_SUITE_P(Methods, FramePackets, ::testing::Values(method::two_pass, method::four_pass, method::baseline),
-                         [](const auto& info) { return std::string(info.param == method::two_pass ? "TwoPass" : info.param == method::four_pass ? "FourPass" : "Baseline"); });
+INSTANTIATE_TEST_SUITE_P(Methods, FramePackets,
+                         ::testing::Values(method::two_pass, method::four_pass, method::baseline),
+                         [](const auto& info) {
+                           return std::string(info.param == method::two_pass    ? "TwoPass"
+                                              : info.param == method::four_pass ? "FourPass"
+                                                                                : "Baseline");
+                         });
 
 }  // namespace
 }  // namespace gsdot3::pipeline

@@ -60,7 +60,8 @@ TEST(Framing, EveryVertexOfRandomModelsProjectsInsideTheFrame) {
     SCOPED_TRACE("trial " + std::to_string(trial) + ", " + std::to_string(s.width) + "x" + std::to_string(s.height));
 
     const glm::mat4 view = glm::lookAt(s.view.eye, s.view.target, glm::vec3(0, 1, 0));
-    const glm::mat4 proj = glm::perspective(glm::radians(s.view.fov_y_degrees), static_cast<float>(s.width) / static_cast<float>(s.height), 0.1f, 100.0f);
+    const glm::mat4 proj = glm::perspective(glm::radians(s.view.fov_y_degrees),
+                                            static_cast<float>(s.width) / static_cast<float>(s.height), 0.1f, 100.0f);
     const glm::vec4 viewport(0, 0, s.width, s.height);
     for (const vertex& v : s.model.vertices) {
       EXPECT_LE(glm::length(v.position), 1.0f + 1e-5f);
@@ -78,7 +79,8 @@ TEST(Framing, EveryVertexOfRandomModelsProjectsInsideTheFrame) {
     const glm::vec3 right = glm::normalize(glm::cross(forward, glm::vec3(0, 1, 0))), up = glm::cross(right, forward);
     const bool tall = s.height > s.width;  // the horizontal field is the tighter one
     const glm::vec3 edge = glm::project(tall ? right : up, view, proj, viewport);
-    const float reach = tall ? (edge.x - s.width / 2.0f) / (s.width / 2.0f) : (edge.y - s.height / 2.0f) / (s.height / 2.0f);
+    const float reach =
+        tall ? (edge.x - s.width / 2.0f) / (s.width / 2.0f) : (edge.y - s.height / 2.0f) / (s.height / 2.0f);
     EXPECT_GT(reach, 0.8f);
     EXPECT_LT(reach, 1.0f);
 

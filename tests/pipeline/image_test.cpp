@@ -26,7 +26,9 @@ const fs::path images = fs::path(GSDOT3_TEST_DATA) / "images";
 
 using test::expect_error;
 
-glm::vec3 texel(const normal_map& m, int x, int y) { return m.palette[m.index[static_cast<std::size_t>(y * m.width + x)]]; }
+glm::vec3 texel(const normal_map& m, int x, int y) {
+  return m.palette[m.index[static_cast<std::size_t>(y * m.width + x)]];
+}
 
 TEST(NormalMapImage, TgaAndTheGreenConvention) {
   // Every texel (128, 200, 200): green up the image is −y in the renderer's frame (v runs down).
@@ -59,7 +61,8 @@ TEST(NormalMapImage, JpegOfOddSizeIsResampled) {
 
 TEST(NormalMapImage, TextureSideIsTheNearestPowerOfTwoInLogScale) {
   // 2^round(log2 n), clamped to 8..1024; 724 < 512·√2 ≈ 724.08 < 725.
-  const std::pair<int, int> cases[] = {{1, 8}, {8, 8}, {11, 8}, {12, 16}, {100, 128}, {724, 512}, {725, 1024}, {1024, 1024}, {4096, 1024}};
+  const std::pair<int, int> cases[] = {{1, 8},     {8, 8},      {11, 8},      {12, 16},    {100, 128},
+                                       {724, 512}, {725, 1024}, {1024, 1024}, {4096, 1024}};
   for (const auto& [in, out] : cases) EXPECT_EQ(texture_side(in), out) << in;
 }
 
@@ -67,7 +70,8 @@ TEST(NormalMapImage, BoxResamplingAveragesCoveredTexels) {
   // 16×16 → 8×8: each output texel is the renormalised mean of a 2×2 block.
   std::vector<glm::vec3> n(256);
   for (int y = 0; y < 16; ++y)
-    for (int x = 0; x < 16; ++x) n[static_cast<std::size_t>(y * 16 + x)] = (x + y) % 2 ? glm::vec3(1, 0, 0) : glm::vec3(0, 0, 1);
+    for (int x = 0; x < 16; ++x)
+      n[static_cast<std::size_t>(y * 16 + x)] = (x + y) % 2 ? glm::vec3(1, 0, 0) : glm::vec3(0, 0, 1);
   const auto down = resample_normals(n, 16, 16, 8, 8);
   for (const glm::vec3& v : down) {
     EXPECT_NEAR(v.x, std::sqrt(0.5f), 1e-6f);
@@ -76,8 +80,9 @@ TEST(NormalMapImage, BoxResamplingAveragesCoveredTexels) {
   // 3×1 → 8×1 (upsampling): output texel i covers [3i/8, 3(i+1)/8) of the source.
   const std::vector<glm::vec3> row = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
   const auto up = resample_normals(row, 3, 1, 8, 1);
-  EXPECT_EQ(up[0], glm::vec3(1, 0, 0));                                          // [0, 0.375)
-  EXPECT_NEAR(up[2].x, 1 / std::sqrt(1.0f + (0.125f / 0.25f) * (0.125f / 0.25f)), 1e-6f);  // [0.75, 1.125): 0.25 x, 0.125 y
+  EXPECT_EQ(up[0], glm::vec3(1, 0, 0));  // [0, 0.375)
+  EXPECT_NEAR(up[2].x, 1 / std::sqrt(1.0f + (0.125f / 0.25f) * (0.125f / 0.25f)),
+              1e-6f);  // [0.75, 1.125): 0.25 x, 0.125 y
   EXPECT_EQ(up[7], glm::vec3(0, 0, 1));
 }
 
@@ -95,7 +100,7 @@ TEST(NormalMapImage, MaterialsNameTheirNormalMaps) {
   normal_map_settings s;
   s.grey_is_height = true;
   const loaded_normal_map h = load_normal_map(height.normal_texture->file, s);
-  EXPECT_TRUE(h.from_height);  // a grey bump image is a height map
+  EXPECT_TRUE(h.from_height);                                                       // a grey bump image is a height map
   EXPECT_FALSE(import_mesh(meshes / "cube_seams.obj").normal_texture.has_value());  // its .mtl is missing
 }
 
@@ -117,7 +122,8 @@ TEST(NormalMapImage, HostileImagesGiveOneLineErrors) {
   expect_error([] { load_normal_map(images / "huge_header.tga", {}); }, "huge_header.tga: ");
   // A cut or overrunning RLE stream (16×16, 24-bit; written by hand, see tests/data/README.md) is
   // refused, not decoded with zeros: cut_rle.tga holds one run of 3 pixels and ends.
-  expect_error([] { load_normal_map(images / "cut_rle.tga", {}); }, "cut_rle.tga: the TGA's RLE stream ends after 3 of 256 pixels");
+  expect_error([] { load_normal_map(images / "cut_rle.tga", {}); },
+               "cut_rle.tga: the TGA's RLE stream ends after 3 of 256 pixels");
   // overrun_rle.tga's four 128-pixel runs cover the 256 pixels twice: what follows the first two is
   // trailing data, as a TGA 2.0 file's extension area and footer are, so the map decodes (all 0xc8c880).
   const loaded_normal_map over = load_normal_map(images / "overrun_rle.tga", {});
@@ -126,7 +132,8 @@ TEST(NormalMapImage, HostileImagesGiveOneLineErrors) {
 }
 
 // A PNG written by libpng's simplified API (png_image) from 5x3 pixels of `format`.
-std::vector<std::uint8_t> encode_png(png_uint_32 format, const std::vector<std::uint8_t>& pixels, const std::uint8_t* colormap) {
+std::vector<std::uint8_t> encode_png(png_uint_32 format, const std::vector<std::uint8_t>& pixels,
+                                     const std::uint8_t* colormap) {
   png_image img{};
   img.version = PNG_IMAGE_VERSION;
   img.width = 5;
@@ -149,7 +156,8 @@ TEST(PngRgba, AgreesWithLibpngsSimplifiedReader) {
   for (std::size_t i = 0; i < values.size(); ++i) values[i] = static_cast<std::uint8_t>(37 * i + 11);
   for (std::size_t i = 0; i < indices.size(); ++i) indices[i] = static_cast<std::uint8_t>(i % 4);
   const std::uint8_t colormap[16] = {200, 10, 30, 255, 0, 90, 250, 0, 60, 60, 61, 128, 255, 255, 255, 255};
-  for (const png_uint_32 format : std::initializer_list<png_uint_32>{PNG_FORMAT_GRAY, PNG_FORMAT_GA, PNG_FORMAT_RGB, PNG_FORMAT_RGBA, PNG_FORMAT_RGBA_COLORMAP}) {
+  for (const png_uint_32 format : std::initializer_list<png_uint_32>{PNG_FORMAT_GRAY, PNG_FORMAT_GA, PNG_FORMAT_RGB,
+                                                                     PNG_FORMAT_RGBA, PNG_FORMAT_RGBA_COLORMAP}) {
     const bool mapped = (format & PNG_FORMAT_FLAG_COLORMAP) != 0;
     const std::vector<std::uint8_t> file = encode_png(format, mapped ? indices : values, mapped ? colormap : nullptr);
     const rgba_image got = decode_png_rgba(file.data(), file.size(), "test.png");

@@ -22,7 +22,8 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path temp_dir() {
-  return gsdot3::test::fresh_temp_dir(std::string("gsdot3-pipeline-test-") + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+  return gsdot3::test::fresh_temp_dir(std::string("gsdot3-pipeline-test-") +
+                                      ::testing::UnitTest::GetInstance()->current_test_info()->name());
 }
 
 fs::path write(const fs::path& dir, const std::string& name, const std::string& text) {
@@ -42,15 +43,20 @@ const std::string good_quad =
 TEST(BadInput, Obj) {
   const fs::path d = temp_dir();
   expect_error([&] { import_mesh(d / "missing.obj"); }, "cannot open the mesh");
-  expect_error([&] { import_mesh(write(d, "nan.obj", "v 0 0 nan\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/1 3/1\n")); }, "non-finite position");
+  expect_error([&] { import_mesh(write(d, "nan.obj", "v 0 0 nan\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/1 3/1\n")); },
+               "non-finite position");
   expect_error([&] { import_mesh(write(d, "word.obj", "v 0 zero 0\nf 1 2 3\n")); }, "word.obj: ");
   expect_error([&] { import_mesh(write(d, "short.obj", "v 0 0\nf 1 1 1\n")); }, "short.obj: ");
-  expect_error([&] { import_mesh(write(d, "index.obj", "v 0 0 0\nvt 0 0\nvn 0 0 1\nf 1/1/1 2/1/1 3/1/1\n")); }, "index.obj: ");
-  expect_error([&] { import_mesh(write(d, "nouv.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\n")); }, "--uv-projection");
+  expect_error([&] { import_mesh(write(d, "index.obj", "v 0 0 0\nvt 0 0\nvn 0 0 1\nf 1/1/1 2/1/1 3/1/1\n")); },
+               "index.obj: ");
+  expect_error([&] { import_mesh(write(d, "nouv.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\n")); },
+               "--uv-projection");
   expect_error([&] { import_mesh(write(d, "empty.obj", "# nothing\n")); }, "empty.obj: ");
-  expect_error([&] {
-    import_mesh(write(d, "degenerate.obj", "v 0 0 0\nv 1 1 1\nv 2 2 2\nvt 0 0\nvn 0 0 1\nf 1/1/1 2/1/1 3/1/1\n"));
-  }, "no triangles");
+  expect_error(
+      [&] {
+        import_mesh(write(d, "degenerate.obj", "v 0 0 0\nv 1 1 1\nv 2 2 2\nvt 0 0\nvn 0 0 1\nf 1/1/1 2/1/1 3/1/1\n"));
+      },
+      "no triangles");
   EXPECT_EQ(import_mesh(write(d, "good.obj", good_quad)).model.triangles.size(), 2u);
   fs::remove_all(d);
 }
@@ -129,7 +135,9 @@ TEST(Report, WritesHtmlLastAndReplacesAnOldOne) {
 
 TEST(Mesh, DegenerateUvStillGivesUnitOrthogonalTangents) {
   const fs::path d = temp_dir();
-  const mesh m = import_mesh(write(d, "flatuv.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0.5 0.5\nvn 0 0 1\nf 1/1/1 2/1/1 3/1/1\n")).model;
+  const mesh m =
+      import_mesh(write(d, "flatuv.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0.5 0.5\nvn 0 0 1\nf 1/1/1 2/1/1 3/1/1\n"))
+          .model;
   for (const vertex& v : m.vertices) {
     EXPECT_NEAR(glm::length(v.tangent), 1.0f, 1e-5f);
     EXPECT_NEAR(glm::dot(v.tangent, v.normal), 0.0f, 1e-5f);

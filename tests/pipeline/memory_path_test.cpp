@@ -27,8 +27,9 @@ long expect_same(const scene& s, const prepared_scene& ps, method m, render_opti
   long differing = 0;
   for (std::size_t i = 0; i < a.colour.size() && i < b.colour.size(); ++i)
     if (a.colour[i] != b.colour[i] && differing++ < 3)
-      ADD_FAILURE() << what << " pixel (" << i % static_cast<std::size_t>(a.width) << ", " << i / static_cast<std::size_t>(a.width)
-                    << "): value level 0x" << std::hex << a.colour[i] << ", memory path 0x" << b.colour[i];
+      ADD_FAILURE() << what << " pixel (" << i % static_cast<std::size_t>(a.width) << ", "
+                    << i / static_cast<std::size_t>(a.width) << "): value level 0x" << std::hex << a.colour[i]
+                    << ", memory path 0x" << b.colour[i];
   EXPECT_EQ(differing, 0) << what;
   EXPECT_EQ(a.dot, b.dot) << what;
   EXPECT_EQ(a.visible_triangle, b.visible_triangle) << what;
@@ -44,7 +45,8 @@ TEST_P(MemoryPath, EqualsTheValueLevelFrameOnTheEmbeddedScene) {
       o.bilinear = bilinear;
       o.specular = specular;
       o.specular_power = specular ? 8.0 : 1.0;
-      expect_same(s, ps, GetParam(), o, std::string("bilinear ") + (bilinear ? "on" : "off") + ", specular " + (specular ? "on" : "off"));
+      expect_same(s, ps, GetParam(), o,
+                  std::string("bilinear ") + (bilinear ? "on" : "off") + ", specular " + (specular ? "on" : "off"));
     }
 }
 
@@ -72,8 +74,8 @@ TEST_P(MemoryPath, EqualsTheValueLevelFrameOnRandomScenes) {
     o.bilinear = trial % 2 == 1;
     o.specular = trial % 4 >= 2;
     o.threads = threads(rng);
-    EXPECT_GT(expect_same(s, ps, GetParam(), o, "trial " + std::to_string(trial)), 200) << "trial " << trial
-                                                                                       << ": the head should be in view";
+    EXPECT_GT(expect_same(s, ps, GetParam(), o, "trial " + std::to_string(trial)), 200)
+        << "trial " << trial << ": the head should be in view";
     // Section 3.4's z-trick (the DPB drawn in PSMZ32, cleared by the ILP pass's Z writes) on the
     // memory path gives the value-level frame too (every texture_buffer model: each Z write lands on
     // the word just read).
@@ -88,7 +90,11 @@ TEST_P(MemoryPath, EqualsTheValueLevelFrameOnRandomScenes) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Methods, MemoryPath, ::testing::Values(method::two_pass, method::four_pass, method::baseline),
-                         [](const auto& info) { return std::string(info.param == method::two_pass ? "TwoPass" : info.param == method::four_pass ? "FourPass" : "Baseline"); });
+                         [](const auto& info) {
+                           return std::string(info.param == method::two_pass    ? "TwoPass"
+                                              : info.param == method::four_pass ? "FourPass"
+                                                                                : "Baseline");
+                         });
 
 }  // namespace
 }  // namespace gsdot3::pipeline
@@ -114,8 +120,8 @@ TEST_P(MemoryPath, ZBufferClearOfTheDpbEqualsExplicitClears) {
       o.dpb_clear = mode;
       o.model.tex_buffer = tb;
       const frame f = render(s, ps, GetParam(), o);
-      const bool expect_equal = mode == dpb_clear_mode::z_trick || tb == gs::texture_buffer::page ||
-                                tb == gs::texture_buffer::draw_snapshot;
+      const bool expect_equal =
+          mode == dpb_clear_mode::z_trick || tb == gs::texture_buffer::page || tb == gs::texture_buffer::draw_snapshot;
       EXPECT_EQ(f.colour == expl.colour && f.dot == expl.dot, expect_equal)
           << name(mode) << ", texture_buffer " << gs::option_value(o.model, "texture_buffer");
     }
@@ -137,8 +143,9 @@ TEST(MemoryPicture, DpbPicturesFollowTheChannelFetchFormula) {
   trace[0] = {"2.3 x", 0, "DPB", std::vector<std::uint32_t>(w * h), {}, {}, {}};
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x)
-      trace[0].word[static_cast<std::size_t>(y * w + x)] = static_cast<std::uint32_t>(x) | static_cast<std::uint32_t>(y) << 8 |
-                                                           0x40u << 16 | static_cast<std::uint32_t>(x ^ y) << 24;
+      trace[0].word[static_cast<std::size_t>(y * w + x)] = static_cast<std::uint32_t>(x) |
+                                                           static_cast<std::uint32_t>(y) << 8 | 0x40u << 16 |
+                                                           static_cast<std::uint32_t>(x ^ y) << 24;
   trace[1] = {"2.4 R += G", 0, "DPB", {}, {}, {}, {}};
   const dpb_pictures p = post_filter_dpb_pictures(trace, w, h, false);
   for (int y = 0; y < h; ++y)
@@ -157,7 +164,8 @@ TEST(MemoryPicture, DpbPicturesFollowTheChannelFetchFormula) {
       const int y = ((pv & ~3) >> 1) | (pv & 1);
       const std::uint32_t word = trace[0].word[static_cast<std::size_t>((v / 64 * 32 + y) * w + u / 128 * 64 + x)];
       const int c = (pv & 2) ? ((pu & 8) ? 3 : 1) : ((pu & 8) ? 2 : 0);
-      ASSERT_EQ(p.as_psmt8.data[static_cast<std::size_t>(v * 2 * w + u)], (word >> (8 * c)) & 0xFF) << "texel (" << u << ", " << v << ")";
+      ASSERT_EQ(p.as_psmt8.data[static_cast<std::size_t>(v * 2 * w + u)], (word >> (8 * c)) & 0xFF)
+          << "texel (" << u << ", " << v << ")";
     }
   EXPECT_THROW(post_filter_dpb_pictures({trace[1]}, w, h, false), std::invalid_argument);
 }

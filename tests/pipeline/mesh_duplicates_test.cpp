@@ -15,7 +15,8 @@ const std::filesystem::path data = std::filesystem::path(GSDOT3_TEST_DATA) / "me
 
 TEST(Duplicates, SameWindingAtAnyStartIsADuplicateOppositeWindingIsNot) {
   mesh m;
-  for (glm::vec3 p : {glm::vec3(0, 0, 0), glm::vec3(1, 0, 0), glm::vec3(0, 1, 0)}) m.vertices.push_back({p, {0, 0, 1}, {1, 0, 0}, {0, 1, 0}, {}});
+  for (glm::vec3 p : {glm::vec3(0, 0, 0), glm::vec3(1, 0, 0), glm::vec3(0, 1, 0)})
+    m.vertices.push_back({p, {0, 0, 1}, {1, 0, 0}, {0, 1, 0}, {}});
   // Vertices 3..5: the same positions with other UVs (and −0 for +0): coincident corners.
   m.vertices.push_back({{-0.0f, 0, 0}, {0, 0, 1}, {1, 0, 0}, {0, 1, 0}, {0.5f, 0.5f}});
   m.vertices.push_back({{1, -0.0f, 0}, {0, 0, 1}, {1, 0, 0}, {0, 1, 0}, {0.7f, 0.5f}});
@@ -38,7 +39,8 @@ TEST(Duplicates, TwoQuadsDrawnTwiceAreCountedAndDroppedByDefault) {
   EXPECT_EQ(dropped.model.triangles.size(), 4u);
   EXPECT_EQ(dropped.report.triangles, 4u);
   bool noticed = false;
-  for (const std::string& n : dropped.report.notices) noticed = noticed || n.find("4 duplicated triangle(s)") != std::string::npos;
+  for (const std::string& n : dropped.report.notices)
+    noticed = noticed || n.find("4 duplicated triangle(s)") != std::string::npos;
   EXPECT_TRUE(noticed);
 
   import_options keep;

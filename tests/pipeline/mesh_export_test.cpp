@@ -22,9 +22,11 @@ const fs::path data = fs::path(GSDOT3_TEST_DATA) / "meshes";
 std::vector<float> floats_of(const tinygltf::Model& g, int accessor) {
   const tinygltf::Accessor& a = g.accessors[static_cast<std::size_t>(accessor)];
   const tinygltf::BufferView& v = g.bufferViews[static_cast<std::size_t>(a.bufferView)];
-  const std::size_t n = a.count * static_cast<std::size_t>(tinygltf::GetNumComponentsInType(static_cast<std::uint32_t>(a.type)));
+  const std::size_t n =
+      a.count * static_cast<std::size_t>(tinygltf::GetNumComponentsInType(static_cast<std::uint32_t>(a.type)));
   std::vector<float> out(n);
-  std::memcpy(out.data(), g.buffers[static_cast<std::size_t>(v.buffer)].data.data() + v.byteOffset + a.byteOffset, n * sizeof(float));
+  std::memcpy(out.data(), g.buffers[static_cast<std::size_t>(v.buffer)].data.data() + v.byteOffset + a.byteOffset,
+              n * sizeof(float));
   return out;
 }
 
@@ -41,8 +43,10 @@ TEST(MeshExport, TangentWIsGltfsHandedness) {
   ASSERT_TRUE(loader.LoadBinaryFromFile(&g, &err, &warn, (d / "strip.glb").string())) << err;
   ASSERT_EQ(g.meshes.size(), 1u);
   const tinygltf::Primitive& p = g.meshes[0].primitives.at(0);
-  for (const char* name : {"POSITION", "NORMAL", "TANGENT", "TEXCOORD_0"}) ASSERT_EQ(p.attributes.count(name), 1u) << name;
-  const std::vector<float> pos = floats_of(g, p.attributes.at("POSITION")), tan = floats_of(g, p.attributes.at("TANGENT"));
+  for (const char* name : {"POSITION", "NORMAL", "TANGENT", "TEXCOORD_0"})
+    ASSERT_EQ(p.attributes.count(name), 1u) << name;
+  const std::vector<float> pos = floats_of(g, p.attributes.at("POSITION")),
+                           tan = floats_of(g, p.attributes.at("TANGENT"));
   ASSERT_EQ(tan.size(), pos.size() / 3 * 4);
   std::size_t left = 0, right = 0;
   for (std::size_t i = 0; i < pos.size() / 3; ++i) {

@@ -88,8 +88,9 @@ TEST(MeshImport, CubeWithUvSeamsGetsSmoothNormalsAcrossTheSeams) {
   for (const auto& t : flat.model.triangles) {
     const glm::vec3 n = flat.model.vertices[t[0]].normal;
     EXPECT_NEAR(std::fabs(n.x) + std::fabs(n.y) + std::fabs(n.z), 1.0f, 1e-6f);  // an axis
-    const glm::vec3 centre = (flat.model.vertices[t[0]].position + flat.model.vertices[t[1]].position +
-                              flat.model.vertices[t[2]].position) / 3.0f;
+    const glm::vec3 centre =
+        (flat.model.vertices[t[0]].position + flat.model.vertices[t[1]].position + flat.model.vertices[t[2]].position) /
+        3.0f;
     EXPECT_GT(glm::dot(n, centre), 0.0f);  // outwards
   }
   expect_frames(flat.model);
@@ -154,10 +155,14 @@ TEST(MeshImport, BadFilesGiveOneLineErrorsNamingTheFile) {
   expect_error([] { import_mesh(data / "bad_truncated.glb"); }, "bad_truncated.glb: cannot read the mesh");
   // An OFF header promising 2 faces with only 1 present makes assimp 5.2 abort (an ai_assert in its
   // triangulation): the import's child process dies, gsdot3 reports it.
-  expect_error([] { import_mesh(data / "bad_off_face_count.off"); }, "bad_off_face_count.off: the reader crashed (signal 6)");
-  expect_error([] { import_mesh_from_memory("v 0 0 0\nvt 0 0\nf 1/1 2/1 3/1\n", "obj"); }, "<memory>.obj: cannot read the mesh");
-  expect_error([] { import_mesh_from_memory("v 0 0 0\nv 1 1 1\nv 2 2 2\nvt 0 0\nf 1/1 2/1 3/1\n", "obj"); }, "no triangles");
-  expect_error([] { import_mesh_from_memory("v 0 0 0\nv 1 0 0\nv 0 1e39 0\nvt 0 0\nf 1/1 2/1 3/1\n", "obj"); }, "non-finite position");
+  expect_error([] { import_mesh(data / "bad_off_face_count.off"); },
+               "bad_off_face_count.off: the reader crashed (signal 6)");
+  expect_error([] { import_mesh_from_memory("v 0 0 0\nvt 0 0\nf 1/1 2/1 3/1\n", "obj"); },
+               "<memory>.obj: cannot read the mesh");
+  expect_error([] { import_mesh_from_memory("v 0 0 0\nv 1 1 1\nv 2 2 2\nvt 0 0\nf 1/1 2/1 3/1\n", "obj"); },
+               "no triangles");
+  expect_error([] { import_mesh_from_memory("v 0 0 0\nv 1 0 0\nv 0 1e39 0\nvt 0 0\nf 1/1 2/1 3/1\n", "obj"); },
+               "non-finite position");
   expect_error([] { import_mesh_from_memory("", "obj"); }, "cannot read the mesh");
 }
 

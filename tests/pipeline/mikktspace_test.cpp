@@ -63,7 +63,9 @@ std::vector<tangent_corner> cube(UvOf uv_of) {
 // Split UVs: every face its own island. No corner welds across faces, so each corner's group is its
 // face's triangles there, all with dP/du = U: t = U projected into the corner normal's plane.
 TEST(MikkTSpaceByHand, CubeWithSplitUvsTakesEachFacesOwnAxis) {
-  const auto corners = cube([](std::size_t f, float a, float b) { return glm::vec2(2.0f * static_cast<float>(f) + (a + 1) / 2, (b + 1) / 2); });
+  const auto corners = cube([](std::size_t f, float a, float b) {
+    return glm::vec2(2.0f * static_cast<float>(f) + (a + 1) / 2, (b + 1) / 2);
+  });
   const auto r = mikktspace_tangents(corners);
   for (std::size_t c = 0; c < corners.size(); ++c)
     expect_frame(r.corners[c], projected(faces[c / 6].U, corners[c].normal), 1.0f, "split cube", c);
@@ -85,9 +87,10 @@ TEST(MikkTSpaceByHand, CubeWithSharedUvsGroupsByEdgesNotByWeldedCorners) {
       // An edge from this corner's triangle that d's triangle also has, with the same UVs at the far end.
       for (std::size_t e = 3 * (c / 3); e < 3 * (c / 3) + 3; ++e)
         for (std::size_t g = 3 * (d / 3); g < 3 * (d / 3) + 3; ++g)
-          edges_agreeing += e != c && g != d && corners[e].position == corners[g].position && corners[e].uv == corners[g].uv;
+          edges_agreeing +=
+              e != c && g != d && corners[e].position == corners[g].position && corners[e].uv == corners[g].uv;
     }
-  ASSERT_GT(welded_across, 0u);  // the case is exercised
+  ASSERT_GT(welded_across, 0u);   // the case is exercised
   ASSERT_EQ(edges_agreeing, 0u);  // and is the one described
   const auto r = mikktspace_tangents(corners);
   for (std::size_t c = 0; c < corners.size(); ++c)
@@ -167,8 +170,8 @@ TEST(MikkTSpaceByHand, AlternatingMirrorsAroundAVertexKeepEveryTriangleApart) {
 // (45°) and T2 (90°): t = normalize(π/4·x + π/2·(1,1,0)/√2). Every other corner: its own dP/du.
 TEST(MikkTSpaceByHand, BowTieVertexKeepsItsTwoFansApart) {
   const glm::vec3 n{0, 0, 1}, c{0, 0, 0}, x{1, 0, 0}, y{0, 1, 0};
-  const std::vector<tangent_corner> corners{{c, n, {0, 0}}, {x, n, {1, 0}}, {y, n, {0, 1}},
-                                            {c, n, {0, 0}}, {y, n, {0, 1}}, {{-1, 1, 0}, n, {-1, 2}},
+  const std::vector<tangent_corner> corners{{c, n, {0, 0}}, {x, n, {1, 0}},  {y, n, {0, 1}},
+                                            {c, n, {0, 0}}, {y, n, {0, 1}},  {{-1, 1, 0}, n, {-1, 2}},
                                             {c, n, {0, 0}}, {-y, n, {1, 0}}, {{1, -1, 0}, n, {1, 1}}};
   const glm::vec3 d2 = glm::normalize(glm::vec3(1, 1, 0));
   const glm::vec3 at_c = glm::normalize(pi / 2 * x + pi / 4 * d2), at_y = glm::normalize(pi / 4 * x + pi / 2 * d2);

@@ -21,9 +21,10 @@ bool on_an_edge(const prepared_scene& ps, int x, int y) {
   for (const prepared_triangle& t : ps.triangles)
     for (int i = 0; i < 3; ++i) {
       const xy124 a = t.setup.v[static_cast<std::size_t>(i)], b = t.setup.v[static_cast<std::size_t>((i + 1) % 3)];
-      const std::int64_t e = static_cast<std::int64_t>(b.x - a.x) * (16 * y - a.y) - static_cast<std::int64_t>(b.y - a.y) * (16 * x - a.x);
-      const bool within = 16 * x >= std::min(a.x, b.x) && 16 * x <= std::max(a.x, b.x) && 16 * y >= std::min(a.y, b.y) &&
-                          16 * y <= std::max(a.y, b.y);
+      const std::int64_t e =
+          static_cast<std::int64_t>(b.x - a.x) * (16 * y - a.y) - static_cast<std::int64_t>(b.y - a.y) * (16 * x - a.x);
+      const bool within = 16 * x >= std::min(a.x, b.x) && 16 * x <= std::max(a.x, b.x) &&
+                          16 * y >= std::min(a.y, b.y) && 16 * y <= std::max(a.y, b.y);
       if (e == 0 && within) return true;
     }
   return false;
@@ -44,7 +45,8 @@ TEST_P(Mirror, SymmetricSceneGivesSymmetricFrame) {
   int compared = 0, mismatched = 0, worst = 0;
   for (int y = 0; y < s.height; ++y)
     for (int x = 1; x < s.width; ++x) {
-      const std::size_t a = static_cast<std::size_t>(y * s.width + x), b = static_cast<std::size_t>(y * s.width + (s.width - x));
+      const std::size_t a = static_cast<std::size_t>(y * s.width + x),
+                        b = static_cast<std::size_t>(y * s.width + (s.width - x));
       if (on_an_edge(ps, x, y) || on_an_edge(ps, s.width - x, y)) continue;
       ++compared;
       const int d = std::abs(dot_value(f.dot[0][a]) - dot_value(f.dot[0][b]));

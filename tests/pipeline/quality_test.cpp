@@ -50,8 +50,10 @@ TEST(Quality, FiguresAgreeWithIndependentComputations) {
     const double phi = (std::sqrt(5.0) - 1) / 2;
     for (int it = 0; it < 80; ++it) {
       const double c = b - phi * (b - a), d = a + phi * (b - a);
-      if (rmse_at(c) < rmse_at(d)) b = d;
-      else a = c;
+      if (rmse_at(c) < rmse_at(d))
+        b = d;
+      else
+        a = c;
     }
     EXPECT_NEAR(e.gain, (a + b) / 2, 1e-6);
     EXPECT_NEAR(e.after_gain, rmse_at((a + b) / 2), 1e-9);
@@ -78,9 +80,7 @@ TEST(Quality, FiguresAgreeWithIndependentComputations) {
         ++n;
       }
     EXPECT_EQ(e.sign_change_samples, n);
-    if (n > 0) {
-      EXPECT_NEAR(e.sign_change, std::sqrt(sum / static_cast<double>(n)), 1e-9);
-    }
+    if (n > 0) { EXPECT_NEAR(e.sign_change, std::sqrt(sum / static_cast<double>(n)), 1e-9); }
     sign_change_seen += n;
   }
   EXPECT_GT(sign_change_seen, 0u) << "the scene has no triangle where the per-vertex clamping acts";
@@ -100,7 +100,8 @@ TEST(Quality, VerdictIsHoldsRefutedOrMixedWithTheCount) {
       {"b", {errors(method::two_pass, 3, 10), errors(method::four_pass, 4, 30), errors(method::baseline, 2, 20)}}};
   const auto rows = quality_rows(scenes);
   auto find = [&](const std::string& claim, const std::string& metric) {
-    const auto it = std::find_if(rows.begin(), rows.end(), [&](const quality_row& r) { return r.claim == claim && r.metric == metric; });
+    const auto it = std::find_if(rows.begin(), rows.end(),
+                                 [&](const quality_row& r) { return r.claim == claim && r.metric == metric; });
     EXPECT_NE(it, rows.end()) << claim << " " << metric;
     return it == rows.end() ? quality_row{} : *it;
   };
@@ -113,7 +114,9 @@ TEST(Quality, VerdictIsHoldsRefutedOrMixedWithTheCount) {
   ASSERT_EQ(r.per_scene.size(), 2u);
   EXPECT_EQ(r.per_scene[1], (std::pair<double, double>{4, 3}));
   // Four-pass normalises: the unnormalised-product metrics are not its claim.
-  EXPECT_EQ(std::count_if(rows.begin(), rows.end(), [](const quality_row& x) { return x.claim == "quality.four-pass-vs-two-pass"; }), 1);
+  EXPECT_EQ(std::count_if(rows.begin(), rows.end(),
+                          [](const quality_row& x) { return x.claim == "quality.four-pass-vs-two-pass"; }),
+            1);
 }
 
 TEST(Quality, EqualOnEveryScene) {

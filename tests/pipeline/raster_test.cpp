@@ -61,8 +61,8 @@ TEST(FillRule, TrianglesMatchTheSpanRule) {
     for (int y = -8; y < 64; ++y)
       for (int x = -8; x < 64; ++x) {
         const bool expect = test::span_rule_covers(v, x, y);
-        ASSERT_EQ(covers(t, x, y), expect) << "pixel " << x << "," << y << " triangle " << v[0].x << "," << v[0].y << " "
-                                           << v[1].x << "," << v[1].y << " " << v[2].x << "," << v[2].y;
+        ASSERT_EQ(covers(t, x, y), expect) << "pixel " << x << "," << y << " triangle " << v[0].x << "," << v[0].y
+                                           << " " << v[1].x << "," << v[1].y << " " << v[2].x << "," << v[2].y;
         ASSERT_EQ(raster.count({x, y}) == 1, expect) << "pixel " << x << "," << y;
       }
   }

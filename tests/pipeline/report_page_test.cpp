@@ -35,11 +35,12 @@ TEST(ReportPage, GsMethodClaimsAreInTheCatalogue) {
   }
   // A scheme method gets its seed's section; the paper's own section is "Seed 000".
   const auto paper = claims_for_method("some-scheme", "000 (Mikkelsen 2004)");
-  EXPECT_EQ(paper.size(), proofs::catalogue().size() - [] {
-    std::size_t others = 0;
-    for (const auto& c : proofs::catalogue()) others += c.section != proofs::claim::mikkelsen_section;
-    return others;
-  }());
+  EXPECT_EQ(
+      paper.size(), proofs::catalogue().size() - [] {
+        std::size_t others = 0;
+        for (const auto& c : proofs::catalogue()) others += c.section != proofs::claim::mikkelsen_section;
+        return others;
+      }());
 }
 
 TEST(ReportPage, PageAndPixelFileAreWritten) {

@@ -41,16 +41,18 @@ void expect_round_trip(const scene& s, const prepared_scene& ps, method m, rende
   const frame f = render(s, ps, m, o);
   o.trace = nullptr;
   const frame_packets fp = build_frame_packets(s, ps, m, o);
-  const gs::dump::gs_dump d = gs::dump::read_dump(gs::dump::write_dump(frame_dump(fp, {gs::packets::video_mode::ntsc, max_packet})));
+  const gs::dump::gs_dump d =
+      gs::dump::read_dump(gs::dump::write_dump(frame_dump(fp, {gs::packets::video_mode::ntsc, max_packet})));
   gs::mem::local_memory mem;
   gs::packets::interpreter gs(mem, {o.model, false});
-  // The dump's PATH3 transfers (GIF packets of at most max_packet bytes) event by event (as interpreter::replay applies it), the DPB read
-  // when the last primitive into the LAB (FRAME_1.FBP = P: the last light's ILP pass, which reads the
+  // The dump's PATH3 transfers (GIF packets of at most max_packet bytes) event by event (as interpreter::replay applies
+  // it), the DPB read when the last primitive into the LAB (FRAME_1.FBP = P: the last light's ILP pass, which reads the
   // DPB's sums) starts.
   gs.load_state(d.state, d.state_version);
   const auto paths = gs::dump::decode_paths(d);
   ASSERT_EQ(paths[2].events.size(), paths[2].file_offsets.size());
-  const std::uint8_t FRAME_1 = *gs::packets::gs_register_address("FRAME_1"), PRIM = *gs::packets::gs_register_address("PRIM");
+  const std::uint8_t FRAME_1 = *gs::packets::gs_register_address("FRAME_1"),
+                     PRIM = *gs::packets::gs_register_address("PRIM");
   const auto P = fp.buffers.pages;
   std::size_t last_into_lab = 0;
   std::uint32_t fbp = 0;
@@ -69,15 +71,18 @@ void expect_round_trip(const scene& s, const prepared_scene& ps, method m, rende
     std::vector<std::uint32_t> w(static_cast<std::size_t>(s.width) * static_cast<std::size_t>(s.height));
     for (int y = 0; y < s.height; ++y)
       for (int x = 0; x < s.width; ++x)
-        w[static_cast<std::size_t>(y * s.width + x)] = mem.read_pixel(at, static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y));
+        w[static_cast<std::size_t>(y * s.width + x)] =
+            mem.read_pixel(at, static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y));
     return w;
   };
   std::vector<std::uint32_t> dpb_read_by_ilp;
   for (std::size_t i = 0; i < paths[2].events.size(); ++i) {
     if (i == last_into_lab) dpb_read_by_ilp = words(buffer_at(0));
-    gs.apply(paths[2].events[i], paths[2].file_offsets[i]);  // throws gs::packets::unmodelled_error at what the model cannot draw
+    gs.apply(paths[2].events[i],
+             paths[2].file_offsets[i]);  // throws gs::packets::unmodelled_error at what the model cannot draw
   }
-  for (const auto& u : gs.unmodelled_features()) ADD_FAILURE() << what << ": unmodelled at byte " << u.offset << ": " << u.what;
+  for (const auto& u : gs.unmodelled_features())
+    ADD_FAILURE() << what << ": unmodelled at byte " << u.offset << ": " << u.what;
   // The layout (docs/dumps.md): the DPB at FBP 0, the LAB at P, the output at 2P.
   const struct {
     const char* name;
@@ -93,8 +98,8 @@ void expect_round_trip(const scene& s, const prepared_scene& ps, method m, rende
       for (int x = 0; x < s.width; ++x) {
         const auto i = static_cast<std::size_t>(y * s.width + x);
         if (b.rendered[i] != b.replayed[i] && differing++ < 3)
-          ADD_FAILURE() << what << ": " << b.name << " (" << x << ", " << y << "): renderer 0x" << std::hex << b.rendered[i]
-                        << ", replay 0x" << b.replayed[i];
+          ADD_FAILURE() << what << ": " << b.name << " (" << x << ", " << y << "): renderer 0x" << std::hex
+                        << b.rendered[i] << ", replay 0x" << b.replayed[i];
       }
     EXPECT_EQ(differing, 0) << what << ": " << b.name;
   }
@@ -106,7 +111,8 @@ void expect_round_trip(const scene& s, const prepared_scene& ps, method m, rende
     differing += f.dot.back()[i] != (dpb_read_by_ilp[i] & 0xFFu);
   }
   EXPECT_EQ(differing, 0) << what << ": frame / dot";
-  EXPECT_GT(std::count_if(f.visible_triangle.begin(), f.visible_triangle.end(), [](std::int32_t t) { return t >= 0; }), 200)
+  EXPECT_GT(std::count_if(f.visible_triangle.begin(), f.visible_triangle.end(), [](std::int32_t t) { return t >= 0; }),
+            200)
       << what << ": the head should be in view";
 }
 
@@ -143,7 +149,11 @@ TEST_P(RoundTrip, ReplayedDumpIsTheRenderersFrameOnRandomScenes) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Methods, RoundTrip, ::testing::Values(method::two_pass, method::four_pass, method::baseline),
-                         [](const auto& info) { return std::string(info.param == method::two_pass ? "TwoPass" : info.param == method::four_pass ? "FourPass" : "Baseline"); });
+                         [](const auto& info) {
+                           return std::string(info.param == method::two_pass    ? "TwoPass"
+                                              : info.param == method::four_pass ? "FourPass"
+                                                                                : "Baseline");
+                         });
 
 }  // namespace
 }  // namespace gsdot3::pipeline

@@ -36,7 +36,8 @@ struct pixel_inputs {
   std::int32_t u16 = 0, v16 = 0;
 };
 
-pixel_inputs inputs_at(const prepared_triangle& t, const std::array<gs::rgba8, 3>& c, const std::array<std::array<std::int32_t, 2>, 3>& uv, int x, int y) {
+pixel_inputs inputs_at(const prepared_triangle& t, const std::array<gs::rgba8, 3>& c,
+                       const std::array<std::array<std::int32_t, 2>, 3>& uv, int x, int y) {
   std::array<gs::gouraud_vertex, 3> gv{};
   int xr = 1 << 16, yr = 1 << 16;
   for (std::size_t k = 0; k < 3; ++k) {
@@ -45,7 +46,8 @@ pixel_inputs inputs_at(const prepared_triangle& t, const std::array<gs::rgba8, 3
     yr = std::min(yr, ceil_124(t.setup.v[k].y));
   }
   const gs::gouraud_plane gp = *gs::gouraud_triangle(gv[0], gv[1], gv[2], xr + xy_offset_pixels, yr + xy_offset_pixels);
-  const gs::fragment_colour f = gs::gouraud_colour(gp, x + xy_offset_pixels, y + xy_offset_pixels, gs::model_options{}.setup);
+  const gs::fragment_colour f =
+      gs::gouraud_colour(gp, x + xy_offset_pixels, y + xy_offset_pixels, gs::model_options{}.setup);
   pixel_inputs in;
   in.colour87 = {f.r.value(), f.g.value(), f.b.value(), f.a.value()};
   in.u16 = make_plane(t.setup.v, {uv[0][0], uv[1][0], uv[2][0]}, -(1 << 20), 1 << 20).at(x, y);
@@ -68,7 +70,8 @@ expectation expected_dot(method m, const scene& s, const prepared_scene& ps, int
   std::array<gs::rgba8, 3> colour{};
   const pixel_inputs nm_in = inputs_at(t, colour, t.uv16, x, y);
   const int size = s.normals.width;
-  const glm::vec3 n = s.normals.palette[s.normals.index[static_cast<std::size_t>(((nm_in.v16 >> 4) & (size - 1)) * size + ((nm_in.u16 >> 4) & (size - 1)))]];
+  const glm::vec3 n = s.normals.palette[s.normals.index[static_cast<std::size_t>(
+      ((nm_in.v16 >> 4) & (size - 1)) * size + ((nm_in.u16 >> 4) & (size - 1)))]];
   int sum = 0, via_proofs = -1;
   const gs::model_options o{};
   auto frag = [](const pixel_inputs& in) {
@@ -81,21 +84,25 @@ expectation expected_dot(method m, const scene& s, const prepared_scene& ps, int
       for (std::size_t k = 0; k < 3; ++k) {
         const light_vertex& l = lv[t.vertex[k]];
         const int sc = std::clamp(static_cast<int>(std::lround(l.fade * 128.0f)), 0, 128);
-        colour[k] = {gs::u8::from_wrapped(sc), gs::u8::from_wrapped(sc), gs::u8::from_wrapped(sc), gs::u8::from_wrapped(128 - sc)};
+        colour[k] = {gs::u8::from_wrapped(sc), gs::u8::from_wrapped(sc), gs::u8::from_wrapped(sc),
+                     gs::u8::from_wrapped(128 - sc)};
         const st c = sphere_coordinates(l.T);
-        uv[k] = {static_cast<std::int32_t>(std::lround(c.s * 1024)), static_cast<std::int32_t>(std::lround(c.t * 1024))};
+        uv[k] = {static_cast<std::int32_t>(std::lround(c.s * 1024)),
+                 static_cast<std::int32_t>(std::lround(c.t * 1024))};
       }
       const pixel_inputs in = inputs_at(t, colour, uv, x, y);
       const int su = std::clamp(in.u16 >> 4, 0, 63), sv = std::clamp(in.v16 >> 4, 0, 63);
       const std::uint32_t sph = sphere_map(64, 64)[static_cast<std::size_t>(sv * 64 + su)];
       std::uint32_t dpb = 0;
       for (int k = 0; k < 3; ++k) {
-        const int a2 = std::min(255, ((ch(sph, k) * in.colour87[static_cast<std::size_t>(k)]) >> 14) + (in.colour87[3] >> 7));  // HIGHLIGHT
+        const int a2 = std::min(
+            255, ((ch(sph, k) * in.colour87[static_cast<std::size_t>(k)]) >> 14) + (in.colour87[3] >> 7));  // HIGHLIGHT
         const int b2 = 128 + nearest(n[k] * 127);
         sum += (((128 - a2) * b2) >> 7) + a2;
         dpb |= static_cast<std::uint32_t>(a2) << (8 * k);
       }
-      for (int k = 0; k < 3; ++k) dpb = proofs::methods::four_pass_channel(dpb, k, gs::u8::from_wrapped(128 + nearest(n[k] * 127)), o);
+      for (int k = 0; k < 3; ++k)
+        dpb = proofs::methods::four_pass_channel(dpb, k, gs::u8::from_wrapped(128 + nearest(n[k] * 127)), o);
       via_proofs = proofs::methods::sum_rgb(gs::rgba8::from_u32(dpb), o).value();
       break;
     }
@@ -111,7 +118,8 @@ expectation expected_dot(method m, const scene& s, const prepared_scene& ps, int
         sum += ((modulate(P[k], L) - modulate(N[k], L)) & 0xFF) + na;
       }
       const gs::rgba8 dpb = proofs::methods::two_pass_pass1(p.positive, frag(in), o);
-      via_proofs = proofs::methods::sum_rgb_plus_3a(proofs::methods::two_pass_pass2(p.negative, frag(in), dpb, o), o).value();
+      via_proofs =
+          proofs::methods::sum_rgb_plus_3a(proofs::methods::two_pass_pass2(p.negative, frag(in), dpb, o), o).value();
       break;
     }
     case method::baseline: {
@@ -126,7 +134,8 @@ expectation expected_dot(method m, const scene& s, const prepared_scene& ps, int
       for (int k = 0; k < 3; ++k) {
         const int np = nearest(std::max(n[k], 0.0f) * 127), nn = nearest(std::max(-n[k], 0.0f) * 127);
         const auto K = static_cast<std::size_t>(k);
-        sum += 128 + modulate(np, ip.colour87[K]) + modulate(nn, in.colour87[K]) - modulate(nn, ip.colour87[K]) - modulate(np, in.colour87[K]);
+        sum += 128 + modulate(np, ip.colour87[K]) + modulate(nn, in.colour87[K]) - modulate(nn, ip.colour87[K]) -
+               modulate(np, in.colour87[K]);
       }
       break;
     }
@@ -188,8 +197,12 @@ TEST_P(EveryMethod, CachedPathEqualsReferencePathOnRandomScenes) {
     scene s = shared_scene();
     s.width = size(rng);
     s.height = size(rng);
-    s.lights = {{{pos(rng), pos(rng), pos(rng)}, {static_cast<std::uint8_t>(byte(rng)), static_cast<std::uint8_t>(byte(rng)), static_cast<std::uint8_t>(byte(rng))}},
-                {{pos(rng), pos(rng), pos(rng)}, {static_cast<std::uint8_t>(byte(rng)), static_cast<std::uint8_t>(byte(rng)), static_cast<std::uint8_t>(byte(rng))}}};
+    s.lights = {{{pos(rng), pos(rng), pos(rng)},
+                 {static_cast<std::uint8_t>(byte(rng)), static_cast<std::uint8_t>(byte(rng)),
+                  static_cast<std::uint8_t>(byte(rng))}},
+                {{pos(rng), pos(rng), pos(rng)},
+                 {static_cast<std::uint8_t>(byte(rng)), static_cast<std::uint8_t>(byte(rng)),
+                  static_cast<std::uint8_t>(byte(rng))}}};
     s.view.eye = glm::vec3(pos(rng), pos(rng), 3.0f + std::fabs(pos(rng)));
     const prepared_scene ps = prepare(s, yaw(rng), trial % 3 == 2);
     render_options ref;
@@ -204,13 +217,18 @@ TEST_P(EveryMethod, CachedPathEqualsReferencePathOnRandomScenes) {
     ASSERT_EQ(a.colour, b.colour) << "trial " << trial;
     ASSERT_EQ(a.dot, b.dot) << "trial " << trial;
     ASSERT_EQ(a.pixel_ops, b.pixel_ops) << "trial " << trial;
-    ASSERT_GT(std::count_if(a.visible_triangle.begin(), a.visible_triangle.end(), [](std::int32_t t) { return t >= 0; }), 200)
+    ASSERT_GT(
+        std::count_if(a.visible_triangle.begin(), a.visible_triangle.end(), [](std::int32_t t) { return t >= 0; }), 200)
         << "trial " << trial << ": the head should be in view";
   }
 }
 
 INSTANTIATE_TEST_SUITE_P(Methods, EveryMethod, ::testing::Values(method::two_pass, method::four_pass, method::baseline),
-                         [](const auto& info) { return std::string(info.param == method::two_pass ? "TwoPass" : info.param == method::four_pass ? "FourPass" : "Baseline"); });
+                         [](const auto& info) {
+                           return std::string(info.param == method::two_pass    ? "TwoPass"
+                                              : info.param == method::four_pass ? "FourPass"
+                                                                                : "Baseline");
+                         });
 
 // The reference's dot products are in range and the head-on float value is 128.
 TEST(Reference, CoversTheSamePixelsAndStaysInRange) {

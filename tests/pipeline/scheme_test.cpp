@@ -20,7 +20,8 @@ namespace gsdot3::pipeline {
 namespace {
 
 // The scheme a float shader would be: 128·fade·N·normalize(T), with N the texel's palette normal.
-scheme_frame exact_scheme(const scene& s, const prepared_scene& ps, const std::vector<std::int32_t>& visible, const render_options&) {
+scheme_frame exact_scheme(const scene& s, const prepared_scene& ps, const std::vector<std::int32_t>& visible,
+                          const render_options&) {
   scheme_frame f;
   const std::size_t n = static_cast<std::size_t>(ps.width) * static_cast<std::size_t>(ps.height);
   f.dot.assign(s.lights.size(), std::vector<float>(n, NAN));
@@ -37,7 +38,8 @@ scheme_frame exact_scheme(const scene& s, const prepared_scene& ps, const std::v
 }
 
 // The same, clamped at zero (a scheme whose output cannot go negative).
-scheme_frame clamped_scheme(const scene& s, const prepared_scene& ps, const std::vector<std::int32_t>& visible, const render_options& o) {
+scheme_frame clamped_scheme(const scene& s, const prepared_scene& ps, const std::vector<std::int32_t>& visible,
+                            const render_options& o) {
   scheme_frame f = exact_scheme(s, ps, visible, o);
   for (auto& light : f.dot)
     for (float& d : light) d = std::isnan(d) ? d : std::max(d, 0.0f);

@@ -53,8 +53,9 @@ TEST_P(SimdFrame, EqualsTheScalarFrameUnderEveryPathStorageAndOption) {
         const frame scalar = render(s, ps, GetParam(), o);
         o.simd = true;
         const frame vector = render(s, ps, GetParam(), o);
-        const std::string what = std::string(name(GetParam())) + ", " + (path == raster_path::cached ? "cached" : "reference") +
-                                 ", " + st.name + ", variant " + std::to_string(variant);
+        const std::string what = std::string(name(GetParam())) + ", " +
+                                 (path == raster_path::cached ? "cached" : "reference") + ", " + st.name +
+                                 ", variant " + std::to_string(variant);
         long differing = 0;
         for (std::size_t i = 0; i < scalar.colour.size(); ++i)
           if (scalar.colour[i] != vector.colour[i] && differing++ < 3)
@@ -71,9 +72,11 @@ TEST_P(SimdFrame, EqualsTheScalarFrameUnderEveryPathStorageAndOption) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Methods, SimdFrame, ::testing::Values(method::two_pass, method::four_pass, method::baseline),
-                         [](const auto& info) { return std::string(info.param == method::two_pass    ? "TwoPass"
-                                                                   : info.param == method::four_pass ? "FourPass"
-                                                                                                     : "Baseline"); });
+                         [](const auto& info) {
+                           return std::string(info.param == method::two_pass    ? "TwoPass"
+                                              : info.param == method::four_pass ? "FourPass"
+                                                                                : "Baseline");
+                         });
 
 }  // namespace
 }  // namespace gsdot3::pipeline

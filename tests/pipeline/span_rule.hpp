@@ -32,7 +32,7 @@ inline bool span_rule_covers(const std::array<xy124, 3>& v, int px, int py) {
   // Left edge: the one whose crossing is smaller; compare crossings exactly by testing each against px.
   const bool ge0 = side(crossing[0].first, crossing[0].second, px, py) >= 0;  // 16px ≥ x0
   const bool ge1 = side(crossing[1].first, crossing[1].second, px, py) >= 0;
-  const bool gt0 = side(crossing[0].first, crossing[0].second, px, py) < 0;   // 16px < x0
+  const bool gt0 = side(crossing[0].first, crossing[0].second, px, py) < 0;  // 16px < x0
   const bool gt1 = side(crossing[1].first, crossing[1].second, px, py) < 0;
   // px is inside iff it is ≥ one crossing and < the other.
   return (ge0 && gt1) || (ge1 && gt0);

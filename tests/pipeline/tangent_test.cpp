@@ -33,9 +33,12 @@ TEST(Tangents, MikkTSpaceAgreesWithTheReferenceImplementationsTangents) {
   // Positions of the corners of zero-UV-area triangles.
   std::set<std::tuple<float, float, float>> skip;
   for (const auto& t : computed.model.triangles) {
-    const glm::vec2 a = computed.model.vertices[t[0]].uv, b = computed.model.vertices[t[1]].uv, c = computed.model.vertices[t[2]].uv;
+    const glm::vec2 a = computed.model.vertices[t[0]].uv, b = computed.model.vertices[t[1]].uv,
+                    c = computed.model.vertices[t[2]].uv;
     if ((b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y) == 0.0f)
-      for (auto i : t) skip.insert({computed.model.vertices[i].position.x, computed.model.vertices[i].position.y, computed.model.vertices[i].position.z});
+      for (auto i : t)
+        skip.insert({computed.model.vertices[i].position.x, computed.model.vertices[i].position.y,
+                     computed.model.vertices[i].position.z});
   }
   std::size_t compared = 0, mirrored = 0;
   for (std::size_t t = 0; t < stored.model.triangles.size(); ++t)

@@ -29,7 +29,8 @@ namespace gsdot3::pipeline {
 namespace {
 
 // The pages the first normal-map pass uploads, and the window's size.
-std::array<std::size_t, 2> first_pass_uploads(const scene& s, const prepared_scene& ps, method m, const render_options& o) {
+std::array<std::size_t, 2> first_pass_uploads(const scene& s, const prepared_scene& ps, method m,
+                                              const render_options& o) {
   gs_inputs in = place_inputs(make_inputs(s, m, o), buffer_layout_for(s.width, s.height).first_texture_block());
   if (in.window_first == 0) return {0, 0};
   start_stream(in, ps, o, detail::band_renderer::drawn_area(ps, {0, 0, s.width, s.height}));
@@ -44,9 +45,7 @@ void expect_streamed_frames_equal(const scene& s, method m, render_options o, bo
   const prepared_scene ps = prepare(s, 0.0f, o.specular);
   const auto [uploaded, window] = first_pass_uploads(s, ps, m, o);
   ASSERT_GT(window, 0u) << what << ": the textures should not fit beside the frame buffers";
-  if (reuse) {
-    EXPECT_GT(uploaded, window) << what << ": one pass should upload more pages than the window holds";
-  }
+  if (reuse) { EXPECT_GT(uploaded, window) << what << ": one pass should upload more pages than the window holds"; }
   o.memory_path = false;
   const frame value = render(s, ps, m, o);
   o.memory_path = true;
@@ -54,11 +53,13 @@ void expect_streamed_frames_equal(const scene& s, method m, render_options o, bo
   long differing = 0;
   for (std::size_t i = 0; i < value.colour.size(); ++i)
     if (value.colour[i] != memory.colour[i] && differing++ < 3)
-      ADD_FAILURE() << what << ": pixel (" << i % static_cast<std::size_t>(s.width) << ", " << i / static_cast<std::size_t>(s.width)
-                    << "): value path 0x" << std::hex << value.colour[i] << ", memory path 0x" << memory.colour[i];
+      ADD_FAILURE() << what << ": pixel (" << i % static_cast<std::size_t>(s.width) << ", "
+                    << i / static_cast<std::size_t>(s.width) << "): value path 0x" << std::hex << value.colour[i]
+                    << ", memory path 0x" << memory.colour[i];
   EXPECT_EQ(differing, 0) << what;
   EXPECT_EQ(value.dot, memory.dot) << what;
-  EXPECT_GT(std::count_if(value.visible_triangle.begin(), value.visible_triangle.end(), [](std::int32_t t) { return t >= 0; }),
+  EXPECT_GT(std::count_if(value.visible_triangle.begin(), value.visible_triangle.end(),
+                          [](std::int32_t t) { return t >= 0; }),
             s.width * s.height / 10)
       << what << ": the head should fill part of the frame";
 
@@ -68,15 +69,18 @@ void expect_streamed_frames_equal(const scene& s, method m, render_options o, bo
   gs::mem::local_memory mem;
   gs::packets::interpreter gs(mem, {o.model, false});
   gs.replay(d);
-  for (const auto& u : gs.unmodelled_features()) ADD_FAILURE() << what << ": unmodelled at byte " << u.offset << ": " << u.what;
+  for (const auto& u : gs.unmodelled_features())
+    ADD_FAILURE() << what << ": unmodelled at byte " << u.offset << ": " << u.what;
   const gs::mem::buffer out = fp.buffers.colour(fp.buffers.output());
   long replay_differing = 0;
   for (int y = 0; y < s.height; ++y)
     for (int x = 0; x < s.width; ++x) {
-      const std::uint32_t w = mem.read_pixel(out, static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y)) | 0xFF000000u;
+      const std::uint32_t w =
+          mem.read_pixel(out, static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y)) | 0xFF000000u;
       const std::uint32_t v = value.colour[static_cast<std::size_t>(y * s.width + x)];
       if (w != v && replay_differing++ < 3)
-        ADD_FAILURE() << what << ": replay pixel (" << x << ", " << y << "): 0x" << std::hex << w << ", value path 0x" << v;
+        ADD_FAILURE() << what << ": replay pixel (" << x << ", " << y << "): 0x" << std::hex << w << ", value path 0x"
+                      << v;
     }
   EXPECT_EQ(replay_differing, 0) << what << ": replayed dump";
 }
@@ -97,8 +101,8 @@ const scene& map_1024() {
     normal_map big{1024, 1024, std::vector<std::uint8_t>(1024u * 1024u), t.normals.palette};
     for (int y = 0; y < 1024; ++y)
       for (int x = 0; x < 1024; ++x)
-        big.index[static_cast<std::size_t>(y * 1024 + x)] =
-            static_cast<std::uint8_t>(t.normals.index[static_cast<std::size_t>((y % 256) * 256 + x % 256)] + 37 * (x / 256) + 101 * (y / 256));
+        big.index[static_cast<std::size_t>(y * 1024 + x)] = static_cast<std::uint8_t>(
+            t.normals.index[static_cast<std::size_t>((y % 256) * 256 + x % 256)] + 37 * (x / 256) + 101 * (y / 256));
     t.normals = std::move(big);
     t.diffuse = procedural_diffuse(1024, 1024);
     return t;
@@ -107,7 +111,8 @@ const scene& map_1024() {
 }
 
 TEST(TextureStream, A1024MapAtTheDefaultFrameEqualsTheValuePath) {
-  expect_streamed_frames_equal(map_1024(), method::two_pass, render_options{}, true, "1024², 512x448, two-pass, nearest");
+  expect_streamed_frames_equal(map_1024(), method::two_pass, render_options{}, true,
+                               "1024², 512x448, two-pass, nearest");
 }
 
 class TextureStreamMethods : public ::testing::TestWithParam<method> {};
@@ -121,10 +126,12 @@ TEST_P(TextureStreamMethods, A1024MapBilinearInANarrowWindowEqualsTheValuePath) 
   scene s = sized(map_1024(), 512, 480);
   s.view.eye = glm::vec3(1.6f, 0.8f, 2.4f);
   expect_streamed_frames_equal(s, GetParam(), o, true, "1024², 512x480, bilinear, turned");
-  expect_streamed_frames_equal(sized(map_1024(), 160, 120), GetParam(), render_options{}, false, "1024², 160x120, nearest");
+  expect_streamed_frames_equal(sized(map_1024(), 160, 120), GetParam(), render_options{}, false,
+                               "1024², 160x120, nearest");
 }
 
-INSTANTIATE_TEST_SUITE_P(Methods, TextureStreamMethods, ::testing::Values(method::two_pass, method::four_pass, method::baseline),
+INSTANTIATE_TEST_SUITE_P(Methods, TextureStreamMethods,
+                         ::testing::Values(method::two_pass, method::four_pass, method::baseline),
                          [](const auto& info) {
                            std::string n(name(info.param));
                            std::replace(n.begin(), n.end(), '-', '_');
@@ -139,7 +146,8 @@ TEST(TextureStream, A2048ImageResampledTo1024EqualsTheValuePath) {
   img.data.resize(2048u * 2048u * 3u);
   for (int y = 0; y < 2048; ++y)
     for (int x = 0; x < 2048; ++x) {
-      const double a = 0.6 * std::sin(x * 0.0276), b = 0.6 * std::cos(y * 0.0215 + x * 0.004), c = std::sqrt(std::max(0.05, 1 - a * a - b * b));
+      const double a = 0.6 * std::sin(x * 0.0276), b = 0.6 * std::cos(y * 0.0215 + x * 0.004),
+                   c = std::sqrt(std::max(0.05, 1 - a * a - b * b));
       const double l = std::sqrt(a * a + b * b + c * c);
       std::uint8_t* p = &img.data[3u * static_cast<std::size_t>(y * 2048 + x)];
       p[0] = static_cast<std::uint8_t>((a / l + 1) * 127.5), p[1] = static_cast<std::uint8_t>((b / l + 1) * 127.5);

@@ -54,7 +54,7 @@ TEST(Trace, TwoPassPassesHoldTheirInputsAndOutputs) {
   const pass_record &clear = trace[1], &positive = trace[2], &ilp = trace[7];
   EXPECT_EQ(ilp.target, "LAB");
   const gs::rgba8 light = pack_tolight(glm::normalize(glm::vec3{0.6f, 0, 0.8f}), 122);  // the vertex colour
-  const gs::rgba8 texel = two_pass_palette(q.s.normals.palette, false)[0];             // palette entry 0
+  const gs::rgba8 texel = two_pass_palette(q.s.normals.palette, false)[0];              // palette entry 0
   const int vertex[4] = {light.r.value(), light.g.value(), light.b.value(), light.a.value()};
   std::size_t covered = 0;
   for (std::size_t i = 0; i < f.visible_triangle.size(); ++i) {
@@ -66,7 +66,9 @@ TEST(Trace, TwoPassPassesHoldTheirInputsAndOutputs) {
     EXPECT_EQ(clear.word[i], 0x00808080u);
     ASSERT_EQ(positive.shaded[i], 1) << i;
     EXPECT_EQ(positive.texel[i], texel.to_u32());
-    for (int k = 0; k < 4; ++k) EXPECT_EQ(positive.colour[4 * i + static_cast<std::size_t>(k)], vertex[k] << 7) << k;  // a constant plane: c.0 in 8.7
+    for (int k = 0; k < 4; ++k)
+      EXPECT_EQ(positive.colour[4 * i + static_cast<std::size_t>(k)], vertex[k] << 7)
+          << k;                                // a constant plane: c.0 in 8.7
     const int d = (f.dot[0][i] - 128) & 0xFF;  // ILP (section 3.4): d + 1 for dot products d = 0..127, else 0
     const std::uint32_t level = d < 128 ? static_cast<std::uint32_t>(d + 1) : 0u;
     EXPECT_EQ(ilp.texel[i], 0x80000000u | level << 16 | level << 8 | level);

@@ -45,9 +45,7 @@ TEST(ProbeDecode, RecoversEveryValueOfEveryOptionFromTheModelsFrame) {
         ASSERT_EQ(x.matches, std::vector<std::string>{want}) << other.name << " for " << row.name << "=" << value;
       }
       for (const verdict& x : v) {
-        if (x.is_check) {
-          EXPECT_EQ(x.matches, std::vector<std::string>{"model"}) << x.name;
-        }
+        if (x.is_check) { EXPECT_EQ(x.matches, std::vector<std::string>{"model"}) << x.name; }
       }
       ++decoded;
     }
@@ -83,10 +81,12 @@ TEST(ProbeDecode, OneAlteredPatchIsReportedAsNoneMatchesWithItsPixels) {
   const patch& e4 = *std::find_if(all.begin(), all.end(), [](const patch& p) { return p.name == "dither_decode.e4"; });
   const auto [x, y] = sample_pixels(e4)[0];
   shot[static_cast<std::size_t>(y) * frame_width + x] = 0x5A5A5A;
-  EXPECT_NE(format_verdicts(decode(shot)).find("dither_decode: none matches\n  patch dither_decode.e4 at (16, 32), pixel (17, 33): "
-                                               "shows 0x5a5a5a; twos_complement 0xefbdef sign_magnitude 0x10c210 "
-                                               "inverted_magnitude 0x0fc20f\n  patch dither_decode.e5 at (32, 32) agrees with twos_complement only\n"),
-            std::string::npos)
+  EXPECT_NE(
+      format_verdicts(decode(shot))
+          .find("dither_decode: none matches\n  patch dither_decode.e4 at (16, 32), pixel (17, 33): "
+                "shows 0x5a5a5a; twos_complement 0xefbdef sign_magnitude 0x10c210 "
+                "inverted_magnitude 0x0fc20f\n  patch dither_decode.e5 at (32, 32) agrees with twos_complement only\n"),
+      std::string::npos)
       << format_verdicts(decode(shot));
 }
 

@@ -113,53 +113,70 @@ TEST(ProbeDesign, PatchValuesAreTheOnesWorkedOutByHand) {
   // option -> value -> patch -> 0xRRGGBB
   const std::map<std::string, std::map<std::string, std::map<std::string, std::uint32_t>>> expected = {
       // (0xff · Cf_8.7) >> 14 for Cf_8.7 in 144..172: 2; (0xff · 1) >> 7: 1.
-      {"gouraud_fraction", {{"keep_fraction", {{"gouraud_fraction.ramp", 0x020202}}},
-                            {"truncate_to_8", {{"gouraud_fraction.ramp", 0x010101}}}}},
+      {"gouraud_fraction",
+       {{"keep_fraction", {{"gouraud_fraction.ramp", 0x020202}}},
+        {"truncate_to_8", {{"gouraud_fraction.ramp", 0x010101}}}}},
       // Step trunc(4·128/514) = 0 from the reference pixel: Cf 0; exact: trunc(d·512/514) for d = 501..506 is
       // 499..504, (0xff · 499..504) >> 14 = 7.
       // Texel 0x80: (0x80 · Cf) >> 14 = Cf's whole levels. .ramp: trunc(4·128/514) = 0 from the reference pixel: 0; the
       // exact plane trunc(d·512/514) for d = 501..506: 499..504, 3; rows scissored to the cell start at 520 with
       // trunc(512·500/514) = 498 and offsets trunc(0.996·m) <= 6: 498..504, 3; floor((499..504 + 1/2)/128) = 3.
-      // .rows, k = 601..606 from the row start 0, g = 1024/686: exact 897.1..904.6 units, 7; 4 lanes: 150 or 151 steps of
+      // .rows, k = 601..606 from the row start 0, g = 1024/686: exact 897.1..904.6 units, 7; 4 lanes: 150 or 151 steps
+      // of
       // trunc(5.971) = 5 plus trunc(g·m) for m = k mod 4 (0..2): k = 601: 750 + 1 = 751, .., 606: 755 + 2 = 757: 5; 8
       // lanes: 75 steps of trunc(11.942) = 11 plus trunc(g·m), m = 1..6: 826..833: 6; plane_steps: k steps of
       // trunc(g) = 1 from 0: 601..606, 4; a whole level floor((897.1..904.6 + 1/2)/128) = 7.
-      {"gouraud_setup", {{"plane_steps", {{"gouraud_setup.ramp", 0x000000}, {"gouraud_setup.rows", 0x040404}}},
-                         {"per_pixel", {{"gouraud_setup.ramp", 0x030303}, {"gouraud_setup.rows", 0x070707}}},
-                         {"pcsx2_rows_4", {{"gouraud_setup.ramp", 0x030303}, {"gouraud_setup.rows", 0x050505}}},
-                         {"pcsx2_rows_8", {{"gouraud_setup.ramp", 0x030303}, {"gouraud_setup.rows", 0x060606}}},
-                         {"per_pixel_level", {{"gouraud_setup.ramp", 0x030303}, {"gouraud_setup.rows", 0x070707}}}}},
+      {"gouraud_setup",
+       {{"plane_steps", {{"gouraud_setup.ramp", 0x000000}, {"gouraud_setup.rows", 0x040404}}},
+        {"per_pixel", {{"gouraud_setup.ramp", 0x030303}, {"gouraud_setup.rows", 0x070707}}},
+        {"pcsx2_rows_4", {{"gouraud_setup.ramp", 0x030303}, {"gouraud_setup.rows", 0x050505}}},
+        {"pcsx2_rows_8", {{"gouraud_setup.ramp", 0x030303}, {"gouraud_setup.rows", 0x060606}}},
+        {"per_pixel_level", {{"gouraud_setup.ramp", 0x030303}, {"gouraud_setup.rows", 0x070707}}}}},
       // 0x81 + floor(-129 / 128) = 0x7f; 0x81 + trunc(-129 / 128) = 0x80.
-      {"blend_shift", {{"floor", {{"blend_shift.negative", 0x7F7F7F}}}, {"truncate", {{"blend_shift.negative", 0x808080}}}}},
-      {"dither_targets", {{"sixteen_bit_only", {{"dither_targets.ct32", 0x808080}}},
-                          {"all_formats", {{"dither_targets.ct32", 0x838383}}}}},
+      {"blend_shift",
+       {{"floor", {{"blend_shift.negative", 0x7F7F7F}}}, {"truncate", {{"blend_shift.negative", 0x808080}}}}},
+      {"dither_targets",
+       {{"sixteen_bit_only", {{"dither_targets.ct32", 0x808080}}},
+        {"all_formats", {{"dither_targets.ct32", 0x838383}}}}},
       // R 0x80, G 0x82, B 0x83 plus d, >> 3; A bit 1. e4: d = -4 | 0 | -1; e7: d = -1 | -3 | -4.
-      {"dither_decode", {{"twos_complement", {{"dither_decode.e4", shown16(w16(15, 15, 15, 1))},
-                                              {"dither_decode.e7", shown16(w16(15, 16, 16, 1))}}},
-                         {"sign_magnitude", {{"dither_decode.e4", shown16(w16(16, 16, 16, 1))},
-                                             {"dither_decode.e7", shown16(w16(15, 15, 16, 1))}}},
-                         {"inverted_magnitude", {{"dither_decode.e4", shown16(w16(15, 16, 16, 1))},
-                                                 {"dither_decode.e7", shown16(w16(15, 15, 15, 1))}}}}},
+      {"dither_decode",
+       {{"twos_complement",
+         {{"dither_decode.e4", shown16(w16(15, 15, 15, 1))}, {"dither_decode.e7", shown16(w16(15, 16, 16, 1))}}},
+        {"sign_magnitude",
+         {{"dither_decode.e4", shown16(w16(16, 16, 16, 1))}, {"dither_decode.e7", shown16(w16(15, 15, 16, 1))}}},
+        {"inverted_magnitude",
+         {{"dither_decode.e4", shown16(w16(15, 16, 16, 1))}, {"dither_decode.e7", shown16(w16(15, 15, 15, 1))}}}}},
       // 0xc0 >> 3 = 0x18 per channel; the A bit of 0xa108 cleared (FB_ONLY) or kept.
-      {"rgb_only_targets", {{"thirty_two_bit_only", {{"rgb_only_targets.ct16", shown16(w16(0x18, 0x18, 0x18, 0))}}},
-                            {"all_formats", {{"rgb_only_targets.ct16", shown16(w16(0x18, 0x18, 0x18, 1))}}}}},
+      {"rgb_only_targets",
+       {{"thirty_two_bit_only", {{"rgb_only_targets.ct16", shown16(w16(0x18, 0x18, 0x18, 0))}}},
+        {"all_formats", {{"rgb_only_targets.ct16", shown16(w16(0x18, 0x18, 0x18, 1))}}}}},
       // Weights (1, 2): R block 00 ff 01 fe: lerp 0 + 255/16 -> 15, 1 + 253/16 -> 16, 15 + 1·2/16 -> 15;
       // sum (15·14·0 + 1·14·255 + 15·2·1 + 1·2·254) / 256 = 4108 / 256 -> 16; nearest: texel (4, 4) = 0.
       // G 00 07 09 0f: lerp 0, 9 + 6/16 -> 9, 0 + 9·2/16 -> 1; sum (98 + 270 + 30) / 256 -> 1; nearest 0.
       // B 10 31 52 73: lerp 16 + 33/16 -> 18, 82 + 33/16 -> 84, 18 + 66·2/16 -> 26; sum
       // (3360 + 686 + 2460 + 230) / 256 = 6736 / 256 -> 26; nearest 0x10.
-      {"bilinear", {{"lerp16_4", {{"bilinear.w1_2", 0x0F011A}}},
-                    {"weighted_sum_4", {{"bilinear.w1_2", 0x10011A}}},
-                    {"nearest", {{"bilinear.w1_2", 0x000010}}}}},
+      {"bilinear",
+       {{"lerp16_4", {{"bilinear.w1_2", 0x0F011A}}},
+        {"weighted_sum_4", {{"bilinear.w1_2", 0x10011A}}},
+        {"nearest", {{"bilinear.w1_2", 0x000010}}}}},
       // Section 3.4 copies (design.cpp): A1 0x1040c0, B0 0x202020, D1 0x10c040, E0 0x303030.
-      {"texture_buffer", {{"quarter_page", {{"texture_buffer.other_quarter", 0x1040C0}, {"texture_buffer.same_quarter", 0x303030},
-                                            {"texture_buffer.after_leaving_page", 0x1040C0}}},
-                          {"per_fragment", {{"texture_buffer.other_quarter", 0x1040C0}, {"texture_buffer.same_quarter", 0x10C040},
-                                            {"texture_buffer.after_leaving_page", 0x1040C0}}},
-                          {"page", {{"texture_buffer.other_quarter", 0x202020}, {"texture_buffer.same_quarter", 0x303030},
-                                    {"texture_buffer.after_leaving_page", 0x1040C0}}},
-                          {"draw_snapshot", {{"texture_buffer.other_quarter", 0x202020}, {"texture_buffer.same_quarter", 0x303030},
-                                             {"texture_buffer.after_leaving_page", 0x202020}}}}},
+      {"texture_buffer",
+       {{"quarter_page",
+         {{"texture_buffer.other_quarter", 0x1040C0},
+          {"texture_buffer.same_quarter", 0x303030},
+          {"texture_buffer.after_leaving_page", 0x1040C0}}},
+        {"per_fragment",
+         {{"texture_buffer.other_quarter", 0x1040C0},
+          {"texture_buffer.same_quarter", 0x10C040},
+          {"texture_buffer.after_leaving_page", 0x1040C0}}},
+        {"page",
+         {{"texture_buffer.other_quarter", 0x202020},
+          {"texture_buffer.same_quarter", 0x303030},
+          {"texture_buffer.after_leaving_page", 0x1040C0}}},
+        {"draw_snapshot",
+         {{"texture_buffer.other_quarter", 0x202020},
+          {"texture_buffer.same_quarter", 0x303030},
+          {"texture_buffer.after_leaving_page", 0x202020}}}}},
   };
   for (const auto& [option, values] : expected)
     for (const auto& [value, patches] : values) {
@@ -174,7 +191,8 @@ TEST(ProbeDesign, PatchValuesAreTheOnesWorkedOutByHand) {
   {
     const patch& lv = find("gouraud_setup.level");
     EXPECT_EQ(lv.x, 616);
-    const auto exact = frame_with("gouraud_setup", "per_pixel"), biased = frame_with("gouraud_setup", "per_pixel_level");
+    const auto exact = frame_with("gouraud_setup", "per_pixel"),
+               biased = frame_with("gouraud_setup", "per_pixel_level");
     EXPECT_EQ(rgb_of(exact[434 * frame_width + 619]), 0x000000u);
     EXPECT_EQ(rgb_of(biased[434 * frame_width + 619]), 0x010101u);
     EXPECT_EQ(rgb_of(exact[434 * frame_width + 620]), 0x010101u);
@@ -197,12 +215,12 @@ TEST(ProbeDesign, SectionThreeFourCellsAreInTheirQuarters) {
     return std::pair<std::uint32_t, std::uint32_t>{at.page(), at.block() % 32 / 8};
   };
   using q = std::pair<std::uint32_t, std::uint32_t>;
-  EXPECT_EQ(where(8, 72), q(20, 0));   // a
-  EXPECT_EQ(where(8, 88), q(20, 1));   // b
-  EXPECT_EQ(where(40, 64), q(20, 2));  // d
-  EXPECT_EQ(where(40, 72), q(20, 2));  // e
+  EXPECT_EQ(where(8, 72), q(20, 0));                             // a
+  EXPECT_EQ(where(8, 88), q(20, 1));                             // b
+  EXPECT_EQ(where(40, 64), q(20, 2));                            // d
+  EXPECT_EQ(where(40, 72), q(20, 2));                            // e
   for (int x : {40, 48, 56}) EXPECT_EQ(where(x, 88), q(20, 3));  // c, f, h
-  EXPECT_EQ(where(72, 72).first, 21u);  // g
+  EXPECT_EQ(where(72, 72).first, 21u);                           // g
 }
 
 }  // namespace

@@ -31,7 +31,8 @@ std::set<class_key> keys(const std::vector<tc::open_class>& classes) {
   for (const auto& c : classes) out.insert({c.w[0], c.w[1], c.w[2], c.threshold128});
   return out;
 }
-gs::model_options with(gs::gouraud_fraction g, gs::tfx_rounding t = gs::tfx_rounding::floor, gs::blend_shift b = gs::blend_shift::floor) {
+gs::model_options with(gs::gouraud_fraction g, gs::tfx_rounding t = gs::tfx_rounding::floor,
+                       gs::blend_shift b = gs::blend_shift::floor) {
   gs::model_options o;
   o.gouraud = g, o.tfx = t, o.shift = b;
   o.setup = gs::gouraud_setup::plane_steps;
@@ -69,7 +70,8 @@ TEST(CertifyNextS, WhatStaysUncertifiedIsWhatProveReports) {
     for (const auto& w : tt::relaxation_witnesses()) {
       if (w.s != stored.s || w.gouraud != g) continue;
       ++witnesses;
-      EXPECT_EQ(open_keys.count(witness_key(w, o)), 1u) << "a class holding a relaxation point above its threshold closed";
+      EXPECT_EQ(open_keys.count(witness_key(w, o)), 1u)
+          << "a class holding a relaxation point above its threshold closed";
     }
     EXPECT_EQ(witnesses, 1) << "s = " << stored.s;
     for (const auto t : {gs::tfx_rounding::floor, gs::tfx_rounding::truncate})

@@ -23,7 +23,8 @@ std::set<class_key> keys(int s, const gs::model_options& o) {
   for (const auto& c : tc::open_classes(s, o)) out.insert({c.w[0], c.w[1], c.w[2], c.threshold128});
   return out;
 }
-gs::model_options with(gs::gouraud_fraction g, gs::tfx_rounding t = gs::tfx_rounding::floor, gs::blend_shift b = gs::blend_shift::floor) {
+gs::model_options with(gs::gouraud_fraction g, gs::tfx_rounding t = gs::tfx_rounding::floor,
+                       gs::blend_shift b = gs::blend_shift::floor) {
   gs::model_options o;
   o.gouraud = g, o.tfx = t, o.shift = b;
   o.setup = gs::gouraud_setup::plane_steps;

@@ -29,11 +29,14 @@ using lights = std::array<std::array<double, 3>, 3>;
 // The pattern of a point: bit 2c + ax set where t = −128·G_{c,ax} >= 0, G from the plane through
 // the three lights (Cramer's rule on [x y 1]·(Gx, Gy, Q) = ℓ).
 unsigned pattern_of(const geometry& v, const lights& l) {
-  const double det = v[0][0] * (v[1][1] - v[2][1]) - v[0][1] * (v[1][0] - v[2][0]) + (v[1][0] * v[2][1] - v[2][0] * v[1][1]);
+  const double det =
+      v[0][0] * (v[1][1] - v[2][1]) - v[0][1] * (v[1][0] - v[2][0]) + (v[1][0] * v[2][1] - v[2][0] * v[1][1]);
   unsigned pi = 0;
   for (int c = 0; c < 3; ++c) {
-    const double gx = (l[0][c] * (v[1][1] - v[2][1]) - v[0][1] * (l[1][c] - l[2][c]) + (l[1][c] * v[2][1] - l[2][c] * v[1][1])) / det;
-    const double gy = (v[0][0] * (l[1][c] - l[2][c]) - l[0][c] * (v[1][0] - v[2][0]) + (v[1][0] * l[2][c] - v[2][0] * l[1][c])) / det;
+    const double gx =
+        (l[0][c] * (v[1][1] - v[2][1]) - v[0][1] * (l[1][c] - l[2][c]) + (l[1][c] * v[2][1] - l[2][c] * v[1][1])) / det;
+    const double gy =
+        (v[0][0] * (l[1][c] - l[2][c]) - l[0][c] * (v[1][0] - v[2][0]) + (v[1][0] * l[2][c] - v[2][0] * l[1][c])) / det;
     if (-gx >= 0) pi |= 1u << (2 * c);
     if (-gy >= 0) pi |= 2u << (2 * c);
   }
@@ -77,7 +80,8 @@ TEST(TriangleCertify, WeakDualityOnRandomRectanglesAndLights) {
     const tc::problem pr{{weight(rng), weight(rng), weight(rng)}, 60 + trial % 40, 0};
     const int f = fam(rng), pix = vertex(rng);
     const std::int64_t size = std::int64_t{1} << (tc::coord_bits + exp(rng)), A = 2048 * tc::coord_one;
-    const std::int64_t u0 = static_cast<std::int64_t>(unit(rng) * double(A - size)), v0 = static_cast<std::int64_t>(unit(rng) * double(A - size));
+    const std::int64_t u0 = static_cast<std::int64_t>(unit(rng) * double(A - size)),
+                       v0 = static_cast<std::int64_t>(unit(rng) * double(A - size));
     const tc::corners g = tc::family_cell(f, pix, u0, u0 + size, v0, v0 + size, 2048);
     std::array<tc::check, 64> bound{};
     std::array<tc::dual_real, 64> y{};
@@ -139,16 +143,20 @@ TEST(TriangleCertify, WeakDualityAroundTheWitnesses) {
     ASSERT_EQ(wit.at.vertex[2][0], 2047);
     ASSERT_EQ(wit.at.vertex[2][1], 2047);
     const std::int64_t box = 2047 * tc::coord_one;
-    const std::int64_t u_at = std::llround(wit.at.vertex[0][1] * tc::coord_one), v_at = std::llround(wit.at.vertex[1][0] * tc::coord_one);
+    const std::int64_t u_at = std::llround(wit.at.vertex[0][1] * tc::coord_one),
+                       v_at = std::llround(wit.at.vertex[1][0] * tc::coord_one);
     double closest = -1e30;
     for (int e = -4; e <= 4; ++e) {
       const std::int64_t h = std::int64_t{1} << (tc::coord_bits + e);
-      const std::int64_t u = std::min(u_at + h / 2, box), v = std::min(v_at + h / 2, box);  // the rectangles' top corners
+      const std::int64_t u = std::min(u_at + h / 2, box),
+                         v = std::min(v_at + h / 2, box);  // the rectangles' top corners
       const tc::corners g = tc::family_cell(0, 2, u - h, u, v - h, v, 2047);
       std::array<tc::check, 64> bound{};
-      for (unsigned pi : tc::patterns(pr)) bound[pi] = tc::check_dual(pr, g, pi, tc::to_grid(pr, tc::search_dual(pr, g, pi, nullptr), 2));
+      for (unsigned pi : tc::patterns(pr))
+        bound[pi] = tc::check_dual(pr, g, pi, tc::to_grid(pr, tc::search_dual(pr, g, pi, nullptr), 2));
       for (int q = 0; q < 100; ++q) {
-        const std::int64_t gu = u - static_cast<std::int64_t>(unit(rng) * double(h)), gv = v - static_cast<std::int64_t>(unit(rng) * double(h));
+        const std::int64_t gu = u - static_cast<std::int64_t>(unit(rng) * double(h)),
+                           gv = v - static_cast<std::int64_t>(unit(rng) * double(h));
         const geometry x = to_pixels(tc::family_member(0, gu, gv, 2047));
         lights l = wit.at.light;
         for (auto& lk : l)
@@ -179,7 +187,8 @@ TEST(TriangleCertify, ExactCheckAgreesWithLongDoubleOnAGrid) {
     std::int64_t c[4];
     for (auto& x : c) x = std::int64_t{grid(rng)} << (tc::coord_bits - 4);
     if (trial % 3 == 0) c[1] = c[0], c[3] = c[2];  // one geometry
-    const tc::corners g = tc::family_cell(f, pix, std::min(c[0], c[1]), std::max(c[0], c[1]), std::min(c[2], c[3]), std::max(c[2], c[3]), 2048);
+    const tc::corners g = tc::family_cell(f, pix, std::min(c[0], c[1]), std::max(c[0], c[1]), std::min(c[2], c[3]),
+                                          std::max(c[2], c[3]), 2048);
     const unsigned pi = static_cast<unsigned>(rng() % 64);
     tc::dual_real y = trial % 2 ? tc::search_dual(pr, g, pi, nullptr) : tc::dual_real{};
     const double noise = trial % 4 < 2 ? 0 : std::ldexp(1.0, -static_cast<int>(rng() % 30));
@@ -194,7 +203,8 @@ TEST(TriangleCertify, ExactCheckAgreesWithLongDoubleOnAGrid) {
         for (std::size_t ax = 0; ax < 2; ++ax) {
           long double kappa = 0, m = 0;
           for (std::size_t k = 0; k < 3; ++k) {
-            kappa += static_cast<long double>(Y[k][ch]) * static_cast<long double>(V[static_cast<std::size_t>(pix)][ax] - V[k][ax]);
+            kappa += static_cast<long double>(Y[k][ch]) *
+                     static_cast<long double>(V[static_cast<std::size_t>(pix)][ax] - V[k][ax]);
             m += static_cast<long double>(Y[k][ch]) * static_cast<long double>(V[k][ax]) / 0x1p44L;
           }
           const bool charged = pi >> (2 * ch + ax) & 1;
@@ -249,7 +259,8 @@ TEST(TriangleCertify, ExactCheckOfTheTrivialDualIsItsClosedForm) {
       double sum = 0;
       for (int c = 0; c < 3; ++c)
         for (int ax = 0; ax < 2; ++ax)
-          if (pi >> (2 * c + ax) & 1) sum += pr.w[c] * double(V[static_cast<std::size_t>(pix)][ax]) / tc::coord_one / 128;
+          if (pi >> (2 * c + ax) & 1)
+            sum += pr.w[c] * double(V[static_cast<std::size_t>(pix)][ax]) / tc::coord_one / 128;
       lag = std::max(lag, sum);
     }
     const double expect = pr.s * std::sqrt(double(pr.w[0] * pr.w[0] + pr.w[1] * pr.w[1] + pr.w[2] * pr.w[2])) + lag;
@@ -309,9 +320,11 @@ TEST(TriangleCertify, ACertifiedClassHoldsOnRandomGeneralTriangles) {
     tc::corners g;
     g.p = pix;
     tc::vertices V{};
-    for (std::size_t k = 0; k < 3; ++k) V[k] = {std::llround(gv[k][0] * tc::coord_one), std::llround(gv[k][1] * tc::coord_one)};
+    for (std::size_t k = 0; k < 3; ++k)
+      V[k] = {std::llround(gv[k][0] * tc::coord_one), std::llround(gv[k][1] * tc::coord_one)};
     g.at = {V};
-    for (unsigned pi : tc::patterns(pr)) best = std::max(best, tc::attained(pr, to_pixels(V), pix, tc::search_dual(pr, g, pi, nullptr)));
+    for (unsigned pi : tc::patterns(pr))
+      best = std::max(best, tc::attained(pr, to_pixels(V), pix, tc::search_dual(pr, g, pi, nullptr)));
   }
   EXPECT_LT(best * 128, static_cast<double>(pr.threshold128));
   // above what equal lights s·w/|w| attain without any lag: the search's lights use the lag
@@ -329,7 +342,8 @@ TEST(TriangleCertify, TheWitnessesClassesDoNotClose) {
     const auto nm = p::paper::pack_normal_from(wit.iX, wit.iY);
     const int e = t.alpha_error(nm);
     const int l1 = std::abs(nm.iX) + std::abs(nm.iY) + std::abs(nm.iZ);
-    const tc::problem pr{{std::abs(nm.iX), std::abs(nm.iY), std::abs(nm.iZ)}, wit.s,
+    const tc::problem pr{{std::abs(nm.iX), std::abs(nm.iY), std::abs(nm.iZ)},
+                         wit.s,
                          tt::wrap_threshold_units(nm, e, wit.side, o) - tt::truncation_units(nm, wit.side, o) - l1};
     const tc::outcome r = tc::certify_class(pr, 2048, std::int64_t{1} << (tc::coord_bits - 2), 200000);
     EXPECT_GT(r.open_count, 0);

@@ -48,14 +48,31 @@ std::uint64_t negative_a_inexact(int lo_b) {
 
 TEST(Claims, EveryCatalogueRowRunsAndIsTested) {
   // The ids of the issue, exactly; a new row must get its assertions here.
-  const std::vector<std::string_view> ids = {
-      "eq1-eq2.ranges", "eq3.identity", "eq4.signed-multiply", "eq5-eq7.split-multiply",
-      "eq10.split-offset-multiply", "eq8.offset-multiply", "eq9.rgb-sum", "ilp.palette-permutation",
-      "ilp.dpb-clear-zero", "appendix2.packing", "two-pass.na-rounding", "appendix1.sphere-map",
-      "two-pass.error-bound", "two-pass.max-s.vertex", "two-pass.max-s.interpolated", "four-pass.channel-exact",
-      "four-pass.sum-wrap", "clamp-wrap.intermediates", "highlight.attenuation", "lod.two-vs-four",
-      "specular.attenuation-compensation",
-      "dpb-clear.value", "dpb-clear.read-before-write", "dpb-clear.variants-agree", "dpb-clear.lab-layout"};
+  const std::vector<std::string_view> ids = {"eq1-eq2.ranges",
+                                             "eq3.identity",
+                                             "eq4.signed-multiply",
+                                             "eq5-eq7.split-multiply",
+                                             "eq10.split-offset-multiply",
+                                             "eq8.offset-multiply",
+                                             "eq9.rgb-sum",
+                                             "ilp.palette-permutation",
+                                             "ilp.dpb-clear-zero",
+                                             "appendix2.packing",
+                                             "two-pass.na-rounding",
+                                             "appendix1.sphere-map",
+                                             "two-pass.error-bound",
+                                             "two-pass.max-s.vertex",
+                                             "two-pass.max-s.interpolated",
+                                             "four-pass.channel-exact",
+                                             "four-pass.sum-wrap",
+                                             "clamp-wrap.intermediates",
+                                             "highlight.attenuation",
+                                             "lod.two-vs-four",
+                                             "specular.attenuation-compensation",
+                                             "dpb-clear.value",
+                                             "dpb-clear.read-before-write",
+                                             "dpb-clear.variants-agree",
+                                             "dpb-clear.lab-layout"};
   EXPECT_EQ(std::count_if(p::catalogue().begin(), p::catalogue().end(),
                           [](const p::claim& c) { return c.section == p::claim::mikkelsen_section; }),
             static_cast<std::ptrdiff_t>(ids.size()));  // the other seeds' rows are tested with their schemes
@@ -215,7 +232,8 @@ TEST(Claims, Appendix1SphereMap) {
     // Inside the disc: ρ² = s2² + t2² <= 1 with s2 = (2x + 1 − w)/w: integers only.
     std::int64_t inside = 0;
     for (int y = 0; y < w; ++y)
-      for (int x = 0; x < w; ++x) inside += (2 * x + 1 - w) * (2 * x + 1 - w) + (2 * y + 1 - w) * (2 * y + 1 - w) <= w * w;
+      for (int x = 0; x < w; ++x)
+        inside += (2 * x + 1 - w) * (2 * x + 1 - w) + (2 * y + 1 - w) * (2 * y + 1 - w) <= w * w;
     EXPECT_EQ(fig(o, "inside_" + std::to_string(w)), inside) << w;
   }
   // Each component is rounded by at most 1/2 (plus float noise), so the error vector is at most
@@ -276,12 +294,13 @@ TEST(Claims, TwoPassMaxSInterpolated) {
   const auto& o = variant("two-pass.max-s.interpolated", "gouraud_setup", "plane_steps");
   EXPECT_EQ(o.result, p::verdict::refuted);
   EXPECT_EQ(fig(o, "s_max"), 83);
-  EXPECT_EQ(fig(o, "bound_s_max"), 79);              // the error bound alone (triangle_test checks it in doubles)
-  EXPECT_EQ(fig(o, "relaxation_certified_s"), 83);   // re-run by proofs_certify_survey
+  EXPECT_EQ(fig(o, "bound_s_max"), 79);             // the error bound alone (triangle_test checks it in doubles)
+  EXPECT_EQ(fig(o, "relaxation_certified_s"), 83);  // re-run by proofs_certify_survey
   EXPECT_EQ(fig(o, "first_wrapping_s"), 85);
   EXPECT_EQ(fig(o, "s_max_upper"), 84);
-  EXPECT_EQ(fig(o, "certificates_not_wrapping"), 13);  // the truncate_to_8 rows, the per_pixel one and the four pcsx2_rows ones
-  EXPECT_EQ(o.witnesses.size(), 12u);                  // s = 85, 86, 89, 90, 91, 98, 100, 122..125 and the flat 126
+  EXPECT_EQ(fig(o, "certificates_not_wrapping"),
+            13);                       // the truncate_to_8 rows, the per_pixel one and the four pcsx2_rows ones
+  EXPECT_EQ(o.witnesses.size(), 12u);  // s = 85, 86, 89, 90, 91, 98, 100, 122..125 and the flat 126
   // The verdict text follows the figures: the bracket is 80..84 and the lowest certificate's s is named.
   EXPECT_NE(o.note.find("s = 84 is bracketed"), std::string::npos) << o.note;
   EXPECT_NE(o.note.find("the lowest s = 85"), std::string::npos) << o.note;
@@ -483,8 +502,9 @@ TEST(Claims, LodTwoVersusFourAgainstPlainIntegers) {
     for (int x = 0; x < 64; ++x) {
       const auto t = p::paper::sphere_map_texel(x, y, 64, 64);
       if (!t.inside) continue;
-      lights.push_back({{128 - t.r, 128 - t.g, 128 - t.b},
-                        {static_cast<int>(122.0f * t.lx), static_cast<int>(122.0f * t.ly), static_cast<int>(122.0f * t.lz)}});
+      lights.push_back(
+          {{128 - t.r, 128 - t.g, 128 - t.b},
+           {static_cast<int>(122.0f * t.lx), static_cast<int>(122.0f * t.ly), static_cast<int>(122.0f * t.lz)}});
     }
   int l2[2] = {1000, 1000}, h2[2] = {-1000, -1000}, vl2[2] = {1000, 1000}, vh2[2] = {-1000, -1000};
   ref::two_halves(normals.size(), [&](std::size_t begin, std::size_t end) {

@@ -10,7 +10,8 @@ namespace {
 
 page_words pattern() {
   page_words w{};
-  for (int p = 0; p < page_pixels; ++p) w[static_cast<std::size_t>(p)] = 0x11000000u | static_cast<std::uint32_t>(p * 2654435761u) >> 8;
+  for (int p = 0; p < page_pixels; ++p)
+    w[static_cast<std::size_t>(p)] = 0x11000000u | static_cast<std::uint32_t>(p * 2654435761u) >> 8;
   return w;
 }
 
@@ -27,7 +28,8 @@ TEST(DpbClearModel, ExplicitClearReadsEveryTexelAndWritesNoDpbWord) {
     EXPECT_EQ(r.dpb_after, before);
     for (int p = 0; p < page_pixels; ++p) {
       ASSERT_EQ(r.fetched[static_cast<std::size_t>(p)], before[static_cast<std::size_t>(p)] & 0xFFu);
-      ASSERT_EQ(r.lab[static_cast<std::size_t>(p)], static_cast<std::uint32_t>(p + 1) << 8 | (before[static_cast<std::size_t>(p)] & 0xFFu));
+      ASSERT_EQ(r.lab[static_cast<std::size_t>(p)],
+                static_cast<std::uint32_t>(p + 1) << 8 | (before[static_cast<std::size_t>(p)] & 0xFFu));
     }
   }
 }

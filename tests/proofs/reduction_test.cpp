@@ -107,8 +107,9 @@ TEST(Reduction, PrunedWrapSearchEqualsBruteForceOnSmallerInstances) {
   };
   // Thresholds just inside the bound −s − 3 <= value <= s + 2, so both searches find hits; s = 125
   // and 126 on the normals with iX <= −122 (where the s = 126 wraps are).
-  for (const auto& in : {instance{40, 41, -42, every_nth_normal(8)}, instance{40, 42, -43, every_nth_normal(8)},
-                         instance{126, 128, -129, normals_up_to_x(-122)}, instance{125, 128, -129, normals_up_to_x(-122)}}) {
+  for (const auto& in :
+       {instance{40, 41, -42, every_nth_normal(8)}, instance{40, 42, -43, every_nth_normal(8)},
+        instance{126, 128, -129, normals_up_to_x(-122)}, instance{125, 128, -129, normals_up_to_x(-122)}}) {
     const auto& normals = in.normals;
     const tp::light_grid g(in.s);
     const auto pruned = tp::wrap_search(normals, g, t, in.hi, in.lo, cfg);

@@ -68,10 +68,12 @@ TEST(RowsBound, EveryPixelIsWithinTheWindowOrTheRowsSegment) {
           ++pixels;
           const auto first = plane(t, left, y);
           const i64 n = (x - left + left % lanes) / lanes;
-          const i64 L = gs::gouraud_colour(*p, static_cast<std::int32_t>(x), static_cast<std::int32_t>(y), o.setup).r.value();
+          const i64 L =
+              gs::gouraud_colour(*p, static_cast<std::int32_t>(x), static_cast<std::int32_t>(y), o.setup).r.value();
           // |L − P(p)| < W, i.e. |L·det − num| < W·det; or (n = 1) within 3 units of the segment P(left)..P(p)
           const bool near = std::abs(L * at.det - at.num) < W * at.det;
-          const i64 lo = std::min(first.num * at.det, at.num * first.det), hi = std::max(first.num * at.det, at.num * first.det);
+          const i64 lo = std::min(first.num * at.det, at.num * first.det),
+                    hi = std::max(first.num * at.det, at.num * first.det);
           const i64 d2 = at.det * first.det, l = L * d2;
           const bool segment = n == 1 && l > lo - 3 * d2 && l < hi + 3 * d2;
           saturated += !near && segment;

@@ -43,7 +43,10 @@ std::int64_t synthetic(std::uint64_t i) { return static_cast<std::int64_t>((i * 
 struct both {
   p::tally t;
   p::extremes e;
-  void merge(const both& l) { t.merge(l.t); e.merge(l.e); }
+  void merge(const both& l) {
+    t.merge(l.t);
+    e.merge(l.e);
+  }
 };
 both run_synthetic(std::uint64_t n, unsigned threads) {
   p::sweep_config cfg;
@@ -109,7 +112,8 @@ TEST(Runner, SameOutcomeWithOneAndTwoThreads) {
   // error-bound has the early-exit search; the pruned wrap search is compared in reduction_test;
   // sum-wrap skips whole blocks of runs against running extremes; worst-case's threads split the
   // codes, and its ties (mirror-image cells of equal angle) must not follow the split.
-  for (auto id : {"eq5-eq7.split-multiply", "eq9.rgb-sum", "two-pass.error-bound", "four-pass.sum-wrap", "normal-encoding.worst-case"}) {
+  for (auto id : {"eq5-eq7.split-multiply", "eq9.rgb-sum", "two-pass.error-bound", "four-pass.sum-wrap",
+                  "normal-encoding.worst-case"}) {
     const auto* c = p::find_claim(id);
     ASSERT_NE(c, nullptr);
     p::run_config one, two;
@@ -149,8 +153,11 @@ p::outcome option_reading_eval(const gs::model_options&, const p::sweep_config&)
 }  // namespace
 
 TEST(Runner, AnOptionFreeOutcomeIsEvaluatedOnceWithoutVariants) {
-  const p::claim reading{"test.reads-options", "-", "-", "-", p::method::exhaustive, {"blend_shift", "gouraud_fraction"}, option_reading_eval};
-  const p::claim free{"test.option-free", "-", "-", "-", p::method::exhaustive, {"blend_shift", "gouraud_fraction"}, option_free_eval};
+  const p::claim reading{
+      "test.reads-options", "-", "-", "-", p::method::exhaustive, {"blend_shift", "gouraud_fraction"},
+      option_reading_eval};
+  const p::claim free{"test.option-free", "-", "-", "-", p::method::exhaustive, {"blend_shift", "gouraud_fraction"},
+                      option_free_eval};
   evaluations = 0;
   const auto r = p::run_claim(reading, {}, p::run_config{});
   EXPECT_EQ(r.variants.size(), 2u);  // blend_shift=truncate, gouraud_fraction=truncate_to_8

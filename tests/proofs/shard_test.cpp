@@ -39,7 +39,8 @@ TEST(Shard, ParsesKOverN) {
   ASSERT_TRUE(p::parse_shard("0/1"));
   EXPECT_EQ(p::parse_shard("3/7")->k, 3u);
   EXPECT_EQ(p::parse_shard("3/7")->n, 7u);
-  for (const char* bad : {"", "1", "1/1", "7/3", "-1/2", "1/0", "a/2", "1/2x", "1//2"}) EXPECT_FALSE(p::parse_shard(bad)) << bad;
+  for (const char* bad : {"", "1", "1/1", "7/3", "-1/2", "1/0", "a/2", "1/2x", "1//2"})
+    EXPECT_FALSE(p::parse_shard(bad)) << bad;
 }
 
 TEST(Shard, MergedShardsEqualTheUnsplitRunForSeveralN) {
@@ -49,8 +50,9 @@ TEST(Shard, MergedShardsEqualTheUnsplitRunForSeveralN) {
     const p::claim* c = p::find_claim(id);
     ASSERT_NE(c, nullptr) << id;
     const auto whole = p::run_claim(*c, {}, cfg);
-    const std::vector<unsigned> ns = std::string(id) == "two-pass.max-s.vertex" ? std::vector<unsigned>{2, 3}
-                                                                                : std::vector<unsigned>{1, 2, 3, 7, 600};
+    const std::vector<unsigned> ns = std::string(id) == "two-pass.max-s.vertex"
+                                         ? std::vector<unsigned>{2, 3}
+                                         : std::vector<unsigned>{1, 2, 3, 7, 600};
     for (unsigned n : ns) {
       const auto m = p::merge_shards(shards(*c, n, cfg), cfg);
       const std::string what = std::string(id) + " N = " + std::to_string(n);

@@ -47,7 +47,9 @@ gs::triangle_attributes pipeline_attributes(const pl::triangle_setup& setup, con
   ps.triangles.push_back(tri);
   const auto attr = pl::detail::attributes(
       ps, gouraud, [&](std::uint32_t v) { return tt::light_colour(c.light[v]); },
-      [](const pl::prepared_triangle&, int) { return std::pair<std::int32_t, std::int32_t>{0, 0}; });
+      [](const pl::prepared_triangle&, int) {
+        return std::pair<std::int32_t, std::int32_t>{0, 0};
+      });
   return attr[0];
 }
 gs::gouraud_plane pipeline_plane(const pl::triangle_setup& setup, const tt::triangle_case& c) {
@@ -67,7 +69,9 @@ int plain_value(const ref::normal& n, const int L[3], bool truncate_to_8) {
 
 // What one product's floor or ceiling gives back at most, in levels: n_c·M_c is a whole number
 // (16383/16384), a multiple of 128 under truncate_to_8 (127/128). FloorsGiveBackAtMostG checks it.
-double floor_give_back(gs::gouraud_fraction g) { return g == gs::gouraud_fraction::truncate_to_8 ? 127.0 / 128 : 16383.0 / 16384; }
+double floor_give_back(gs::gouraud_fraction g) {
+  return g == gs::gouraud_fraction::truncate_to_8 ? 127.0 / 128 : 16383.0 / 16384;
+}
 }  // namespace
 
 TEST(Triangle, EveryCertificateWrapsThroughTheRasteriserAndThePixelPipeline) {
@@ -77,7 +81,8 @@ TEST(Triangle, EveryCertificateWrapsThroughTheRasteriserAndThePixelPipeline) {
     const pl::triangle_setup setup = pl::setup_triangle(
         {pl::xy124{c.xy16[0], c.xy16[1]}, pl::xy124{c.xy16[2], c.xy16[3]}, pl::xy124{c.xy16[4], c.xy16[5]}});
     bool covered = false;
-    pl::rasterise_triangle(setup, pl::scissor{0, 0, 2048, 2048}, [&](int x, int y) { covered = covered || (x == c.px && y == c.py); });
+    pl::rasterise_triangle(setup, pl::scissor{0, 0, 2048, 2048},
+                           [&](int x, int y) { covered = covered || (x == c.px && y == c.py); });
     ASSERT_TRUE(covered) << "s " << c.s;
     const auto plane = pipeline_plane(setup, c);
     const gs::fragment_colour cf = gs::gouraud_at(plane, c.px + pl::xy_offset_pixels, c.py + pl::xy_offset_pixels);
@@ -139,9 +144,11 @@ std::vector<std::array<int, 2>> small_lattice() {
 
 long check_error_bound(const std::array<int, 6>& xy16, const std::array<p::ivec3, 3>& lights) {
   const tt::triangle_case c{100, 0, 0, lights, xy16, 0, 0};
-  const auto setup = pl::setup_triangle({pl::xy124{xy16[0], xy16[1]}, pl::xy124{xy16[2], xy16[3]}, pl::xy124{xy16[4], xy16[5]}});
+  const auto setup =
+      pl::setup_triangle({pl::xy124{xy16[0], xy16[1]}, pl::xy124{xy16[2], xy16[3]}, pl::xy124{xy16[4], xy16[5]}});
   if (setup.area2 == 0) return 0;
-  const int xref = (std::min({xy16[0], xy16[2], xy16[4]}) + 15) >> 4, yref = (std::min({xy16[1], xy16[3], xy16[5]}) + 15) >> 4;
+  const int xref = (std::min({xy16[0], xy16[2], xy16[4]}) + 15) >> 4,
+            yref = (std::min({xy16[1], xy16[3], xy16[5]}) + 15) >> 4;
   const std::int64_t ax = xy16[2] - xy16[0], ay = xy16[3] - xy16[1], bx = xy16[4] - xy16[0], by = xy16[5] - xy16[1];
   const std::int64_t det = ax * by - bx * ay;
   long n = 0;
@@ -153,7 +160,8 @@ long check_error_bound(const std::array<int, 6>& xy16, const std::array<p::ivec3
     const std::int64_t qx = 16 * x - xy16[0], qy = 16 * y - xy16[1];
     const std::int64_t bound = 1 + (x - xref) + (y - yref);
     for (std::size_t ch = 0; ch < 3; ++ch) {
-      const std::int64_t c0 = 128 + lights[0][ch], d1 = lights[1][ch] - lights[0][ch], d2 = lights[2][ch] - lights[0][ch];
+      const std::int64_t c0 = 128 + lights[0][ch], d1 = lights[1][ch] - lights[0][ch],
+                         d2 = lights[2][ch] - lights[0][ch];
       const std::int64_t Pdet = 128 * (c0 * det + d1 * (by * qx - bx * qy) + d2 * (ax * qy - ay * qx));
       const std::int64_t diff = L[ch] * det - Pdet;
       const std::int64_t ad = det < 0 ? -det : det;
@@ -192,7 +200,8 @@ TEST(Triangle, ErrorBoundHoldsOnRandomFullSizeTriangles) {
   for (int t = 0; t < 60; ++t) {
     // thin or small triangles keep the pixel count in check: two vertices anywhere, the third near one.
     const int x0 = coord(rng), y0 = coord(rng), x1 = coord(rng), y1 = coord(rng);
-    const int x2 = std::clamp(x1 + small(rng) - 200, 0, 2047 * 16), y2 = std::clamp(y1 + small(rng) - 200, 0, 2047 * 16);
+    const int x2 = std::clamp(x1 + small(rng) - 200, 0, 2047 * 16),
+              y2 = std::clamp(y1 + small(rng) - 200, 0, 2047 * 16);
     pixels += check_error_bound({x0, y0, x1, y1, x2, y2}, {lights[light(rng)], lights[light(rng)], lights[light(rng)]});
   }
   EXPECT_GT(pixels, 1000);
@@ -218,10 +227,12 @@ struct statement_count {
 };
 
 // Twice the signed area of (u, v, q), all in 1/16 pixel (×scale for q).
-std::int64_t edge_fn(std::int64_t ux, std::int64_t uy, std::int64_t vx, std::int64_t vy, std::int64_t qx, std::int64_t qy, std::int64_t scale) {
+std::int64_t edge_fn(std::int64_t ux, std::int64_t uy, std::int64_t vx, std::int64_t vy, std::int64_t qx,
+                     std::int64_t qy, std::int64_t scale) {
   return (vx - ux) * (qy - uy * scale) - (vy - uy) * (qx - ux * scale);
 }
-bool closed_inside(const std::array<int, 6>& v, std::int64_t qx, std::int64_t qy, std::int64_t scale, std::int64_t det) {
+bool closed_inside(const std::array<int, 6>& v, std::int64_t qx, std::int64_t qy, std::int64_t scale,
+                   std::int64_t det) {
   for (std::size_t k = 0; k < 3; ++k) {
     const std::size_t j = (k + 1) % 3;
     const std::int64_t e = edge_fn(v[2 * k], v[2 * k + 1], v[2 * j], v[2 * j + 1], qx, qy, scale);
@@ -233,7 +244,8 @@ bool closed_inside(const std::array<int, 6>& v, std::int64_t qx, std::int64_t qy
 void check_statements(const std::array<int, 6>& xy16, const std::array<p::ivec3, 3>& lights, int W, statement_count& n,
                       pixel_set which = pixel_set::covered, std::uint64_t index = 0) {
   const tt::triangle_case c{100, 0, 0, lights, xy16, 0, 0};
-  const auto setup = pl::setup_triangle({pl::xy124{xy16[0], xy16[1]}, pl::xy124{xy16[2], xy16[3]}, pl::xy124{xy16[4], xy16[5]}});
+  const auto setup =
+      pl::setup_triangle({pl::xy124{xy16[0], xy16[1]}, pl::xy124{xy16[2], xy16[3]}, pl::xy124{xy16[4], xy16[5]}});
   if (setup.area2 == 0) return;
   const auto edge = tt::lag_edge_of(xy16);
   const int rx = edge.rx, ry = edge.ry;
@@ -253,7 +265,8 @@ void check_statements(const std::array<int, 6>& xy16, const std::array<p::ivec3,
     n.beyond_window += a > W - 1 || b > W - 1;  // the premise a, b <= W − 1 (a shrunk W breaks it on purpose)
     const tt::plane_point w = tt::point_w(edge, x, y);
     if (!w.at_pixel()) {
-      const std::int64_t wx = xy16[2 * X] * (w.den - w.num) + xy16[2 * Y] * w.num, wy = xy16[2 * X + 1] * (w.den - w.num) + xy16[2 * Y + 1] * w.num;
+      const std::int64_t wx = xy16[2 * X] * (w.den - w.num) + xy16[2 * Y] * w.num,
+                         wy = xy16[2 * X + 1] * (w.den - w.num) + xy16[2 * Y + 1] * w.num;
       n.w_outside += !closed_inside(xy16, wx, wy, w.den, det);
     }
     const std::uint64_t at = index << 22 | static_cast<std::uint64_t>(y) << 11 | static_cast<std::uint64_t>(x);
@@ -261,12 +274,14 @@ void check_statements(const std::array<int, 6>& xy16, const std::array<p::ivec3,
     auto check = [&](std::size_t s, std::int64_t left, std::int64_t allowance) {
       ++n.checked[s];
       broken[s] = broken[s] || left >= allowance;
-      n.max_ppm[s] = std::max(n.max_ppm[s], static_cast<std::int64_t>(std::floor(static_cast<long double>(left) * 1000000 / allowance)));
+      n.max_ppm[s] = std::max(
+          n.max_ppm[s], static_cast<std::int64_t>(std::floor(static_cast<long double>(left) * 1000000 / allowance)));
     };
     for (std::size_t ch = 0; ch < 3; ++ch) {
       const std::int64_t d1 = lights[1][ch] - lights[0][ch], d2 = lights[2][ch] - lights[0][ch];
       const std::int64_t gx = (d1 * by - d2 * ay) * sd, gy = (d2 * ax - d1 * bx) * sd;  // signs of the exact gradient
-      const std::int64_t Pdet = 128 * ((128 + lights[0][ch]) * det + d1 * (by * qx - bx * qy) + d2 * (ax * qy - ay * qx)) * sd;
+      const std::int64_t Pdet =
+          128 * ((128 + lights[0][ch]) * det + d1 * (by * qx - bx * qy) + d2 * (ax * qy - ay * qx)) * sd;
       for (int sigma : {1, -1}) {
         if (!(sigma * gx < 0 && sigma * gy < 0)) {
           check(0, sigma * (L[ch] * ad - Pdet), W * ad);
@@ -302,7 +317,9 @@ void check_statements(const std::array<int, 6>& xy16, const std::array<p::ivec3,
 }
 
 void expect_hold(const statement_count& n) {
-  for (std::size_t s = 0; s < 3; ++s) EXPECT_EQ(n.violations[s], 0) << "statement " << "ABC"[s];
+  for (std::size_t s = 0; s < 3; ++s)
+    EXPECT_EQ(n.violations[s], 0) << "statement "
+                                  << "ABC"[s];
   EXPECT_EQ(n.w_outside, 0);
   EXPECT_EQ(n.beyond_window, 0);
 }
@@ -322,8 +339,10 @@ void for_each_window_case(F&& f) {
         ++k;
         const std::size_t base = static_cast<std::size_t>(k * 7919) % lights.size();
         const std::array<int, 6> xy{pts[a][0], pts[a][1], pts[b][0], pts[b][1], pts[c][0], pts[c][1]};
-        f(xy, std::array<p::ivec3, 3>{lights[(k * 7919) % lights.size()], lights[(k * 104729) % lights.size()], lights[(k * 1299709) % lights.size()]});
-        f(xy, std::array<p::ivec3, 3>{lights[base], lights[(base + 1 + k % 3) % lights.size()], lights[(base + 2 + k % 5) % lights.size()]});
+        f(xy, std::array<p::ivec3, 3>{lights[(k * 7919) % lights.size()], lights[(k * 104729) % lights.size()],
+                                      lights[(k * 1299709) % lights.size()]});
+        f(xy, std::array<p::ivec3, 3>{lights[base], lights[(base + 1 + k % 3) % lights.size()],
+                                      lights[(base + 2 + k % 5) % lights.size()]});
       }
 }
 }  // namespace
@@ -331,7 +350,8 @@ void for_each_window_case(F&& f) {
 TEST(Triangle, ChannelStatementsHoldOnEveryLatticeTriangleOfASmallWindow) {
   // The 5 × 5 lattice of the test above (coordinates <= 95/16 pixel: W = 7), every pixel the rasteriser covers.
   statement_count n;
-  for_each_window_case([&](const std::array<int, 6>& xy, const std::array<p::ivec3, 3>& l) { check_statements(xy, l, 7, n); });
+  for_each_window_case(
+      [&](const std::array<int, 6>& xy, const std::array<p::ivec3, 3>& l) { check_statements(xy, l, 7, n); });
   expect_hold(n);
   EXPECT_GT(n.pixels, 20000);
   EXPECT_GT(n.on_segment, 1000);  // both branches of (i) are exercised
@@ -358,7 +378,8 @@ TEST(Triangle, BruteForceAgreesWithTheWindowEnumerationOnEveryLatticeTriangleOfA
       EXPECT_EQ(tt::channel_statements()[s].name, std::string(1, "ABC"[s]));
       EXPECT_EQ(static_cast<long>(st.checked), n.checked[s]) << "W " << W << " statement " << s;
       EXPECT_EQ(static_cast<long>(st.violations.count), n.violations[s]) << "W " << W << " statement " << s;
-      EXPECT_NEAR(static_cast<double>(st.ratio_ppm.max), static_cast<double>(n.max_ppm[s]), 1.0) << "W " << W << " statement " << s;
+      EXPECT_NEAR(static_cast<double>(st.ratio_ppm.max), static_cast<double>(n.max_ppm[s]), 1.0)
+          << "W " << W << " statement " << s;
       if (n.violations[s] > 0) {
         EXPECT_EQ(st.violations.first[0], n.first_violation[s]) << "W " << W << " statement " << s;
       }
@@ -375,7 +396,8 @@ TEST(Triangle, BruteForceAgreesWithTheWindowEnumerationOnEveryLatticeTriangleOfA
       std::uint64_t k = 0;
       for_each_window_case([&](const std::array<int, 6>& xy, const std::array<p::ivec3, 3>& l) {
         if (k++ != at >> 22) return;
-        const std::string what = tt::failures_at(tt::triangle_case{0, 0, 0, l, xy, static_cast<int>(at & 2047), static_cast<int>(at >> 11 & 2047)}, W);
+        const std::string what = tt::failures_at(
+            tt::triangle_case{0, 0, 0, l, xy, static_cast<int>(at & 2047), static_cast<int>(at >> 11 & 2047)}, W);
         EXPECT_NE(what.find("(A)"), std::string::npos) << what;
       });
     }
@@ -392,10 +414,12 @@ TEST(Triangle, ChannelStatementsHoldOnRandomFullSizeTriangles) {
   for (int t = 0; t < 40; ++t) {
     // a thin sliver (few pixels) from one corner region to another keeps the pixel count small
     const int x0 = coord(rng), y0 = coord(rng), x1 = coord(rng), y1 = coord(rng);
-    const int x2 = std::clamp(x1 + near(rng) * 8 - 160, 0, 2047 * 16), y2 = std::clamp(y1 + near(rng) * 8 - 160, 0, 2047 * 16);
+    const int x2 = std::clamp(x1 + near(rng) * 8 - 160, 0, 2047 * 16),
+              y2 = std::clamp(y1 + near(rng) * 8 - 160, 0, 2047 * 16);
     const auto l0 = lights[static_cast<std::size_t>(light(rng))];
     const std::size_t j = static_cast<std::size_t>(light(rng));
-    check_statements({x0, y0, x1, y1, x2, y2}, {l0, lights[j], lights[(j + 1 + static_cast<std::size_t>(near(rng))) % lights.size()]}, 2048, n);
+    check_statements({x0, y0, x1, y1, x2, y2},
+                     {l0, lights[j], lights[(j + 1 + static_cast<std::size_t>(near(rng))) % lights.size()]}, 2048, n);
   }
   expect_hold(n);
   EXPECT_GT(n.pixels, 1000);
@@ -426,7 +450,8 @@ double reach_double(const double n[3], int s) {
           continue;
         }
         const double th = k[c] / 16.0;
-        a2 += th * th * n[c] * n[c], b2 += (1 - th) * (1 - th) * n[c] * n[c], K += n[c] * (th * (2 * W - 1) + (1 - th) * W);
+        a2 += th * th * n[c] * n[c], b2 += (1 - th) * (1 - th) * n[c] * n[c],
+            K += n[c] * (th * (2 * W - 1) + (1 - th) * W);
       }
       least = std::min(least, R * (std::sqrt(a2) + std::sqrt(b2)) + K);
     }
@@ -488,7 +513,8 @@ TEST(Triangle, BoundedSafeSIsWhatTheInequalityGivesForTheWorstNormal) {
     bool fails_above = false;
     for (const auto& nm : p::appendix2_normals()) {
       const double n[3] = {double(std::abs(nm.iX)), double(std::abs(nm.iY)), double(std::abs(nm.iZ))};
-      const int neg = (nm.iX < 0) + (nm.iY < 0) + (nm.iZ < 0), pos = (nm.iX > 0) + (nm.iY > 0) + (nm.iZ > 0), e = t.alpha_error(nm);
+      const int neg = (nm.iX < 0) + (nm.iY < 0) + (nm.iZ < 0), pos = (nm.iX > 0) + (nm.iY > 0) + (nm.iZ > 0),
+                e = t.alpha_error(nm);
       const double gb = floor_give_back(g);
       // truncate_to_8: the multiply's light is at most 127/128 level above the Gouraud light on the
       // channels whose σ is −1 (n_c < 0 at the top, n_c > 0 at the bottom; TruncateToEightGivesBack
@@ -524,10 +550,13 @@ TEST(Triangle, PerPixelSafeSIsWhatTheBallOrTheLightSupportGives) {
     const int neg = (nm.iX < 0) + (nm.iY < 0) + (nm.iZ < 0), pos = (nm.iX > 0) + (nm.iY > 0) + (nm.iZ > 0);
     const int e = t.alpha_error(nm);
     const double gb = floor_give_back(o.gouraud);
-    auto safe = [&](double reach) { return reach / 16384 + neg * gb + e < 128 && -reach / 16384 - pos * gb + e > -129; };
+    auto safe = [&](double reach) {
+      return reach / 16384 + neg * gb + e < 128 && -reach / 16384 - pos * gb + e > -129;
+    };
     if (safe(128.0 * 125 * std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]) + l1)) continue;
     double support = 0;
-    for (const auto& l : lights) support = std::max(support, n[0] * std::abs(l[0]) + n[1] * std::abs(l[1]) + n[2] * std::abs(l[2]));
+    for (const auto& l : lights)
+      support = std::max(support, n[0] * std::abs(l[0]) + n[1] * std::abs(l[1]) + n[2] * std::abs(l[2]));
     EXPECT_TRUE(safe(128 * support + l1)) << nm.iX << " " << nm.iY;
     ++by_support;
   }
@@ -545,7 +574,8 @@ TEST(Triangle, BallSupportLightsGiveTheWholeBallsSupport) {
     for (const auto& nm : p::appendix2_normals()) {
       const std::array<std::int64_t, 3> n{std::abs(nm.iX), std::abs(nm.iY), std::abs(nm.iZ)};
       std::int64_t whole = 0;
-      for (const auto& l : ball) whole = std::max(whole, n[0] * std::abs(l[0]) + n[1] * std::abs(l[1]) + n[2] * std::abs(l[2]));
+      for (const auto& l : ball)
+        whole = std::max(whole, n[0] * std::abs(l[0]) + n[1] * std::abs(l[1]) + n[2] * std::abs(l[2]));
       ASSERT_EQ(tt::light_support(n, surface), whole) << s << " " << nm.iX << " " << nm.iY;
     }
   }
@@ -578,7 +608,8 @@ TEST(Triangle, PerPixelTruncatedSafeSIsWhatTheInequalityGives) {
     auto safe_at = [&](int s, const std::vector<p::ivec3>& lights) {
       if (safe(128.0 * s * len + l1)) return true;
       double support = 0;
-      for (const auto& l : lights) support = std::max(support, n[0] * std::abs(l[0]) + n[1] * std::abs(l[1]) + n[2] * std::abs(l[2]));
+      for (const auto& l : lights)
+        support = std::max(support, n[0] * std::abs(l[0]) + n[1] * std::abs(l[1]) + n[2] * std::abs(l[2]));
       return safe(128 * support + l1);
     };
     EXPECT_TRUE(safe_at(s_max, at)) << nm.iX << " " << nm.iY;
@@ -615,7 +646,8 @@ TEST(Triangle, FloorsGiveBackAtMostG) {
         int L[3];
         for (int& v : L) v = k == 0 ? 0 : k == 1 ? 0x7FFF : unit(rng);
         const gs::fragment_colour cf{gs::gouraud_channel::from_wrapped(L[0]), gs::gouraud_channel::from_wrapped(L[1]),
-                                     gs::gouraud_channel::from_wrapped(L[2]), gs::gouraud_channel::from_wrapped(0x4000)};
+                                     gs::gouraud_channel::from_wrapped(L[2]),
+                                     gs::gouraud_channel::from_wrapped(0x4000)};
         const int value = p::two_pass::pixel(nm, cf, o).value;
         std::int64_t d = std::int64_t{16384} * (value - e);
         for (int c = 0; c < 3; ++c) {
@@ -681,7 +713,8 @@ TEST(Triangle, AZeroNormalComponentAddsNothingWhateverItsLight) {
 namespace {
 // The plane through the three vertex lights of one channel, written another way: Cramer's rule on
 // [x y 1]·(g_x, g_y, c) = l at the three vertices (levels; g per pixel).
-std::array<double, 3> plane_by_cramer(const tt::relaxation_point& x, std::size_t c, const std::array<std::array<double, 3>, 3>& l) {
+std::array<double, 3> plane_by_cramer(const tt::relaxation_point& x, std::size_t c,
+                                      const std::array<std::array<double, 3>, 3>& l) {
   const auto& V = x.vertex;
   auto det3 = [](const double m[3][3]) {
     return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
@@ -727,7 +760,8 @@ TEST(Triangle, RelaxationWitnessesLieInTheRelaxationAndExceedTheirThresholds) {
     for (std::size_t c = 0; c < 3; ++c) {
       const auto g = plane_by_cramer(w.at, c, l);
       const double P = g[0] * w.at.pixel[0] + g[1] * w.at.pixel[1] + g[2];
-      value += n[c] * (P + w.at.pixel[0] * std::clamp(-128 * g[0], 0.0, 1.0) / 128 + w.at.pixel[1] * std::clamp(-128 * g[1], 0.0, 1.0) / 128);
+      value += n[c] * (P + w.at.pixel[0] * std::clamp(-128 * g[0], 0.0, 1.0) / 128 +
+                       w.at.pixel[1] * std::clamp(-128 * g[1], 0.0, 1.0) / 128);
     }
     EXPECT_NEAR(tt::relaxation_value(w.at, n, w.s), value, 1e-6) << w.s;
     const double l1 = n[0] + n[1] + n[2];
@@ -741,7 +775,8 @@ TEST(Triangle, RelaxationWitnessesLieInTheRelaxationAndExceedTheirThresholds) {
     int counted = 0;
     for (int c : {nm.iX, nm.iY, nm.iZ}) against += w.side * c < 0 ? std::abs(c) : 0, counted += w.side * c < 0;
     const int e = t.alpha_error(nm);
-    const double threshold = (w.side > 0 ? 128.0 * (128 - neg - e) : 128.0 * (129 - (3 - neg) + e)) + counted * 128 * (1 - floor_give_back(w.gouraud));
+    const double threshold = (w.side > 0 ? 128.0 * (128 - neg - e) : 128.0 * (129 - (3 - neg) + e)) +
+                             counted * 128 * (1 - floor_give_back(w.gouraud));
     const double margin = value + l1 / 128 + (truncate ? against * 127 / 128 : 0) - threshold;
     EXPECT_NEAR(tt::relaxation_margin(w, t, o), margin, 1e-6);
     // well above the doubles' rounding (~1e-9 here): the s = 83 truncate_to_8 row by 0.018, the s = 84 one by 77
@@ -786,7 +821,8 @@ namespace {
 // for a window of w pixels whose vertices lie in 0 .. (w − 1)·16.
 // `row` = w − 2 counts the row above instead (which triangles do cover).
 int last_row_or_column_covered(const std::array<int, 6>& xy16, int w, int row = -1) {
-  const auto setup = pl::setup_triangle({pl::xy124{xy16[0], xy16[1]}, pl::xy124{xy16[2], xy16[3]}, pl::xy124{xy16[4], xy16[5]}});
+  const auto setup =
+      pl::setup_triangle({pl::xy124{xy16[0], xy16[1]}, pl::xy124{xy16[2], xy16[3]}, pl::xy124{xy16[4], xy16[5]}});
   if (setup.area2 == 0) return 0;
   if (row < 0) row = w - 1;
   int covered = 0;

@@ -116,26 +116,29 @@ TEST(Vectors, CorruptedLineIsReportedAsInputsObservedExpected) {
   EXPECT_EQ(run.result.failed, 1u);
   EXPECT_EQ(run.result.passed, lines.size() - 3);
   // "inputs => observed expected: value", then the closing line.
-  const std::string mismatch = with_last_field(original, wrong) + " expected: " +
-                               original.substr(original.find("=> ") + 3);
+  const std::string mismatch =
+      with_last_field(original, wrong) + " expected: " + original.substr(original.find("=> ") + 3);
   EXPECT_EQ(run.report, mismatch + "\n" + std::to_string(lines.size() - 3) + " passed, 1 failed\n");
 }
 
 TEST(Vectors, MalformedLinesNameTheirLineNumberAndTheRunContinues) {
   auto lines = lines_of(gen("colclamp", v::level::one));
-  lines.insert(lines.begin() + 4, "1 zz 000 000 => 00 00 00");      // line 5: not hex
-  lines.insert(lines.begin() + 6, "1 000 000 => 00 00 00");         // line 7: too few inputs
-  lines.insert(lines.begin() + 8, "2 000 000 000 => 00 00 00");     // line 9: CLAMP = 2 is outside the domain
-  lines.insert(lines.begin() + 10, "1 000 000 000 00 00 00");       // line 11: no =>
+  lines.insert(lines.begin() + 4, "1 zz 000 000 => 00 00 00");   // line 5: not hex
+  lines.insert(lines.begin() + 6, "1 000 000 => 00 00 00");      // line 7: too few inputs
+  lines.insert(lines.begin() + 8, "2 000 000 000 => 00 00 00");  // line 9: CLAMP = 2 is outside the domain
+  lines.insert(lines.begin() + 10, "1 000 000 000 00 00 00");    // line 11: no =>
   const auto run = ver(join(lines));
   EXPECT_EQ(run.result.failed, 4u);
   EXPECT_EQ(run.result.passed, lines.size() - 2 - 4);
-  for (int n : {5, 7, 9, 11}) EXPECT_NE(run.report.find("line " + std::to_string(n) + ": malformed: "), std::string::npos) << n << "\n" << run.report;
+  for (int n : {5, 7, 9, 11})
+    EXPECT_NE(run.report.find("line " + std::to_string(n) + ": malformed: "), std::string::npos) << n << "\n"
+                                                                                                 << run.report;
 }
 
 TEST(Vectors, ErrorCapAndErrorStop) {
   auto lines = lines_of(gen("colclamp", v::level::one));
-  for (std::size_t i = 2; i < 12; ++i) lines[i] = with_last_field(lines[i], lines[i].substr(lines[i].size() - 2) == "00" ? "01" : "00");
+  for (std::size_t i = 2; i < 12; ++i)
+    lines[i] = with_last_field(lines[i], lines[i].substr(lines[i].size() - 2) == "00" ? "01" : "00");
   v::verify_settings capped;
   capped.max_errors = 3;
   const auto run = ver(join(lines), capped);
@@ -153,11 +156,11 @@ TEST(Vectors, ErrorCapAndErrorStop) {
 }
 
 TEST(Vectors, HeaderErrors) {
-  EXPECT_THROW(ver("0 000 000 000 => 00 00 00\n"), v::format_error);          // no header
-  EXPECT_THROW(ver("gsdot3-vectors 2 unit=colclamp\n"), v::format_error);     // another version
-  EXPECT_THROW(ver("gsdot3-vectors 1 unit=fog\n"), v::format_error);          // unknown unit
+  EXPECT_THROW(ver("0 000 000 000 => 00 00 00\n"), v::format_error);                      // no header
+  EXPECT_THROW(ver("gsdot3-vectors 2 unit=colclamp\n"), v::format_error);                 // another version
+  EXPECT_THROW(ver("gsdot3-vectors 1 unit=fog\n"), v::format_error);                      // unknown unit
   EXPECT_THROW(ver("gsdot3-vectors 1 unit=blend blend_shift=round\n"), v::format_error);  // bad option
-  EXPECT_THROW(ver(""), v::format_error);                                     // empty input
+  EXPECT_THROW(ver(""), v::format_error);                                                 // empty input
 }
 
 // The header's options are the model's: a blend_shift=truncate file disagrees with floor.
@@ -170,7 +173,8 @@ TEST(Vectors, HeaderOptionsSelectTheModel) {
 
 TEST(Vectors, Ps2autotestsBlendRecordings) {
   const std::filesystem::path file = std::filesystem::path(GSDOT3_HW_DIR) / "ps2autotests-gs-blend.expected";
-  if (!std::filesystem::exists(file)) GTEST_SKIP() << "hardware recordings not found: " << file << " (../shared/hw missing)";
+  if (!std::filesystem::exists(file))
+    GTEST_SKIP() << "hardware recordings not found: " << file << " (../shared/hw missing)";
   std::ifstream in(file);
   std::ostringstream report;
   const auto r = v::verify_ps2autotests(in, report, {});
@@ -186,7 +190,8 @@ TEST(Vectors, Ps2autotestsBlendRecordings) {
 }
 
 TEST(Vectors, Ps2autotestsMalformedLine) {
-  std::istringstream in("-- TEST BEGIN\n  src: ffff00ff, dst: ff00ff00, fix: ff => ffff00ff\n0000: (Cs - Cs) * As + Cs\n  src: zz\n");
+  std::istringstream in(
+      "-- TEST BEGIN\n  src: ffff00ff, dst: ff00ff00, fix: ff => ffff00ff\n0000: (Cs - Cs) * As + Cs\n  src: zz\n");
   std::ostringstream report;
   const auto r = v::verify_ps2autotests(in, report, {});
   EXPECT_EQ(r.failed, 2u);

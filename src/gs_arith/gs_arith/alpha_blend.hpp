@@ -62,7 +62,8 @@ constexpr u8 select_alpha(blend_alpha sel, u8 as, u8 ad, u8 fix) noexcept {
 constexpr rgb_wide alpha_blend(const alpha_reg& reg, rgba8 cs, rgba8 cd, const model_options& o) noexcept {
   const u8 c = select_alpha(reg.C, cs.a, cd.a, reg.FIX);
   auto channel = [&](u8 s, u8 d) {
-    return blend_channel(select_colour(reg.A, s, d), select_colour(reg.B, s, d), c, select_colour(reg.D, s, d), o.shift);
+    return blend_channel(select_colour(reg.A, s, d), select_colour(reg.B, s, d), c, select_colour(reg.D, s, d),
+                         o.shift);
   };
   return {channel(cs.r, cd.r), channel(cs.g, cd.g), channel(cs.b, cd.b)};
 }

@@ -24,7 +24,16 @@
 
 namespace gs {
 
-enum class atst : std::uint8_t { NEVER = 0, ALWAYS = 1, LESS = 2, LEQUAL = 3, EQUAL = 4, GEQUAL = 5, GREATER = 6, NOTEQUAL = 7 };
+enum class atst : std::uint8_t {
+  NEVER = 0,
+  ALWAYS = 1,
+  LESS = 2,
+  LEQUAL = 3,
+  EQUAL = 4,
+  GEQUAL = 5,
+  GREATER = 6,
+  NOTEQUAL = 7
+};
 enum class afail : std::uint8_t { KEEP = 0, FB_ONLY = 1, ZB_ONLY = 2, RGB_ONLY = 3 };
 enum class ztst : std::uint8_t { NEVER = 0, ALWAYS = 1, GEQUAL = 2, GREATER = 3 };
 

@@ -36,8 +36,8 @@ constexpr texel_footprint footprint(std::int32_t u16, std::int32_t v16, bilinear
     case bilinear_mode::weighted_sum_4: {
       const std::int64_t u = std::int64_t{u16} - 8, v = std::int64_t{v16} - 8;  // minus half a texel
       return {static_cast<std::int32_t>(fixed::shift_right<fixed::rounding::floor>(u, 4)),
-              static_cast<std::int32_t>(fixed::shift_right<fixed::rounding::floor>(v, 4)),
-              u4::from_wrapped(u), u4::from_wrapped(v)};
+              static_cast<std::int32_t>(fixed::shift_right<fixed::rounding::floor>(v, 4)), u4::from_wrapped(u),
+              u4::from_wrapped(v)};
     }
     case bilinear_mode::nearest:
       return {fixed::shift_right<fixed::rounding::floor>(u16, 4), fixed::shift_right<fixed::rounding::floor>(v16, 4),
@@ -67,8 +67,8 @@ constexpr rgba8 bilinear_filter(rgba8 t00, rgba8 t10, rgba8 t01, rgba8 t11, u4 w
 // per channel. The weights sum to 256, so the result lies in 0..255.
 constexpr u8 weighted_sum_4(u8 t00, u8 t10, u8 t01, u8 t11, u4 wu, u4 wv) noexcept {
   const int a = wu.value(), b = wv.value();
-  const int sum = (16 - a) * (16 - b) * t00.value() + a * (16 - b) * t10.value() + (16 - a) * b * t01.value() +
-                  a * b * t11.value();
+  const int sum =
+      (16 - a) * (16 - b) * t00.value() + a * (16 - b) * t10.value() + (16 - a) * b * t01.value() + a * b * t11.value();
   return u8::from_wrapped(fixed::shift_right<fixed::rounding::floor>(std::int64_t{sum}, 8));
 }
 constexpr rgba8 weighted_sum_4(rgba8 t00, rgba8 t10, rgba8 t01, rgba8 t11, u4 wu, u4 wv) noexcept {

@@ -7,8 +7,8 @@
 
 namespace gs {
 
-using fixed::u8;
 using fixed::s11;
+using fixed::u8;
 
 // An 8-bit-per-channel colour; as a 32-bit register or frame-buffer word it is A8B8G8R8 (R low).
 struct rgba8 {

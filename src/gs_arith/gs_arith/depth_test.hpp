@@ -40,21 +40,23 @@ constexpr unsigned z_bits(zbuf_psm p) noexcept {
   switch (p) {
     case zbuf_psm::PSMZ32: return 32;
     case zbuf_psm::PSMZ24: return 24;
-    case zbuf_psm::PSMZ16: case zbuf_psm::PSMZ16S: return 16;
+    case zbuf_psm::PSMZ16:
+    case zbuf_psm::PSMZ16S: return 16;
   }
   return 32;
 }
 
 struct depth_result {
-  bool pass;       // the pixel goes on to the frame write
-  bool write_z;    // the Z buffer takes `z`
-  std::uint32_t z; // the stored value: the source Z clamped to the format's bits
+  bool pass;        // the pixel goes on to the frame write
+  bool write_z;     // the Z buffer takes `z`
+  std::uint32_t z;  // the stored value: the source Z clamped to the format's bits
   friend constexpr bool operator==(const depth_result&, const depth_result&) = default;
 };
 
 // The depth test of one pixel with source depth z (32-bit, from XYZ2/the Z plane) against the
 // stored word zd (the Z buffer's location; bits above the format's width are ignored).
-constexpr depth_result depth_test(const test_reg& test, const zbuf_reg& zbuf, std::uint32_t z, std::uint32_t zd) noexcept {
+constexpr depth_result depth_test(const test_reg& test, const zbuf_reg& zbuf, std::uint32_t z,
+                                  std::uint32_t zd) noexcept {
   const unsigned bits = z_bits(zbuf.PSM);
   const std::uint32_t max = bits == 32 ? 0xFFFFFFFFu : (std::uint32_t{1} << bits) - 1;
   const std::uint32_t zs = std::min(z, max);

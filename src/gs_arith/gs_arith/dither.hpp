@@ -26,8 +26,8 @@
 
 namespace gs {
 
-using fixed::u3;
 using fixed::s3;
+using fixed::u3;
 
 struct dimx_reg {
   std::array<std::array<u3, 4>, 4> DM{};  // DM[i][j]: row i = y & 3, column j = x & 3

@@ -25,8 +25,14 @@ namespace gs {
 // FRAME.PSM values a frame buffer can have (GS manual codes). The Z formats are drawable as colour
 // buffers and store pixels like their CT counterparts (only the memory swizzle differs).
 enum class frame_psm : std::uint8_t {
-  PSMCT32 = 0x00, PSMCT24 = 0x01, PSMCT16 = 0x02, PSMCT16S = 0x0A,
-  PSMZ32 = 0x30, PSMZ24 = 0x31, PSMZ16 = 0x32, PSMZ16S = 0x3A,
+  PSMCT32 = 0x00,
+  PSMCT24 = 0x01,
+  PSMCT16 = 0x02,
+  PSMCT16S = 0x0A,
+  PSMZ32 = 0x30,
+  PSMZ24 = 0x31,
+  PSMZ16 = 0x32,
+  PSMZ16S = 0x3A,
 };
 
 enum class pixel_bits : std::uint8_t { b32, b24, b16 };

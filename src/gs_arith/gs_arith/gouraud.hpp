@@ -104,7 +104,8 @@ struct gouraud_exact_plane {
 
 // The exact plane at 12.4 offset (px, py) from vertex 0, truncated toward zero to whole 8.7 units
 // from vertex 0's value (|px|, |py| <= 2^21 keep every product below 2^62).
-constexpr std::int64_t exact_plane_units(const gouraud_exact_plane& e, int i, std::int64_t px, std::int64_t py) noexcept {
+constexpr std::int64_t exact_plane_units(const gouraud_exact_plane& e, int i, std::int64_t px,
+                                         std::int64_t py) noexcept {
   return e.c0[i].value() + divide_toward_zero((e.nx[i] * px + e.ny[i] * py) * 128, e.det);
 }
 
@@ -171,7 +172,8 @@ constexpr fragment_colour gouraud_exact_at(const gouraud_plane& p, std::int32_t 
 struct plane_fraction {
   std::int64_t num, den;
 };
-constexpr plane_fraction exact_plane_fraction(const gouraud_exact_plane& e, int i, std::int64_t x, std::int64_t y) noexcept {
+constexpr plane_fraction exact_plane_fraction(const gouraud_exact_plane& e, int i, std::int64_t x,
+                                              std::int64_t y) noexcept {
   const std::int64_t px = clamp_distance(x) * 16 - e.x0, py = clamp_distance(y) * 16 - e.y0;
   const std::int64_t num = e.c0[i].value() * e.det + (e.nx[i] * px + e.ny[i] * py) * 128;
   return e.det < 0 ? plane_fraction{-num, -e.det} : plane_fraction{num, e.det};
@@ -182,8 +184,8 @@ constexpr std::int64_t floor_div(std::int64_t num, std::int64_t den) noexcept { 
 
 // gouraud_setup::per_pixel_level (parallel-gs gs/shaders/ubershader.comp compute_combined_color: the
 // barycentric colour floor(255·(c0 + (c1 − c0)·i + (c2 − c0)·j) + 1/256), a whole level): the exact plane
-// at the pixel plus 1/256 level (half an 8.7 unit), floored to a whole level, in 8.7: 128·floor((2P + 1)/256). Its float
-// barycentrics (i, j from integer edge functions times an approximate reciprocal of the area,
+// at the pixel plus 1/256 level (half an 8.7 unit), floored to a whole level, in 8.7: 128·floor((2P + 1)/256). Its
+// float barycentrics (i, j from integer edge functions times an approximate reciprocal of the area,
 // gs/shaders/intersect.h evaluate_coverage_single) are taken as exact: ~2^-24 relative, below the bias.
 constexpr fragment_colour gouraud_level_at(const gouraud_plane& p, std::int32_t x, std::int32_t y) noexcept {
   auto ch = [&](int i) {
@@ -225,8 +227,8 @@ constexpr std::int64_t wrap16(std::int64_t v) noexcept { return ((v + 32768) & 0
 // row start with truncation, add the lane offsets (16-bit), and per further vector add the step and
 // clamp at >= 0 (add16, max_i16). skip = left mod lanes in frame pixels (the vector is aligned). The float plane is
 // taken as exact here. At pixel x: n = the vectors after the first, m = x − left − n·lanes.
-constexpr std::int64_t gouraud_rows_units(const gouraud_exact_plane& e, int i, std::int64_t x, std::int64_t y, int lanes,
-                                          std::int64_t clip_x0, std::int64_t lane_origin = 0) noexcept {
+constexpr std::int64_t gouraud_rows_units(const gouraud_exact_plane& e, int i, std::int64_t x, std::int64_t y,
+                                          int lanes, std::int64_t clip_x0, std::int64_t lane_origin = 0) noexcept {
   const std::int64_t left = gouraud_row_start(e, x, y, clip_x0);
   const auto f = exact_plane_fraction(e, i, left, y);
   const std::int64_t start = f.num / f.den;  // the truncating conversion of the row's start value
@@ -249,12 +251,15 @@ constexpr std::int64_t gouraud_rows_units(const gouraud_exact_plane& e, int i, s
   return v;
 }
 constexpr fragment_colour gouraud_rows_at(const gouraud_plane& p, std::int32_t x, std::int32_t y, int lanes) noexcept {
-  auto ch = [&](int i) { return gouraud_channel::from_saturated(gouraud_rows_units(p.exact, i, x, y, lanes, p.clip_x0, p.lane_origin)); };
+  auto ch = [&](int i) {
+    return gouraud_channel::from_saturated(gouraud_rows_units(p.exact, i, x, y, lanes, p.clip_x0, p.lane_origin));
+  };
   return {ch(0), ch(1), ch(2), ch(3)};
 }
 
 // The fragment colour at pixel (x, y) under the set-up in force.
-constexpr fragment_colour gouraud_colour(const gouraud_plane& p, std::int32_t x, std::int32_t y, gouraud_setup s) noexcept {
+constexpr fragment_colour gouraud_colour(const gouraud_plane& p, std::int32_t x, std::int32_t y,
+                                         gouraud_setup s) noexcept {
   switch (s) {
     case gouraud_setup::per_pixel: return gouraud_exact_at(p, x, y);
     case gouraud_setup::plane_steps: return gouraud_at(p, x, y);

@@ -26,7 +26,7 @@ std::string format_trace(const pixel_trace& t) {
   std::string s;
   s += line("tfx      ", hex32(t.tfx_out.to_u32()) + "  (Cs/As after the texture function)");
   s += line("atest    ", std::string("rgb=") + (t.test.rgb ? "1" : "0") + " a=" + (t.test.a ? "1" : "0") +
-                           " z=" + (t.test.z ? "1" : "0") + "  (written channels)");
+                             " z=" + (t.test.z ? "1" : "0") + "  (written channels)");
   s += line("cd       ", hex32(t.cd.to_u32()) + "  (Cd/Ad as the blender reads the frame buffer)");
   s += line("blend    ", wide(t.blend) + (t.blended ? "  (blended)" : "  (not blended: Cs passes)"));
   s += line("dither   ", wide(t.dithered));

@@ -34,17 +34,17 @@ struct pixel_input {
 
 // Every stage's value, in order.
 struct pixel_trace {
-  rgba8 tfx_out;        // 1. source colour Cs / As
-  write_enables test;   // 2.
-  rgba8 cd;             // 3. destination as read (Cd, Ad)
-  bool blended;         // 3. ABE and not skipped by PABE
-  rgb_wide blend;       // 3. ((A − B)·C >> 7) + D, or Cs
-  rgb_wide dithered;    // 4.
-  rgba8 clamped;        // 5. alpha is As
-  rgba8 fba;            // 6.
-  std::uint32_t packed; // 7.
-  std::uint32_t keep;   // 8. keep mask: FBMSK in memory bits plus the alpha test's disabled channels
-  std::uint32_t out;    // the new frame-buffer word
+  rgba8 tfx_out;         // 1. source colour Cs / As
+  write_enables test;    // 2.
+  rgba8 cd;              // 3. destination as read (Cd, Ad)
+  bool blended;          // 3. ABE and not skipped by PABE
+  rgb_wide blend;        // 3. ((A − B)·C >> 7) + D, or Cs
+  rgb_wide dithered;     // 4.
+  rgba8 clamped;         // 5. alpha is As
+  rgba8 fba;             // 6.
+  std::uint32_t packed;  // 7.
+  std::uint32_t keep;    // 8. keep mask: FBMSK in memory bits plus the alpha test's disabled channels
+  std::uint32_t out;     // the new frame-buffer word
   friend constexpr bool operator==(const pixel_trace&, const pixel_trace&) = default;
 };
 

@@ -6,7 +6,8 @@ namespace gs {
 // names (no option reproduces it), the profile keeps the model's default and the matrix says so.
 const std::vector<profile>& profiles() {
   static const std::vector<profile> rows = {
-      {"pcsx2-sw", "PCSX2 software renderer, pcsx2/GS/Renderers/SW/GSDrawScanline.cpp CDrawScanline (C++ path)",
+      {"pcsx2-sw",
+       "PCSX2 software renderer, pcsx2/GS/Renderers/SW/GSDrawScanline.cpp CDrawScanline (C++ path)",
        {{"tfx_rounding", "floor"},
         {"gouraud_fraction", "keep_fraction"},
         {"blend_shift", "floor"},
@@ -16,7 +17,8 @@ const std::vector<profile>& profiles() {
         {"rgb_only_targets", "thirty_two_bit_only"},
         {"texture_buffer", "draw_snapshot"},
         {"gouraud_setup", "pcsx2_rows_8"}}},
-      {"dobiestation", "DobieStation src/core/gsthread.cpp (interpreter: tex_lookup, draw_pixel)",
+      {"dobiestation",
+       "DobieStation src/core/gsthread.cpp (interpreter: tex_lookup, draw_pixel)",
        {{"tfx_rounding", "floor"},
         {"gouraud_fraction", "truncate_to_8"},
         {"blend_shift", "floor"},
@@ -26,7 +28,8 @@ const std::vector<profile>& profiles() {
         {"rgb_only_targets", "all_formats"},
         {"texture_buffer", "per_fragment"},
         {"gouraud_setup", "per_pixel"}}},
-      {"play", "Play! Source/gs/GSH_Vulkan (GSH_VulkanDrawDesktop.cpp fragment shader, GSH_VulkanDrawUtils.cpp)",
+      {"play",
+       "Play! Source/gs/GSH_Vulkan (GSH_VulkanDrawDesktop.cpp fragment shader, GSH_VulkanDrawUtils.cpp)",
        {{"tfx_rounding", "truncate"},
         {"gouraud_fraction", "keep_fraction"},
         {"blend_shift", "floor"},
@@ -36,8 +39,9 @@ const std::vector<profile>& profiles() {
         {"rgb_only_targets", "all_formats"},
         {"texture_buffer", "quarter_page"},
         {"gouraud_setup", "per_pixel"}}},
-      {"parallel-gs", "parallel-gs gs/shaders/ubershader.comp (compute_combined_color, alpha_blend, shade_resolve), "
-                      "triangle_setup.comp; rows not read keep the model default",
+      {"parallel-gs",
+       "parallel-gs gs/shaders/ubershader.comp (compute_combined_color, alpha_blend, shade_resolve), "
+       "triangle_setup.comp; rows not read keep the model default",
        {{"tfx_rounding", "floor"},
         {"gouraud_fraction", "truncate_to_8"},
         {"blend_shift", "floor"},

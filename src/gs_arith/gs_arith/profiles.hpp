@@ -18,8 +18,8 @@
 namespace gs {
 
 struct profile {
-  std::string_view name;     // --profile NAME
-  std::string_view source;   // the emulator and code it follows
+  std::string_view name;                                              // --profile NAME
+  std::string_view source;                                            // the emulator and code it follows
   std::vector<std::pair<std::string_view, std::string_view>> values;  // option name -> value, every option
 };
 const std::vector<profile>& profiles();

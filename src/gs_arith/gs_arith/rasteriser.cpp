@@ -58,7 +58,8 @@ bool covers(const triangle_setup& t, int x, int y) {
   return t.area2 != 0;
 }
 
-plane make_plane(const std::array<xy124, 3>& p, const std::array<std::int32_t, 3>& a, std::int32_t lo, std::int32_t hi) {
+plane make_plane(const std::array<xy124, 3>& p, const std::array<std::int32_t, 3>& a, std::int32_t lo,
+                 std::int32_t hi) {
   const std::int64_t det = cross(p[0], p[1], p[2]);
   if (det == 0) throw std::logic_error("make_plane: zero-area triangle");
   const std::int64_t da1 = a[1] - a[0], da2 = a[2] - a[0];

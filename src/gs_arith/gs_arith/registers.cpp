@@ -15,15 +15,33 @@ blend_colour colour_selector(field_reader& f, std::string_view name, int lo) {
 
 bool is_tex_psm(std::uint64_t v) {
   switch (v) {
-    case 0x00: case 0x01: case 0x02: case 0x0A: case 0x13: case 0x14: case 0x1B:
-    case 0x24: case 0x2C: case 0x30: case 0x31: case 0x32: case 0x3A: return true;
+    case 0x00:
+    case 0x01:
+    case 0x02:
+    case 0x0A:
+    case 0x13:
+    case 0x14:
+    case 0x1B:
+    case 0x24:
+    case 0x2C:
+    case 0x30:
+    case 0x31:
+    case 0x32:
+    case 0x3A: return true;
     default: return false;
   }
 }
 
 bool is_frame_psm(std::uint64_t v) {
   switch (v) {
-    case 0x00: case 0x01: case 0x02: case 0x0A: case 0x30: case 0x31: case 0x32: case 0x3A: return true;
+    case 0x00:
+    case 0x01:
+    case 0x02:
+    case 0x0A:
+    case 0x30:
+    case 0x31:
+    case 0x32:
+    case 0x3A: return true;
     default: return false;
   }
 }
@@ -36,14 +54,20 @@ prim_reg decode_prim(std::uint64_t v) {
   const auto type = f.take(0, 3);
   if (type == 7) f.fail("PRIM", type, "reserved primitive type");
   r.PRIM = static_cast<prim_type>(type);
-  r.IIP = f.bit(3); r.TME = f.bit(4); r.FGE = f.bit(5); r.ABE = f.bit(6);
-  r.AA1 = f.bit(7); r.FST = f.bit(8); r.CTXT = f.bit(9); r.FIX = f.bit(10);
+  r.IIP = f.bit(3);
+  r.TME = f.bit(4);
+  r.FGE = f.bit(5);
+  r.ABE = f.bit(6);
+  r.AA1 = f.bit(7);
+  r.FST = f.bit(8);
+  r.CTXT = f.bit(9);
+  r.FIX = f.bit(10);
   f.done();
   return r;
 }
 std::uint64_t encode(const prim_reg& r) {
-  return bits(r.PRIM) | bits(r.IIP) << 3 | bits(r.TME) << 4 | bits(r.FGE) << 5 | bits(r.ABE) << 6 |
-         bits(r.AA1) << 7 | bits(r.FST) << 8 | bits(r.CTXT) << 9 | bits(r.FIX) << 10;
+  return bits(r.PRIM) | bits(r.IIP) << 3 | bits(r.TME) << 4 | bits(r.FGE) << 5 | bits(r.ABE) << 6 | bits(r.AA1) << 7 |
+         bits(r.FST) << 8 | bits(r.CTXT) << 9 | bits(r.FIX) << 10;
 }
 
 rgbaq_reg decode_rgbaq(std::uint64_t v) {
@@ -67,7 +91,8 @@ tex0_reg decode_tex0(std::uint64_t v) {
   r.TFX = static_cast<tfx>(f.take(35, 2));
   r.CBP = f.uint<14>(37);
   const auto cpsm = f.take(51, 4);
-  if (cpsm != 0x0 && cpsm != 0x2 && cpsm != 0xA) f.fail("CPSM", cpsm, "CLUT format must be PSMCT32, PSMCT16 or PSMCT16S");
+  if (cpsm != 0x0 && cpsm != 0x2 && cpsm != 0xA)
+    f.fail("CPSM", cpsm, "CLUT format must be PSMCT32, PSMCT16 or PSMCT16S");
   r.CPSM = static_cast<clut_psm>(cpsm);
   r.CSM = f.bit(55);
   r.CSA = f.uint<5>(56);
@@ -171,7 +196,8 @@ zbuf_reg decode_zbuf(std::uint64_t v) {
   zbuf_reg r;
   r.ZBP = f.uint<9>(0);
   const auto psm = f.take(24, 4);
-  if (psm != 0x0 && psm != 0x1 && psm != 0x2 && psm != 0xA) f.fail("PSM", psm, "not a Z format (0 PSMZ32, 1 PSMZ24, 2 PSMZ16, 0xA PSMZ16S)");
+  if (psm != 0x0 && psm != 0x1 && psm != 0x2 && psm != 0xA)
+    f.fail("PSM", psm, "not a Z format (0 PSMZ32, 1 PSMZ24, 2 PSMZ16, 0xA PSMZ16S)");
   r.PSM = static_cast<zbuf_psm>(psm);
   r.ZMSK = f.bit(32);
   f.done();
@@ -180,17 +206,28 @@ zbuf_reg decode_zbuf(std::uint64_t v) {
 std::uint64_t encode(const zbuf_reg& r) { return bits(r.ZBP) | bits(r.PSM) << 24 | bits(r.ZMSK) << 32; }
 
 void set_register(gs_registers& regs, std::string_view name, std::uint64_t value) {
-  if (name == "PRIM") regs.PRIM = decode_prim(value);
-  else if (name == "RGBAQ") regs.RGBAQ = decode_rgbaq(value);
-  else if (name == "TEX0_1") regs.TEX0_1 = decode_tex0(value);
-  else if (name == "ALPHA_1") regs.ALPHA_1 = decode_alpha(value);
-  else if (name == "TEST_1") regs.TEST_1 = decode_test(value);
-  else if (name == "FRAME_1") regs.FRAME_1 = decode_frame(value);
-  else if (name == "COLCLAMP") regs.COLCLAMP = decode_colclamp(value);
-  else if (name == "PABE") regs.PABE = decode_pabe(value);
-  else if (name == "FBA_1") regs.FBA_1 = decode_fba(value);
-  else if (name == "DTHE") regs.DTHE = decode_dthe(value);
-  else if (name == "DIMX") regs.DIMX = decode_dimx(value);
+  if (name == "PRIM")
+    regs.PRIM = decode_prim(value);
+  else if (name == "RGBAQ")
+    regs.RGBAQ = decode_rgbaq(value);
+  else if (name == "TEX0_1")
+    regs.TEX0_1 = decode_tex0(value);
+  else if (name == "ALPHA_1")
+    regs.ALPHA_1 = decode_alpha(value);
+  else if (name == "TEST_1")
+    regs.TEST_1 = decode_test(value);
+  else if (name == "FRAME_1")
+    regs.FRAME_1 = decode_frame(value);
+  else if (name == "COLCLAMP")
+    regs.COLCLAMP = decode_colclamp(value);
+  else if (name == "PABE")
+    regs.PABE = decode_pabe(value);
+  else if (name == "FBA_1")
+    regs.FBA_1 = decode_fba(value);
+  else if (name == "DTHE")
+    regs.DTHE = decode_dthe(value);
+  else if (name == "DIMX")
+    regs.DIMX = decode_dimx(value);
   else {
     std::string known;
     for (auto n : register_names) known += (known.empty() ? "" : ", ") + std::string(n);

@@ -41,7 +41,13 @@ struct register_error : std::invalid_argument {
 };
 
 enum class prim_type : std::uint8_t {
-  POINT = 0, LINE = 1, LINE_STRIP = 2, TRIANGLE = 3, TRIANGLE_STRIP = 4, TRIANGLE_FAN = 5, SPRITE = 6,
+  POINT = 0,
+  LINE = 1,
+  LINE_STRIP = 2,
+  TRIANGLE = 3,
+  TRIANGLE_STRIP = 4,
+  TRIANGLE_FAN = 5,
+  SPRITE = 6,
 };
 
 struct prim_reg {
@@ -58,8 +64,19 @@ struct rgbaq_reg {
 
 // TEX0.PSM: every texture storage format of the GS manual.
 enum class tex_psm : std::uint8_t {
-  PSMCT32 = 0x00, PSMCT24 = 0x01, PSMCT16 = 0x02, PSMCT16S = 0x0A, PSMT8 = 0x13, PSMT4 = 0x14, PSMT8H = 0x1B,
-  PSMT4HL = 0x24, PSMT4HH = 0x2C, PSMZ32 = 0x30, PSMZ24 = 0x31, PSMZ16 = 0x32, PSMZ16S = 0x3A,
+  PSMCT32 = 0x00,
+  PSMCT24 = 0x01,
+  PSMCT16 = 0x02,
+  PSMCT16S = 0x0A,
+  PSMT8 = 0x13,
+  PSMT4 = 0x14,
+  PSMT8H = 0x1B,
+  PSMT4HL = 0x24,
+  PSMT4HH = 0x2C,
+  PSMZ32 = 0x30,
+  PSMZ24 = 0x31,
+  PSMZ16 = 0x32,
+  PSMZ16S = 0x3A,
 };
 // TEX0.CPSM: the CLUT entry formats.
 enum class clut_psm : std::uint8_t { PSMCT32 = 0x0, PSMCT16 = 0x2, PSMCT16S = 0xA };
@@ -87,10 +104,22 @@ struct frame_reg {
   friend constexpr bool operator==(const frame_reg&, const frame_reg&) = default;
 };
 
-struct colclamp_reg { bool CLAMP = true; friend constexpr bool operator==(const colclamp_reg&, const colclamp_reg&) = default; };
-struct pabe_reg { bool PABE = false; friend constexpr bool operator==(const pabe_reg&, const pabe_reg&) = default; };
-struct fba_reg { bool FBA = false; friend constexpr bool operator==(const fba_reg&, const fba_reg&) = default; };
-struct dthe_reg { bool DTHE = false; friend constexpr bool operator==(const dthe_reg&, const dthe_reg&) = default; };
+struct colclamp_reg {
+  bool CLAMP = true;
+  friend constexpr bool operator==(const colclamp_reg&, const colclamp_reg&) = default;
+};
+struct pabe_reg {
+  bool PABE = false;
+  friend constexpr bool operator==(const pabe_reg&, const pabe_reg&) = default;
+};
+struct fba_reg {
+  bool FBA = false;
+  friend constexpr bool operator==(const fba_reg&, const fba_reg&) = default;
+};
+struct dthe_reg {
+  bool DTHE = false;
+  friend constexpr bool operator==(const dthe_reg&, const dthe_reg&) = default;
+};
 
 prim_reg decode_prim(std::uint64_t v);
 rgbaq_reg decode_rgbaq(std::uint64_t v);
@@ -137,8 +166,8 @@ struct gs_registers {
 };
 
 // The register mnemonics `gsdot3 alu --reg` accepts, in manual order.
-inline constexpr std::string_view register_names[] = {"PRIM", "RGBAQ", "TEX0_1", "ALPHA_1", "TEST_1", "FRAME_1",
-                                                      "COLCLAMP", "PABE", "FBA_1", "DTHE", "DIMX"};
+inline constexpr std::string_view register_names[] = {"PRIM",     "RGBAQ", "TEX0_1", "ALPHA_1", "TEST_1", "FRAME_1",
+                                                      "COLCLAMP", "PABE",  "FBA_1",  "DTHE",    "DIMX"};
 
 // Decodes VALUE into register NAME of `regs`; throws register_error for an unknown name or a bad value.
 void set_register(gs_registers& regs, std::string_view name, std::uint64_t value);

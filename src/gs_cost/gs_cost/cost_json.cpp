@@ -21,9 +21,15 @@ nlohmann::json to_json(const breakdown& b) {
 }
 
 nlohmann::json to_json(const tally& t) {
-  return {{"primitives", t.primitives},   {"triangles", t.triangles},     {"sprites", t.sprites},
-          {"pixels", t.pixels},           {"blocks", t.blocks},           {"page_breaks", t.page_breaks},
-          {"texture_misses", t.texture_misses}, {"transfers", t.transfers}, {"upload_bytes", t.upload_bytes},
+  return {{"primitives", t.primitives},
+          {"triangles", t.triangles},
+          {"sprites", t.sprites},
+          {"pixels", t.pixels},
+          {"blocks", t.blocks},
+          {"page_breaks", t.page_breaks},
+          {"texture_misses", t.texture_misses},
+          {"transfers", t.transfers},
+          {"upload_bytes", t.upload_bytes},
           {"clut_loads", t.clut_loads}};
 }
 

@@ -26,7 +26,7 @@ namespace gs::cost {
 // transcribed in PCSX2 GSRegs.h; decoded leniently: a value the model's strict decoders refuse still
 // walks, with its bits as they are).
 struct draw_mode {
-  unsigned prim = 0;               // PRIM.PRIM
+  unsigned prim = 0;  // PRIM.PRIM
   bool textured = false, bilinear = false, blend_reads_dst = false, fst = false;
   bool z_read = false, z_write = false;
   std::uint32_t frame_psm = 0, z_psm = 0x30, tex_psm = 0;

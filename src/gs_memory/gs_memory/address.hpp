@@ -48,7 +48,10 @@ constexpr location location_of_unit(psm p, std::uint32_t unit) noexcept {
     case 32: at.byte = unit * 4; break;
     case 16: at.byte = unit * 2; break;
     case 8: at.byte = unit; break;
-    default: at.byte = unit / 2; at.bit = (unit & 1u) * 4; break;  // even texel = low nibble
+    default:
+      at.byte = unit / 2;
+      at.bit = (unit & 1u) * 4;
+      break;  // even texel = low nibble
   }
   if (const unsigned s = upper_shift(p); s != 0) {  // bits 24.. of the 32-bit word
     at.byte += s / 8;

@@ -33,20 +33,28 @@ struct fetch_sprite {
 };
 
 struct channel_fetch {
-  clamp_reg CLAMP;                           // REGION_REPEAT for u, REPEAT for v
-  std::array<fetch_sprite, 128> sprites{};   // one page
+  clamp_reg CLAMP;                          // REGION_REPEAT for u, REPEAT for v
+  std::array<fetch_sprite, 128> sprites{};  // one page
 };
 
 constexpr channel_fetch channel_fetch_sprites(unsigned channel) noexcept {
   const std::uint32_t g = (channel == 1 || channel == 3) ? 1u : 0u;
   const std::uint32_t b = (channel == 2 || channel == 3) ? 1u : 0u;
   channel_fetch f{};
-  f.CLAMP = clamp_reg{wrap_mode::REGION_REPEAT, wrap_mode::REPEAT, fixed::uint<10>::from_wrapped(0x3F7),
-                      fixed::uint<10>::from_wrapped(8 * b), fixed::uint<10>{}, fixed::uint<10>{}};
+  f.CLAMP = clamp_reg{wrap_mode::REGION_REPEAT,
+                      wrap_mode::REPEAT,
+                      fixed::uint<10>::from_wrapped(0x3F7),
+                      fixed::uint<10>::from_wrapped(8 * b),
+                      fixed::uint<10>{},
+                      fixed::uint<10>{}};
   for (std::uint32_t j = 0; j < 16; ++j)
     for (std::uint32_t k = 0; k < 8; ++k) {
       const std::uint32_t s = (j & 1u) ^ g;
-      f.sprites[j * 8 + k] = {8 * k, 2 * j, 8 * k + 8, 2 * j + 2, static_cast<std::int32_t>(16 * k + 4 * s),
+      f.sprites[j * 8 + k] = {8 * k,
+                              2 * j,
+                              8 * k + 8,
+                              2 * j + 2,
+                              static_cast<std::int32_t>(16 * k + 4 * s),
                               static_cast<std::int32_t>(4 * j + 2 * g)};
     }
   return f;

@@ -67,7 +67,9 @@ inline clut_state load_clut(const local_memory& m, const tex0_reg& t, clut_state
   if (cld == 2 || (cld == 4 && load)) s.CBP0 = t.CBP;
   if (cld == 3 || (cld == 5 && load)) s.CBP1 = t.CBP;
   if (!load) return s;
-  const psm cpsm = t.CPSM == clut_psm::PSMCT32 ? psm::PSMCT32 : t.CPSM == clut_psm::PSMCT16 ? psm::PSMCT16 : psm::PSMCT16S;
+  const psm cpsm = t.CPSM == clut_psm::PSMCT32   ? psm::PSMCT32
+                   : t.CPSM == clut_psm::PSMCT16 ? psm::PSMCT16
+                                                 : psm::PSMCT16S;
   const bool wide = cpsm == psm::PSMCT32;
   const std::uint32_t n = value_bits(t.PSM) == 8 ? 256 : 16;
   if (t.CSM) {  // CSM2: one row at (16·COU, COV), from entry / half 0
@@ -75,8 +77,10 @@ inline clut_state load_clut(const local_memory& m, const tex0_reg& t, clut_state
     const auto x0 = static_cast<std::uint32_t>(tc.COU.value()) * 16, y = static_cast<std::uint32_t>(tc.COV.value());
     for (std::uint32_t i = 0; i < n; ++i) {
       const std::uint32_t v = m.read_pixel(row, (x0 + i) % 2048, y);
-      if (wide) s.buffer[i] = rgba8::from_u32(v);
-      else set_clut_half(s.buffer, i, static_cast<std::uint16_t>(v));
+      if (wide)
+        s.buffer[i] = rgba8::from_u32(v);
+      else
+        set_clut_half(s.buffer, i, static_cast<std::uint16_t>(v));
     }
     return s;
   }

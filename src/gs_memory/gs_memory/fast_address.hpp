@@ -5,9 +5,9 @@
 // itself on every coordinate it claims (exhaustive over the extent, a sweep of BW and BP).
 //
 // row_column_address (32- and 16-bit layouts): unit(x, y) = (row[y] + column[x]) mod the memory's
-// units, row[y] = unit(0, y), column[x] = unit(x, 0) − unit(0, 0). Why a sum: in swizzle_bits.hpp's bit maps every bit of the block number and of the unit in
-// the column comes from x alone or from y alone (32-bit block bx0 by0 bx1 by1 bx2, word x0 y0 x1 x2;
-// 16-bit block by0 bx0 by1 bx1 by2 or, 16S, by0 bx0 by2 by1 bx1, halfword x3 x0 y0 x1 x2; the Z
+// units, row[y] = unit(0, y), column[x] = unit(x, 0) − unit(0, 0). Why a sum: in swizzle_bits.hpp's bit maps every bit
+// of the block number and of the unit in the column comes from x alone or from y alone (32-bit block bx0 by0 bx1 by1
+// bx2, word x0 y0 x1 x2; 16-bit block by0 bx0 by1 bx1 by2 or, 16S, by0 bx0 by2 by1 bx1, halfword x3 x0 y0 x1 x2; the Z
 // layouts flip one x bit and one y bit of the block), so x's and y's bits land in disjoint bit
 // positions and OR is +; the page term x/page_w·32 + y/page_h·pages_per_row·32 blocks is linear, and
 // the wrap at 16384 blocks is the modulo of the sum. PSMT8/PSMT4 are not sums (the byte's
@@ -32,7 +32,8 @@ class row_column_address {
   // Pixels [0, width) × [0, height) of the buffer at bp (blocks), bw (64-pixel units), layout l.
   row_column_address(layout l, std::uint32_t bp, std::uint32_t bw, std::uint32_t width, std::uint32_t height)
       : mask_(memory_bytes * 8 / unit_bits(l) - 1), row_(height), column_(width) {
-    if (unit_bits(l) < 16) throw std::invalid_argument("row_column_address: PSMT8/PSMT4 addresses are not row + column");
+    if (unit_bits(l) < 16)
+      throw std::invalid_argument("row_column_address: PSMT8/PSMT4 addresses are not row + column");
     for (std::uint32_t y = 0; y < height; ++y) row_[y] = tables::unit_address(l, bp, bw, 0, y);
     const std::uint32_t origin = tables::unit_address(l, 0, bw, 0, 0);  // the Z layouts' block 24 of (0, 0)
     for (std::uint32_t x = 0; x < width; ++x) column_[x] = (tables::unit_address(l, 0, bw, x, 0) - origin) & mask_;
@@ -48,8 +49,10 @@ class texel_addresses {
  public:
   // Texels [0, w) × [0, h) of a texture of format p (PSMT8, PSMT8H: one byte; PSMCT32, PSMZ32: one
   // word) and TBW bw.
-  texel_addresses(psm p, std::uint32_t bw, std::uint32_t w, std::uint32_t h) : bytes_(value_bits(p) == 8), w_(w), byte_(w * h) {
-    if (value_bits(p) != 8 && value_bits(p) != 32) throw std::invalid_argument("texel_addresses: 8- and 32-bit texels only");
+  texel_addresses(psm p, std::uint32_t bw, std::uint32_t w, std::uint32_t h)
+      : bytes_(value_bits(p) == 8), w_(w), byte_(w * h) {
+    if (value_bits(p) != 8 && value_bits(p) != 32)
+      throw std::invalid_argument("texel_addresses: 8- and 32-bit texels only");
     const buffer at0{{}, fixed::uint<6>::from_wrapped(bw), p};
     for (std::uint32_t v = 0; v < h; ++v)
       for (std::uint32_t u = 0; u < w; ++u) byte_[v * w + u] = locate(at0, u, v).byte;

@@ -27,8 +27,13 @@ enum class layout : std::uint8_t { ct32, z32, ct16, ct16s, z16, z16s, t8, t4 };
 
 constexpr layout layout_of(psm p) noexcept {
   switch (p) {
-    case psm::PSMCT32: case psm::PSMCT24: case psm::PSMT8H: case psm::PSMT4HL: case psm::PSMT4HH: return layout::ct32;
-    case psm::PSMZ32: case psm::PSMZ24: return layout::z32;
+    case psm::PSMCT32:
+    case psm::PSMCT24:
+    case psm::PSMT8H:
+    case psm::PSMT4HL:
+    case psm::PSMT4HH: return layout::ct32;
+    case psm::PSMZ32:
+    case psm::PSMZ24: return layout::z32;
     case psm::PSMCT16: return layout::ct16;
     case psm::PSMCT16S: return layout::ct16s;
     case psm::PSMZ16: return layout::z16;
@@ -42,8 +47,12 @@ constexpr layout layout_of(psm p) noexcept {
 // Bits per storage unit of the layout (what one address step covers).
 constexpr unsigned unit_bits(layout l) noexcept {
   switch (l) {
-    case layout::ct32: case layout::z32: return 32;
-    case layout::ct16: case layout::ct16s: case layout::z16: case layout::z16s: return 16;
+    case layout::ct32:
+    case layout::z32: return 32;
+    case layout::ct16:
+    case layout::ct16s:
+    case layout::z16:
+    case layout::z16s: return 16;
     case layout::t8: return 8;
     case layout::t4: return 4;
   }
@@ -82,11 +91,19 @@ constexpr std::uint32_t pages_per_row(layout l, std::uint32_t bw) noexcept { ret
 // The bits of a pixel value the format stores.
 constexpr unsigned value_bits(psm p) noexcept {
   switch (p) {
-    case psm::PSMCT32: case psm::PSMZ32: return 32;
-    case psm::PSMCT24: case psm::PSMZ24: return 24;
-    case psm::PSMCT16: case psm::PSMCT16S: case psm::PSMZ16: case psm::PSMZ16S: return 16;
-    case psm::PSMT8: case psm::PSMT8H: return 8;
-    case psm::PSMT4: case psm::PSMT4HL: case psm::PSMT4HH: return 4;
+    case psm::PSMCT32:
+    case psm::PSMZ32: return 32;
+    case psm::PSMCT24:
+    case psm::PSMZ24: return 24;
+    case psm::PSMCT16:
+    case psm::PSMCT16S:
+    case psm::PSMZ16:
+    case psm::PSMZ16S: return 16;
+    case psm::PSMT8:
+    case psm::PSMT8H: return 8;
+    case psm::PSMT4:
+    case psm::PSMT4HL:
+    case psm::PSMT4HH: return 4;
   }
   return 32;
 }

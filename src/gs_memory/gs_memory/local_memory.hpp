@@ -37,7 +37,8 @@ class local_memory {
   // location of a page of every format.
   constexpr std::uint32_t read(const location& at) const noexcept {
     const unsigned shift = 8 * (at.byte % 4) + at.bit;
-    return static_cast<std::uint32_t>((std::uint64_t{words_[at.byte % memory_bytes / 4]} >> shift) & ((std::uint64_t{1} << at.bits) - 1));
+    return static_cast<std::uint32_t>((std::uint64_t{words_[at.byte % memory_bytes / 4]} >> shift) &
+                                      ((std::uint64_t{1} << at.bits) - 1));
   }
   constexpr void write(const location& at, std::uint32_t value) noexcept {
     const unsigned shift = 8 * (at.byte % 4) + at.bit;

@@ -31,15 +31,14 @@ constexpr std::uint32_t block_in_page(layout l, std::uint32_t x, std::uint32_t y
   const std::uint32_t bx = x / b.w, by = y / b.h;
   std::uint32_t n = 0;
   switch (l) {
-    case layout::ct32: case layout::z32: case layout::t8:
-      n = bit(bx, 0) | bit(by, 0) << 1 | bit(bx, 1) << 2 | bit(by, 1) << 3 | bit(bx, 2) << 4;
-      break;
-    case layout::ct16: case layout::z16: case layout::t4:
-      n = bit(by, 0) | bit(bx, 0) << 1 | bit(by, 1) << 2 | bit(bx, 1) << 3 | bit(by, 2) << 4;
-      break;
-    case layout::ct16s: case layout::z16s:
-      n = bit(by, 0) | bit(bx, 0) << 1 | bit(by, 2) << 2 | bit(by, 1) << 3 | bit(bx, 1) << 4;
-      break;
+    case layout::ct32:
+    case layout::z32:
+    case layout::t8: n = bit(bx, 0) | bit(by, 0) << 1 | bit(bx, 1) << 2 | bit(by, 1) << 3 | bit(bx, 2) << 4; break;
+    case layout::ct16:
+    case layout::z16:
+    case layout::t4: n = bit(by, 0) | bit(bx, 0) << 1 | bit(by, 1) << 2 | bit(bx, 1) << 3 | bit(by, 2) << 4; break;
+    case layout::ct16s:
+    case layout::z16s: n = bit(by, 0) | bit(bx, 0) << 1 | bit(by, 2) << 2 | bit(by, 1) << 3 | bit(bx, 1) << 4; break;
   }
   const bool z = l == layout::z32 || l == layout::z16 || l == layout::z16s;
   return z ? n ^ 0x18u : n;

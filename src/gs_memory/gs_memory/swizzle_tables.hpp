@@ -19,31 +19,28 @@
 namespace gs::mem::tables {
 
 // Block number inside the page of block column bx, block row by.
-inline constexpr std::uint8_t block32[4][8] = {
-    {0, 1, 4, 5, 16, 17, 20, 21}, {2, 3, 6, 7, 18, 19, 22, 23},
-    {8, 9, 12, 13, 24, 25, 28, 29}, {10, 11, 14, 15, 26, 27, 30, 31}};
-inline constexpr std::uint8_t block32z[4][8] = {
-    {24, 25, 28, 29, 8, 9, 12, 13}, {26, 27, 30, 31, 10, 11, 14, 15},
-    {16, 17, 20, 21, 0, 1, 4, 5}, {18, 19, 22, 23, 2, 3, 6, 7}};
-inline constexpr std::uint8_t block16[8][4] = {
-    {0, 2, 8, 10}, {1, 3, 9, 11}, {4, 6, 12, 14}, {5, 7, 13, 15},
-    {16, 18, 24, 26}, {17, 19, 25, 27}, {20, 22, 28, 30}, {21, 23, 29, 31}};
-inline constexpr std::uint8_t block16s[8][4] = {
-    {0, 2, 16, 18}, {1, 3, 17, 19}, {8, 10, 24, 26}, {9, 11, 25, 27},
-    {4, 6, 20, 22}, {5, 7, 21, 23}, {12, 14, 28, 30}, {13, 15, 29, 31}};
-inline constexpr std::uint8_t block16z[8][4] = {
-    {24, 26, 16, 18}, {25, 27, 17, 19}, {28, 30, 20, 22}, {29, 31, 21, 23},
-    {8, 10, 0, 2}, {9, 11, 1, 3}, {12, 14, 4, 6}, {13, 15, 5, 7}};
-inline constexpr std::uint8_t block16sz[8][4] = {
-    {24, 26, 8, 10}, {25, 27, 9, 11}, {16, 18, 0, 2}, {17, 19, 1, 3},
-    {28, 30, 12, 14}, {29, 31, 13, 15}, {20, 22, 4, 6}, {21, 23, 5, 7}};
+inline constexpr std::uint8_t block32[4][8] = {{0, 1, 4, 5, 16, 17, 20, 21},
+                                               {2, 3, 6, 7, 18, 19, 22, 23},
+                                               {8, 9, 12, 13, 24, 25, 28, 29},
+                                               {10, 11, 14, 15, 26, 27, 30, 31}};
+inline constexpr std::uint8_t block32z[4][8] = {{24, 25, 28, 29, 8, 9, 12, 13},
+                                                {26, 27, 30, 31, 10, 11, 14, 15},
+                                                {16, 17, 20, 21, 0, 1, 4, 5},
+                                                {18, 19, 22, 23, 2, 3, 6, 7}};
+inline constexpr std::uint8_t block16[8][4] = {{0, 2, 8, 10},    {1, 3, 9, 11},    {4, 6, 12, 14},   {5, 7, 13, 15},
+                                               {16, 18, 24, 26}, {17, 19, 25, 27}, {20, 22, 28, 30}, {21, 23, 29, 31}};
+inline constexpr std::uint8_t block16s[8][4] = {{0, 2, 16, 18}, {1, 3, 17, 19}, {8, 10, 24, 26},  {9, 11, 25, 27},
+                                                {4, 6, 20, 22}, {5, 7, 21, 23}, {12, 14, 28, 30}, {13, 15, 29, 31}};
+inline constexpr std::uint8_t block16z[8][4] = {{24, 26, 16, 18}, {25, 27, 17, 19}, {28, 30, 20, 22}, {29, 31, 21, 23},
+                                                {8, 10, 0, 2},    {9, 11, 1, 3},    {12, 14, 4, 6},   {13, 15, 5, 7}};
+inline constexpr std::uint8_t block16sz[8][4] = {{24, 26, 8, 10},  {25, 27, 9, 11},  {16, 18, 0, 2}, {17, 19, 1, 3},
+                                                 {28, 30, 12, 14}, {29, 31, 13, 15}, {20, 22, 4, 6}, {21, 23, 5, 7}};
 
 // Unit index inside a block (32-bit words, 16-bit halfwords, bytes, nibbles) of pixel (x, y) of the block.
-inline constexpr std::uint8_t column32[8][8] = {
-    {0, 1, 4, 5, 8, 9, 12, 13}, {2, 3, 6, 7, 10, 11, 14, 15},
-    {16, 17, 20, 21, 24, 25, 28, 29}, {18, 19, 22, 23, 26, 27, 30, 31},
-    {32, 33, 36, 37, 40, 41, 44, 45}, {34, 35, 38, 39, 42, 43, 46, 47},
-    {48, 49, 52, 53, 56, 57, 60, 61}, {50, 51, 54, 55, 58, 59, 62, 63}};
+inline constexpr std::uint8_t column32[8][8] = {{0, 1, 4, 5, 8, 9, 12, 13},       {2, 3, 6, 7, 10, 11, 14, 15},
+                                                {16, 17, 20, 21, 24, 25, 28, 29}, {18, 19, 22, 23, 26, 27, 30, 31},
+                                                {32, 33, 36, 37, 40, 41, 44, 45}, {34, 35, 38, 39, 42, 43, 46, 47},
+                                                {48, 49, 52, 53, 56, 57, 60, 61}, {50, 51, 54, 55, 58, 59, 62, 63}};
 inline constexpr std::uint8_t column16[8][16] = {
     {0, 2, 8, 10, 16, 18, 24, 26, 1, 3, 9, 11, 17, 19, 25, 27},
     {4, 6, 12, 14, 20, 22, 28, 30, 5, 7, 13, 15, 21, 23, 29, 31},
@@ -73,11 +70,11 @@ inline constexpr std::uint8_t column8[16][16] = {
 // PSMT4: columns 0 and 2 share one pattern, 1 and 3 another (offset by 128 nibbles per column), so the
 // manual's figure is given for columns 0 and 1 (rows 0-7 of the block); rows 8-15 add 256.
 inline constexpr std::uint16_t column4[8][32] = {
-    {0, 8, 32, 40, 64, 72, 96, 104, 2, 10, 34, 42, 66, 74, 98, 106,
+    {0, 8,  32, 40, 64, 72, 96,  104, 2, 10, 34, 42, 66, 74, 98,  106,
      4, 12, 36, 44, 68, 76, 100, 108, 6, 14, 38, 46, 70, 78, 102, 110},
     {16, 24, 48, 56, 80, 88, 112, 120, 18, 26, 50, 58, 82, 90, 114, 122,
      20, 28, 52, 60, 84, 92, 116, 124, 22, 30, 54, 62, 86, 94, 118, 126},
-    {65, 73, 97, 105, 1, 9, 33, 41, 67, 75, 99, 107, 3, 11, 35, 43,
+    {65, 73, 97,  105, 1, 9,  33, 41, 67, 75, 99,  107, 3, 11, 35, 43,
      69, 77, 101, 109, 5, 13, 37, 45, 71, 79, 103, 111, 7, 15, 39, 47},
     {81, 89, 113, 121, 17, 25, 49, 57, 83, 91, 115, 123, 19, 27, 51, 59,
      85, 93, 117, 125, 21, 29, 53, 61, 87, 95, 119, 127, 23, 31, 55, 63},
@@ -95,9 +92,11 @@ constexpr std::uint32_t block_in_page(layout l, std::uint32_t x, std::uint32_t y
   const extent b = block_size(l);
   const std::uint32_t bx = x / b.w, by = y / b.h;
   switch (l) {
-    case layout::ct32: case layout::t8: return block32[by][bx];
+    case layout::ct32:
+    case layout::t8: return block32[by][bx];
     case layout::z32: return block32z[by][bx];
-    case layout::ct16: case layout::t4: return block16[by][bx];
+    case layout::ct16:
+    case layout::t4: return block16[by][bx];
     case layout::ct16s: return block16s[by][bx];
     case layout::z16: return block16z[by][bx];
     case layout::z16s: return block16sz[by][bx];
@@ -122,8 +121,9 @@ constexpr std::uint32_t unit_in_block(layout l, std::uint32_t x, std::uint32_t y
 template <layout L>
 constexpr std::uint32_t unit_address_of(std::uint32_t bp, std::uint32_t bw, std::uint32_t x, std::uint32_t y) noexcept {
   constexpr extent pg = page_size(L);
-  const std::uint32_t block = (bp + (y / pg.h) * pages_per_row(L, bw) * 32 + (x / pg.w) * 32 +
-                               block_in_page(L, x % pg.w, y % pg.h)) % memory_blocks;
+  const std::uint32_t block =
+      (bp + (y / pg.h) * pages_per_row(L, bw) * 32 + (x / pg.w) * 32 + block_in_page(L, x % pg.w, y % pg.h)) %
+      memory_blocks;
   constexpr std::uint32_t units_per_block = block_bytes * 8 / unit_bits(L);
   return block * units_per_block + unit_in_block(L, x % pg.w, y % pg.h);
 }

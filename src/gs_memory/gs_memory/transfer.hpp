@@ -43,13 +43,15 @@ constexpr std::uint64_t transfer_bytes(psm p, std::uint32_t rrw, std::uint32_t r
 
 inline void host_to_local(local_memory& m, const bitbltbuf_reg& b, const trxpos_reg& pos, const trxreg_reg& reg,
                           const trxdir_reg& dir, std::span<const std::uint8_t> data) {
-  if (dir.XDIR != xdir::host_to_local) throw std::invalid_argument("transfer: only TRXDIR.XDIR = 0 (host -> local) is modelled");
+  if (dir.XDIR != xdir::host_to_local)
+    throw std::invalid_argument("transfer: only TRXDIR.XDIR = 0 (host -> local) is modelled");
   const auto w = static_cast<std::uint32_t>(reg.RRW.value()), h = static_cast<std::uint32_t>(reg.RRH.value());
   const auto x0 = static_cast<std::uint32_t>(pos.DSAX.value()), y0 = static_cast<std::uint32_t>(pos.DSAY.value());
   if (x0 + w > 2048 || y0 + h > 2048) throw std::invalid_argument("transfer: rectangle crosses the 2048-pixel wrap");
   if (data.size() != transfer_bytes(b.DPSM, w, h))
     throw std::invalid_argument("transfer: " + std::to_string(data.size()) + " bytes for " + std::to_string(w) + "x" +
-                                std::to_string(h) + " pixels, expected " + std::to_string(transfer_bytes(b.DPSM, w, h)));
+                                std::to_string(h) + " pixels, expected " +
+                                std::to_string(transfer_bytes(b.DPSM, w, h)));
   const buffer dst{b.DBP, b.DBW, b.DPSM};
   const unsigned bits = value_bits(b.DPSM);
   std::uint64_t bit = 0;  // position in the host data

@@ -17,13 +17,13 @@ using gs::blend_colour;
 // The registers a pass sets (context 1); everything else keeps gs_registers' neutral values, the
 // frame buffer is PSMCT32.
 struct pass_regs {
-  bool TME = false;                     // PRIM.TME
-  bool ABE = false;                     // PRIM.ABE
-  gs::tfx TFX = gs::tfx::MODULATE;      // TEX0_1.TFX
-  gs::tcc TCC = gs::tcc::RGB;           // TEX0_1.TCC
-  gs::alpha_reg ALPHA{};                // ALPHA_1
-  bool CLAMP = true;                    // COLCLAMP.CLAMP
-  std::uint32_t FBMSK = 0;              // FRAME_1.FBMSK
+  bool TME = false;                 // PRIM.TME
+  bool ABE = false;                 // PRIM.ABE
+  gs::tfx TFX = gs::tfx::MODULATE;  // TEX0_1.TFX
+  gs::tcc TCC = gs::tcc::RGB;       // TEX0_1.TCC
+  gs::alpha_reg ALPHA{};            // ALPHA_1
+  bool CLAMP = true;                // COLCLAMP.CLAMP
+  std::uint32_t FBMSK = 0;          // FRAME_1.FBMSK
 
   constexpr gs::gs_registers registers() const noexcept {
     gs::gs_registers r;
@@ -38,8 +38,8 @@ struct pass_regs {
   }
 };
 
-inline constexpr std::uint32_t clear_dpb = 0x00808080u;        // step 2.1
-inline constexpr std::uint32_t keep_alpha = 0xFF000000u;       // FBMSK: write RGB only
+inline constexpr std::uint32_t clear_dpb = 0x00808080u;                                    // step 2.1
+inline constexpr std::uint32_t keep_alpha = 0xFF000000u;                                   // FBMSK: write RGB only
 inline constexpr std::uint32_t only_channel[3] = {0xFFFFFF00u, 0xFFFF00FFu, 0xFF00FFFFu};  // FBMSK: R, G, B only
 
 // ALPHA_1 settings used by the methods.
@@ -54,23 +54,33 @@ inline constexpr gs::alpha_reg multiply_by_ad{blend_colour::Cs, blend_colour::ze
 
 // The register sets of the passes. Each is a constant the pass loops are instantiated with, so the
 // compiler folds gs::pixel_pipeline for it (the same model function, specialised, not a copy).
-//                                                     TME    ABE    TFX                 TCC             ALPHA_1          CLAMP  FBMSK
+//                                                     TME    ABE    TFX                 TCC             ALPHA_1 CLAMP
+//                                                     FBMSK
 inline constexpr pass_regs step1_ambient{};  // TME = 0, ABE = 0, COLCLAMP = 1; also the flat fills (sprites)
-inline constexpr pass_regs two_pass_positive{          true,  false, gs::tfx::MODULATE,  gs::tcc::RGB,   {},              false, 0};
-inline constexpr pass_regs two_pass_negative{          true,  true,  gs::tfx::MODULATE,  gs::tcc::RGBA,  subtract_source, false, 0};
-inline constexpr pass_regs two_pass_add_alpha{         true,  true,  gs::tfx::DECAL,     gs::tcc::RGB,   add_source,      false, keep_alpha};
-inline constexpr pass_regs four_pass_sphere{           true,  false, gs::tfx::HIGHLIGHT, gs::tcc::RGB,   {},              false, keep_alpha};
-inline constexpr pass_regs four_pass_x{                true,  true,  gs::tfx::DECAL,     gs::tcc::RGBA,  signed_multiply, false, only_channel[0]};
-inline constexpr pass_regs four_pass_y{                true,  true,  gs::tfx::DECAL,     gs::tcc::RGBA,  signed_multiply, false, only_channel[1]};
-inline constexpr pass_regs four_pass_z{                true,  true,  gs::tfx::DECAL,     gs::tcc::RGBA,  signed_multiply, false, only_channel[2]};
-inline constexpr pass_regs baseline_add{               true,  true,  gs::tfx::MODULATE,  gs::tcc::RGB,   add_source,      false, keep_alpha};
-inline constexpr pass_regs baseline_subtract{          true,  true,  gs::tfx::MODULATE,  gs::tcc::RGB,   subtract_source, false, keep_alpha};
-inline constexpr pass_regs post_add_into_red{          true,  true,  gs::tfx::DECAL,     gs::tcc::RGB,   add_source,      false, only_channel[0]};
-inline constexpr pass_regs ilp_into_lab{               true,  true,  gs::tfx::MODULATE,  gs::tcc::RGB,   add_source,      true,  keep_alpha};
-inline constexpr pass_regs diffuse_layer{              true,  false, gs::tfx::DECAL,     gs::tcc::RGB,   {},              true,  0};
-inline constexpr pass_regs multiply_red{               true,  true,  gs::tfx::DECAL,     gs::tcc::RGB,   multiply_by_ad,  true,  only_channel[0]};
-inline constexpr pass_regs multiply_green{             true,  true,  gs::tfx::DECAL,     gs::tcc::RGB,   multiply_by_ad,  true,  only_channel[1]};
-inline constexpr pass_regs multiply_blue{              true,  true,  gs::tfx::DECAL,     gs::tcc::RGB,   multiply_by_ad,  true,  only_channel[2]};
-inline constexpr pass_regs move_into_alpha{            true,  false, gs::tfx::DECAL,     gs::tcc::RGBA,  {},              true,  0x00FFFFFFu};  // memory path, step 4
+inline constexpr pass_regs two_pass_positive{true, false, gs::tfx::MODULATE, gs::tcc::RGB, {}, false, 0};
+inline constexpr pass_regs two_pass_negative{true, true, gs::tfx::MODULATE, gs::tcc::RGBA, subtract_source, false, 0};
+inline constexpr pass_regs two_pass_add_alpha{true, true, gs::tfx::DECAL, gs::tcc::RGB, add_source, false, keep_alpha};
+inline constexpr pass_regs four_pass_sphere{true, false, gs::tfx::HIGHLIGHT, gs::tcc::RGB, {}, false, keep_alpha};
+inline constexpr pass_regs four_pass_x{true,  true,           gs::tfx::DECAL, gs::tcc::RGBA, signed_multiply,
+                                       false, only_channel[0]};
+inline constexpr pass_regs four_pass_y{true,  true,           gs::tfx::DECAL, gs::tcc::RGBA, signed_multiply,
+                                       false, only_channel[1]};
+inline constexpr pass_regs four_pass_z{true,  true,           gs::tfx::DECAL, gs::tcc::RGBA, signed_multiply,
+                                       false, only_channel[2]};
+inline constexpr pass_regs baseline_add{true, true, gs::tfx::MODULATE, gs::tcc::RGB, add_source, false, keep_alpha};
+inline constexpr pass_regs baseline_subtract{true,  true,      gs::tfx::MODULATE, gs::tcc::RGB, subtract_source,
+                                             false, keep_alpha};
+inline constexpr pass_regs post_add_into_red{true,       true,  gs::tfx::DECAL, gs::tcc::RGB,
+                                             add_source, false, only_channel[0]};
+inline constexpr pass_regs ilp_into_lab{true, true, gs::tfx::MODULATE, gs::tcc::RGB, add_source, true, keep_alpha};
+inline constexpr pass_regs diffuse_layer{true, false, gs::tfx::DECAL, gs::tcc::RGB, {}, true, 0};
+inline constexpr pass_regs multiply_red{true,           true, gs::tfx::DECAL, gs::tcc::RGB,
+                                        multiply_by_ad, true, only_channel[0]};
+inline constexpr pass_regs multiply_green{true,           true, gs::tfx::DECAL, gs::tcc::RGB,
+                                          multiply_by_ad, true, only_channel[1]};
+inline constexpr pass_regs multiply_blue{true,           true, gs::tfx::DECAL, gs::tcc::RGB,
+                                         multiply_by_ad, true, only_channel[2]};
+inline constexpr pass_regs move_into_alpha{true, false, gs::tfx::DECAL, gs::tcc::RGBA,
+                                           {},   true,  0x00FFFFFFu};  // memory path, step 4
 
 }  // namespace gsdot3::gs_methods

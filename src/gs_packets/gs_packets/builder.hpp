@@ -44,9 +44,11 @@ class packet_builder {
 
   // REGLIST: values holds NLOOP × descriptors 64-bit register values, two per qword (an odd count is
   // padded with a zero word, as the manual requires).
-  packet_builder& reglist(std::span<const unsigned> descriptors, std::span<const std::uint64_t> values, bool eop = false) {
+  packet_builder& reglist(std::span<const unsigned> descriptors, std::span<const std::uint64_t> values,
+                          bool eop = false) {
     q_.push_back(encode(tag_for(gif_flg::REGLIST, descriptors, values.size(), eop)));
-    for (std::size_t i = 0; i < values.size(); i += 2) q_.push_back({values[i], i + 1 < values.size() ? values[i + 1] : 0});
+    for (std::size_t i = 0; i < values.size(); i += 2)
+      q_.push_back({values[i], i + 1 < values.size() ? values[i + 1] : 0});
     return *this;
   }
 
@@ -88,7 +90,8 @@ class packet_builder {
 
  private:
   static gif_tag tag_for(gif_flg flg, std::span<const unsigned> descriptors, std::size_t items, bool eop) {
-    if (descriptors.empty() || descriptors.size() > 16) throw std::invalid_argument("GIF tag: 1..16 register descriptors");
+    if (descriptors.empty() || descriptors.size() > 16)
+      throw std::invalid_argument("GIF tag: 1..16 register descriptors");
     if (items % descriptors.size() != 0)
       throw std::invalid_argument("GIF tag: " + std::to_string(items) + " items is not a multiple of NREG " +
                                   std::to_string(descriptors.size()));

@@ -23,7 +23,8 @@ std::vector<std::uint8_t> compress(std::span<const std::uint8_t> raw, compressio
   if (c == compression::xz) {
     std::vector<std::uint8_t> out(lzma_stream_buffer_bound(raw.size()));
     std::size_t pos = 0;
-    if (lzma_easy_buffer_encode(6, LZMA_CHECK_CRC64, nullptr, raw.data(), raw.size(), out.data(), &pos, out.size()) != LZMA_OK)
+    if (lzma_easy_buffer_encode(6, LZMA_CHECK_CRC64, nullptr, raw.data(), raw.size(), out.data(), &pos, out.size()) !=
+        LZMA_OK)
       throw dump_error("xz: compression failed");
     out.resize(pos);
     return out;
@@ -54,8 +55,8 @@ std::vector<std::uint8_t> unxz(std::span<const std::uint8_t> in) {
   const std::size_t consumed = in.size() - s.avail_in;
   lzma_end(&s);
   if (ret != LZMA_STREAM_END)
-    throw dump_error("xz: corrupt or truncated stream at compressed byte " + std::to_string(consumed) + " (lzma error " +
-                     std::to_string(static_cast<int>(ret)) + ")");
+    throw dump_error("xz: corrupt or truncated stream at compressed byte " + std::to_string(consumed) +
+                     " (lzma error " + std::to_string(static_cast<int>(ret)) + ")");
   return out;
 }
 

@@ -4,8 +4,8 @@
 // PACKED: every qword goes through its descriptor (packed.hpp); PRE = 1 writes the tag's PRIM first
 // (the manual: PRE is honoured only in PACKED mode). REGLIST: 64-bit values, two per qword, descriptor
 // d writes register address d for d <= 0xD; A+D (0xE) and NOP (0xF) write nothing there (unconfirmed:
-// the manual's REGLIST rules for A+D were not re-read for this; confidence medium). IMAGE: NLOOP qwords of transfer data.
-// Malformed input throws packet_error with one line naming the qword (or byte) offset.
+// the manual's REGLIST rules for A+D were not re-read for this; confidence medium). IMAGE: NLOOP qwords of transfer
+// data. Malformed input throws packet_error with one line naming the qword (or byte) offset.
 #pragma once
 
 #include <cstdint>
@@ -26,10 +26,10 @@ struct packet_error : std::runtime_error {
 struct gif_event {
   enum class kind : std::uint8_t { tag, reg_write, image };
   kind what = kind::tag;
-  std::uint32_t offset = 0;          // qword index in the stream (tag: the tag; write: its qword; image: first data qword)
-  gif_tag tag{};                      // kind::tag
-  std::uint8_t address = 0;           // kind::reg_write
-  std::uint64_t value = 0;            // kind::reg_write
+  std::uint32_t offset = 0;  // qword index in the stream (tag: the tag; write: its qword; image: first data qword)
+  gif_tag tag{};             // kind::tag
+  std::uint8_t address = 0;  // kind::reg_write
+  std::uint64_t value = 0;   // kind::reg_write
   std::span<const std::uint8_t> data;  // kind::image: 16 × NLOOP bytes of the input
 };
 

@@ -53,7 +53,8 @@ inline display_state decode_display(std::span<const std::uint8_t> privileged) {
     s.unmodelled = "PMODE: both read circuits disabled (no displayed frame)";
     return s;
   }
-  if (en1 && en2) s.unmodelled = "PMODE: both read circuits enabled; the merge circuit is not modelled (circuit 1 shown)";
+  if (en1 && en2)
+    s.unmodelled = "PMODE: both read circuits enabled; the merge circuit is not modelled (circuit 1 shown)";
   const unsigned c = en1 ? 1 : 2;
   const std::uint64_t dispfb = privileged_register(privileged, c == 1 ? 0x70 : 0x90);
   const std::uint64_t display = privileged_register(privileged, c == 1 ? 0x80 : 0xA0);
@@ -64,8 +65,8 @@ inline display_state decode_display(std::span<const std::uint8_t> privileged) {
   }
   displayed_frame f;
   f.circuit = c;
-  f.buffer = {mem::from_page(fixed::uint<9>::from_wrapped(bits(dispfb, 0, 9))), fixed::uint<6>::from_wrapped(bits(dispfb, 9, 6)),
-              static_cast<mem::psm>(psm)};
+  f.buffer = {mem::from_page(fixed::uint<9>::from_wrapped(bits(dispfb, 0, 9))),
+              fixed::uint<6>::from_wrapped(bits(dispfb, 9, 6)), static_cast<mem::psm>(psm)};
   f.x = bits(dispfb, 32, 11);
   f.y = bits(dispfb, 43, 11);
   f.width = (bits(display, 32, 12) + 1) / (bits(display, 23, 4) + 1);

@@ -88,9 +88,7 @@ std::string decode(const draw_registers& r, std::span<const vertex> v, decoded& 
   const std::string ctx = "context " + std::to_string(r.context) + " ";
   try {
     d.regs.PRIM = decode_prim(r.PRIM & prim_fields);
-  } catch (const register_error& e) {
-    return e.what();
-  }
+  } catch (const register_error& e) { return e.what(); }
   const prim_reg& p = d.regs.PRIM;
   const auto type = static_cast<unsigned>(p.PRIM);
   if (p.PRIM != prim_type::TRIANGLE && p.PRIM != prim_type::TRIANGLE_STRIP && p.PRIM != prim_type::TRIANGLE_FAN &&
@@ -117,7 +115,8 @@ std::string decode(const draw_registers& r, std::span<const vertex> v, decoded& 
   }
   d.frame = {mem::from_page(d.regs.FRAME_1.FBP), d.regs.FRAME_1.FBW,
              static_cast<mem::psm>(static_cast<std::uint8_t>(d.regs.FRAME_1.PSM))};
-  d.zbuf = {mem::from_page(d.ZBUF.ZBP), d.regs.FRAME_1.FBW, static_cast<mem::psm>(0x30 | static_cast<unsigned>(d.ZBUF.PSM))};
+  d.zbuf = {mem::from_page(d.ZBUF.ZBP), d.regs.FRAME_1.FBW,
+            static_cast<mem::psm>(0x30 | static_cast<unsigned>(d.ZBUF.PSM))};
   d.ofx = static_cast<std::int32_t>(bits(r.XYOFFSET, 0, 16));
   d.ofy = static_cast<std::int32_t>(bits(r.XYOFFSET, 32, 16));
   d.clip = {static_cast<int>(bits(r.SCISSOR, 0, 11)), static_cast<int>(bits(r.SCISSOR, 32, 11)),
@@ -180,7 +179,8 @@ std::array<std::int32_t, 2> texel_position(const decoded& d, const vertex& x) {
     const double u = static_cast<double>(as_float(st)) / q * 16.0 * static_cast<double>(1u << size_log2);
     return static_cast<std::int32_t>(std::clamp(std::floor(u), -1048576.0, 1048576.0));
   };
-  return {fix(x.S, static_cast<unsigned>(d.regs.TEX0_1.TW.value())), fix(x.T, static_cast<unsigned>(d.regs.TEX0_1.TH.value()))};
+  return {fix(x.S, static_cast<unsigned>(d.regs.TEX0_1.TW.value())),
+          fix(x.T, static_cast<unsigned>(d.regs.TEX0_1.TH.value()))};
 }
 
 }  // namespace
@@ -202,7 +202,8 @@ std::uint64_t draw_primitive(mem::local_memory& m, const draw_registers& r, cons
   const prim_reg& p = d.regs.PRIM;
   const tex0_reg& tex = d.regs.TEX0_1;
   const mem::buffer tb{tex.TBP0, tex.TBW, tex.PSM};
-  if (!texture) texture.emplace(o.tex_buffer, m, 0, o.tex_buffer == texture_buffer::draw_snapshot ? mem::memory_bytes : 0);
+  if (!texture)
+    texture.emplace(o.tex_buffer, m, 0, o.tex_buffer == texture_buffer::draw_snapshot ? mem::memory_bytes : 0);
   mem::texture_page_buffer& cache = *texture;
   auto fetch = [&](std::int32_t u, std::int32_t w) {
     const mem::texel_coord c = mem::wrap(d.clamp, tex.TW, tex.TH, u, w);
@@ -210,7 +211,8 @@ std::uint64_t draw_primitive(mem::local_memory& m, const draw_registers& r, cons
     std::uint64_t raw = 0;
     for (unsigned i = 0; i < (at.bit + at.bits + 7) / 8; ++i)
       raw |= std::uint64_t{cache.fetch((at.byte + i) % mem::memory_bytes)} << (8 * i);
-    return texel_colour(d, clut.state.buffer, static_cast<std::uint32_t>((raw >> at.bit) & ((std::uint64_t{1} << at.bits) - 1)));
+    return texel_colour(d, clut.state.buffer,
+                        static_cast<std::uint32_t>((raw >> at.bit) & ((std::uint64_t{1} << at.bits) - 1)));
   };
   const bilinear_mode filter = d.linear ? o.bilinear : bilinear_mode::nearest;
   const bool ZTE = d.regs.TEST_1.ZTE;
@@ -254,8 +256,9 @@ std::uint64_t draw_primitive(mem::local_memory& m, const draw_registers& r, cons
   // 32-bit range), low 8 bits 0: a model limit, stated.
   const bool wide = std::max({v[0].Z, v[1].Z, v[2].Z}) > 0xFFFFFFu;
   const unsigned zs = wide ? 8 : 0;
-  const plane pz = make_plane(t.v, {static_cast<std::int32_t>(v[0].Z >> zs), static_cast<std::int32_t>(v[1].Z >> zs),
-                                    static_cast<std::int32_t>(v[2].Z >> zs)},
+  const plane pz = make_plane(t.v,
+                              {static_cast<std::int32_t>(v[0].Z >> zs), static_cast<std::int32_t>(v[1].Z >> zs),
+                               static_cast<std::int32_t>(v[2].Z >> zs)},
                               0, 0xFFFFFF);
   const fragment_colour flat = flat_shading(v[2].colour);  // IIP = 0: the last vertex's colour
   rasterise_triangle(t, d.clip, [&](int x, int y) {

@@ -29,8 +29,8 @@
 namespace gs::packets {
 
 // PRIM.PRIM (bits 0-2) names, GS User's Manual.
-inline constexpr const char* prim_names[8] = {"POINT", "LINE", "LINE_STRIP", "TRIANGLE", "TRIANGLE_STRIP",
-                                              "TRIANGLE_FAN", "SPRITE", "PRIM 7 (reserved)"};
+inline constexpr const char* prim_names[8] = {"POINT",          "LINE",         "LINE_STRIP", "TRIANGLE",
+                                              "TRIANGLE_STRIP", "TRIANGLE_FAN", "SPRITE",     "PRIM 7 (reserved)"};
 
 // One vertex as the GS queues it on an XYZ write: the XYZ value and the current RGBAQ, ST, UV, FOG.
 struct vertex {

@@ -13,7 +13,9 @@ namespace {
 void put32(std::vector<std::uint8_t>& out, std::uint32_t v) {
   for (int b = 0; b < 4; ++b) out.push_back(static_cast<std::uint8_t>(v >> (8 * b)));
 }
-void put(std::vector<std::uint8_t>& out, std::span<const std::uint8_t> bytes) { out.insert(out.end(), bytes.begin(), bytes.end()); }
+void put(std::vector<std::uint8_t>& out, std::span<const std::uint8_t> bytes) {
+  out.insert(out.end(), bytes.begin(), bytes.end());
+}
 
 // Reads the dump front to back; every fault names the byte where it is.
 class reader {
@@ -64,7 +66,8 @@ void check_state(gs_dump& d, std::size_t at) {
   if (d.state_version > pcsx2_state_version_max)
     throw dump_error("byte " + std::to_string(at) + ": state version " + std::to_string(d.state_version) +
                      ": GS: Savestate version is incompatible.  Load aborted. (PCSX2's GSState::Defrost loads versions "
-                     "0.." + std::to_string(pcsx2_state_version_max) + ")");
+                     "0.." +
+                     std::to_string(pcsx2_state_version_max) + ")");
   // Versions 8 and 9 are the ones PCSX2 writes now: their size is checked (older blobs are read and,
   // when their size fits their layout, decoded by the interpreter).
   if ((d.state_version == 8 || d.state_version == 9) && !state_layout(d.state_version, d.state.size()))
@@ -77,8 +80,8 @@ void check_state(gs_dump& d, std::size_t at) {
 bool take_body(reader& r, gs_dump& d, std::size_t n, std::uint64_t packet_at, std::span<const std::uint8_t>& body) {
   if (n > r.left()) {
     d.notices.push_back({"truncated_last_packet", packet_at,
-                         "the last packet needs " + std::to_string(n) + " bytes, the dump has " + std::to_string(r.left()) +
-                             "; dropped, as PCSX2's GSDumpFile::ReadFile does"});
+                         "the last packet needs " + std::to_string(n) + " bytes, the dump has " +
+                             std::to_string(r.left()) + "; dropped, as PCSX2's GSDumpFile::ReadFile does"});
     return false;
   }
   body = r.take(n, "packet");
@@ -165,9 +168,11 @@ gs_dump read_dump(std::span<const std::uint8_t> bytes) {
       d.screenshot.assign(h.begin() + shot_offset, h.begin() + shot_offset + shot_size);
     } else {
       d.notices.push_back({"screenshot_ignored", header_at + 20,
-                           "screenshot " + std::to_string(d.screenshot_width) + "x" + std::to_string(d.screenshot_height) +
-                               " with " + std::to_string(shot_size) + " bytes at " + std::to_string(shot_offset) +
-                               " (header of " + std::to_string(header_size) + " bytes) is not width x height x 4 within "
+                           "screenshot " + std::to_string(d.screenshot_width) + "x" +
+                               std::to_string(d.screenshot_height) + " with " + std::to_string(shot_size) +
+                               " bytes at " + std::to_string(shot_offset) + " (header of " +
+                               std::to_string(header_size) +
+                               " bytes) is not width x height x 4 within "
                                "the header; ignored, as PCSX2's GSDumpFile::ReadFile does"});
       d.screenshot_width = d.screenshot_height = 0;
     }
@@ -181,7 +186,8 @@ gs_dump read_dump(std::span<const std::uint8_t> bytes) {
     const std::size_t state_at = r.at();
     const auto s = r.take(state_size, "state");
     d.state.assign(s.begin(), s.end());
-    if (state_size < 4) throw dump_error("byte 4: state size " + std::to_string(state_size) + " is too small for the state version u32");
+    if (state_size < 4)
+      throw dump_error("byte 4: state size " + std::to_string(state_size) + " is too small for the state version u32");
     d.state_version = le32(d.state, 0);
     check_state(d, state_at);
   }
@@ -224,7 +230,8 @@ gs_dump read_dump(std::span<const std::uint8_t> bytes) {
         p.data.assign(body.begin(), body.end());
         break;
       default:
-        throw dump_error("byte " + std::to_string(p.offset) + ": unknown packet type " + std::to_string(type) + " (0..3)");
+        throw dump_error("byte " + std::to_string(p.offset) + ": unknown packet type " + std::to_string(type) +
+                         " (0..3)");
     }
     if (!skip) d.packets.push_back(std::move(p));
   }
@@ -238,7 +245,8 @@ std::vector<path_stream> decode_paths(const gs_dump& d) {
     if (d.packets[i].offset <= d.packets[i - 1].offset)
       throw dump_error("packet " + std::to_string(i) + " at byte " + std::to_string(d.packets[i].offset) +
                        " does not follow packet " + std::to_string(i - 1) + " at byte " +
-                       std::to_string(d.packets[i - 1].offset) + ": offsets unset (a dump built in memory needs "
+                       std::to_string(d.packets[i - 1].offset) +
+                       ": offsets unset (a dump built in memory needs "
                        "assign_offsets)");
   for (const packet& p : d.packets) {
     if (p.type != packet_type::transfer || p.path > 3) continue;
@@ -252,8 +260,8 @@ std::vector<path_stream> decode_paths(const gs_dump& d) {
       std::size_t k = 0;
       while (k + 1 < starts[i].size() && starts[i][k + 1].first <= e.byte_offset) ++k;
       const auto& [start, pkt] = starts[i][k];
-      throw dump_error("byte " + std::to_string(pkt->offset + 6 + (e.byte_offset - start)) + " (path " + std::to_string(i) +
-                       " transfer at byte " + std::to_string(pkt->offset) + "): " + e.what());
+      throw dump_error("byte " + std::to_string(pkt->offset + 6 + (e.byte_offset - start)) + " (path " +
+                       std::to_string(i) + " transfer at byte " + std::to_string(pkt->offset) + "): " + e.what());
     }
     std::size_t k = 0;
     for (const auto& e : paths[i].events) {
@@ -279,9 +287,7 @@ gs_dump load_dump(const std::filesystem::path& file) {
   const std::vector<std::uint8_t> raw((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   try {
     return read_dump(decompress(raw));
-  } catch (const dump_error& e) {
-    throw dump_error(file.string() + ": " + e.what());
-  }
+  } catch (const dump_error& e) { throw dump_error(file.string() + ": " + e.what()); }
 }
 
 void save_dump(const std::filesystem::path& file, const gs_dump& d) {

@@ -43,12 +43,12 @@ enum class packet_type : std::uint8_t { transfer = 0, vsync = 1, read_fifo2 = 2,
 
 struct packet {
   packet_type type = packet_type::transfer;
-  std::uint8_t path = 0;              // transfer
-  std::uint8_t field = 0;             // vsync
-  std::uint32_t size = 0;             // read_fifo2
-  std::vector<std::uint8_t> data;     // transfer data, or the 8 KiB registers
-  std::uint64_t offset = 0;           // byte offset of the type byte in the (uncompressed) dump; set by
-                                      // read_dump, or by assign_offsets for a dump built in memory
+  std::uint8_t path = 0;           // transfer
+  std::uint8_t field = 0;          // vsync
+  std::uint32_t size = 0;          // read_fifo2
+  std::vector<std::uint8_t> data;  // transfer data, or the 8 KiB registers
+  std::uint64_t offset = 0;        // byte offset of the type byte in the (uncompressed) dump; set by
+                                   // read_dump, or by assign_offsets for a dump built in memory
 };
 
 // What read_dump accepted that a strict reader would refuse, as PCSX2 accepts it (one per leniency):
@@ -71,7 +71,7 @@ struct notice {
 struct gs_dump {
   bool new_layout = true;
   std::uint32_t crc = 0;
-  std::uint32_t state_version = 0;    // new layout: the header's; old: the state blob's first u32
+  std::uint32_t state_version = 0;  // new layout: the header's; old: the state blob's first u32
   std::string serial;
   std::uint32_t screenshot_width = 0, screenshot_height = 0;
   std::vector<std::uint8_t> screenshot;  // RGBA, width × height × 4 bytes
@@ -100,7 +100,7 @@ std::string describe(const notice& n);
 // packet and its byte offset in the dump.
 struct path_stream {
   std::vector<std::uint8_t> bytes;
-  std::vector<packets::gif_event> events;  // image data points into bytes
+  std::vector<packets::gif_event> events;   // image data points into bytes
   std::vector<std::uint64_t> file_offsets;  // per event: the byte of the dump its qword starts at
   // Register writes to an address no GS register has (gs_registers.hpp; e.g. A+D to 0x7F): PCSX2's
   // GSState gives them a null handler; counted here, with the first one's address and dump byte.

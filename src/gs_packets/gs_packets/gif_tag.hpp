@@ -33,12 +33,14 @@ struct gif_tag {
   bool PRE = false;
   fixed::uint<11> PRIM{};
   gif_flg FLG = gif_flg::PACKED;
-  fixed::uint<4> NREG{};                 // 0 = 16 registers
+  fixed::uint<4> NREG{};                  // 0 = 16 registers
   std::array<fixed::uint<4>, 16> REGS{};  // descriptor i is REGS[i]
   friend constexpr bool operator==(const gif_tag&, const gif_tag&) = default;
 
   // Registers per loop: NREG with 0 read as 16.
-  constexpr unsigned registers() const noexcept { return NREG.value() == 0 ? 16u : static_cast<unsigned>(NREG.value()); }
+  constexpr unsigned registers() const noexcept {
+    return NREG.value() == 0 ? 16u : static_cast<unsigned>(NREG.value());
+  }
 };
 
 constexpr qword encode(const gif_tag& t) noexcept {
@@ -68,8 +70,8 @@ constexpr std::optional<gif_tag> decode_gif_tag(const qword& q) noexcept {
 // PACKED register descriptors (manual "Register descriptor"; PCSX2 `GSRegs.h` `enum GIF_REG`).
 namespace desc {
 inline constexpr unsigned PRIM = 0x0, RGBAQ = 0x1, ST = 0x2, UV = 0x3, XYZF2 = 0x4, XYZ2 = 0x5, TEX0_1 = 0x6,
-                          TEX0_2 = 0x7, CLAMP_1 = 0x8, CLAMP_2 = 0x9, FOG = 0xA, XYZF3 = 0xC, XYZ3 = 0xD,
-                          A_D = 0xE, NOP = 0xF;
+                          TEX0_2 = 0x7, CLAMP_1 = 0x8, CLAMP_2 = 0x9, FOG = 0xA, XYZF3 = 0xC, XYZ3 = 0xD, A_D = 0xE,
+                          NOP = 0xF;
 }  // namespace desc
 
 }  // namespace gs::packets

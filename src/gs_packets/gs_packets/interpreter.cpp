@@ -17,7 +17,8 @@ constexpr unsigned prim_vertices[8] = {1, 2, 2, 3, 3, 3, 2, 1};
 // Context register addresses (context 2 = context 1 + 1), gs_registers.hpp.
 constexpr std::uint8_t XYOFFSET_1 = 0x18, TEX0_1 = 0x06, TEX1_1 = 0x14, TEX2_1 = 0x16, CLAMP_1 = 0x08, SCISSOR_1 = 0x40,
                        ALPHA_1 = 0x42, TEST_1 = 0x47, FBA_1 = 0x4A, FRAME_1 = 0x4C, ZBUF_1 = 0x4E, PRMODECONT = 0x1A,
-                       PRMODE = 0x1B, TEXCLUT = 0x1C, TEXA = 0x3B, DIMX = 0x44, DTHE = 0x45, COLCLAMP = 0x46, PABE = 0x49, SCANMSK = 0x22;
+                       PRMODE = 0x1B, TEXCLUT = 0x1C, TEXA = 0x3B, DIMX = 0x44, DTHE = 0x45, COLCLAMP = 0x46,
+                       PABE = 0x49, SCANMSK = 0x22;
 // TEX2's fields (PSM 20-25, CBP 37-50, CPSM 51-54, CSM 55, CSA 56-60, CLD 61-63) at TEX0's positions.
 constexpr std::uint64_t tex2_mask = (std::uint64_t{0x3F} << 20) | (~std::uint64_t{0} << 37);
 
@@ -58,8 +59,9 @@ void interpreter::tex0_written(unsigned context, std::uint64_t offset) {
     const mem::clut_state before = clut_.state;
     clut_.state = mem::load_clut(mem_, t, clut_.state, mem::decode_texclut(regs_[TEXCLUT] & 0x3FFFFF));
     const unsigned cld = static_cast<unsigned>(t.CLD.value());
-    const bool loaded = mem::is_indexed(t.PSM) && ((cld >= 1 && cld <= 3) || (cld == 4 && clut_.state.CBP0 != before.CBP0) ||
-                                                   (cld == 5 && clut_.state.CBP1 != before.CBP1));
+    const bool loaded =
+        mem::is_indexed(t.PSM) && ((cld >= 1 && cld <= 3) || (cld == 4 && clut_.state.CBP0 != before.CBP0) ||
+                                   (cld == 5 && clut_.state.CBP1 != before.CBP1));
     if (loaded) {
       clut_.load_error.clear();
       const std::uint32_t entries = mem::value_bits(t.PSM) == 8 ? 256u : 16u;  // PSMT8(H): 256; PSMT4(HL, HH): 16
@@ -104,9 +106,9 @@ void interpreter::vertex_kick(bool draw, bool with_fog, std::uint64_t offset) {
     }
   }
   switch (type) {
-    case 2: queue_[0] = queue_[1], queued_ = 1; break;                        // LINE_STRIP
+    case 2: queue_[0] = queue_[1], queued_ = 1; break;                         // LINE_STRIP
     case 4: queue_[0] = queue_[1], queue_[1] = queue_[2], queued_ = 2; break;  // TRIANGLE_STRIP
-    case 5: queue_[1] = queue_[2], queued_ = 2; break;                        // TRIANGLE_FAN
+    case 5: queue_[1] = queue_[2], queued_ = 2; break;                         // TRIANGLE_FAN
     default: queued_ = 0; break;
   }
 }
@@ -170,9 +172,7 @@ void interpreter::finish_transfer() {
     mem::host_to_local(mem_, current_.bitbltbuf, current_.trxpos, current_.trxreg, mem::trxdir_reg{}, data_);
     done_.push_back(current_);
     if (opt_.observer != nullptr) opt_.observer->transfer(current_, need_, false);
-  } catch (const std::invalid_argument& e) {
-    unmodelled_.push_back({e.what(), current_.offset});
-  }
+  } catch (const std::invalid_argument& e) { unmodelled_.push_back({e.what(), current_.offset}); }
   in_transfer_ = false;
 }
 
@@ -204,8 +204,10 @@ void interpreter::apply(const gif_event& e, std::uint64_t offset) {
     case reg::XYZF2: vertex_kick(true, true, offset); break;
     case reg::XYZ3: vertex_kick(false, false, offset); break;
     case reg::XYZF3: vertex_kick(false, true, offset); break;
-    case TEX0_1: case TEX0_1 + 1: tex0_written(e.address - TEX0_1, offset); break;
-    case TEX2_1: case TEX2_1 + 1: tex0_written(e.address - TEX2_1, offset); break;
+    case TEX0_1:
+    case TEX0_1 + 1: tex0_written(e.address - TEX0_1, offset); break;
+    case TEX2_1:
+    case TEX2_1 + 1: tex0_written(e.address - TEX2_1, offset); break;
     default: break;
   }
 }

@@ -73,7 +73,7 @@ struct interpreter_observer {
 
 struct interpreter_options {
   model_options model{};
-  bool skip_unmodelled = false;  // skip (and list) primitives the model cannot draw instead of stopping
+  bool skip_unmodelled = false;              // skip (and list) primitives the model cannot draw instead of stopping
   interpreter_observer* observer = nullptr;  // not owned; told of primitives, transfers, CLUT loads, vsyncs
 };
 

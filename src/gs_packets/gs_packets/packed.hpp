@@ -56,8 +56,8 @@ constexpr packed_write unpack(unsigned descriptor, const qword& d, std::uint32_t
   switch (descriptor) {
     case desc::PRIM: return {false, 0x00, d.lo & 0x7FF};
     case desc::RGBAQ:
-      return {false, 0x01, (w0 & 0xFF) | ((w1 & 0xFF) << 8) | ((w2 & 0xFF) << 16) | ((w3 & 0xFF) << 24) |
-                               (std::uint64_t{q} << 32)};
+      return {false, 0x01,
+              (w0 & 0xFF) | ((w1 & 0xFF) << 8) | ((w2 & 0xFF) << 16) | ((w3 & 0xFF) << 24) | (std::uint64_t{q} << 32)};
     case desc::ST: q = static_cast<std::uint32_t>(w2); return {false, 0x02, d.lo};
     case desc::UV: return {false, 0x03, (w0 & 0x3FFF) | ((w1 & 0x3FFF) << 16)};
     case desc::XYZF2:

@@ -37,11 +37,13 @@ struct primitive_walk {
   }
   bool at_boundary() const {
     switch (prim) {
-      case 1: case 6: return vertices % 2 == 0;        // LINE, SPRITE
-      case 2: return vertices == 0 || vertices >= 2;   // LINE_STRIP
-      case 3: return vertices % 3 == 0;                // TRIANGLE
-      case 4: case 5: return vertices == 0 || vertices >= 3;  // TRIANGLE_STRIP, TRIANGLE_FAN
-      default: return true;                            // POINT, reserved
+      case 1:
+      case 6: return vertices % 2 == 0;               // LINE, SPRITE
+      case 2: return vertices == 0 || vertices >= 2;  // LINE_STRIP
+      case 3: return vertices % 3 == 0;               // TRIANGLE
+      case 4:
+      case 5: return vertices == 0 || vertices >= 3;  // TRIANGLE_STRIP, TRIANGLE_FAN
+      default: return true;                           // POINT, reserved
     }
   }
 };
@@ -113,7 +115,9 @@ class packetiser {
     if (t.FLG == gif_flg::REGLIST) return ((b - a) * nreg + 1) / 2;
     return b - a;
   }
-  static bool cut_allowed(const gif_tag& t, std::uint64_t k) { return t.FLG != gif_flg::REGLIST || (k * t.registers()) % 2 == 0; }
+  static bool cut_allowed(const gif_tag& t, std::uint64_t k) {
+    return t.FLG != gif_flg::REGLIST || (k * t.registers()) % 2 == 0;
+  }
 
   // The register writes of loop k that move the primitive walk (PRIM and the vertex registers).
   void loop_writes(const gif_tag& t, std::size_t data0, std::uint64_t k, std::uint64_t nreg, primitive_walk& w) const {
@@ -122,8 +126,10 @@ class packetiser {
       const unsigned d = t.REGS[r].value();
       if (t.FLG == gif_flg::PACKED) {
         const qword q = qword_at(s_, data0 + k * nreg + r);
-        if (d == 0x0E) w.write(static_cast<unsigned>(q.hi & 0xFF), q.lo);
-        else if (d <= 0x0D) w.write(d, q.lo);
+        if (d == 0x0E)
+          w.write(static_cast<unsigned>(q.hi & 0xFF), q.lo);
+        else if (d <= 0x0D)
+          w.write(d, q.lo);
       } else if (d <= 0x0D) {
         const std::uint64_t v = k * nreg + r;
         const qword q = qword_at(s_, data0 + v / 2);

@@ -41,14 +41,14 @@ struct state_field {
 };
 
 namespace detail {
-inline constexpr std::string_view env_names[] = {"PRIM", "PRMODECONT", "TEXCLUT", "SCANMSK", "TEXA",
-                                                 "FOGCOL", "DIMX", "DTHE", "COLCLAMP", "PABE",
-                                                 "BITBLTBUF", "TRXDIR", "TRXPOS", "TRXREG", "TRXREG_obsolete"};
+inline constexpr std::string_view env_names[] = {"PRIM",      "PRMODECONT", "TEXCLUT", "SCANMSK",  "TEXA",
+                                                 "FOGCOL",    "DIMX",       "DTHE",    "COLCLAMP", "PABE",
+                                                 "BITBLTBUF", "TRXDIR",     "TRXPOS",  "TRXREG",   "TRXREG_obsolete"};
 inline constexpr std::string_view ctx_names[2][12] = {
-    {"XYOFFSET_1", "TEX0_1", "TEX1_1", "CLAMP_1", "MIPTBP1_1", "MIPTBP2_1", "SCISSOR_1", "ALPHA_1", "TEST_1",
-     "FBA_1", "FRAME_1", "ZBUF_1"},
-    {"XYOFFSET_2", "TEX0_2", "TEX1_2", "CLAMP_2", "MIPTBP1_2", "MIPTBP2_2", "SCISSOR_2", "ALPHA_2", "TEST_2",
-     "FBA_2", "FRAME_2", "ZBUF_2"}};
+    {"XYOFFSET_1", "TEX0_1", "TEX1_1", "CLAMP_1", "MIPTBP1_1", "MIPTBP2_1", "SCISSOR_1", "ALPHA_1", "TEST_1", "FBA_1",
+     "FRAME_1", "ZBUF_1"},
+    {"XYOFFSET_2", "TEX0_2", "TEX1_2", "CLAMP_2", "MIPTBP1_2", "MIPTBP2_2", "SCISSOR_2", "ALPHA_2", "TEST_2", "FBA_2",
+     "FRAME_2", "ZBUF_2"}};
 inline constexpr std::string_view vertex_names[] = {"RGBAQ", "ST", "UV", "FOG", "XYZ", "obsolete"};
 inline constexpr std::string_view path_names[4][2] = {
     {"path0.tag", "path0.reg"}, {"path1.tag", "path1.reg"}, {"path2.tag", "path2.reg"}, {"path3.tag", "path3.reg"}};
@@ -57,7 +57,10 @@ constexpr auto make_fields() {
   std::array<state_field, 1 + 15 + 24 + 6 + 2 + 1 + 8 + 1> f{};
   std::size_t i = 0;
   std::uint32_t at = 0;
-  auto add = [&](std::string_view n, std::uint32_t size) { f[i++] = {n, at, size}; at += size; };
+  auto add = [&](std::string_view n, std::uint32_t size) {
+    f[i++] = {n, at, size};
+    at += size;
+  };
   add("version", 4);
   for (auto n : env_names) add(n, 8);
   for (const auto& c : ctx_names)
@@ -106,7 +109,8 @@ inline std::optional<std::vector<state_field>> state_layout(std::uint32_t versio
     add(f.name, f.size);
     if (version <= 6 && f.name == "PRIM") add("PRMODE", 8);
     if (version <= 6 && (f.name == "TEX1_1" || f.name == "TEX1_2")) add(f.name == "TEX1_1" ? "TEX2_1" : "TEX2_2", 8);
-    if (version <= 4 && (f.name == "ZBUF_1" || f.name == "ZBUF_2")) add(f.name == "ZBUF_1" ? "obsolete_1" : "obsolete_2", 28);
+    if (version <= 4 && (f.name == "ZBUF_1" || f.name == "ZBUF_2"))
+      add(f.name == "ZBUF_1" ? "obsolete_1" : "obsolete_2", 28);
   }
   if (at != size) return std::nullopt;
   return out;

@@ -35,7 +35,9 @@ namespace gs::packets {
 
 enum class video_mode { ntsc, pal, vesa };
 
-constexpr std::string_view name(video_mode m) { return m == video_mode::ntsc ? "ntsc" : m == video_mode::pal ? "pal" : "vesa"; }
+constexpr std::string_view name(video_mode m) {
+  return m == video_mode::ntsc ? "ntsc" : m == video_mode::pal ? "pal" : "vesa";
+}
 constexpr std::optional<video_mode> video_mode_named(std::string_view s) {
   for (const video_mode m : {video_mode::ntsc, video_mode::pal, video_mode::vesa})
     if (name(m) == s) return m;
@@ -52,22 +54,32 @@ constexpr std::uint64_t encode(const smode1_reg& r) {
   auto f = [](unsigned v, unsigned at) { return std::uint64_t{v} << at; };
   return f(r.RC, 0) | f(r.LC, 3) | f(r.T1248, 10) | f(r.SLCK, 12) | f(r.CMOD, 13) | f(r.EX, 15) | f(r.PRST, 16) |
          f(r.SINT, 17) | f(r.XPCK, 18) | f(r.PCK2, 19) | f(r.SPML, 21) | f(r.GCONT, 25) | f(r.PHS, 26) | f(r.PVS, 27) |
-         f(r.PEHS, 28) | f(r.PEVS, 29) | f(r.CLKSEL, 30) | f(r.NVCK, 32) | f(r.SLCK2, 33) | f(r.VCKSEL, 34) | f(r.VHP, 36);
+         f(r.PEHS, 28) | f(r.PEVS, 29) | f(r.CLKSEL, 30) | f(r.NVCK, 32) | f(r.SLCK2, 33) | f(r.VCKSEL, 34) |
+         f(r.VHP, 36);
 }
 
 struct syncv_reg {
   unsigned VFP = 0, VFPE = 0, VBP = 0, VBPE = 0, VDP = 0, VS = 0;
 };
 constexpr std::uint64_t encode(const syncv_reg& r) {
-  return std::uint64_t{r.VFP} | (std::uint64_t{r.VFPE} << 10) | (std::uint64_t{r.VBP} << 20) | (std::uint64_t{r.VBPE} << 32) |
-         (std::uint64_t{r.VDP} << 42) | (std::uint64_t{r.VS} << 53);
+  return std::uint64_t{r.VFP} | (std::uint64_t{r.VFPE} << 10) | (std::uint64_t{r.VBP} << 20) |
+         (std::uint64_t{r.VBPE} << 32) | (std::uint64_t{r.VDP} << 42) | (std::uint64_t{r.VS} << 53);
 }
 
 constexpr smode1_reg smode1_for(video_mode m) {
   if (m == video_mode::vesa)
-    return {.RC = 2, .LC = 15, .T1248 = 1, .PRST = 1, .SPML = 2, .CLKSEL = 1, .NVCK = 1, .SLCK2 = 1, .VCKSEL = 0, .VHP = 1};
-  return {.RC = 4, .LC = 32, .T1248 = 1, .CMOD = m == video_mode::pal ? 3u : 2u, .PRST = 1, .SPML = 4, .CLKSEL = 1,
-          .NVCK = 1, .SLCK2 = 1, .VCKSEL = 1};
+    return {
+        .RC = 2, .LC = 15, .T1248 = 1, .PRST = 1, .SPML = 2, .CLKSEL = 1, .NVCK = 1, .SLCK2 = 1, .VCKSEL = 0, .VHP = 1};
+  return {.RC = 4,
+          .LC = 32,
+          .T1248 = 1,
+          .CMOD = m == video_mode::pal ? 3u : 2u,
+          .PRST = 1,
+          .SPML = 4,
+          .CLKSEL = 1,
+          .NVCK = 1,
+          .SLCK2 = 1,
+          .VCKSEL = 1};
 }
 // SMODE2: INT = 1 for the interlaced TV modes (FFMD = 0, field mode), 0 for VESA.
 constexpr std::uint64_t smode2_for(video_mode m) { return m == video_mode::vesa ? 0u : 1u; }
@@ -97,8 +109,9 @@ constexpr std::uint64_t display_for(video_mode m, int width, int height) {
     dx = 254 + (pal ? 262 : 222) + std::max(0, 2892 - dw) / 2 - 1;
     dy = static_cast<int>(v.VS + v.VBP + v.VBPE) + std::max(0, static_cast<int>(v.VDP) - height) / 2 - 1;
   }
-  return static_cast<std::uint64_t>(dx) | (static_cast<std::uint64_t>(dy) << 12) | (static_cast<std::uint64_t>(magh) << 23) |
-         (static_cast<std::uint64_t>(dw - 1) << 32) | (static_cast<std::uint64_t>(height - 1) << 44);
+  return static_cast<std::uint64_t>(dx) | (static_cast<std::uint64_t>(dy) << 12) |
+         (static_cast<std::uint64_t>(magh) << 23) | (static_cast<std::uint64_t>(dw - 1) << 32) |
+         (static_cast<std::uint64_t>(height - 1) << 44);
 }
 
 }  // namespace gs::packets

@@ -65,10 +65,12 @@ verdict judge(std::string name, bool is_check, const std::vector<const patch*>& 
     };
     auto pick = std::find_if(pixels.begin(), pixels.end(), shown_by_none);
     if (pick == pixels.end())
-      pick = std::find_if(pixels.begin(), pixels.end(),
-                          [&](std::pair<int, int> px) { return at(shot, px.first, px.second) != at(candidates[0].frame, px.first, px.second); });
+      pick = std::find_if(pixels.begin(), pixels.end(), [&](std::pair<int, int> px) {
+        return at(shot, px.first, px.second) != at(candidates[0].frame, px.first, px.second);
+      });
     const auto [x, y] = *pick;
-    std::string line = where + ", pixel (" + std::to_string(x) + ", " + std::to_string(y) + "): shows " + hex6(at(shot, x, y)) + ";";
+    std::string line =
+        where + ", pixel (" + std::to_string(x) + ", " + std::to_string(y) + "): shows " + hex6(at(shot, x, y)) + ";";
     for (const candidate& c : candidates) line += " " + c.value + " " + hex6(at(c.frame, x, y));
     v.details.push_back(line);
   }

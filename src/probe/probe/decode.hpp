@@ -19,7 +19,7 @@ namespace gsdot3::probe {
 using rgb_frame = std::vector<std::uint32_t>;
 
 struct verdict {
-  std::string name;                  // an option name, or a check's name
+  std::string name;  // an option name, or a check's name
   bool is_check = false;
   std::string not_probed;            // the reason, for an option no patch tells apart
   std::vector<std::string> matches;  // values (a check: "model") that agree on every patch

@@ -75,7 +75,8 @@ gs::dimx_reg uniform_dimx(unsigned entry) {
 // The bilinear 2×2 block at texels (4, 4) .. (5, 5); per channel t00, t10, t01, t11 (evidence.md P6
 // for R; G and B add sets whose double truncation differs from the one-step sum at other weights).
 constexpr int bilinear_texel = 4;
-constexpr std::uint8_t bilinear_sets[3][4] = {{0x00, 0xFF, 0x01, 0xFE}, {0x00, 0x07, 0x09, 0x0F}, {0x10, 0x31, 0x52, 0x73}};
+constexpr std::uint8_t bilinear_sets[3][4] = {
+    {0x00, 0xFF, 0x01, 0xFE}, {0x00, 0x07, 0x09, 0x0F}, {0x10, 0x31, 0x52, 0x73}};
 
 std::vector<std::uint32_t> texture_texels() {
   std::vector<std::uint32_t> t(texture_side * texture_side, 0x80000000u);
@@ -84,8 +85,8 @@ std::vector<std::uint32_t> texture_texels() {
   for (int k = 0; k < 4; ++k) {
     const int u = bilinear_texel + (k & 1), v = bilinear_texel + (k >> 1);
     t[static_cast<std::size_t>(v * texture_side + u)] = 0x80000000u | std::uint32_t{bilinear_sets[0][k]} |
-                                                         std::uint32_t{bilinear_sets[1][k]} << 8 |
-                                                         std::uint32_t{bilinear_sets[2][k]} << 16;
+                                                        std::uint32_t{bilinear_sets[1][k]} << 8 |
+                                                        std::uint32_t{bilinear_sets[2][k]} << 16;
   }
   return t;
 }
@@ -100,11 +101,13 @@ sixteen_bit_cell sixteen_bit_block(int x, int y) {
   namespace mem = gs::mem;
   const unsigned page = static_cast<unsigned>(y / 32) * frame_fbw + static_cast<unsigned>(x / 64);
   const mem::buffer frame{fixed::uint<14>::from_wrapped(0), fixed::uint<6>::from_wrapped(frame_fbw), mem::psm::PSMCT32};
-  const mem::buffer b16{mem::from_page(fixed::uint<9>::from_wrapped(page)), fixed::uint<6>::from_wrapped(1), mem::psm::PSMCT16};
+  const mem::buffer b16{mem::from_page(fixed::uint<9>::from_wrapped(page)), fixed::uint<6>::from_wrapped(1),
+                        mem::psm::PSMCT16};
   const std::uint32_t block = mem::locate(frame, static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y)).block();
   for (int by = 0; by < 64; by += 8)
     for (int bx = 0; bx < 64; bx += 16)
-      if (mem::locate(b16, static_cast<std::uint32_t>(bx), static_cast<std::uint32_t>(by)).block() == block) return {page, bx, by};
+      if (mem::locate(b16, static_cast<std::uint32_t>(bx), static_cast<std::uint32_t>(by)).block() == block)
+        return {page, bx, by};
   throw std::logic_error("probe: no PSMCT16 block shares the bytes of the cell");  // a page has 32 of each
 }
 
@@ -139,7 +142,9 @@ design make_design() {
   {  // gouraud_fraction (evidence.md P2): the 8.7 ramp 1 + 16/128 .. 1 + 44/128 times texel 0xFF.
     const int x = 16, y = 16;
     // Colour 1 at x − 4, 2 at x + 28: the step is exactly 128 / 32 = 4 (8.7) per pixel, no rounding.
-    b.add(gouraud_ramp(base, x, y, {{{x - 4, y - 4, 0x80010101u, 8, 8}, {x + 28, y - 4, 0x80020202u, 8, 8}, {x - 4, y + 28, 0x80010101u, 8, 8}}}));
+    b.add(gouraud_ramp(
+        base, x, y,
+        {{{x - 4, y - 4, 0x80010101u, 8, 8}, {x + 28, y - 4, 0x80020202u, 8, 8}, {x - 4, y + 28, 0x80010101u, 8, 8}}}));
     b.add_patch("gouraud_fraction.ramp", "gouraud_fraction", x, y,
                 "Gouraud TRIANGLE, MODULATE, texel 0xFF, Cf = 1 + (16 + 4k)/128 (8.7), scissored to the cell: "
                 "(0xFF * Cf_8.7) >> 14 = 2 keeping the fraction, 1 truncating it");
@@ -149,28 +154,37 @@ design make_design() {
     const int x = 520, y = 16;
     // Colour 0 at x − 500, 4 at x + 14 (two vertices, one above the other: the cell lies inside): the
     // step is 4·128/514 = 0.996 units per pixel, 0 along y.
-    b.add(gouraud_ramp(base, x, y, {{{x - 500, y - 4, 0x80000000u, 24, 8}, {x + 14, y - 4, 0x80040404u, 24, 8}, {x + 14, y + 28, 0x80040404u, 24, 8}}}));
-    b.add_patch("gouraud_setup.ramp", "gouraud_setup", x, y,
-                "Gouraud TRIANGLE, MODULATE, texel 0x80, Cf from 0 to 4 over 514 pixels (0.996 units per pixel), read 501..506 "
-                "pixels from the first vertex: 0 when the step truncates to whole units (plane_steps), Cf_8.7 = 499..504 and "
-                "(0x80 * Cf) >> 14 = 3 from the exact plane (per_pixel and the other set-ups of a source)");
+    b.add(gouraud_ramp(base, x, y,
+                       {{{x - 500, y - 4, 0x80000000u, 24, 8},
+                         {x + 14, y - 4, 0x80040404u, 24, 8},
+                         {x + 14, y + 28, 0x80040404u, 24, 8}}}));
+    b.add_patch(
+        "gouraud_setup.ramp", "gouraud_setup", x, y,
+        "Gouraud TRIANGLE, MODULATE, texel 0x80, Cf from 0 to 4 over 514 pixels (0.996 units per pixel), read 501..506 "
+        "pixels from the first vertex: 0 when the step truncates to whole units (plane_steps), Cf_8.7 = 499..504 and "
+        "(0x80 * Cf) >> 14 = 3 from the exact plane (per_pixel and the other set-ups of a source)");
   }
   {  // gouraud_setup (P12): a long row, its start at x = 0, read ~600 pixels on (PCSX2's vectors).
     const int x = 600, y = 432;
     // Colour 0 along x = 0, 8 at x = 686: 1024/686 = 1.4927 units per pixel along x, 0 along y. Scissored to
     // the band x = 0 .. cell end, rows of the cell (no other patch there), so PCSX2's row starts at 0.
-    draw d = gouraud_ramp(base, x, y, {{{0, y - 400, 0x80000000u, 24, 8}, {0, y + 408, 0x80000000u, 24, 8}, {686, y + 4, 0x80080808u, 24, 8}}});
+    draw d = gouraud_ramp(
+        base, x, y,
+        {{{0, y - 400, 0x80000000u, 24, 8}, {0, y + 408, 0x80000000u, 24, 8}, {686, y + 4, 0x80080808u, 24, 8}}});
     d.scissor = {0, y, x + cell - 1, y + cell - 1};
     b.add(d);
-    b.add_patch("gouraud_setup.rows", "gouraud_setup", x, y,
-                "Gouraud TRIANGLE, MODULATE, texel 0x80, Cf = 1.4927 units per pixel from x = 0, read 601..606 pixels on: "
-                "level 7 from the exact plane (897..904 units); 5 from 4-lane vector steps trunc(5.97) = 5 (~146 units "
-                "behind), 6 from 8-lane steps trunc(11.94) = 11 (~71 behind), 4 from plane_steps' step 1");
+    b.add_patch(
+        "gouraud_setup.rows", "gouraud_setup", x, y,
+        "Gouraud TRIANGLE, MODULATE, texel 0x80, Cf = 1.4927 units per pixel from x = 0, read 601..606 pixels on: "
+        "level 7 from the exact plane (897..904 units); 5 from 4-lane vector steps trunc(5.97) = 5 (~146 units "
+        "behind), 6 from 8-lane steps trunc(11.94) = 11 (~71 behind), 4 from plane_steps' step 1");
   }
   {  // gouraud_setup (P12): the exact plane within half an 8.7 unit below a whole level (parallel-gs's bias).
     const int x = 616, y = 432;
     // Colour 0 along x = 108, 2 at x = 1132: 0.25·(x − 108) units, so 127.5 and 127.75 at x = 618, 619.
-    b.add(gouraud_ramp(base, x, y, {{{108, y - 4, 0x80000000u, 24, 8}, {108, y + 1500, 0x80000000u, 24, 8}, {1132, y - 4, 0x80020202u, 24, 8}}}));
+    b.add(gouraud_ramp(
+        base, x, y,
+        {{{108, y - 4, 0x80000000u, 24, 8}, {108, y + 1500, 0x80000000u, 24, 8}, {1132, y - 4, 0x80020202u, 24, 8}}}));
     b.add_patch("gouraud_setup.level", "gouraud_setup", x, y,
                 "Gouraud TRIANGLE, MODULATE, texel 0x80, Cf = 0.25·(x − 108) units: 127.5 and 127.75 at x = 618, 619, "
                 "level 0 truncated, 1 with parallel-gs's +1/256 level (per_pixel_level); 128 and more from x = 620 on");
@@ -215,8 +229,8 @@ design make_design() {
     r.COLCLAMP.CLAMP = false;
     r.ALPHA_1 = blend(blend_colour::Cs, blend_colour::zero, blend_alpha::FIX, blend_colour::Cd, 0x80);
     b.add(sprite(r, x, y, cell, cell, 0x80C0C0C0u));
-    b.add_patch("check.colclamp_wrap", "", x, y, "Cd 0x80, COLCLAMP = 0, Cs * FIX(0x80) >> 7 + Cd with Cs 0xC0: 0x40 (wrap)",
-                "colclamp_wrap");
+    b.add_patch("check.colclamp_wrap", "", x, y,
+                "Cd 0x80, COLCLAMP = 0, Cs * FIX(0x80) >> 7 + Cd with Cs 0xC0: 0x40 (wrap)", "colclamp_wrap");
   }
   {  // HIGHLIGHT clamps after the function (evidence.md D1): min(255, 0xFF·0x7F >> 7 + 0x7F) through a wrapping blend.
     const int x = 112, y = 16;
@@ -226,9 +240,10 @@ design make_design() {
     r.COLCLAMP.CLAMP = false;
     r.ALPHA_1 = blend(blend_colour::Cs, blend_colour::zero, blend_alpha::FIX, blend_colour::zero, 0x80);
     b.add(sprite(r, x, y, cell, cell, 0x7F7F7F7Fu, 8, 8));
-    b.add_patch("check.highlight_clamp", "", x, y,
-                "HIGHLIGHT, texel 0xFF, Cf 0x7F: 0xFF (clamped after the function) through Cs * 0x80 >> 7 with COLCLAMP = 0",
-                "highlight_clamp");
+    b.add_patch(
+        "check.highlight_clamp", "", x, y,
+        "HIGHLIGHT, texel 0xFF, Cf 0x7F: 0xFF (clamped after the function) through Cs * 0x80 >> 7 with COLCLAMP = 0",
+        "highlight_clamp");
   }
 
   // ---- row y = 32: 16-bit cells ----------------------------------------------------------------------
@@ -261,8 +276,9 @@ design make_design() {
     r.FRAME_1.FBMSK = k == 0 ? 0x00000007u : 0x80000000u;
     b.add(b.sixteen_bit_sprite(r, x, y, 0xFFFFFFFFu));
     b.add_patch(k == 0 ? "check.fbmsk16_low_bits" : "check.fbmsk16_alpha", "", x, y,
-                k == 0 ? "PSMCT16 over 0x0000, FBMSK 0x00000007, colour 0xFFFFFFFF: 0xFFFF (bits 0..2 have no 16-bit bit)"
-                       : "PSMCT16 over 0x0000, FBMSK 0x80000000, colour 0xFFFFFFFF: 0x7FFF (bit 31 keeps the A bit)",
+                k == 0
+                    ? "PSMCT16 over 0x0000, FBMSK 0x00000007, colour 0xFFFFFFFF: 0xFFFF (bits 0..2 have no 16-bit bit)"
+                    : "PSMCT16 over 0x0000, FBMSK 0x80000000, colour 0xFFFFFFFF: 0x7FFF (bit 31 keeps the A bit)",
                 "fbmsk16");
   }
 
@@ -270,13 +286,15 @@ design make_design() {
   // Page P0 = frame page 20 (x 0..63, y 64..95), quarters q0 (x 0..31, y 64..79), q1 (x 0..31, y 80..95),
   // q2 (x 32..63, y 64..79), q3 (x 32..63, y 80..95); page P1 = frame page 21 (x 64..127).
   {
-    struct at { int x, y; };
+    struct at {
+      int x, y;
+    };
     const at a{8, 72}, bb{8, 88}, d{40, 64}, e{40, 72}, c{40, 88}, f{48, 88}, h{56, 88}, g{72, 72}, g2{88, 72};
-    b.add(sprite(base, a.x, a.y, cell, cell, 0x80C04010u));   // A1 (q0)
-    b.add(sprite(base, bb.x, bb.y, cell, cell, 0x80202020u)); // B0 (q1), overwritten by S1
-    b.add(sprite(base, d.x, d.y, cell, cell, 0x8040C010u));   // D1 (q2)
-    b.add(sprite(base, e.x, e.y, cell, cell, 0x80303030u));   // E0 (q2), overwritten by S3
-    b.add(sprite(base, g.x, g.y, cell, cell, 0x80808080u));   // page P1
+    b.add(sprite(base, a.x, a.y, cell, cell, 0x80C04010u));    // A1 (q0)
+    b.add(sprite(base, bb.x, bb.y, cell, cell, 0x80202020u));  // B0 (q1), overwritten by S1
+    b.add(sprite(base, d.x, d.y, cell, cell, 0x8040C010u));    // D1 (q2)
+    b.add(sprite(base, e.x, e.y, cell, cell, 0x80303030u));    // E0 (q2), overwritten by S3
+    b.add(sprite(base, g.x, g.y, cell, cell, 0x80808080u));    // page P1
     gs::gs_registers r = base;
     r.PRIM.TME = true;
     r.TEX0_1.TBW = fixed::uint<6>::from_wrapped(frame_fbw);
@@ -290,24 +308,27 @@ design make_design() {
       s.texflush = first;
       b.add(s);
     };
-    copy(a, bb, true);  // S1: q0 -> q1
-    copy(bb, c, false); // S2: reads q1 after S1 wrote it (the buffer held q0)
-    copy(d, e, false);  // S3: q2 -> q2
-    copy(e, f, false);  // S4: reads e, written by S3 while q2 was buffered
-    copy(g, g2, false); // S5: leaves page P0
-    copy(bb, h, false); // S6: back to q1 of P0
+    copy(a, bb, true);   // S1: q0 -> q1
+    copy(bb, c, false);  // S2: reads q1 after S1 wrote it (the buffer held q0)
+    copy(d, e, false);   // S3: q2 -> q2
+    copy(e, f, false);   // S4: reads e, written by S3 while q2 was buffered
+    copy(g, g2, false);  // S5: leaves page P0
+    copy(bb, h, false);  // S6: back to q1 of P0
     b.add_patch("texture_buffer.other_quarter", "texture_buffer", c.x, c.y,
                 "reads cell (8, 88) (quarter q1) after S1 wrote it while quarter q0 was buffered: new 0xc04010 unless "
                 "the whole page (or the draw) was buffered");
-    b.add_patch("texture_buffer.same_quarter", "texture_buffer", f.x, f.y,
-                "reads cell (40, 72) after S3 wrote it while its own quarter q2 was buffered: new 0x10c040 only per fragment");
-    b.add_patch("texture_buffer.after_leaving_page", "texture_buffer", h.x, h.y,
-                "reads cell (8, 88) again after S5 read page 21: new 0x1040c0 unless the draw was read once before it began");
+    b.add_patch(
+        "texture_buffer.same_quarter", "texture_buffer", f.x, f.y,
+        "reads cell (40, 72) after S3 wrote it while its own quarter q2 was buffered: new 0x10c040 only per fragment");
+    b.add_patch(
+        "texture_buffer.after_leaving_page", "texture_buffer", h.x, h.y,
+        "reads cell (8, 88) again after S5 read page 21: new 0x1040c0 unless the draw was read once before it began");
   }
   b.d.not_probed.push_back(
-      {"tfx_rounding", "floor and truncate round (Ct * Cf) >> 7 alike: the product of the unsigned texel and fragment "
-                       "colour is never negative, so no drawable input tells them apart (tests/probe checks every "
-                       "Ct x Cf 8.7 pair)"});
+      {"tfx_rounding",
+       "floor and truncate round (Ct * Cf) >> 7 alike: the product of the unsigned texel and fragment "
+       "colour is never negative, so no drawable input tells them apart (tests/probe checks every "
+       "Ct x Cf 8.7 pair)"});
   return b.d;
 }
 

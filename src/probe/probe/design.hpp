@@ -1,6 +1,7 @@
 // probe/design.hpp — the option probe: a grid of 8×8 patches in one displayed 640×448 PSMCT32 frame,
 // each drawn by a few register writes and one or more primitives so that the values of one model
-// option (gs_arith/options.hpp) give different pixel values (docs/dumps.md "The option probe", docs/evidence.md P1..P11).
+// option (gs_arith/options.hpp) give different pixel values (docs/dumps.md "The option probe", docs/evidence.md
+// P1..P11).
 //
 // The design is a list of draws (register state + primitive) in GS order and a list of patches (the
 // cells the decoder reads). Both consumers read this one list: probe/frame.hpp computes the frame the
@@ -34,9 +35,9 @@ inline constexpr unsigned texture_page = 140;  // just after the frame's 140 pag
 inline constexpr int texture_side = 16;
 
 struct vertex {
-  int x = 0, y = 0;          // window pixel (XYZ2 = x << 4, y << 4; XYOFFSET_1 = 0)
-  std::uint32_t rgba = 0;    // RGBAQ, A8B8G8R8
-  int u16 = 0, v16 = 0;      // UV in 12.4 texel units (FST = 1)
+  int x = 0, y = 0;        // window pixel (XYZ2 = x << 4, y << 4; XYOFFSET_1 = 0)
+  std::uint32_t rgba = 0;  // RGBAQ, A8B8G8R8
+  int u16 = 0, v16 = 0;    // UV in 12.4 texel units (FST = 1)
 };
 
 struct rect {
@@ -46,21 +47,21 @@ struct rect {
 
 // One primitive with the register state it is drawn under.
 struct draw {
-  gs::gs_registers regs;   // PRIM (type, IIP, TME, ABE, FST), TEX0_1, ALPHA_1, TEST_1, FRAME_1, COLCLAMP, ..., DIMX
-  bool linear = false;     // TEX1_1 MMAG = MMIN = LINEAR (else NEAREST)
+  gs::gs_registers regs;  // PRIM (type, IIP, TME, ABE, FST), TEX0_1, ALPHA_1, TEST_1, FRAME_1, COLCLAMP, ..., DIMX
+  bool linear = false;    // TEX1_1 MMAG = MMIN = LINEAR (else NEAREST)
   rect scissor;
-  bool texflush = false;   // TEXFLUSH before this draw: the texture buffer starts empty
-  std::vector<vertex> v;   // SPRITE: 2, TRIANGLE: 3
+  bool texflush = false;  // TEXFLUSH before this draw: the texture buffer starts empty
+  std::vector<vertex> v;  // SPRITE: 2, TRIANGLE: 3
 };
 
 // A cell the decoder reads. `option` is the gs::option_catalogue() name it settles, or empty for a
 // check of a behaviour the model fixes (no option): then only the model's own value is expected.
 struct patch {
-  std::string name;        // "dither_decode.e4"
+  std::string name;  // "dither_decode.e4"
   std::string option;
-  std::string check;       // for a check: the behaviour's name ("colclamp_wrap"); else empty
-  int x = 0, y = 0;        // the cell's top-left pixel in the displayed frame
-  std::string what;        // how it is drawn, one line (the legend)
+  std::string check;  // for a check: the behaviour's name ("colclamp_wrap"); else empty
+  int x = 0, y = 0;   // the cell's top-left pixel in the displayed frame
+  std::string what;   // how it is drawn, one line (the legend)
 };
 
 // An option no patch can tell apart, with the reason.

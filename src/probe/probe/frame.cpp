@@ -48,7 +48,9 @@ bool same_state(const draw& a, const draw& b) {
 }
 
 gs::rgba8 fetch_texel(mem::texture_page_buffer& tb, const gs::tex0_reg& t, std::int32_t u, std::int32_t v) {
-  const auto wrap = [](std::int32_t c, unsigned log2) { return static_cast<std::uint32_t>(c) & ((1u << log2) - 1); };  // REPEAT
+  const auto wrap = [](std::int32_t c, unsigned log2) {
+    return static_cast<std::uint32_t>(c) & ((1u << log2) - 1);
+  };  // REPEAT
   const mem::buffer tex{t.TBP0, t.TBW, t.PSM};
   const mem::location at = mem::locate(tex, wrap(u, t.TW.value()), wrap(v, t.TH.value()));
   std::uint32_t w = 0;
@@ -67,8 +69,10 @@ bool inside_triangle(const std::vector<vertex>& v, int x, int y) {
 void draw_primitive(mem::local_memory& m, const draw& d, std::optional<mem::texture_page_buffer>& tb,
                     const gs::model_options& o) {
   const bool triangle = d.regs.PRIM.PRIM == gs::prim_type::TRIANGLE;
-  if (!triangle && d.regs.PRIM.PRIM != gs::prim_type::SPRITE) throw std::logic_error("probe: only sprites and triangles");
-  if (d.regs.PRIM.TME && d.regs.TEX0_1.PSM != gs::tex_psm::PSMCT32) throw std::logic_error("probe: PSMCT32 textures only");
+  if (!triangle && d.regs.PRIM.PRIM != gs::prim_type::SPRITE)
+    throw std::logic_error("probe: only sprites and triangles");
+  if (d.regs.PRIM.TME && d.regs.TEX0_1.PSM != gs::tex_psm::PSMCT32)
+    throw std::logic_error("probe: PSMCT32 textures only");
   const vertex& last = d.v.back();
   std::optional<gs::gouraud_plane> plane;
   if (triangle && d.regs.PRIM.IIP) {

@@ -29,10 +29,10 @@ std::uint64_t tex1_value(bool linear) { return linear ? (1u << 5) | (1u << 6) : 
 // The state registers of a draw, in the order they are written (PRIM last: it resets the vertex queue).
 std::vector<write> state_writes(const draw& d) {
   const gs::gs_registers& r = d.regs;
-  return {{0x06, gs::encode(r.TEX0_1)},  {0x14, tex1_value(d.linear)},    {0x40, scissor_value(d.scissor)},
-          {0x42, gs::encode(r.ALPHA_1)}, {0x47, gs::encode(r.TEST_1)},    {0x4C, gs::encode(r.FRAME_1)},
-          {0x46, gs::encode(r.COLCLAMP)}, {0x49, gs::encode(r.PABE)},     {0x4A, gs::encode(r.FBA_1)},
-          {0x45, gs::encode(r.DTHE)},    {0x44, gs::encode(r.DIMX)},      {0x00, gs::encode(r.PRIM)}};
+  return {{0x06, gs::encode(r.TEX0_1)},   {0x14, tex1_value(d.linear)}, {0x40, scissor_value(d.scissor)},
+          {0x42, gs::encode(r.ALPHA_1)},  {0x47, gs::encode(r.TEST_1)}, {0x4C, gs::encode(r.FRAME_1)},
+          {0x46, gs::encode(r.COLCLAMP)}, {0x49, gs::encode(r.PABE)},   {0x4A, gs::encode(r.FBA_1)},
+          {0x45, gs::encode(r.DTHE)},     {0x44, gs::encode(r.DIMX)},   {0x00, gs::encode(r.PRIM)}};
 }
 
 void add_texture_upload(pk::packet_builder& pb, const std::vector<std::uint32_t>& texels) {
@@ -57,8 +57,8 @@ void add_texture_upload(pk::packet_builder& pb, const std::vector<std::uint32_t>
 display_registers probe_display() {
   const std::uint64_t pmode = 1u | 1u << 2 | 1u << 5 | 0xFFu << 8;
   const std::uint64_t dispfb = std::uint64_t{frame_fbw} << 9;  // FBP 0, PSM PSMCT32, DBX = DBY = 0
-  const std::uint64_t display = 636u | 50u << 12 | 3u << 23 | std::uint64_t{4 * frame_width - 1} << 32 |
-                                std::uint64_t{frame_height - 1} << 44;
+  const std::uint64_t display =
+      636u | 50u << 12 | 3u << 23 | std::uint64_t{4 * frame_width - 1} << 32 | std::uint64_t{frame_height - 1} << 44;
   return {pmode, 1, dispfb, display};
 }
 
@@ -84,7 +84,8 @@ pk::packet_builder probe_packets() {
       data.push_back(pk::packed_rgba(static_cast<std::uint8_t>(v.rgba), static_cast<std::uint8_t>(v.rgba >> 8),
                                      static_cast<std::uint8_t>(v.rgba >> 16), static_cast<std::uint8_t>(v.rgba >> 24)));
       data.push_back(pk::packed_uv(static_cast<std::uint32_t>(v.u16), static_cast<std::uint32_t>(v.v16)));
-      data.push_back(pk::packed_xyz2(static_cast<std::uint16_t>(v.x * 16), static_cast<std::uint16_t>(v.y * 16), 0, false));
+      data.push_back(
+          pk::packed_xyz2(static_cast<std::uint16_t>(v.x * 16), static_cast<std::uint16_t>(v.y * 16), 0, false));
     }
     const unsigned regs[] = {pk::desc::RGBAQ, pk::desc::UV, pk::desc::XYZ2};
     pb.packed(std::nullopt, regs, data, i + 1 == des.draws.size());
@@ -99,7 +100,8 @@ gs::dump::gs_dump probe_dump() {
   d.state = gs::dump::make_state_v8();
   const display_registers r = probe_display();
   auto put = [&](std::size_t offset, std::uint64_t v) {
-    for (int b = 0; b < 8; ++b) d.privileged[offset + static_cast<std::size_t>(b)] = static_cast<std::uint8_t>(v >> (8 * b));
+    for (int b = 0; b < 8; ++b)
+      d.privileged[offset + static_cast<std::size_t>(b)] = static_cast<std::uint8_t>(v >> (8 * b));
   };
   put(0x0000, r.PMODE);
   // The NTSC video mode's SMODE1 and SYNCV (gs_packets/video_mode.hpp): with SMODE1 = 0 PCSX2 reports VESA.

@@ -57,7 +57,10 @@ std::uint32_t parse_hex6(const std::string& s) {
   if (s.empty() || s.size() > 6) throw format_error("pixel '" + s + "' is not 1..6 hex digits");
   std::uint32_t v = 0;
   for (const char c : s) {
-    const int d = c >= '0' && c <= '9' ? c - '0' : c >= 'a' && c <= 'f' ? c - 'a' + 10 : c >= 'A' && c <= 'F' ? c - 'A' + 10 : -1;
+    const int d = c >= '0' && c <= '9'   ? c - '0'
+                  : c >= 'a' && c <= 'f' ? c - 'a' + 10
+                  : c >= 'A' && c <= 'F' ? c - 'A' + 10
+                                         : -1;
     if (d < 0) throw format_error("pixel '" + s + "' is not hex");
     v = v << 4 | static_cast<std::uint32_t>(d);
   }
@@ -78,15 +81,20 @@ std::string write_recording(const rgb_frame& shot, const std::vector<verdict>& d
   for (const verdict& v : decoded) {
     if (!v.is_check && v.matches.size() == 1) gs::set_option(o, v.name, v.matches[0]);
     comments += "# " + std::string(v.is_check ? "check " : "") + v.name + ": " +
-                (!v.not_probed.empty() ? "not probed" : v.matches.empty() ? "none matches" : v.matches[0]) + "\n";
+                (!v.not_probed.empty() ? "not probed"
+                 : v.matches.empty()   ? "none matches"
+                                       : v.matches[0]) +
+                "\n";
   }
   std::string s = std::string(recording_magic) + " " + std::to_string(recording_version) + " frame=" + frame_size();
-  for (const auto& row : gs::option_catalogue()) s.append(" ").append(row.name).append("=").append(gs::option_value(o, row.name));
+  for (const auto& row : gs::option_catalogue())
+    s.append(" ").append(row.name).append("=").append(gs::option_value(o, row.name));
   s += "\n# gsdot3 probe decode: the options the screenshot showed (the default where none matched)\n" + comments;
   s += "# PATCH X Y => the cell's inner 6x6 pixels, row by row, as RRGGBB\n";
   for (const patch& p : probe_design().patches) {
     s += p.name + " " + std::to_string(p.x) + " " + std::to_string(p.y) + " =>";
-    for (const auto& [x, y] : sample_pixels(p)) s.append(" ").append(hex6(shot[static_cast<std::size_t>(y) * frame_width + x]));
+    for (const auto& [x, y] : sample_pixels(p))
+      s.append(" ").append(hex6(shot[static_cast<std::size_t>(y) * frame_width + x]));
     s += "\n";
   }
   return s;
@@ -118,9 +126,7 @@ vectors::verify_result verify_recording(std::istream& in, std::ostream& report, 
         std::vector<std::uint32_t> words32 = model_frame(o);
         expected.emplace(words32.size());
         for (std::size_t i = 0; i < words32.size(); ++i) (*expected)[i] = rgb_of(words32[i]);
-      } catch (const format_error& e) {
-        throw format_error("line " + std::to_string(number) + ": " + e.what());
-      }
+      } catch (const format_error& e) { throw format_error("line " + std::to_string(number) + ": " + e.what()); }
       continue;
     }
     try {
@@ -138,7 +144,8 @@ vectors::verify_result verify_recording(std::istream& in, std::ostream& report, 
       bool same = true;
       for (std::size_t k = 0; k < pixels.size(); ++k) {
         const std::uint32_t got = parse_hex6(w[4 + k]);
-        const std::uint32_t want = (*expected)[static_cast<std::size_t>(pixels[k].second) * frame_width + pixels[k].first];
+        const std::uint32_t want =
+            (*expected)[static_cast<std::size_t>(pixels[k].second) * frame_width + pixels[k].first];
         same = same && got == want;
         if (k != 0) {
           observed += ' ';
@@ -152,12 +159,11 @@ vectors::verify_result verify_recording(std::istream& in, std::ostream& report, 
       } else {
         rep.mismatch(p.name + " " + w[1] + " " + w[2], observed, wanted);
       }
-    } catch (const format_error& e) {
-      rep.malformed(number, e.what());
-    }
+    } catch (const format_error& e) { rep.malformed(number, e.what()); }
   }
-  if (!expected) throw format_error("line " + std::to_string(number + 1) + ": no header line '" + std::string(recording_magic) + " " +
-                                    std::to_string(recording_version) + " frame=" + frame_size() + " ...' (empty input)");
+  if (!expected)
+    throw format_error("line " + std::to_string(number + 1) + ": no header line '" + std::string(recording_magic) +
+                       " " + std::to_string(recording_version) + " frame=" + frame_size() + " ...' (empty input)");
   return rep.finish();
 }
 

@@ -15,11 +15,11 @@ enum class method { exhaustive, reduction };
 const char* name(method m) noexcept;
 
 struct claim {
-  std::string_view id;         // e.g. "eq4.signed-multiply"
-  std::string_view paper;      // equation / section / appendix of Mikkelsen 2004
-  std::string_view statement;  // what the paper asserts, in words
-  std::string_view domain;     // the inputs enumerated (the exact size is in the outcome)
-  method how;                  // exhaustive, or a reduction whose argument is beside the code
+  std::string_view id;                       // e.g. "eq4.signed-multiply"
+  std::string_view paper;                    // equation / section / appendix of Mikkelsen 2004
+  std::string_view statement;                // what the paper asserts, in words
+  std::string_view domain;                   // the inputs enumerated (the exact size is in the outcome)
+  method how;                                // exhaustive, or a reduction whose argument is beside the code
   std::vector<std::string_view> depends_on;  // model options (gs::option_catalogue names)
   outcome (*evaluate)(const gs::model_options&, const sweep_config&);
   // Which seed the claim comes from: the ledger groups claims under it. The paper's own claims keep

@@ -48,7 +48,8 @@ GSDOT3_CLAIM(valve_ssbump_filter_linear);
 GSDOT3_CLAIM(valve_rnm_filter);
 GSDOT3_CLAIM(valve_reconstruct_normal);
 // seed 002: compact normal storage (claims_normal_encoding.cpp)
-inline constexpr std::string_view normal_encoding_section = "Seed 002: Pranckevičius 2009, Compact Normal Storage for small G-Buffers";
+inline constexpr std::string_view normal_encoding_section =
+    "Seed 002: Pranckevičius 2009, Compact Normal Storage for small G-Buffers";
 GSDOT3_CLAIM(normal_encoding_codes);
 GSDOT3_CLAIM(normal_encoding_worst_case);
 GSDOT3_CLAIM(normal_encoding_mean_rms);
@@ -58,7 +59,8 @@ GSDOT3_CLAIM(normal_encoding_xy_wrong_sign);
 GSDOT3_CLAIM(normal_encoding_2009_vs_2010);
 GSDOT3_CLAIM(normal_encoding_ranking);
 // seed 004: PowerVR Series 2 polar bump mapping (claims_powervr.cpp)
-inline constexpr std::string_view powervr_section = "Seed 004: Imagination Technologies 1999, Bump Mapping Tricks for Series 2";
+inline constexpr std::string_view powervr_section =
+    "Seed 004: Imagination Technologies 1999, Bump Mapping Tricks for Series 2";
 GSDOT3_CLAIM(powervr_identity);
 GSDOT3_CLAIM(powervr_identity_8bit);
 GSDOT3_CLAIM(powervr_q_quadrant);

@@ -36,12 +36,12 @@ outcome highlight_attenuation(const gs::model_options& o, const sweep_config&) {
   outcome out;
   out.result = verdict::bound;
   out.domain_size = index;
-  out.figures = {fig("err_min_128ths", err.min), fig("err_max_128ths", err.max),
-                 fig_real("err_min", err.min / 128.0), fig_real("err_max", err.max / 128.0),
-                 fig("clamps", static_cast<std::int64_t>(clamps))};
+  out.figures = {fig("err_min_128ths", err.min), fig("err_max_128ths", err.max), fig_real("err_min", err.min / 128.0),
+                 fig_real("err_max", err.max / 128.0), fig("clamps", static_cast<std::int64_t>(clamps))};
   out.witnesses = {"err_min at " + at(err.arg_min), "err_max at " + at(err.arg_max)};
-  out.note = "HIGHLIGHT floors sph·k/128, so the attenuated texel is up to 127/128 below the exact value "
-             "(the signed vector up to 127/128 longer); the clamp never bites";
+  out.note =
+      "HIGHLIGHT floors sph·k/128, so the attenuated texel is up to 127/128 below the exact value "
+      "(the signed vector up to 127/128 longer); the clamp never bites";
   return out;
 }
 
@@ -54,7 +54,8 @@ outcome specular_attenuation_compensation(const gs::model_options& o, const swee
   auto ilp = [](int n, int i) { return std::round(128.0 * std::pow((i + 1) / 128.0, n)); };
   auto scaled = [&](int i, int k) {
     return gs::texture_function(gs::tfx::MODULATE, gs::tcc::RGB, m::grey(i, 0),
-                                gs::fragment_colour::flat(m::grey(k, 0x80)), o).r.value();
+                                gs::fragment_colour::flat(m::grey(k, 0x80)), o)
+        .r.value();
   };
   double cmin = 1e9, cmax = -1e9, umin = 1e9, umax = -1e9;
   std::string cmin_at, cmax_at;
@@ -65,7 +66,9 @@ outcome specular_attenuation_compensation(const gs::model_options& o, const swee
         const double att = a / 128.0, want = 128.0 * att * std::pow((i + 1) / 128.0, n);
         const int k = static_cast<int>(std::lround(128.0 * std::pow(att, 1.0 / n)));
         const double comp = ilp(n, scaled(i, k)) - want, unc = ilp(n, scaled(i, a)) - want;
-        auto where = [&] { return "n = " + std::to_string(n) + ", att = " + std::to_string(a) + "/128, dot index " + std::to_string(i); };
+        auto where = [&] {
+          return "n = " + std::to_string(n) + ", att = " + std::to_string(a) + "/128, dot index " + std::to_string(i);
+        };
         if (comp < cmin) cmin = comp, cmin_at = where();
         if (comp > cmax) cmax = comp, cmax_at = where();
         umin = std::min(umin, unc), umax = std::max(umax, unc);
@@ -76,8 +79,9 @@ outcome specular_attenuation_compensation(const gs::model_options& o, const swee
   out.figures = {fig_real("err_min", cmin), fig_real("err_max", cmax), fig_real("uncompensated_err_min", umin),
                  fig_real("uncompensated_err_max", umax)};
   out.witnesses = {"err_min at " + cmin_at, "err_max at " + cmax_at};
-  out.note = "(att^(1/n)·dot)^n through an 8-bit dot index stays within the bound shown (ILP units); without the "
-             "compensation the error is the uncompensated range";
+  out.note =
+      "(att^(1/n)·dot)^n through an 8-bit dot index stays within the bound shown (ILP units); without the "
+      "compensation the error is the uncompensated range";
   return out;
 }
 
@@ -128,7 +132,9 @@ outcome lod_two_vs_four(const gs::model_options& o, const sweep_config& cfg) {
       const auto& p = packed[j];
       const auto& b = normals[j];
       for (int c = 0; c < 3; ++c)
-        for (int a = -127; a <= 128; ++a) column[static_cast<std::size_t>(c)][static_cast<std::size_t>(a + 127)] = t4.product(a, b[static_cast<std::size_t>(c)]);
+        for (int a = -127; a <= 128; ++a)
+          column[static_cast<std::size_t>(c)][static_cast<std::size_t>(a + 127)] =
+              t4.product(a, b[static_cast<std::size_t>(c)]);
       const std::int16_t *rx = t2.row(p.iX), *ry = t2.row(p.iY), *rz = t2.row(p.iZ);
       const int* cx = column[0].data() + 127;
       const int* cy = column[1].data() + 127;
@@ -152,11 +158,11 @@ outcome lod_two_vs_four(const gs::model_options& o, const sweep_config& cfg) {
     const auto& L = lights[i % nl];
     const auto& b = normals[i / nl];
     const auto& p = packed[i / nl];
-    return "b = (" + std::to_string(b[0]) + ", " + std::to_string(b[1]) + ", " + std::to_string(b[2]) + "), two-pass n = (" +
-           std::to_string(p.iX) + ", " + std::to_string(p.iY) + ", " + std::to_string(p.iZ) + "), sphere a = (" +
-           std::to_string(L.a[0]) + ", " + std::to_string(L.a[1]) + ", " + std::to_string(L.a[2]) + "), l = (" +
-           std::to_string(L.l[0]) + ", " + std::to_string(L.l[1]) + ", " + std::to_string(L.l[2]) + ") => two-pass " +
-           std::to_string(t2.value(p, L.l)) + ", four-pass " + std::to_string(t4.dot(L.a, b));
+    return "b = (" + std::to_string(b[0]) + ", " + std::to_string(b[1]) + ", " + std::to_string(b[2]) +
+           "), two-pass n = (" + std::to_string(p.iX) + ", " + std::to_string(p.iY) + ", " + std::to_string(p.iZ) +
+           "), sphere a = (" + std::to_string(L.a[0]) + ", " + std::to_string(L.a[1]) + ", " + std::to_string(L.a[2]) +
+           "), l = (" + std::to_string(L.l[0]) + ", " + std::to_string(L.l[1]) + ", " + std::to_string(L.l[2]) +
+           ") => two-pass " + std::to_string(t2.value(p, L.l)) + ", four-pass " + std::to_string(t4.dot(L.a, b));
   };
   outcome out;
   out.result = verdict::bound;
@@ -165,9 +171,10 @@ outcome lod_two_vs_four(const gs::model_options& o, const sweep_config& cfg) {
                  fig("visible_diff_max", r.visible.max)};
   out.witnesses = {"diff_min at " + at(r.diff.arg_min), "diff_max at " + at(r.diff.arg_max),
                    "visible_diff_min at " + at(r.visible.arg_min), "visible_diff_max at " + at(r.visible.arg_max)};
-  out.note = "two-pass minus four-pass dot product for the same palette index and light direction: the scales "
-             "differ (128·122/128 vs 127·127/128), both round, and Appendix 2 refills iZ after truncating iX, iY, "
-             "tilting grazing normals towards +z; visible_* compares the intensities after the ILP (negative dots -> 0)";
+  out.note =
+      "two-pass minus four-pass dot product for the same palette index and light direction: the scales "
+      "differ (128·122/128 vs 127·127/128), both round, and Appendix 2 refills iZ after truncating iX, iY, "
+      "tilting grazing normals towards +z; visible_* compares the intensities after the ILP (negative dots -> 0)";
   return out;
 }
 

@@ -26,8 +26,8 @@ outcome four_pass_channel_exact(const gs::model_options& o, const sweep_config& 
       const std::uint32_t marker = 0x3C5AA569u, shift = 8u * static_cast<unsigned>(channel);
       const std::uint32_t dpb = (marker & ~(0xFFu << shift)) | static_cast<std::uint32_t>(x.a2) << shift;
       const std::uint32_t out = m::four_pass_channel(dpb, channel, m::byte(x.b2), o);
-      const std::uint32_t want = (marker & ~(0xFFu << shift)) |
-                                 static_cast<std::uint32_t>(char_multiply(x.a, x.b) + 128) << shift;
+      const std::uint32_t want =
+          (marker & ~(0xFFu << shift)) | static_cast<std::uint32_t>(char_multiply(x.a, x.b) + 128) << shift;
       if (out != want) t.add(i);
     }
   });
@@ -57,7 +57,10 @@ ivec3 faded(const paper::sphere_texel& t, const gs::model_options& o) {
 struct sum_acc {
   tally wraps;
   extremes sum;
-  void merge(const sum_acc& l) { wraps.merge(l.wraps); sum.merge(l.sum); }
+  void merge(const sum_acc& l) {
+    wraps.merge(l.wraps);
+    sum.merge(l.sum);
+  }
 };
 sum_acc sum_sweep(const std::vector<ivec3>& lights, const std::vector<ivec3>& normals, const four_pass::table& t,
                   const sweep_config& cfg) {
@@ -104,7 +107,9 @@ sum_acc sum_sweep(const std::vector<ivec3>& lights, const std::vector<ivec3>& no
       const auto *rx = t.row(lights[i][0]), *ry = t.row(lights[i][1]), *rz = t.row(lights[i][2]);
       const bool monotone = t.monotone(lights[i][2]);
       const bool all_monotone = monotone && t.monotone(lights[i][0]) && t.monotone(lights[i][1]);
-      auto inside = [&](int lo_s, int hi_s) { return lo_s >= acc.sum.min && hi_s <= acc.sum.max && lo_s >= -128 && hi_s <= 127; };
+      auto inside = [&](int lo_s, int hi_s) {
+        return lo_s >= acc.sum.min && hi_s <= acc.sum.max && lo_s >= -128 && hi_s <= 127;
+      };
       for (const auto& k : blocks) {
         if (all_monotone) {
           const int lo_s = std::min(rx[k.x0], rx[k.x1]) + std::min(ry[k.y0], ry[k.y1]) + std::min(rz[k.z0], rz[k.z1]);
@@ -148,7 +153,8 @@ outcome four_pass_sum_wrap(const gs::model_options& o, const sweep_config& cfg) 
   const bool any_vertex = cfg.domain.fade == domain_options::fade_source::any_vertex;
   for (int y = 0; y < size; ++y)
     for (int x = 0; x < size; ++x)
-      faded_lights.push_back(any_vertex ? lights[static_cast<std::size_t>(y * size + x)] : faded(paper::sphere_map_texel(x, y, size, size), o));
+      faded_lights.push_back(any_vertex ? lights[static_cast<std::size_t>(y * size + x)]
+                                        : faded(paper::sphere_map_texel(x, y, size, size), o));
   const auto with_fade = any_vertex ? plain : sum_sweep(faded_lights, normals, t, cfg);
   const std::uint64_t nn = normals.size();
   auto describe = [&](const std::vector<ivec3>& ls, std::uint64_t i) {
@@ -159,7 +165,8 @@ outcome four_pass_sum_wrap(const gs::model_options& o, const sweep_config& cfg) 
       return "(" + std::to_string(u[0]) + ", " + std::to_string(u[1]) + ", " + std::to_string(u[2]) + ")";
     };
     return "texel (" + std::to_string(i / nn % size) + ", " + std::to_string(i / nn / size) + ") a = " + v(a) +
-           ", b = " + v(b) + " => Σ (a·b >> 7) = " + std::to_string(s) + ", DPB dot " + hexdec(m::as_signed(m::byte(s)));
+           ", b = " + v(b) + " => Σ (a·b >> 7) = " + std::to_string(s) + ", DPB dot " +
+           hexdec(m::as_signed(m::byte(s)));
   };
   outcome out;
   out.result = plain.wraps.count == 0 ? verdict::proven : verdict::refuted;
@@ -171,15 +178,19 @@ outcome four_pass_sum_wrap(const gs::model_options& o, const sweep_config& cfg) 
     out.witnesses.push_back("sum_max at " + describe(lights, plain.sum.arg_max));
   }
   for (auto i : with_fade.wraps.first) out.witnesses.push_back("with fade_att: " + describe(faded_lights, i));
-  out.figures = {fig("normal_map_vectors", static_cast<std::int64_t>(nn)), fig("sum_min", plain.sum.min),
-                 fig("sum_max", plain.sum.max), fig("count", static_cast<std::int64_t>(plain.wraps.count)),
-                 fig("fade_sum_min", with_fade.sum.min), fig("fade_sum_max", with_fade.sum.max),
+  out.figures = {fig("normal_map_vectors", static_cast<std::int64_t>(nn)),
+                 fig("sum_min", plain.sum.min),
+                 fig("sum_max", plain.sum.max),
+                 fig("count", static_cast<std::int64_t>(plain.wraps.count)),
+                 fig("fade_sum_min", with_fade.sum.min),
+                 fig("fade_sum_max", with_fade.sum.max),
                  fig("fade_count", static_cast<std::int64_t>(with_fade.wraps.count))};
   out.note = plain.wraps.count == 0
                  ? "the summed products stay in [−128, 127]: R+G+B never wraps"
                  : "the summed products reach " + std::to_string(plain.sum.min) +
                        " < −128 for near-opposite vectors (three floors): those pixels wrap to a bright positive dot; "
-                       "fade_att leaves " + std::to_string(with_fade.wraps.count) + " of them";
+                       "fade_att leaves " +
+                       std::to_string(with_fade.wraps.count) + " of them";
   return out;
 }
 
@@ -234,14 +245,16 @@ outcome clamp_wrap_intermediates(const gs::model_options& o, const sweep_config&
   if (alpha_clamps + highlight_clamps + blend_outside > 0) r.bad.add(n1);
   auto out = verdict_of(r.bad, size, [&](auto i) {
     if (i >= n1) return std::string("alpha / HIGHLIGHT clamp or four-pass blend outside 0..255");
-    return "n = " + std::to_string(static_cast<int>(i / lights) - 127) + ", light 8.7 " + hexdec(static_cast<std::int64_t>(i % lights), 16);
+    return "n = " + std::to_string(static_cast<int>(i / lights) - 127) + ", light 8.7 " +
+           hexdec(static_cast<std::int64_t>(i % lights), 16);
   });
   out.figures = {fig("tfx_clamp_bites", static_cast<std::int64_t>(r.tfx_clamps) + alpha_clamps + highlight_clamps),
                  fig("two_pass_wraps_wanted", static_cast<std::int64_t>(r.wraps_wanted)),
                  fig("two_pass_wrong_wraps", static_cast<std::int64_t>(r.wrong_wrap)),
                  fig("four_pass_blend_outside_byte", blend_outside)};
-  out.note = "the texture function's clamp never bites; the two-pass subtraction wraps exactly mod 256 (for "
-             "the negative products, as intended); the four-pass blend stays in 0..255";
+  out.note =
+      "the texture function's clamp never bites; the two-pass subtraction wraps exactly mod 256 (for "
+      "the negative products, as intended); the four-pass blend stays in 0..255";
   return out;
 }
 

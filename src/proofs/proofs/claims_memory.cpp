@@ -36,7 +36,8 @@ page_words dpb_pattern(std::uint32_t alpha) {
   page_words w{};
   for (int p = 0; p < page_pixels; ++p) {
     const auto u = static_cast<std::uint32_t>(p);
-    w[static_cast<std::size_t>(p)] = alpha << 24 | ((u * 97 + 3) & 0xFFu) << 16 | ((u * 53 + 5) & 0xFFu) << 8 | ((u * 37 + 11) & 0x7Fu);
+    w[static_cast<std::size_t>(p)] =
+        alpha << 24 | ((u * 97 + 3) & 0xFFu) << 16 | ((u * 53 + 5) & 0xFFu) << 8 | ((u * 37 + 11) & 0x7Fu);
   }
   return w;
 }
@@ -78,14 +79,16 @@ outcome dpb_clear_value(const gs::model_options& o, const sweep_config& cfg) {
     const auto [v, z, alpha] = at(k / page_pixels);
     const int p = static_cast<int>(k % page_pixels);
     const ilp_pass r = run_ilp_pass(dpb_pattern(alpha), v, z, o.tex_buffer);
-    return std::string(name(v)) + ", ZBUF " + zname(z) + ", DPB alpha 0x" + hex32(alpha).substr(8) + " before 2.6, pixel " +
-           pixel(p) + " => " + hex32(r.dpb_after[static_cast<std::size_t>(p)]) + ", expected 0x00808080";
+    return std::string(name(v)) + ", ZBUF " + zname(z) + ", DPB alpha 0x" + hex32(alpha).substr(8) +
+           " before 2.6, pixel " + pixel(p) + " => " + hex32(r.dpb_after[static_cast<std::size_t>(p)]) +
+           ", expected 0x00808080";
   });
   out.figures = {fig("counterexamples_psmz32", static_cast<std::int64_t>(a.psmz32)),
                  fig("counterexamples_psmz24_alpha_0", static_cast<std::int64_t>(a.psmz24_alpha0))};
-  out.note = "PSMZ32 clears the whole word; PSMZ24 writes only bits 0-23, so the DPB ends 0x00808080 only where its "
-             "alpha was already 0 (four-pass leaves alpha 0; two-pass's first pass writes alpha, and each light's "
-             "first pass rewrites it on every pixel it covers)";
+  out.note =
+      "PSMZ32 clears the whole word; PSMZ24 writes only bits 0-23, so the DPB ends 0x00808080 only where its "
+      "alpha was already 0 (four-pass leaves alpha 0; two-pass's first pass writes alpha, and each light's "
+      "first pass rewrites it on every pixel it covers)";
   return out;
 }
 
@@ -107,15 +110,16 @@ outcome dpb_clear_read_before_write(const gs::model_options& o, const sweep_conf
     const int run = static_cast<int>(k / page_pixels), p = static_cast<int>(k % page_pixels);
     const ilp_pass r = run_ilp_pass(before, tricks[run / 2], zbufs[run % 2], o.tex_buffer);
     return std::string(name(tricks[run / 2])) + ", ZBUF " + zname(zbufs[run % 2]) + ", texture_buffer " +
-           std::string(gs::option_value(o, "texture_buffer")) + ", DPB pixel " + pixel(p) + ": ILP read R = " +
-           std::to_string(r.fetched[static_cast<std::size_t>(p)]) + ", expected " +
+           std::string(gs::option_value(o, "texture_buffer")) + ", DPB pixel " + pixel(p) +
+           ": ILP read R = " + std::to_string(r.fetched[static_cast<std::size_t>(p)]) + ", expected " +
            std::to_string(before[static_cast<std::size_t>(p)] & 0xFFu) + " (overwritten by the Z clear first)";
   });
   out.figures = {fig("counterexamples_z_trick", per_variant[0]), fig("counterexamples_z_trick_psmz32", per_variant[1])};
-  out.note = "z-trick draws each fragment where its Z write lands on the very pixel it has just read, so no buffering "
-             "is needed; z-trick-psmz32's Z writes land on the diagonally opposite 32x16 quarter, which is read "
-             "later, so it works only if the texture buffer holds that quarter already (page, draw_snapshot). The "
-             "post filter (2.4) runs before 2.6 and is not affected";
+  out.note =
+      "z-trick draws each fragment where its Z write lands on the very pixel it has just read, so no buffering "
+      "is needed; z-trick-psmz32's Z writes land on the diagonally opposite 32x16 quarter, which is read "
+      "later, so it works only if the texture buffer holds that quarter already (page, draw_snapshot). The "
+      "post filter (2.4) runs before 2.6 and is not affected";
   return out;
 }
 
@@ -127,7 +131,8 @@ outcome dpb_clear_variants_agree(const gs::model_options& o, const sweep_config&
     const ilp_pass a = run_ilp_pass(before, dpb_clear::z_trick, zbufs[zi], o.tex_buffer);
     const ilp_pass b = run_ilp_pass(before, dpb_clear::z_trick_psmz32, zbufs[zi], o.tex_buffer);
     for (int p = 0; p < page_pixels; ++p)
-      if (a.lab[static_cast<std::size_t>(p)] != b.lab[static_cast<std::size_t>(p)]) bad.add(static_cast<std::uint64_t>(zi * page_pixels + p));
+      if (a.lab[static_cast<std::size_t>(p)] != b.lab[static_cast<std::size_t>(p)])
+        bad.add(static_cast<std::uint64_t>(zi * page_pixels + p));
   }
   outcome out = verdict_of(bad, 2 * page_pixels, [&](std::uint64_t k) {
     const int zi = static_cast<int>(k / page_pixels), p = static_cast<int>(k % page_pixels);
@@ -140,11 +145,13 @@ outcome dpb_clear_variants_agree(const gs::model_options& o, const sweep_config&
       t += pixel(lab_source(w));
       return t;
     };
-    return std::string("ZBUF ") + zname(zbufs[zi]) + ", LAB pixel " + pixel(p) + ": z-trick adds " + what(a.lab[static_cast<std::size_t>(p)]) +
-           ", z-trick-psmz32 adds " + what(b.lab[static_cast<std::size_t>(p)]);
+    return std::string("ZBUF ") + zname(zbufs[zi]) + ", LAB pixel " + pixel(p) + ": z-trick adds " +
+           what(a.lab[static_cast<std::size_t>(p)]) + ", z-trick-psmz32 adds " +
+           what(b.lab[static_cast<std::size_t>(p)]);
   });
-  out.note = "both variants put DPB pixel P's contribution at the same LAB word (PSMCT32 pixel zsigma(P)); they differ "
-             "where z-trick-psmz32 read an already cleared texel";
+  out.note =
+      "both variants put DPB pixel P's contribution at the same LAB word (PSMCT32 pixel zsigma(P)); they differ "
+      "where z-trick-psmz32 read an already cleared texel";
   return out;
 }
 
@@ -178,13 +185,14 @@ outcome dpb_clear_lab_layout(const gs::model_options& o, const sweep_config&) {
   }
   outcome out = verdict_of(bad, 4 * page_pixels, [&](std::uint64_t k) {
     const int run = static_cast<int>(k / page_pixels), p = static_cast<int>(k % page_pixels);
-    return std::string(name(tricks[run / 2])) + (run % 2 ? ", DPB rendered in PSMZ32" : ", DPB in PSMCT32") + ", texture_buffer " +
-           std::string(gs::option_value(o, "texture_buffer")) + ", pixel " + pixel(p) +
+    return std::string(name(tricks[run / 2])) + (run % 2 ? ", DPB rendered in PSMZ32" : ", DPB in PSMCT32") +
+           ", texture_buffer " + std::string(gs::option_value(o, "texture_buffer")) + ", pixel " + pixel(p) +
            " => its contribution is not where the claim puts it (overwritten texel or other layout)";
   });
   out.figures = {fig("counterexamples_z_trick", per_variant[0]), fig("counterexamples_z_trick_psmz32", per_variant[1])};
-  out.note = "the trick's LAB is the PSMZ32 view of the intended LAB; a DPB rendered in PSMZ32 (or a final read of the "
-             "LAB as PSMZ32) undoes it, wherever the texels were read intact (claim b)";
+  out.note =
+      "the trick's LAB is the PSMZ32 view of the intended LAB; a DPB rendered in PSMZ32 (or a final read of the "
+      "LAB as PSMZ32) undoes it, wherever the texels were read intact (claim b)";
   return out;
 }
 

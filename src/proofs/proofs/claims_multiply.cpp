@@ -17,7 +17,12 @@ outcome eq1_eq2_ranges(const gs::model_options&, const sweep_config& cfg) {
   struct acc {
     tally bad;
     extremes a2, b2, product;
-    void merge(const acc& l) { bad.merge(l.bad); a2.merge(l.a2); b2.merge(l.b2); product.merge(l.product); }
+    void merge(const acc& l) {
+      bad.merge(l.bad);
+      a2.merge(l.a2);
+      b2.merge(l.b2);
+      product.merge(l.product);
+    }
   };
   auto r = sweep<acc>(operands::count, cfg, [](acc& s, std::uint64_t lo, std::uint64_t hi) {
     for (auto i = lo; i < hi; ++i) {
@@ -28,7 +33,7 @@ outcome eq1_eq2_ranges(const gs::model_options&, const sweep_config& cfg) {
     }
   });
   auto out = verdict_of(r.bad, operands::count, [](auto i) { return operands::at(i).describe(); });
-  out.figures = {fig("a2_min", r.a2.min), fig("a2_max", r.a2.max), fig("b2_min", r.b2.min),
+  out.figures = {fig("a2_min", r.a2.min), fig("a2_max", r.a2.max),           fig("b2_min", r.b2.min),
                  fig("b2_max", r.b2.max), fig("product_min", r.product.min), fig("product_max", r.product.max)};
   out.note = "a2, b2 are 8-bit unsigned and a·b (>> 7) stays a signed byte over the stated ranges";
   return out;
@@ -57,7 +62,12 @@ struct offset_acc {
   tally bad;
   extremes out, err;
   std::uint64_t outside_byte = 0;
-  void merge(const offset_acc& l) { bad.merge(l.bad); out.merge(l.out); err.merge(l.err); outside_byte += l.outside_byte; }
+  void merge(const offset_acc& l) {
+    bad.merge(l.bad);
+    out.merge(l.out);
+    err.merge(l.err);
+    outside_byte += l.outside_byte;
+  }
 };
 offset_acc sweep_offset_multiply(const gs::model_options& o, const sweep_config& cfg) {
   return sweep<offset_acc>(operands::count, cfg, [&](offset_acc& s, std::uint64_t lo, std::uint64_t hi) {
@@ -114,7 +124,10 @@ split_result split_multiply(const operands& x, const gs::model_options& o) {
 struct split_acc {
   tally bad;
   extremes err;
-  void merge(const split_acc& l) { bad.merge(l.bad); err.merge(l.err); }
+  void merge(const split_acc& l) {
+    bad.merge(l.bad);
+    err.merge(l.err);
+  }
 };
 template <class Error>
 split_acc sweep_split(const gs::model_options& o, const sweep_config& cfg, Error error) {
@@ -133,11 +146,13 @@ outcome eq5_eq7_split_multiply(const gs::model_options& o, const sweep_config& c
   const auto r = sweep_split(o, cfg, err);
   auto out = verdict_of(r.bad, operands::count, [&](auto i) {
     const auto x = operands::at(i);
-    return x.describe() + " => GS " + hexdec(split_multiply(x, o).value) + ", (a·b) >> 7 = " + hexdec(char_multiply(x.a, x.b));
+    return x.describe() + " => GS " + hexdec(split_multiply(x, o).value) +
+           ", (a·b) >> 7 = " + hexdec(char_multiply(x.a, x.b));
   });
   out.figures = {fig("err_min", r.err.min), fig("err_max", r.err.max)};
-  out.note = "for a < 0 the GS floors Max(−a,0)·b2 before negating, so the product rounds up: "
-             "off by +1 whenever a < 0 and a·b is not a multiple of 128";
+  out.note =
+      "for a < 0 the GS floors Max(−a,0)·b2 before negating, so the product rounds up: "
+      "off by +1 whenever a < 0 and a·b is not a multiple of 128";
   return out;
 }
 
@@ -146,8 +161,8 @@ outcome eq10_split_offset_multiply(const gs::model_options& o, const sweep_confi
   const auto r = sweep_split(o, cfg, err);
   auto out = verdict_of(r.bad, operands::count, [&](auto i) {
     const auto x = operands::at(i);
-    return x.describe() + " => DPB byte " + hexdec(split_multiply(x, o).byte) + ", a·b + 128 = " +
-           hexdec(char_multiply(x.a, x.b) + 128);
+    return x.describe() + " => DPB byte " + hexdec(split_multiply(x, o).byte) +
+           ", a·b + 128 = " + hexdec(char_multiply(x.a, x.b) + 128);
   });
   out.figures = {fig("err_min", r.err.min), fig("err_max", r.err.max)};
   out.note = "the same +1 as eq. (7), now in the wrapped byte; the modulo-256 steps themselves are exact";
@@ -161,10 +176,14 @@ outcome eq9_rgb_sum(const gs::model_options& o, const sweep_config& cfg) {
   // when −128 <= P <= 127 — and is always P mod 256.
   constexpr std::uint64_t n = std::uint64_t{1} << 24;
   struct acc {
-    tally bad;        // breaks "≡ P (mod 256)" or the exact condition
+    tally bad;  // breaks "≡ P (mod 256)" or the exact condition
     std::uint64_t wraps = 0;
     extremes sum;
-    void merge(const acc& l) { bad.merge(l.bad); wraps += l.wraps; sum.merge(l.sum); }
+    void merge(const acc& l) {
+      bad.merge(l.bad);
+      wraps += l.wraps;
+      sum.merge(l.sum);
+    }
   };
   auto r = sweep<acc>(n, cfg, [&](acc& s, std::uint64_t lo, std::uint64_t hi) {
     for (auto i = lo; i < hi; ++i) {
@@ -182,8 +201,9 @@ outcome eq9_rgb_sum(const gs::model_options& o, const sweep_config& cfg) {
   auto out = verdict_of(r.bad, n, [](auto i) { return "DPB pixel " + hexdec(static_cast<std::int64_t>(i), 24); });
   out.figures = {fig("sum_min", r.sum.min), fig("sum_max", r.sum.max),
                  fig("wrapping_pixels", static_cast<std::int64_t>(r.wraps))};
-  out.note = "(r+g+b−128) mod 256 ≡ Σ a·b always; read as a signed byte it is the dot product exactly "
-             "iff −128 <= Σ a·b <= 127";
+  out.note =
+      "(r+g+b−128) mod 256 ≡ Σ a·b always; read as a signed byte it is the dot product exactly "
+      "iff −128 <= Σ a·b <= 127";
   return out;
 }
 
@@ -196,14 +216,16 @@ outcome ilp_palette_permutation(const gs::model_options& o, const sweep_config&)
   for (int j = 0; j < 256; ++j) {
     plain[static_cast<std::size_t>(j)] = m::ilp_entry(j);
     rotated[static_cast<std::size_t>(j)] = m::ilp_offset_entry(j);
-    if (rotated[static_cast<std::size_t>(j)] != m::ilp_entry(m::minus_128(m::byte(j), o).value())) bad.add(static_cast<std::uint64_t>(j));
+    if (rotated[static_cast<std::size_t>(j)] != m::ilp_entry(m::minus_128(m::byte(j), o).value()))
+      bad.add(static_cast<std::uint64_t>(j));
   }
   std::sort(plain.begin(), plain.end());
   std::sort(rotated.begin(), rotated.end());
   const bool permutation = plain == rotated;
   if (!permutation) bad.add(256);
   auto out = verdict_of(bad, 256, [](auto j) {
-    return j == 256 ? std::string("rotated palette is not a permutation") : "sum byte " + hexdec(static_cast<std::int64_t>(j));
+    return j == 256 ? std::string("rotated palette is not a permutation")
+                    : "sum byte " + hexdec(static_cast<std::int64_t>(j));
   });
   out.figures = {fig("rotation", 128), fig("permutation", permutation ? 1 : 0)};
   out.note = "ILP' is ILP rotated by 128 entries; all 256 look-ups agree with the '− 128' post filter";
@@ -223,15 +245,18 @@ outcome ilp_dpb_clear_zero(const gs::model_options& o, const sweep_config&) {
   if (two != 0) bad.add(2);
   const auto alt = gs::rgba8::from_u32(0x0080807Fu);
   auto out = verdict_of(bad, 3, [&](auto k) {
-    const char* what[] = {"four-pass, r+g+b with ILP'", "four-pass, r+g+b−128 with ILP", "two-pass, r+g+b+3a with ILP'"};
+    const char* what[] = {"four-pass, r+g+b with ILP'", "four-pass, r+g+b−128 with ILP",
+                          "two-pass, r+g+b+3a with ILP'"};
     const int v[] = {four, four_plain, two};
-    return std::string("DPB 0x00808080, ") + what[k] + " => intensity " + std::to_string(v[k]) + " (1/128 of the light), not 0";
+    return std::string("DPB 0x00808080, ") + what[k] + " => intensity " + std::to_string(v[k]) +
+           " (1/128 of the light), not 0";
   });
   out.figures = {fig("intensity_four_pass", four), fig("intensity_four_pass_minus_128", four_plain),
                  fig("intensity_two_pass", two),
                  fig("intensity_clear_0x0080807F", m::ilp_offset_entry(m::sum_rgb(alt, o).value()))};
-  out.note = "an unrendered pixel reads as dot product 0, and the paper's ILP maps 0 to 1, not 0 (a faint 1/128); "
-             "clearing to 0x0080807F (dot −1) or an ILP of 0..127 would give 0";
+  out.note =
+      "an unrendered pixel reads as dot product 0, and the paper's ILP maps 0 to 1, not 0 (a faint 1/128); "
+      "clearing to 0x0080807F (dot −1) or an ILP of 0..127 would give 0";
   return out;
 }
 

@@ -40,7 +40,8 @@ std::string num(double v) {
   return b;
 }
 std::string vec_text(ne::vec3 n) {
-  return "(" + num(n.x) + ", " + num(n.y) + ", " + num(n.z) + ") = (" + hexf(n.x) + ", " + hexf(n.y) + ", " + hexf(n.z) + ")";
+  return "(" + num(n.x) + ", " + num(n.y) + ", " + num(n.z) + ") = (" + hexf(n.x) + ", " + hexf(n.y) + ", " +
+         hexf(n.z) + ")";
 }
 std::string code_text(const ne::method& m, ne::code q) {
   std::string s = "(" + std::to_string(q.c[0]) + ", " + std::to_string(q.c[1]);
@@ -77,11 +78,14 @@ outcome normal_encoding_codes(const gs::model_options&, const sweep_config&) {
             if (first_nan.empty()) first_nan = name(m) + ": code " + code_text(m, q) + " => " + vec_text(d);
             continue;
           }
-          if (std::fabs(ne::length(d) - 1) <= 1e-9) ++unit;
-          else ++nonunit;
+          if (std::fabs(ne::length(d) - 1) <= 1e-9)
+            ++unit;
+          else
+            ++nonunit;
           if (m.front_hemisphere && d.z < 0) ++behind;
           const ne::vec3 u = ne::normalize(d);
-          if (ne::finite(u)) distinct.emplace_back(std::llround(u.x * 1e9), std::llround(u.y * 1e9), std::llround(u.z * 1e9));
+          if (ne::finite(u))
+            distinct.emplace_back(std::llround(u.x * 1e9), std::llround(u.y * 1e9), std::llround(u.z * 1e9));
         }
     std::sort(distinct.begin(), distinct.end());
     distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());
@@ -93,8 +97,9 @@ outcome normal_encoding_codes(const gs::model_options&, const sweep_config&) {
     if (!first_nan.empty() && o.witnesses.size() < witness_cap) o.witnesses.push_back(first_nan);
   }
   o.domain_size = total;
-  o.note = "per method: how the 65 536 codes (#2: 131 072) decode; NaN codes come from sqrt of a negative "
-           "(the corners outside the unit disc); octahedral's codes are all unit after its normalise";
+  o.note =
+      "per method: how the 65 536 codes (#2: 131 072) decode; NaN codes come from sqrt of a negative "
+      "(the corners outside the unit disc); octahedral's codes are all unit after its normalise";
   return o;
 }
 
@@ -126,20 +131,22 @@ outcome normal_encoding_worst_case(const gs::model_options&, const sweep_config&
     const ne::code wq = m.encode(w.witness, bits8);
     const double wa = ne::angle(m.decode(wq, bits8), w.witness) * deg;
     std::string line = name(m) + ": n = " + vec_text(w.witness) + " => code " + code_text(m, wq) + ", " + num(wa) + "°";
-    if (m.id == ne::method_id::octahedral_precise) line += " (bound: octahedral's cells; this n, nearest, is what precise improves)";
+    if (m.id == ne::method_id::octahedral_precise)
+      line += " (bound: octahedral's cells; this n, nearest, is what precise improves)";
     o.witnesses.push_back(line);
     if (w.nonfinite_cells > 0)
-      o.witnesses.push_back(name(m) + ": n = " + vec_text(w.nonfinite_n) + " => code " + code_text(m, m.encode(w.nonfinite_n, bits8)) +
-                            " => NaN");
+      o.witnesses.push_back(name(m) + ": n = " + vec_text(w.nonfinite_n) + " => code " +
+                            code_text(m, m.encode(w.nonfinite_n, bits8)) + " => NaN");
   }
   o.domain_size = cells;
   if (!sampled_ok) {
     o.result = verdict::refuted;
     o.note = "a sampled direction exceeds its method's rounding-cell supremum: the cell analysis is wrong";
   } else {
-    o.note = "sup over every rounding cell (planar methods exact, Lambert family by branch and bound to 1e-10 rad; "
-             "octahedral-precise: octahedral's sup is its upper bound); the 2^16 Fibonacci points never exceed it; "
-             "cells whose code decodes to NaN are counted apart (sup excludes them)";
+    o.note =
+        "sup over every rounding cell (planar methods exact, Lambert family by branch and bound to 1e-10 rad; "
+        "octahedral-precise: octahedral's sup is its upper bound); the 2^16 Fibonacci points never exceed it; "
+        "cells whose code decodes to NaN are counted apart (sup excludes them)";
   }
   return o;
 }
@@ -156,7 +163,10 @@ outcome normal_encoding_mean_rms(const gs::model_options&, const sweep_config&) 
       const ne::vec3 n = ne::fibonacci_point(k, uniform_points);
       if (m.front_hemisphere && n.z < 0) continue;
       const double a = ne::angle(m.decode(m.encode(n, bits8), bits8), n) * deg;
-      if (std::isnan(a)) { ++n_nan; continue; }
+      if (std::isnan(a)) {
+        ++n_nan;
+        continue;
+      }
       sum += a;
       sum2 += a * a;
       ++n_ok;
@@ -166,7 +176,9 @@ outcome normal_encoding_mean_rms(const gs::model_options&, const sweep_config&) 
     if (n_nan > 0) o.figures.push_back(fig(name(m) + ".nan", n_nan));
   }
   o.domain_size = uniform_points;
-  o.note = "z_k = 1 − (2k+1)/N, φ_k = 2π·frac(k(√5−1)/2), N = 65 536: each point an equal-area slice; view-space over z >= 0 only";
+  o.note =
+      "z_k = 1 − (2k+1)/N, φ_k = 2π·frac(k(√5−1)/2), N = 65 536: each point an equal-area slice; view-space over z >= "
+      "0 only";
   return o;
 }
 
@@ -184,7 +196,10 @@ outcome normal_encoding_equivalence(const gs::model_options&, const sweep_config
   std::string first_diff;
   for (std::uint64_t k = 0; k < uniform_points; ++k) {
     const ne::vec3 n = ne::fibonacci_point(k, uniform_points);
-    if (n.x == 0 && n.y == 0) { ++poles; continue; }
+    if (n.x == 0 && n.y == 0) {
+      ++poles;
+      continue;
+    }
     double lx, ly, sx, sy, cx, cy;
     ne::lambert::enc(n, lx, ly);
     ne::spheremap::enc(n, sx, sy);
@@ -193,11 +208,13 @@ outcome normal_encoding_equivalence(const gs::model_options&, const sweep_config
     const ne::code ql = lam.encode(n, bits8);
     if (!(sph.encode(n, bits8) == ql)) {
       ++code_diff_sph;
-      if (first_diff.empty()) first_diff = "n = " + vec_text(n) + ": spheremap code differs from lambert " + code_text(lam, ql);
+      if (first_diff.empty())
+        first_diff = "n = " + vec_text(n) + ": spheremap code differs from lambert " + code_text(lam, ql);
     }
     if (!(cry.encode(n, bits8) == ql)) {
       ++code_diff_cry;
-      if (first_diff.empty()) first_diff = "n = " + vec_text(n) + ": cryengine3 code differs from lambert " + code_text(lam, ql);
+      if (first_diff.empty())
+        first_diff = "n = " + vec_text(n) + ": cryengine3 code differs from lambert " + code_text(lam, ql);
     }
   }
   for (std::uint32_t y = 0; y < 256; ++y)
@@ -205,20 +222,29 @@ outcome normal_encoding_equivalence(const gs::model_options&, const sweep_config
       const ne::code q{{x, y, 0}};
       const ne::vec3 l = lam.decode(q, bits8), s = sph.decode(q, bits8), c = cry.decode(q, bits8);
       const bool fl = ne::finite(l);
-      if (fl != ne::finite(s) || fl != ne::finite(c)) { ++nan_mismatch; continue; }
+      if (fl != ne::finite(s) || fl != ne::finite(c)) {
+        ++nan_mismatch;
+        continue;
+      }
       if (!fl) continue;
       dec_dev = std::max({dec_dev, ne::length(s - l), ne::length(c - l)});
     }
   outcome o;
   o.result = enc_dev <= tolerance && dec_dev <= tolerance && nan_mismatch == 0 ? verdict::proven : verdict::refuted;
   o.domain_size = uniform_points + 65536;
-  o.figures = {fig_real("encoder_max_abs_diff", enc_dev), fig_real("decoder_max_diff", dec_dev),
-               fig("codes_differ.spheremap", code_diff_sph), fig("codes_differ.cryengine3", code_diff_cry),
-               fig("nan_decode_mismatch", nan_mismatch), fig("poles_skipped", poles), fig_real("tolerance", tolerance)};
+  o.figures = {fig_real("encoder_max_abs_diff", enc_dev),
+               fig_real("decoder_max_diff", dec_dev),
+               fig("codes_differ.spheremap", code_diff_sph),
+               fig("codes_differ.cryengine3", code_diff_cry),
+               fig("nan_decode_mismatch", nan_mismatch),
+               fig("poles_skipped", poles),
+               fig_real("tolerance", tolerance)};
   if (!first_diff.empty()) o.witnesses.push_back(first_diff);
-  o.note = "algebra: both encoders are n.xy/sqrt(8(1+z)) + 1/2 and all three decoders (4a·sqrt(1−4|a|²), 1−8|a|²) for unit n; "
-           "checked in double to the tolerance (not a proof for float shaders); they differ only at the poles "
-           "(claim normal-encoding.singularities)";
+  o.note =
+      "algebra: both encoders are n.xy/sqrt(8(1+z)) + 1/2 and all three decoders (4a·sqrt(1−4|a|²), 1−8|a|²) for unit "
+      "n; "
+      "checked in double to the tolerance (not a proof for float shaders); they differ only at the poles "
+      "(claim normal-encoding.singularities)";
   return o;
 }
 
@@ -236,11 +262,16 @@ outcome normal_encoding_singularities(const gs::model_options&, const sweep_conf
   for (const auto& m : ne::methods()) {
     bool first = true;  // one witness per method
     for (const auto& n : inputs) {
-      if (m.front_hemisphere && n.z < 0) { ++index; continue; }
+      if (m.front_hemisphere && n.z < 0) {
+        ++index;
+        continue;
+      }
       const ne::code q = m.encode(n, bits8);
       const double a = ne::angle(m.decode(q, bits8), n) * deg;
       if (std::isnan(a) || a > 90) {
-        if (first) lines.push_back(name(m) + ": n = " + vec_text(n) + " => code " + code_text(m, q) + " => " + (std::isnan(a) ? std::string("NaN") : num(a) + "°"));
+        if (first)
+          lines.push_back(name(m) + ": n = " + vec_text(n) + " => code " + code_text(m, q) + " => " +
+                          (std::isnan(a) ? std::string("NaN") : num(a) + "°"));
         first = false;
         t.add(index);
       }
@@ -251,10 +282,14 @@ outcome normal_encoding_singularities(const gs::model_options&, const sweep_conf
   o.domain_size = index;
   o.counterexamples = t.count;
   o.witnesses = lines;
-  const ne::vec3 zero_oct = ne::method_of(ne::method_id::octahedral).decode(ne::method_of(ne::method_id::octahedral).encode({0, 0, 0}, bits8), bits8);
+  const ne::vec3 zero_oct = ne::method_of(ne::method_id::octahedral)
+                                .decode(ne::method_of(ne::method_id::octahedral).encode({0, 0, 0}, bits8), bits8);
   o.figures = {fig("octahedral.zero_input_decodes_finite", ne::finite(zero_oct) ? 1 : 0)};
-  o.note = "NaN or > 90° on an axis or diagonal: #1 (0,0,−1) decodes to +z; #1/#2/#8 (±1,0,0), (0,±1,0) hit codes outside the unit disc "
-           "(sqrt < 0); sphere map/Lambert 0/0 at (0,0,−1); CryEngine 3 normalize(0) at both poles (and stereographic 0/0 at (0,0,−1), stored as code (0, 0): 43° off, not counted)";
+  o.note =
+      "NaN or > 90° on an axis or diagonal: #1 (0,0,−1) decodes to +z; #1/#2/#8 (±1,0,0), (0,±1,0) hit codes outside "
+      "the unit disc "
+      "(sqrt < 0); sphere map/Lambert 0/0 at (0,0,−1); CryEngine 3 normalize(0) at both poles (and stereographic 0/0 "
+      "at (0,0,−1), stored as code (0, 0): 43° off, not counted)";
   return o;
 }
 
@@ -267,7 +302,10 @@ outcome normal_encoding_xy_wrong_sign(const gs::model_options&, const sweep_conf
   for (std::uint64_t k = 0; k < uniform_points; ++k) {
     const ne::vec3 n = ne::fibonacci_point(k, uniform_points);
     const ne::vec3 d = m.decode(m.encode(n, bits8), bits8);
-    if (!ne::finite(d)) { ++nan; continue; }
+    if (!ne::finite(d)) {
+      ++nan;
+      continue;
+    }
     if ((n.z < 0) != (d.z < 0) && n.z != 0 && d.z != 0) ++wrong;
     if (ne::angle(d, n) * deg > 10) ++far;
   }
@@ -275,9 +313,16 @@ outcome normal_encoding_xy_wrong_sign(const gs::model_options&, const sweep_conf
   o.result = verdict::bound;
   o.domain_size = uniform_points;
   const double nn = static_cast<double>(uniform_points);
-  o.figures = {fig("wrong_z_sign", wrong), fig("nan", nan), fig("over_10_deg", far), fig_real("share_wrong_z_sign", wrong / nn),
-               fig_real("share_nan", nan / nn), fig_real("share_over_10_deg", far / nn), fig_real("share_exact_area_z_below_0", 0.5)};
-  o.note = "the wrong-sign share is the z < 0 half of the sphere (exactly 1/2 by area); a sliver near the equator decodes NaN instead";
+  o.figures = {fig("wrong_z_sign", wrong),
+               fig("nan", nan),
+               fig("over_10_deg", far),
+               fig_real("share_wrong_z_sign", wrong / nn),
+               fig_real("share_nan", nan / nn),
+               fig_real("share_over_10_deg", far / nn),
+               fig_real("share_exact_area_z_below_0", 0.5)};
+  o.note =
+      "the wrong-sign share is the z < 0 half of the sphere (exactly 1/2 by area); a sliver near the equator decodes "
+      "NaN instead";
   return o;
 }
 
@@ -300,25 +345,37 @@ outcome normal_encoding_2009_vs_2010(const gs::model_options&, const sweep_confi
         const ne::vec3 in = ls[li] * n;
         const double a09 = ne::angle(m.decode(m.encode(in, bits8), bits8), n) * deg;
         const double a10 = ne::angle(m.decode(ne::encode_2010(m, in, bits8), bits8), n) * deg;
-        if (!std::isnan(a09)) { s09 += a09; ++c09; }
-        if (!std::isnan(a10)) { s10 += a10; ++c10; }
+        if (!std::isnan(a09)) {
+          s09 += a09;
+          ++c09;
+        }
+        if (!std::isnan(a10)) {
+          s10 += a10;
+          ++c10;
+        }
       }
       o.figures.push_back(fig_real(name(m) + "." + tag[li] + ".mean_deg_2009", s09 / static_cast<double>(c09)));
       o.figures.push_back(fig_real(name(m) + "." + tag[li] + ".mean_deg_2010", s10 / static_cast<double>(c10)));
     }
   }
   o.domain_size = uniform_points / 4 * 2;
-  o.note = "octahedral (n/(|x|+|y|+|z|)) and the direction-only encoders (spherical's atan2, CryEngine 3's normalize(xy)) "
-           "are partly or fully scale-invariant; the others shrink toward the centre or misplace z";
+  o.note =
+      "octahedral (n/(|x|+|y|+|z|)) and the direction-only encoders (spherical's atan2, CryEngine 3's normalize(xy)) "
+      "are partly or fully scale-invariant; the others shrink toward the centre or misplace z";
   return o;
 }
 
 outcome normal_encoding_ranking(const gs::model_options&, const sweep_config& cfg) {
   // The methods ranked by worst case over the sphere at 2×8 (NaN-reaching counted as worst) and by
   // the published PSNR (2009 table; 2010 table), on the methods both tables have.
-  struct row { ne::method_id id; double psnr09, psnr10; };
-  const row rows[] = {{ne::method_id::xy, 15.054, 18.692}, {ne::method_id::spherical, 40.244, 42.042},
-                      {ne::method_id::spheremap, 44.781, 48.071}, {ne::method_id::stereographic, 44.207, 44.147}};
+  struct row {
+    ne::method_id id;
+    double psnr09, psnr10;
+  };
+  const row rows[] = {{ne::method_id::xy, 15.054, 18.692},
+                      {ne::method_id::spherical, 40.244, 42.042},
+                      {ne::method_id::spheremap, 44.781, 48.071},
+                      {ne::method_id::stereographic, 44.207, 44.147}};
   outcome o;
   o.result = verdict::bound;
   std::vector<std::pair<double, std::string>> by_worst, by09, by10;
@@ -341,8 +398,9 @@ outcome normal_encoding_ranking(const gs::model_options&, const sweep_config& cf
   o.witnesses = {"best first by worst case (NaN-reaching last): " + order(by_worst), "by PSNR 2009: " + order(by09),
                  "by PSNR 2010: " + order(by10)};
   o.domain_size = std::size(rows);
-  o.note = "the PSNR tables rank the sphere map first; over the whole sphere it reaches NaN near (0,0,−1) and "
-           "11.5° beside it, and spherical's worst case is the smallest of the four";
+  o.note =
+      "the PSNR tables rank the sphere map first; over the whole sphere it reaches NaN near (0,0,−1) and "
+      "11.5° beside it, and spherical's worst case is the smallest of the four";
   return o;
 }
 

@@ -32,12 +32,17 @@ outcome appendix2_packing(const gs::model_options&, const sweep_config&) {
     if (!p.assert_le || !p.assert_gt || p.B_neg != 0) bad.add(i);
   }
   auto out = verdict_of(bad, normals.size(), [&](auto i) { return describe_normal(normals[i]); });
-  out.figures = {fig("normals", static_cast<std::int64_t>(normals.size())), fig("alpha_min", alpha.min),
-                 fig("alpha_max", alpha.max), fig("iz_min", iz.min), fig("iz_max", iz.max),
-                 fig("b_neg_nonzero", b_neg), fig("alpha_clamp_changes", clamp_changes),
+  out.figures = {fig("normals", static_cast<std::int64_t>(normals.size())),
+                 fig("alpha_min", alpha.min),
+                 fig("alpha_max", alpha.max),
+                 fig("iz_min", iz.min),
+                 fig("iz_max", iz.max),
+                 fig("b_neg_nonzero", b_neg),
+                 fig("alpha_clamp_changes", clamp_changes),
                  fig("iX_gt_255_branch", typo_branch)};
-  out.note = "both asserts hold and B_neg = 0 for every reachable (iX, iY); alpha stays in " + std::to_string(alpha.min) +
-             ".." + std::to_string(alpha.max) + ", so the clamp never bites — its `iX > 255` test (meant: alpha > 255) "
+  out.note = "both asserts hold and B_neg = 0 for every reachable (iX, iY); alpha stays in " +
+             std::to_string(alpha.min) + ".." + std::to_string(alpha.max) +
+             ", so the clamp never bites — its `iX > 255` test (meant: alpha > 255) "
              "can never fire either, iX <= 128";
   return out;
 }
@@ -82,16 +87,25 @@ outcome two_pass_na_rounding(const gs::model_options& o, const sweep_config&) {
   outcome out;
   out.result = verdict::bound;
   out.domain_size = normals.size() + filter_index;
-  out.figures = {fig("na_min", na.min), fig("na_max", na.max), fig("na_prime_min", prime.min),
-                 fig("na_prime_max", prime.max), fig("error_min", err.min), fig("error_max", err.max),
-                 fig("na_over_255", over_255), fig("filter_cases", static_cast<std::int64_t>(filter_index)),
-                 fig("unscaled_filter_wrong", unscaled_wrong), fig("scaled_filter_err_min", scaled_err.min),
+  out.figures = {fig("na_min", na.min),
+                 fig("na_max", na.max),
+                 fig("na_prime_min", prime.min),
+                 fig("na_prime_max", prime.max),
+                 fig("error_min", err.min),
+                 fig("error_max", err.max),
+                 fig("na_over_255", over_255),
+                 fig("filter_cases", static_cast<std::int64_t>(filter_index)),
+                 fig("unscaled_filter_wrong", unscaled_wrong),
+                 fig("scaled_filter_err_min", scaled_err.min),
                  fig("scaled_filter_err_max", scaled_err.max)};
-  out.witnesses = {"na_max at " + describe_normal(normals[na.arg_max]), "na_min at " + describe_normal(normals[na.arg_min]),
-                   "error_min at " + describe_normal(normals[err.arg_min]),
-                   "error_max at " + describe_normal(normals[err.arg_max])};
-  out.note = "n_a exceeds 255 for " + std::to_string(over_255) + " normals, as the paper says, and filtering n_a mod 256 "
-             "goes wrong in " + std::to_string(unscaled_wrong) + " of the filter cases; n'_a fits a byte, 3·n'_a − n_a is "
+  out.witnesses = {
+      "na_max at " + describe_normal(normals[na.arg_max]), "na_min at " + describe_normal(normals[na.arg_min]),
+      "error_min at " + describe_normal(normals[err.arg_min]), "error_max at " + describe_normal(normals[err.arg_max])};
+  out.note = "n_a exceeds 255 for " + std::to_string(over_255) +
+             " normals, as the paper says, and filtering n_a mod 256 "
+             "goes wrong in " +
+             std::to_string(unscaled_wrong) +
+             " of the filter cases; n'_a fits a byte, 3·n'_a − n_a is "
              "the rounding the two-pass method accepts, and filtered n'_a stays within the scaled_filter_err range";
   return out;
 }
@@ -144,8 +158,9 @@ outcome appendix1_sphere_map(const gs::model_options&, const sweep_config&) {
   figures.push_back(fig_real("worst_angle_deg", worst));
   out.figures = std::move(figures);
   out.witnesses.push_back("worst angle at " + worst_at);
-  out.note = "every texel's r, g, b is in 0..255 at every size; the worst angle is between 128 − (r, g, b) and the "
-             "texel centre's exact direction";
+  out.note =
+      "every texel's r, g, b is in 0..255 at every size; the worst angle is between 128 − (r, g, b) and the "
+      "texel centre's exact direction";
   return out;
 }
 

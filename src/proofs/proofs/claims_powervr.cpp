@@ -27,9 +27,7 @@ std::string num(double v, int digits = 6) {
   std::snprintf(b, sizeof b, "%.*g", digits, v);
   return b;
 }
-std::string texel_text(pvr::bump_texel t) {
-  return "S = " + hexdec(t.S) + ", R = " + hexdec(t.R);
-}
+std::string texel_text(pvr::bump_texel t) { return "S = " + hexdec(t.S) + ", R = " + hexdec(t.R); }
 std::string offset_text(pvr::offset_colour k) {
   return "K1 = " + hexdec(k.K1) + ", K2 = " + hexdec(k.K2) + ", K3 = " + hexdec(k.K3) + ", Q = " + hexdec(k.Q);
 }
@@ -80,8 +78,9 @@ outcome powervr_identity(const gs::model_options&, const sweep_config& cfg) {
   });
   outcome out = verdict_of(acc.bad, 65536 * per_texel, [&](std::uint64_t i) { return "case " + std::to_string(i); });
   out.figures = {fig_real("max_abs_difference", acc.worst), fig_real("tolerance", tolerance)};
-  out.note = "K1 = 1 − S_l, K2 = S_l sin T, K3 = S_l cos T give (1 − S_l) + S_l·N·L: cos S cos T cos(R − Q) + sin S sin T is "
-             "the dot product of the two polar unit vectors (cos(a − b) = cos a cos b + sin a sin b); checked in double";
+  out.note =
+      "K1 = 1 − S_l, K2 = S_l sin T, K3 = S_l cos T give (1 − S_l) + S_l·N·L: cos S cos T cos(R − Q) + sin S sin T is "
+      "the dot product of the two polar unit vectors (cos(a − b) = cos a cos b + sin a sin b); checked in double";
   return out;
 }
 
@@ -100,12 +99,14 @@ outcome powervr_identity_8bit(const gs::model_options&, const sweep_config& cfg)
     out.figures.push_back(fig_real(n + ".mean", st.mean()));
     out.figures.push_back(fig_real(n + ".rmse", st.rmse()));
     const auto c = ps::identity_case_at(g, pvr::azimuth_scale::flycast_255, st.arg_max);
-    out.witnesses.push_back(n + " max at " + texel_text(c.texel) + ", " + offset_text(c.k) + " (T = " + num(c.T / deg) + "°) => " +
-                            std::to_string(pvr::intensity(c.texel, c.k, pvr::azimuth_scale::flycast_255, p)) + ", exact " +
-                            num(c.expected));
+    out.witnesses.push_back(n + " max at " + texel_text(c.texel) + ", " + offset_text(c.k) + " (T = " + num(c.T / deg) +
+                            "°) => " +
+                            std::to_string(pvr::intensity(c.texel, c.k, pvr::azimuth_scale::flycast_255, p)) +
+                            ", exact " + num(c.expected));
   }
-  out.note = "the 8-bit output against 255·clamp(N·L, 0, 1) (S_l = 1, K rounded to nearest, azimuths /255): K quantisation, "
-             "table rounding and output rounding together, per precision option (1/255 units)";
+  out.note =
+      "the 8-bit output against 255·clamp(N·L, 0, 1) (S_l = 1, K rounded to nearest, azimuths /255): K quantisation, "
+      "table rounding and output rounding together, per precision option (1/255 units)";
   return out;
 }
 
@@ -126,7 +127,8 @@ outcome powervr_q_quadrant(const gs::model_options&, const sweep_config&) {
     if (e > 1e-9) wrong.add(static_cast<std::uint64_t>(i));
     if (e2 > 1e-9) ++wrong_atan2;
     if (i % 100 == 50) {  // every 10°: the 8-bit output over every texel
-      const auto kp = pvr::offset_nearest(printed, pvr::azimuth_scale::flycast_255), ka = pvr::offset_nearest(fixed, pvr::azimuth_scale::flycast_255);
+      const auto kp = pvr::offset_nearest(printed, pvr::azimuth_scale::flycast_255),
+                 ka = pvr::offset_nearest(fixed, pvr::azimuth_scale::flycast_255);
       for (int t = 0; t < 65536; ++t) {
         const auto tx = pvr::bump_texel::unpack(static_cast<std::uint16_t>(t));
         max_intensity = std::max(max_intensity, 255.0 * std::abs(fly.value(tx, kp) - fly.value(tx, ka)));
@@ -136,15 +138,18 @@ outcome powervr_q_quadrant(const gs::model_options&, const sweep_config&) {
   auto out = verdict_of(wrong, n, [&](std::uint64_t i) {
     const double phi = (static_cast<double>(i) + 0.5) * 0.1 * deg;
     const glm::dvec3 P{std::cos(T) * std::cos(phi), std::cos(T) * std::sin(phi), std::sin(T)};
-    return "azimuth " + num(phi / deg) + "° (Px = " + num(P.x) + ", Pz = " + num(P.y) + ") => Q = " + num(pvr::seed_printed(P, 1).Q / deg) +
-           "°, expected " + num(phi / deg) + "°";
+    return "azimuth " + num(phi / deg) + "° (Px = " + num(P.x) + ", Pz = " + num(P.y) +
+           ") => Q = " + num(pvr::seed_printed(P, 1).Q / deg) + "°, expected " + num(phi / deg) + "°";
   });
-  out.figures = {fig("wrong_azimuths", static_cast<std::int64_t>(wrong.count)), fig_real("max_azimuth_error_deg", max_err / deg),
+  out.figures = {fig("wrong_azimuths", static_cast<std::int64_t>(wrong.count)),
+                 fig_real("max_azimuth_error_deg", max_err / deg),
                  fig("atan2.wrong_azimuths", static_cast<std::int64_t>(wrong_atan2)),
                  fig_real("atan2.max_azimuth_error_deg", max_err_atan2 / deg),
                  fig_real("float.max_output_difference", max_intensity)};
-  out.note = "arctan(Pz/Px) returns (−90°, 90°): every light with Px < 0 (azimuth in (90°, 270°)) is turned by 180°, so its "
-             "bump shading is inverted (max output difference over every texel, T = 30°, lights every 10°); atan2 is right everywhere";
+  out.note =
+      "arctan(Pz/Px) returns (−90°, 90°): every light with Px < 0 (azimuth in (90°, 270°)) is turned by 180°, so its "
+      "bump shading is inverted (max output difference over every texel, T = 30°, lights every 10°); atan2 is right "
+      "everywhere";
   return out;
 }
 
@@ -171,7 +176,8 @@ outcome powervr_azimuth_scale(const gs::model_options&, const sweep_config& cfg)
     for (std::uint64_t Q = b; Q < e; ++Q)
       for (int R = 0; R < 256; ++R) {
         const double r = R * 2.0 * pi / 255.0;
-        const double d = std::abs(std::cos(r - static_cast<double>(Q) * 2.0 * pi / 255.0) - std::cos(r - static_cast<double>(Q) * 2.0 * pi / 256.0));
+        const double d = std::abs(std::cos(r - static_cast<double>(Q) * 2.0 * pi / 255.0) -
+                                  std::cos(r - static_cast<double>(Q) * 2.0 * pi / 256.0));
         for (int S = 0; S < 256; ++S) {
           const double v = 255.0 * cos_s[static_cast<std::size_t>(S)] * d;
           if (v > a.max) a.max = v, a.arg = (Q << 16) | static_cast<std::uint64_t>(S << 8 | R);
@@ -186,10 +192,13 @@ outcome powervr_azimuth_scale(const gs::model_options&, const sweep_config& cfg)
                  fig_real("offset_q.closed_form", 255.0 * 2.0 * std::sin(pi / 256.0))};
   out.witnesses = {"pvrtex: R = " + hexdec(tex_arg) + " encoded as " + num(tex_arg * 360.0 / 255.0) + "°, decoded as " +
                        num(tex_arg * 360.0 / 256.0) + "°",
-                   "offset Q: " + texel_text(pvr::bump_texel::unpack(static_cast<std::uint16_t>(acc.arg & 0xFFFF))) + ", Q = " +
-                       hexdec(static_cast<std::int64_t>(acc.arg >> 16)) + " => " + num(acc.max) + "/255 off"};
-  out.note = "the azimuth error of /255 against /256 grows with the byte, R·360°/(255·256): 1.40625° at 255; in the bump unit "
-             "it moves the shading by up to 255·2·sin(π/256) ≈ 6.26/255 at K3 = 255, S = 0 (exact double sweep of every (S, R, Q))";
+                   "offset Q: " + texel_text(pvr::bump_texel::unpack(static_cast<std::uint16_t>(acc.arg & 0xFFFF))) +
+                       ", Q = " + hexdec(static_cast<std::int64_t>(acc.arg >> 16)) + " => " + num(acc.max) +
+                       "/255 off"};
+  out.note =
+      "the azimuth error of /255 against /256 grows with the byte, R·360°/(255·256): 1.40625° at 255; in the bump unit "
+      "it moves the shading by up to 255·2·sin(π/256) ≈ 6.26/255 at K3 = 255, S = 0 (exact double sweep of every (S, "
+      "R, Q))";
   return out;
 }
 
@@ -208,8 +217,9 @@ outcome powervr_sdk_arctan(const gs::model_options&, const sweep_config&) {
   double max_q = 0, arg_q = 0, max_q_below = 0;
   for (int i = 0; i < 36000; ++i) {
     const double phi = i * 0.01 * deg, T = 30.0 * deg;
-    const auto v = pvr::fxyz_light_dir_to_skk(static_cast<float>(std::cos(T) * std::cos(phi)), static_cast<float>(std::sin(T)),
-                                               static_cast<float>(std::cos(T) * std::sin(phi)));
+    const auto v =
+        pvr::fxyz_light_dir_to_skk(static_cast<float>(std::cos(T) * std::cos(phi)), static_cast<float>(std::sin(T)),
+                                   static_cast<float>(std::cos(T) * std::sin(phi)));
     const double e = std::abs(angle_diff(v.s * 2.0 * pi / 256.0, phi)) / deg;
     if (e > max_q) max_q = e, arg_q = phi / deg;
     if (i < 35860) max_q_below = std::max(max_q_below, e);  // below 358.6°, where 256ths round to 256
@@ -218,14 +228,20 @@ outcome powervr_sdk_arctan(const gs::model_options&, const sweep_config&) {
   outcome out;
   out.result = verdict::bound;
   out.domain_size = steps + 1 + 36000;
-  out.figures = {fig_real("quadratic.max_error_256ths", max_e), fig_real("quadratic.max_error_deg", max_e * 360.0 / 256.0),
-                 fig_real("quadratic.at_s", arg_e), fig_real("quadratic.max_output_error", 255.0 * 2.0 * std::sin(max_rad / 2.0)),
-                 fig_real("routine.max_q_error_deg", max_q), fig_real("routine.at_azimuth_deg", arg_q),
+  out.figures = {fig_real("quadratic.max_error_256ths", max_e),
+                 fig_real("quadratic.max_error_deg", max_e * 360.0 / 256.0),
+                 fig_real("quadratic.at_s", arg_e),
+                 fig_real("quadratic.max_output_error", 255.0 * 2.0 * std::sin(max_rad / 2.0)),
+                 fig_real("routine.max_q_error_deg", max_q),
+                 fig_real("routine.at_azimuth_deg", arg_q),
                  fig_real("routine.max_q_error_deg_below_358.6", max_q_below)};
-  out.witnesses = {"quadratic: s = tan = " + num(arg_e, 8) + " => " + num(pvr::sdk_quadratic_arctan(arg_e), 8) + ", exact " +
-                   num(128.0 / pi * std::atan(arg_e), 8) + " (1/256 turns)"};
-  out.note = "the quadratic arctangent is within the figure shown per octant; in the bump unit (K3 = 255, S = 0) that moves the "
-             "output by up to 255·2·sin(Δ/2); the routine's worst Q error is at the wrap: azimuths above 358.6° round to 256, which the SDK clamps to 255 (358.6°) instead of wrapping to 0";
+  out.witnesses = {"quadratic: s = tan = " + num(arg_e, 8) + " => " + num(pvr::sdk_quadratic_arctan(arg_e), 8) +
+                   ", exact " + num(128.0 / pi * std::atan(arg_e), 8) + " (1/256 turns)"};
+  out.note =
+      "the quadratic arctangent is within the figure shown per octant; in the bump unit (K3 = 255, S = 0) that moves "
+      "the "
+      "output by up to 255·2·sin(Δ/2); the routine's worst Q error is at the wrap: azimuths above 358.6° round to 256, "
+      "which the SDK clamps to 255 (358.6°) instead of wrapping to 0";
   return out;
 }
 
@@ -236,26 +252,30 @@ outcome powervr_pack_bump(const gs::model_options&, const sweep_config&) {
   for (int h10 = 1; h10 <= 10; ++h10)
     for (int td = 0; td <= 90; ++td)
       for (int qd = 0; qd < 360; ++qd, ++i) {
-        const float h = static_cast<float>(h10) / 10.0f, t = static_cast<float>(td * deg), q = static_cast<float>(qd * deg);
+        const float h = static_cast<float>(h10) / 10.0f, t = static_cast<float>(td * deg),
+                    q = static_cast<float>(qd * deg);
         const auto kos = pvr::pvr_pack_bump(h, t, q);
         const auto near = pvr::offset_nearest({h, t, q}, pvr::azimuth_scale::flycast_255);
         dk1.add(kos.K1 - near.K1, i), dk2.add(kos.K2 - near.K2, i), dk3.add(kos.K3 - near.K3, i);
         dq.add(((kos.Q - near.Q) % 255 + 382) % 255 - 127, i);
       }
   auto at = [](std::uint64_t j) {
-    return "h = " + num(static_cast<double>(j / (91 * 360) + 1) / 10.0) + ", t = " + std::to_string(j / 360 % 91) + "°, q = " +
-           std::to_string(j % 360) + "°";
+    return "h = " + num(static_cast<double>(j / (91 * 360) + 1) / 10.0) + ", t = " + std::to_string(j / 360 % 91) +
+           "°, q = " + std::to_string(j % 360) + "°";
   };
   outcome out;
   out.result = verdict::bound;
   out.domain_size = i;
-  out.figures = {fig("K1.min", dk1.min), fig("K1.max", dk1.max), fig("K2.min", dk2.min), fig("K2.max", dk2.max),
-                 fig("K3.min", dk3.min), fig("K3.max", dk3.max), fig("Q.min", dq.min), fig("Q.max", dq.max),
-                 fig_real("Q.max_deficit_deg", -dq.min * 360.0 / 255.0)};
+  out.figures = {
+      fig("K1.min", dk1.min), fig("K1.max", dk1.max), fig("K2.min", dk2.min),
+      fig("K2.max", dk2.max), fig("K3.min", dk3.min), fig("K3.max", dk3.max),
+      fig("Q.min", dq.min),   fig("Q.max", dq.max),   fig_real("Q.max_deficit_deg", -dq.min * 360.0 / 255.0)};
   out.witnesses = {"K2 min at " + at(dk2.arg_min), "K3 min at " + at(dk3.arg_min), "Q min at " + at(dq.arg_min),
                    "K1 max at " + at(dk1.arg_max)};
-  out.note = "pvr_pack_bump truncates every byte: K2, K3 and Q come out up to one step low (Q: 1.41°), and K1 = ~(u8)(h·255) can be "
-             "one step above round(255·(1 − h)) — against rounding to nearest, in bytes";
+  out.note =
+      "pvr_pack_bump truncates every byte: K2, K3 and Q come out up to one step low (Q: 1.41°), and K1 = ~(u8)(h·255) "
+      "can be "
+      "one step above round(255·(1 − h)) — against rounding to nearest, in bytes";
   return out;
 }
 
@@ -284,7 +304,8 @@ outcome powervr_flipped_uv(const gs::model_options&, const sweep_config& cfg) {
     for (int td : {30, 60}) {
       const double phi = pd * deg, T = td * deg;
       const glm::dvec3 L{std::cos(T) * std::cos(phi), std::cos(T) * std::sin(phi), std::sin(T)};
-      lights.push_back({L, pvr::offset_nearest({1.0, T, phi}, a), pvr::offset_nearest(pvr::seed_atan2({-L.x, L.y, L.z}, 1.0), a),
+      lights.push_back({L, pvr::offset_nearest({1.0, T, phi}, a),
+                        pvr::offset_nearest(pvr::seed_atan2({-L.x, L.y, L.z}, 1.0), a),
                         static_cast<std::uint64_t>(pd << 8 | td)});
     }
   const auto acc = sweep<acc_t>(65536, cfg, [&](acc_t& s, std::uint64_t b, std::uint64_t e) {
@@ -292,8 +313,11 @@ outcome powervr_flipped_uv(const gs::model_options&, const sweep_config& cfg) {
       const auto t = pvr::bump_texel::unpack(static_cast<std::uint16_t>(i));
       glm::dvec3 N = pvr::decode_normal(t, a);
       N.x = -N.x;  // the normal in the surface's frame
-      const double sn = std::sin(pvr::elevation_of(t.S)), cs = std::cos(pvr::elevation_of(t.S)), r = pvr::azimuth_of(t.R, a);
-      auto value = [&](pvr::offset_colour k) { return k.K1 + k.K2 * sn + k.K3 * cs * std::cos(r - pvr::azimuth_of(k.Q, a)); };
+      const double sn = std::sin(pvr::elevation_of(t.S)), cs = std::cos(pvr::elevation_of(t.S)),
+                   r = pvr::azimuth_of(t.R, a);
+      auto value = [&](pvr::offset_colour k) {
+        return k.K1 + k.K2 * sn + k.K3 * cs * std::cos(r - pvr::azimuth_of(k.Q, a));
+      };
       for (const auto& l : lights) {
         const double want = 255.0 * (N.x * l.L.x + N.y * l.L.y + N.z * l.L.z);
         const double e_no = std::abs(value(l.nofix) - want), e_fix = std::abs(value(l.fix) - want);
@@ -308,13 +332,17 @@ outcome powervr_flipped_uv(const gs::model_options&, const sweep_config& cfg) {
   outcome out;
   out.result = acc.fix <= bound && acc.nofix > bound ? verdict::proven : verdict::refuted;
   out.domain_size = 65536ull * 36 * 2;
-  out.figures = {fig_real("nofix.max_error", acc.nofix), fig_real("fix.max_error", acc.fix), fig_real("quantisation_bound", bound)};
+  out.figures = {fig_real("nofix.max_error", acc.nofix), fig_real("fix.max_error", acc.fix),
+                 fig_real("quantisation_bound", bound)};
   const auto wt = pvr::bump_texel::unpack(static_cast<std::uint16_t>(acc.arg >> 16));
-  out.witnesses = {"no fix: " + texel_text(wt) + ", light azimuth " + std::to_string(acc.arg >> 8 & 0xFF) + "°, elevation " +
-                   std::to_string(acc.arg & 0xFF) + "° => " + num(acc.nofix) + "/255 off"};
-  out.note = "mirrored UVs mirror the texel azimuth (r → π − r): without the fix the light comes from the mirrored side (error up to "
-             "the nofix figure); mirroring one local axis before computing Q leaves only the 8-bit quantisation (proven within "
-             "the bound). The shared mesh's triangles: tests/schemes/powervr (mesh_test)";
+  out.witnesses = {"no fix: " + texel_text(wt) + ", light azimuth " + std::to_string(acc.arg >> 8 & 0xFF) +
+                   "°, elevation " + std::to_string(acc.arg & 0xFF) + "° => " + num(acc.nofix) + "/255 off"};
+  out.note =
+      "mirrored UVs mirror the texel azimuth (r → π − r): without the fix the light comes from the mirrored side "
+      "(error up to "
+      "the nofix figure); mirroring one local axis before computing Q leaves only the 8-bit quantisation (proven "
+      "within "
+      "the bound). The shared mesh's triangles: tests/schemes/powervr (mesh_test)";
   return out;
 }
 

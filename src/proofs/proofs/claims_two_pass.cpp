@@ -69,13 +69,17 @@ outcome two_pass_error_bound(const gs::model_options& o, const sweep_config& cfg
   outcome out;
   out.result = verdict::bound;
   out.domain_size = size;
-  out.figures = {fig("s", paper_s), fig("lights", static_cast<std::int64_t>(nl)),
-                 fig("normals", static_cast<std::int64_t>(normals.size())), fig("err_min", err.min),
-                 fig("err_max", err.max), fig("full_scan", r.full_scan ? 1 : 0)};
+  out.figures = {fig("s", paper_s),
+                 fig("lights", static_cast<std::int64_t>(nl)),
+                 fig("normals", static_cast<std::int64_t>(normals.size())),
+                 fig("err_min", err.min),
+                 fig("err_max", err.max),
+                 fig("full_scan", r.full_scan ? 1 : 0)};
   out.witnesses = {"err_min: " + describe_pair(normals[err.arg_min / nl], g.lights[err.arg_min % nl], o),
                    "err_max: " + describe_pair(normals[err.arg_max / nl], g.lights[err.arg_max % nl], o)};
-  out.note = "per-pixel result − floor(n·l/128) over normals × packed lights (s = 122): the floors of the "
-             "split products and the n'_a rounding add up to ±3";
+  out.note =
+      "per-pixel result − floor(n·l/128) over normals × packed lights (s = 122): the floors of the "
+      "split products and the n'_a rounding add up to ±3";
   return for_domain(std::move(out), cfg);
 }
 
@@ -157,11 +161,12 @@ std::string describe_certificate(const triangle_case& c, const gs::model_options
     v += b;
   }
   char buf[200];
-  std::snprintf(buf, sizeof buf, "; pixel (%d, %d) => light 8.7 (0x%04x, 0x%04x, 0x%04x), value %d, DPB dot ", c.px, c.py,
-                light.r.value(), light.g.value(), light.b.value(), r.value);
+  std::snprintf(buf, sizeof buf, "; pixel (%d, %d) => light 8.7 (0x%04x, 0x%04x, 0x%04x), value %d, DPB dot ", c.px,
+                c.py, light.r.value(), light.g.value(), light.b.value(), r.value);
   return "s = " + std::to_string(c.s) + ": n = (" + std::to_string(p.iX) + ", " + std::to_string(p.iY) + ", " +
-         std::to_string(p.iZ) + ") alpha " + hexdec(p.alpha) + "; vertices 12.4 " + v + " with " + describe_light(c.light[0]) +
-         ", " + describe_light(c.light[1]) + ", " + describe_light(c.light[2]) + buf + hexdec(r.dot);
+         std::to_string(p.iZ) + ") alpha " + hexdec(p.alpha) + "; vertices 12.4 " + v + " with " +
+         describe_light(c.light[0]) + ", " + describe_light(c.light[1]) + ", " + describe_light(c.light[2]) + buf +
+         hexdec(r.dot);
 }
 
 // --brute-force (two_pass::triangle::brute_force, proofs/triangle_brute_force.hpp): the bound's
@@ -182,10 +187,11 @@ outcome interpolated_brute_force(const gs::model_options&, const sweep_config& c
     auto c = tt::brute_force_case(at >> tt::pixel_index_bits);
     c.px = static_cast<int>(at & 2047), c.py = static_cast<int>(at >> 11 & 2047);
     const std::string failures = tt::failures_at(c, tt::window_pixels);
-    return what + ": case " + std::to_string(at >> tt::pixel_index_bits) + ", vertices 12.4 (" + hexdec(c.xy16[0], 16) + ", " +
-           hexdec(c.xy16[1], 16) + "), (" + hexdec(c.xy16[2], 16) + ", " + hexdec(c.xy16[3], 16) + "), (" + hexdec(c.xy16[4], 16) + ", " +
-           hexdec(c.xy16[5], 16) + ") with " + describe_light(c.light[0]) + ", " + describe_light(c.light[1]) + ", " +
-           describe_light(c.light[2]) + ", pixel (" + std::to_string(c.px) + ", " + std::to_string(c.py) + ") => " + failures;
+    return what + ": case " + std::to_string(at >> tt::pixel_index_bits) + ", vertices 12.4 (" + hexdec(c.xy16[0], 16) +
+           ", " + hexdec(c.xy16[1], 16) + "), (" + hexdec(c.xy16[2], 16) + ", " + hexdec(c.xy16[3], 16) + "), (" +
+           hexdec(c.xy16[4], 16) + ", " + hexdec(c.xy16[5], 16) + ") with " + describe_light(c.light[0]) + ", " +
+           describe_light(c.light[1]) + ", " + describe_light(c.light[2]) + ", pixel (" + std::to_string(c.px) + ", " +
+           std::to_string(c.py) + ") => " + failures;
   };
   for (std::size_t k = 0; k < tt::statement_count; ++k) {
     const auto& acc = r.statement[k];
@@ -200,9 +206,11 @@ outcome interpolated_brute_force(const gs::model_options&, const sweep_config& c
   out.figures.push_back(fig("w_outside_triangle", static_cast<std::int64_t>(r.w_outside.count)));
   for (auto at : r.w_outside.first) out.witnesses.push_back(describe(at, "w outside the closed triangle"));
   out.result = out.counterexamples == 0 ? verdict::proven : verdict::refuted;
-  out.note = "brute force of the bound's per-channel statements under gouraud_setup=plane_steps (A) sigma*L_c(p) < sigma*P_c(p) + W, (B) < sigma*P_c(p) + 1 + a + b, "
-             "(C) < sigma*P_c(w) + W, and w in the closed triangle, for both wrap sides, against the exact rational plane, on "
-             "lattice triangles of the full window x 4 lights of L_122 (every pixel centre in each closed triangle)";
+  out.note =
+      "brute force of the bound's per-channel statements under gouraud_setup=plane_steps (A) sigma*L_c(p) < "
+      "sigma*P_c(p) + W, (B) < sigma*P_c(p) + 1 + a + b, "
+      "(C) < sigma*P_c(w) + W, and w in the closed triangle, for both wrap sides, against the exact rational plane, on "
+      "lattice triangles of the full window x 4 lights of L_122 (every pixel centre in each closed triangle)";
   return out;
 }
 
@@ -266,7 +274,8 @@ outcome interpolated_under(const gs::model_options& o, const sweep_config& cfg) 
       if (dist2(k) < dist2(near)) near = k;
     const auto light = two_pass::triangle::pixel_light(c, o.setup);
     const int Lc[3] = {light.r.value(), light.g.value(), light.b.value()};
-    for (std::size_t ch = 0; ch < 3; ++ch) lowest_lag = std::max(lowest_lag, std::abs(Lc[ch] / 128.0 - 128 - c.light[near][ch]));
+    for (std::size_t ch = 0; ch < 3; ++ch)
+      lowest_lag = std::max(lowest_lag, std::abs(Lc[ch] / 128.0 - 128 - c.light[near][ch]));
   }
   char lag_text[16];
   std::snprintf(lag_text, sizeof lag_text, "%.1f", lowest_lag);
@@ -299,69 +308,95 @@ outcome interpolated_under(const gs::model_options& o, const sweep_config& cfg) 
   if (!next_bracketed) next = {};
   outcome out;
   out.result = paper_wraps ? verdict::refuted : verdict::bound;
-  out.domain_size = normals.size() * static_cast<std::uint64_t>(proven_safe + 1) + two_pass::triangle::certificates().size();
+  out.domain_size =
+      normals.size() * static_cast<std::uint64_t>(proven_safe + 1) + two_pass::triangle::certificates().size();
   out.counterexamples = wrapping.count;
-  out.figures = {fig("s_max", proven_safe), fig("s_max_upper", first_wrap - 1), fig("first_wrapping_s", first_wrap),
-                 fig("paper_s", paper_s), fig("window_pixels", two_pass::triangle::window_pixels),
+  out.figures = {fig("s_max", proven_safe),
+                 fig("s_max_upper", first_wrap - 1),
+                 fig("first_wrapping_s", first_wrap),
+                 fig("paper_s", paper_s),
+                 fig("window_pixels", two_pass::triangle::window_pixels),
                  fig("certificates_not_wrapping", static_cast<std::int64_t>(failed.count)),
-                 fig("normals", static_cast<std::int64_t>(normals.size())), fig("bound_limit_s", limit),
-                 fig("bound_s_max", bound_safe), fig("relaxation_certified_s", certified),
-                 fig("s_max_upper_classes", next.classes), fig("s_max_upper_classes_uncertified", next.uncertified),
+                 fig("normals", static_cast<std::int64_t>(normals.size())),
+                 fig("bound_limit_s", limit),
+                 fig("bound_s_max", bound_safe),
+                 fig("relaxation_certified_s", certified),
+                 fig("s_max_upper_classes", next.classes),
+                 fig("s_max_upper_classes_uncertified", next.uncertified),
                  fig("s_max_upper_normals", next.normals)};
   out.witnesses = std::move(witnesses);
-  const std::string settled = first_wrap > proven_safe + 1 ? "s = " + s_ranges({proven_safe + 1, first_wrap - 1}) + " is bracketed, not settled"
-                                                           : std::string("the bound meets the lowest certificate");
+  const std::string settled = first_wrap > proven_safe + 1
+                                  ? "s = " + s_ranges({proven_safe + 1, first_wrap - 1}) + " is bracketed, not settled"
+                                  : std::string("the bound meets the lowest certificate");
   if (per_pixel) {
     const std::string setup(gs::option_value(o, "gouraud_setup"));
     const std::string w = std::to_string(two_pass::triangle::lag_window(o));
     const std::string how =
-        o.setup == gs::gouraud_setup::per_pixel
-            ? "the exact plane at every pixel, truncated to whole 8.7 units: a pixel's light is within one unit per channel"
+        o.setup == gs::gouraud_setup::per_pixel ? "the exact plane at every pixel, truncated to whole 8.7 units: a "
+                                                  "pixel's light is within one unit per channel"
         : o.setup == gs::gouraud_setup::per_pixel_level
             ? "the exact plane plus 1/256 level floored to a whole level: within 128 units per channel"
-            : "each row from the plane at its first pixel, truncated 16-bit lane offsets and vector steps: within " + w +
-                  " units per channel where no step saturates; where one does (a steep row's second vector) each channel "
+            : "each row from the plane at its first pixel, truncated 16-bit lane offsets and vector steps: within " +
+                  w +
+                  " units per channel where no step saturates; where one does (a steep row's second vector) each "
+                  "channel "
                   "takes a value between the row's first pixel's and its own, so the light is only in the cube of the "
                   "vertex lights' ball";
-    out.note = "under gouraud_setup=" + setup + " (" + how + ") of a convex combination of the vertex lights; the bound "
-               "(two_pass_triangle's lag_window = " + w + ") proves no s <= " + std::to_string(proven_safe) +
-               " wraps; wraps are certified at s = " + s_ranges(wrapping_s) + " (the lowest, s = " + std::to_string(first_wrap) +
-               "); " + settled + ". The paper's s = " + std::to_string(paper_s) +
-               (paper_wraps ? " wraps" : proven_safe >= paper_s ? " is safe" : " is not settled") + " under this set-up";
+    out.note = "under gouraud_setup=" + setup + " (" + how +
+               ") of a convex combination of the vertex lights; the bound "
+               "(two_pass_triangle's lag_window = " +
+               w + ") proves no s <= " + std::to_string(proven_safe) +
+               " wraps; wraps are certified at s = " + s_ranges(wrapping_s) +
+               " (the lowest, s = " + std::to_string(first_wrap) + "); " + settled +
+               ". The paper's s = " + std::to_string(paper_s) +
+               (paper_wraps              ? " wraps"
+                : proven_safe >= paper_s ? " is safe"
+                                         : " is not settled") +
+               " under this set-up";
     return for_domain(std::move(out), cfg);
   }
   const std::string certified_text =
       certified > bound_safe
           ? "; for the classes it leaves open (|n| sorted, wrap side) up to s = " + std::to_string(certified) +
-                " the continuous relaxation of its per-channel statements (real vertices, real lights in the ball) is certified "
-                "below the wrap threshold: a dual with the alignment signs as constraints over rectangles of the five geometry "
-                "families, checked in exact integers (proofs/triangle_certify.hpp; run by ctest proofs_certify_survey, not by "
+                " the continuous relaxation of its per-channel statements (real vertices, real lights in the ball) is "
+                "certified "
+                "below the wrap threshold: a dual with the alignment signs as constraints over rectangles of the five "
+                "geometry "
+                "families, checked in exact integers (proofs/triangle_certify.hpp; run by ctest proofs_certify_survey, "
+                "not by "
                 "prove: ~40 s under keep_fraction, ~60 s under truncate_to_8)"
           : std::string();
-  out.note = "on whole triangles the paper's s = " + std::to_string(paper_s) +
-             (paper_wraps ? " wraps" : " is not shown to wrap") + ": a pixel ~2030 pixels from the plane's reference pixel "
-             "misses the truncated fraction of each 8.7 step, up to 16 levels per channel and axis, and that pushes its light "
-             "out of the vertex sphere along the normal. Wraps are certified at s = " + s_ranges(wrapping_s) +
-             " (certificates, each a refutation at its s; the lowest s = " + std::to_string(first_wrap) + "). No s <= " +
-             std::to_string(proven_safe) + " wraps: the error bound (one axis's lag, 16 levels, per channel; two axes' only on "
-             "channels whose plane falls along both axes, and not on all channels at once, and then weighed against a second "
-             "point of the vertex lights' ball that the falling plane passes) proves s <= " + std::to_string(bound_safe) +
-             " for every normal" + certified_text + ". " + settled +
-             (next_bracketed ? " (at s = " + std::to_string(next.s) + " the relaxation certifies all but " + std::to_string(next.uncertified) +
-                                   " of the " + std::to_string(next.classes) + " classes the bound leaves open, ctest proofs_certify_next_s: "
-                                   "a wrap there needs one of their " + std::to_string(next.normals) + " normals, of the " +
-                                   std::to_string(normals.size()) + ")"
-                             : std::string()) +
-             ": the lowest certificate (s = " + std::to_string(first_wrap) + ") puts its pixel's light " + lag_text +
-             " levels from the light of the vertex next to it" +
-             (lowest_lag > 2047.0 / 128 ? " (more than one axis's 2047/128: its plane lags along both axes)" : " (one axis's lag)") +
-             "; the searches (tools/proofs_triangle two-axis, corner and steep; the local search, steep's planners and "
-             "the free-x search of commit 9f63566's bench/proofs_triangle_*) found no wrap below " +
-             std::to_string(first_wrap) + "." + limit_text +
-             (limit > 0 ? std::string(", so s = ") + std::to_string(limit) + " and above can only be settled with the lattice (integer "
-                                                      "lights, the whole-unit steps' lattice of gradients, 12.4 vertices; the floors' and the "
-                                                      "truncation's integer slack are in the bound already)"
-                        : std::string());
+  out.note =
+      "on whole triangles the paper's s = " + std::to_string(paper_s) +
+      (paper_wraps ? " wraps" : " is not shown to wrap") +
+      ": a pixel ~2030 pixels from the plane's reference pixel "
+      "misses the truncated fraction of each 8.7 step, up to 16 levels per channel and axis, and that pushes its light "
+      "out of the vertex sphere along the normal. Wraps are certified at s = " +
+      s_ranges(wrapping_s) +
+      " (certificates, each a refutation at its s; the lowest s = " + std::to_string(first_wrap) +
+      "). No s <= " + std::to_string(proven_safe) +
+      " wraps: the error bound (one axis's lag, 16 levels, per channel; two axes' only on "
+      "channels whose plane falls along both axes, and not on all channels at once, and then weighed against a second "
+      "point of the vertex lights' ball that the falling plane passes) proves s <= " +
+      std::to_string(bound_safe) + " for every normal" + certified_text + ". " + settled +
+      (next_bracketed ? " (at s = " + std::to_string(next.s) + " the relaxation certifies all but " +
+                            std::to_string(next.uncertified) + " of the " + std::to_string(next.classes) +
+                            " classes the bound leaves open, ctest proofs_certify_next_s: "
+                            "a wrap there needs one of their " +
+                            std::to_string(next.normals) + " normals, of the " + std::to_string(normals.size()) + ")"
+                      : std::string()) +
+      ": the lowest certificate (s = " + std::to_string(first_wrap) + ") puts its pixel's light " + lag_text +
+      " levels from the light of the vertex next to it" +
+      (lowest_lag > 2047.0 / 128 ? " (more than one axis's 2047/128: its plane lags along both axes)"
+                                 : " (one axis's lag)") +
+      "; the searches (tools/proofs_triangle two-axis, corner and steep; the local search, steep's planners and "
+      "the free-x search of commit 9f63566's bench/proofs_triangle_*) found no wrap below " +
+      std::to_string(first_wrap) + "." + limit_text +
+      (limit > 0 ? std::string(", so s = ") + std::to_string(limit) +
+                       " and above can only be settled with the lattice (integer "
+                       "lights, the whole-unit steps' lattice of gradients, 12.4 vertices; the floors' and the "
+                       "truncation's integer slack are in the bound already)"
+                 : std::string());
   return for_domain(std::move(out), cfg);
 }
 
@@ -394,8 +429,9 @@ outcome two_pass_max_s_interpolated(const gs::model_options& o, const sweep_conf
   gs::model_options plain = o;
   plain.setup = gs::model_options{}.setup, plain.gouraud = gs::model_options{}.gouraud;
   if (cfg.brute_force || !(plain == gs::model_options{}) || cfg.domain.light != domain_options{}.light) return out;
-  out.table = {"| gouraud_setup (sources) | gouraud_fraction | verdict | s_max (proven) | first wrapping s | paper's s = 122 |",
-               "|---|---|---|---|---|---|"};
+  out.table = {
+      "| gouraud_setup (sources) | gouraud_fraction | verdict | s_max (proven) | first wrapping s | paper's s = 122 |",
+      "|---|---|---|---|---|---|"};
   const char* sources[] = {"0, the model's DDA", "2", "1 (PCSX2 SSE4)", "1 (PCSX2 AVX2)", "1 (parallel-gs)"};
   for (const char* setup : {"per_pixel", "pcsx2_rows_4", "pcsx2_rows_8", "per_pixel_level", "plane_steps"})
     for (const char* fraction : {"keep_fraction", "truncate_to_8"}) {
@@ -405,10 +441,13 @@ outcome two_pass_max_s_interpolated(const gs::model_options& o, const sweep_conf
       const outcome r = interpolated_memo(v, cfg);
       const std::int64_t first = r.integer("first_wrapping_s");
       const bool wraps = r.result == verdict::refuted;
-      out.table.push_back("| `" + std::string(setup) + "` (" + sources[static_cast<int>(v.setup)] + ") | `" + fraction + "` | " +
-                          (wraps ? "refuted" : "bound") + " | " + std::to_string(r.integer("s_max")) + " | " +
+      out.table.push_back("| `" + std::string(setup) + "` (" + sources[static_cast<int>(v.setup)] + ") | `" + fraction +
+                          "` | " + (wraps ? "refuted" : "bound") + " | " + std::to_string(r.integer("s_max")) + " | " +
                           (first > 127 ? std::string("none certified") : std::to_string(first)) + " | " +
-                          (wraps ? "wraps" : r.integer("s_max") >= paper_s ? "safe" : "not settled") + " |");
+                          (wraps                           ? "wraps"
+                           : r.integer("s_max") >= paper_s ? "safe"
+                                                           : "not settled") +
+                          " |");
     }
   return out;
 }

@@ -84,7 +84,9 @@ outcome valve_eq1_not_orthonormal(const gs::model_options&, const sweep_config&)
     }
   o.result = t.count ? verdict::refuted : verdict::proven;
   o.counterexamples = t.count;
-  o.note = "as printed, B0 = B1 and B0·B2 = B1·B2 = 2/3 exactly: eq. (1) is misprinted (Source's bumpvects.h basis is orthonormal)";
+  o.note =
+      "as printed, B0 = B1 and B0·B2 = B1·B2 = 2/3 exactly: eq. (1) is misprinted (Source's bumpvects.h basis is "
+      "orthonormal)";
   return o;
 }
 
@@ -108,7 +110,9 @@ outcome valve_source_basis_orthonormal(const gs::model_options&, const sweep_con
     }
   outcome o = verdict_of(t, 6, [](std::uint64_t i) { return "Gram entry " + std::to_string(i); });
   o.figures = {fig_real("sampled_max_abs_sum_sq_minus_1_double", worst), fig("sample_points", 721 * 1441)};
-  o.note = "B_i·B_j = δ_ij exactly (Q(√2, √3)), so Σ(N·B_i)² = |N|² = 1 for unit N; the sampled deviation is double rounding";
+  o.note =
+      "B_i·B_j = δ_ij exactly (Q(√2, √3)), so Σ(N·B_i)² = |N|² = 1 for unit N; the sampled deviation is double "
+      "rounding";
   return o;
 }
 
@@ -119,9 +123,12 @@ outcome valve_float_literals(const gs::model_options&, const sweep_config& cfg) 
   const auto& F = v::source_basis_float;
   outcome o;
   o.result = verdict::bound;
-  o.figures = {fig("B0.x_ulps", ulps_from_nearest(F[0].x, v::sqrt_2_3)), fig("B1.x_ulps", ulps_from_nearest(-F[1].x, v::inv_sqrt6)),
-               fig("B2.x_ulps", ulps_from_nearest(-F[2].x, v::inv_sqrt6)), fig("B1.y_ulps", ulps_from_nearest(F[1].y, v::inv_sqrt2)),
-               fig("B2.y_ulps", ulps_from_nearest(-F[2].y, v::inv_sqrt2)), fig("z_ulps", ulps_from_nearest(F[0].z, v::inv_sqrt3))};
+  o.figures = {fig("B0.x_ulps", ulps_from_nearest(F[0].x, v::sqrt_2_3)),
+               fig("B1.x_ulps", ulps_from_nearest(-F[1].x, v::inv_sqrt6)),
+               fig("B2.x_ulps", ulps_from_nearest(-F[2].x, v::inv_sqrt6)),
+               fig("B1.y_ulps", ulps_from_nearest(F[1].y, v::inv_sqrt2)),
+               fig("B2.y_ulps", ulps_from_nearest(-F[2].y, v::inv_sqrt2)),
+               fig("z_ulps", ulps_from_nearest(F[0].z, v::inv_sqrt3))};
   const v::basis3 S = v::source_basis;
   double gram = 0, frob = 0;
   for (std::size_t i = 0; i < 3; ++i)
@@ -136,9 +143,11 @@ outcome valve_float_literals(const gs::model_options&, const sweep_config& cfg) 
   o.domain_size = p.domain;
   o.figures.push_back(fig_real("gram_max_abs_deviation", gram));
   o.figures.push_back(fig_real("bound_abs_sum_sq_minus_1", std::sqrt(frob)));
-  o.figures.push_back(fig("normal2ssbump_texels_changed_vs_exact_float_basis", static_cast<std::int64_t>(p.literal_changes)));
-  o.note = "the literals are within a few ulps of the exact values: Σ(N·B_i)² stays within the bound of 1, and the 8-bit "
-           "normal2ssbump output differs on the counted texels from the one with the exactly rounded basis";
+  o.figures.push_back(
+      fig("normal2ssbump_texels_changed_vs_exact_float_basis", static_cast<std::int64_t>(p.literal_changes)));
+  o.note =
+      "the literals are within a few ulps of the exact values: Σ(N·B_i)² stays within the bound of 1, and the 8-bit "
+      "normal2ssbump output differs on the counted texels from the one with the exactly rounded basis";
   return o;
 }
 
@@ -149,13 +158,15 @@ outcome valve_zero_sum(const gs::model_options&, const sweep_config& cfg) {
   o.domain_size = r.domain;
   o.counterexamples = r.exact;
   for (auto w : r.first) o.witnesses.push_back("texel " + rgb_hex(w) + " => Σd = 0, shader 0/0 = NaN");
-  o.figures = {fig("zero_sum_exact", static_cast<std::int64_t>(r.exact)), fig("zero_sum_fp32", static_cast<std::int64_t>(r.fp32)),
+  o.figures = {fig("zero_sum_exact", static_cast<std::int64_t>(r.exact)),
+               fig("zero_sum_fp32", static_cast<std::int64_t>(r.fp32)),
                fig("zero_sum_fp24_rne", static_cast<std::int64_t>(r.fp24)),
                fig("zero_sum_not_nan_fp32", static_cast<std::int64_t>(r.not_nan_fp32)),
                fig("zero_sum_not_nan_fp24_rne", static_cast<std::int64_t>(r.not_nan_fp24)),
                fig("zero_sum_normal2ssbump_not_nan", static_cast<std::int64_t>(r.tool_not_nan))};
-  o.note = "every N·B_i ≤ 0 (a cone around −z) for these texels: Listing 1 divides 0 by 0 (NaN, in fp32 and fp24) and "
-           "normal2ssbump writes NaN weights";
+  o.note =
+      "every N·B_i ≤ 0 (a cone around −z) for these texels: Listing 1 divides 0 by 0 (NaN, in fp32 and fp24) and "
+      "normal2ssbump writes NaN weights";
   return o;
 }
 
@@ -170,9 +181,13 @@ outcome valve_flat_normal(const gs::model_options&, const sweep_config&) {
   outcome o = verdict_of(t, 3 + 4 + 64, [](std::uint64_t i) { return pair_name(i, i) + " over z: (B·z)² ≠ 1/3"; });
   for (int r : {127, 128})
     for (int g : {127, 128}) {
-      const v::texel s = v::ssbump_texel(v::normal2ssbump({static_cast<std::uint8_t>(r), static_cast<std::uint8_t>(g), 255}));
-      o.figures.push_back(fig("normal2ssbump_" + rgb_hex((std::uint32_t(r) << 16) | (std::uint32_t(g) << 8) | 255) + "_sum", s.r + s.g + s.b));
-      o.witnesses.push_back("normal2ssbump " + rgb_hex((std::uint32_t(r) << 16) | (std::uint32_t(g) << 8) | 255) + " => " + rgb_hex(s.index()));
+      const v::texel s =
+          v::ssbump_texel(v::normal2ssbump({static_cast<std::uint8_t>(r), static_cast<std::uint8_t>(g), 255}));
+      o.figures.push_back(
+          fig("normal2ssbump_" + rgb_hex((std::uint32_t(r) << 16) | (std::uint32_t(g) << 8) | 255) + "_sum",
+              s.r + s.g + s.b));
+      o.witnesses.push_back("normal2ssbump " + rgb_hex((std::uint32_t(r) << 16) | (std::uint32_t(g) << 8) | 255) +
+                            " => " + rgb_hex(s.index()));
     }
   v::height2ssbump_options h;
   h.bump_scale = 4.0f;
@@ -187,8 +202,9 @@ outcome valve_flat_normal(const gs::model_options&, const sweep_config&) {
     o.result = verdict::refuted;
     o.counterexamples += static_cast<std::uint64_t>(64 - flat147);
   }
-  o.note = "an exactly flat normal gives D = (1/3, 1/3, 1/3) (85 each in 8 bits) but no RGB8 texel is exactly flat: "
-           "the four nearest give the sums shown; height2ssbump's flat unoccluded texel is 1/√3 = 0.57735 → 147";
+  o.note =
+      "an exactly flat normal gives D = (1/3, 1/3, 1/3) (85 each in 8 bits) but no RGB8 texel is exactly flat: "
+      "the four nearest give the sums shown; height2ssbump's flat unoccluded texel is 1/√3 = 0.57735 → 147";
   return o;
 }
 
@@ -197,13 +213,16 @@ outcome valve_precision(const gs::model_options&, const sweep_config& cfg) {
   outcome o;
   o.result = verdict::bound;
   o.domain_size = r.domain;
-  static const char* path[4] = {"rnm_fp32", "rnm_fp24_rne", "ssbump_normal2ssbump_trunc", "ssbump_normal2ssbump_nearest"};
+  static const char* path[4] = {"rnm_fp32", "rnm_fp24_rne", "ssbump_normal2ssbump_trunc",
+                                "ssbump_normal2ssbump_nearest"};
   for (int p = 0; p < 4; ++p) {
     add_stat(o, std::string(path[p]) + "_all", r.err[p][0]);
     add_stat(o, std::string(path[p]) + "_unit", r.err[p][1]);
-    o.witnesses.push_back(std::string(path[p]) + " max at texel " + rgb_hex(static_cast<std::uint32_t>(vs::texel_domain::catalogue().rgb(r.err[p][0].arg_max))));
+    o.witnesses.push_back(std::string(path[p]) + " max at texel " +
+                          rgb_hex(static_cast<std::uint32_t>(vs::texel_domain::catalogue().rgb(r.err[p][0].arg_max))));
   }
-  for (int p = 0; p < 4; ++p) o.figures.push_back(fig(std::string(path[p]) + "_nan_texels", static_cast<std::int64_t>(r.nan[p])));
+  for (int p = 0; p < 4; ++p)
+    o.figures.push_back(fig(std::string(path[p]) + "_nan_texels", static_cast<std::int64_t>(r.nan[p])));
   const auto t = vs::true_normal_sweep(0.25);
   add_stat(o, "from_unit_normal_rnm_fp32", t.rnm_fp32);
   add_stat(o, "from_unit_normal_ssbump_ideal_nearest", t.ssbump_ideal);
@@ -211,9 +230,10 @@ outcome valve_precision(const gs::model_options&, const sweep_config& cfg) {
   o.figures.push_back(fig("from_unit_normal_samples", static_cast<std::int64_t>(t.samples)));
   o.figures.push_back(fig("zero_sum_texels_skipped", static_cast<std::int64_t>(r.zero_sum)));
   o.figures.push_back(fig("unit_texels", static_cast<std::int64_t>(r.unit_texels)));
-  o.note = "errors in 1/255 of a unit lightmap against eq. (3) on the exactly normalised normal of the texel (lights: the "
-           "three unit lightmap colours); 'unit' = texels with | |N| − 1 | ≤ √3/255; NaN results are counted, not measured. "
-           "from_unit_normal: a 0.25° grid of unit normals stored either way, against eq. (3) on the normal itself";
+  o.note =
+      "errors in 1/255 of a unit lightmap against eq. (3) on the exactly normalised normal of the texel (lights: the "
+      "three unit lightmap colours); 'unit' = texels with | |N| − 1 | ≤ √3/255; NaN results are counted, not measured. "
+      "from_unit_normal: a 0.25° grid of unit normals stored either way, against eq. (3) on the normal itself";
   return o;
 }
 
@@ -233,13 +253,16 @@ outcome valve_ssbump_filter_linear(const gs::model_options&, const sweep_config&
         for (int L = 0; L < 256; L += 51)
           if (f * L != (16 - w) * (a * L) + w * (b * L)) t.add(index);
         const double filtered = static_cast<double>(static_cast<float>(f / (16.0 * 255.0)));
-        const double blended = ((16 - w) * static_cast<double>(static_cast<float>(a / 255.0)) + w * static_cast<double>(static_cast<float>(b / 255.0))) / 16.0;
+        const double blended = ((16 - w) * static_cast<double>(static_cast<float>(a / 255.0)) +
+                                w * static_cast<double>(static_cast<float>(b / 255.0))) /
+                               16.0;
         fp32_dev = std::max(fp32_dev, std::fabs(filtered - blended) * 255.0);
       }
   outcome o = verdict_of(t, index, [](std::uint64_t i) { return "pair/weight " + std::to_string(i); });
   o.figures = {fig_real("fp32_max_deviation_255ths", fp32_dev)};
-  o.note = "SSBump lighting of a filtered texel is exactly the filtered lighting (linear); in fp32 only the texel "
-           "conversion's rounding differs";
+  o.note =
+      "SSBump lighting of a filtered texel is exactly the filtered lighting (linear); in fp32 only the texel "
+      "conversion's rounding differs";
   return o;
 }
 
@@ -250,14 +273,17 @@ outcome valve_rnm_filter(const gs::model_options&, const sweep_config& cfg) {
   o.domain_size = r.all.n;
   add_stat(o, "err_all", r.all);
   add_stat(o, "err_within_10deg", r.near);
-  for (int w = 1; w <= 15; ++w) o.figures.push_back(fig_real("err_max_w" + std::to_string(w) + "_16", r.by_weight[w - 1].max));
+  for (int w = 1; w <= 15; ++w)
+    o.figures.push_back(fig_real("err_max_w" + std::to_string(w) + "_16", r.by_weight[w - 1].max));
   o.figures.push_back(fig("texels", static_cast<std::int64_t>(r.texels)));
   o.figures.push_back(fig("pairs", static_cast<std::int64_t>(r.pairs)));
   o.figures.push_back(fig("over_half_255th", static_cast<std::int64_t>(r.over_half)));
   o.figures.push_back(fig("over_one_255th", static_cast<std::int64_t>(r.over_one)));
-  o.witnesses.push_back("worst: texels " + rgb_hex(r.worst_a) + ", " + rgb_hex(r.worst_b) + " at w = " + std::to_string(r.worst_w) + "/16");
-  o.note = "RNM's weights of the filtered normal differ from the filtered weights (eq. (3) is not linear), by up to the "
-           "max shown in 1/255 units (three unit lights), exact arithmetic";
+  o.witnesses.push_back("worst: texels " + rgb_hex(r.worst_a) + ", " + rgb_hex(r.worst_b) +
+                        " at w = " + std::to_string(r.worst_w) + "/16");
+  o.note =
+      "RNM's weights of the filtered normal differ from the filtered weights (eq. (3) is not linear), by up to the "
+      "max shown in 1/255 units (three unit lights), exact arithmetic";
   return o;
 }
 
@@ -270,9 +296,11 @@ outcome valve_reconstruct_normal(const gs::model_options&, const sweep_config& c
   add_stat(o, "deg_sum_DB_cone", r.reconstruct[0][1]);
   add_stat(o, "deg_sum_sqrtDB_all", r.reconstruct[1][0]);
   add_stat(o, "deg_sum_sqrtDB_cone", r.reconstruct[1][1]);
-  o.witnesses.push_back("Σ D·B worst at texel " + rgb_hex(vs::texel_domain::catalogue().rgb(r.reconstruct[0][0].arg_max)));
-  o.note = "normalize(Σ D_i·B_i) of the 8-bit SSBump texel (normal2ssbump) against the texel's normal, in degrees; "
-           "'cone' = every N·B_i ≥ 0, where normalize(Σ √D_i·B_i) inverts eq. (3) up to quantisation";
+  o.witnesses.push_back("Σ D·B worst at texel " +
+                        rgb_hex(vs::texel_domain::catalogue().rgb(r.reconstruct[0][0].arg_max)));
+  o.note =
+      "normalize(Σ D_i·B_i) of the 8-bit SSBump texel (normal2ssbump) against the texel's normal, in degrees; "
+      "'cone' = every N·B_i ≥ 0, where normalize(Σ √D_i·B_i) inverts eq. (3) up to quantisation";
   return o;
 }
 

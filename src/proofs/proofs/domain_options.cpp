@@ -4,7 +4,9 @@ namespace gsdot3::proofs {
 
 const std::vector<domain_option_info>& domain_option_catalogue() {
   static const std::vector<domain_option_info> rows = {
-      {"tolight", {"unit_T", "attenuated_T"}, {"two-pass.error-bound", "two-pass.max-s.vertex", "two-pass.max-s.interpolated"}},
+      {"tolight",
+       {"unit_T", "attenuated_T"},
+       {"two-pass.error-bound", "two-pass.max-s.vertex", "two-pass.max-s.interpolated"}},
       {"normal_map", {"n_z_nonnegative", "full_sphere"}, {"four-pass.sum-wrap"}},
       {"fade_att", {"texel_z", "any_vertex"}, {"four-pass.sum-wrap"}},
   };

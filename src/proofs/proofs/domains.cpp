@@ -21,16 +21,16 @@ float least_float_for(int i) {
 
 const std::vector<paper::packed_normal>& appendix2_normals() {
   static const std::vector<paper::packed_normal> all = [] {
-  std::vector<paper::packed_normal> out;
-  for (int iX = -127; iX <= 127; ++iX)
-    for (int iY = -127; iY <= 127; ++iY) {
-      if (iX * iX + iY * iY > 16358) continue;
-      const float nx = least_float_for(iX), ny = least_float_for(iY);
-      const double r2 = static_cast<double>(nx) * nx + static_cast<double>(ny) * ny;
-      if (r2 > 1.0) throw std::logic_error("appendix2_normals: pair not reachable by a unit normal");
-      out.push_back(paper::pack_normal(nx, ny));
-    }
-  return out;
+    std::vector<paper::packed_normal> out;
+    for (int iX = -127; iX <= 127; ++iX)
+      for (int iY = -127; iY <= 127; ++iY) {
+        if (iX * iX + iY * iY > 16358) continue;
+        const float nx = least_float_for(iX), ny = least_float_for(iY);
+        const double r2 = static_cast<double>(nx) * nx + static_cast<double>(ny) * ny;
+        if (r2 > 1.0) throw std::logic_error("appendix2_normals: pair not reachable by a unit normal");
+        out.push_back(paper::pack_normal(nx, ny));
+      }
+    return out;
   }();
   return all;
 }
@@ -62,8 +62,14 @@ std::vector<ivec3> packed_lights(int s) {
 std::vector<ivec3> normal_map_vectors(bool full_sphere) {
   std::vector<ivec3> out;
   const int r4 = 4 * 127 * 127;
-  auto lo = [](int b) { const int v = 2 * std::abs(b) - 1; return v > 0 ? v * v : 0; };
-  auto hi = [](int b) { const int v = 2 * std::abs(b) + 1; return v * v; };
+  auto lo = [](int b) {
+    const int v = 2 * std::abs(b) - 1;
+    return v > 0 ? v * v : 0;
+  };
+  auto hi = [](int b) {
+    const int v = 2 * std::abs(b) + 1;
+    return v * v;
+  };
   for (int x = -127; x <= 127; ++x)
     for (int y = -127; y <= 127; ++y)
       for (int z = full_sphere ? -127 : 0; z <= 127; ++z)

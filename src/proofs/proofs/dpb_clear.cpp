@@ -43,7 +43,8 @@ ilp_pass run_ilp_pass(const page_words& dpb_before, dpb_clear variant, mem::psm 
   thread_local std::unique_ptr<mem::local_memory> memory = std::make_unique<mem::local_memory>();
   mem::local_memory& m = *memory;
   const mem::buffer dpb = page_buffer(0, 1, mem::psm::PSMCT32);
-  const mem::buffer lab = page_buffer(32, 1, variant == dpb_clear::z_trick_psmz32 ? mem::psm::PSMZ32 : mem::psm::PSMCT32);
+  const mem::buffer lab =
+      page_buffer(32, 1, variant == dpb_clear::z_trick_psmz32 ? mem::psm::PSMZ32 : mem::psm::PSMCT32);
   const mem::buffer lab_ct = page_buffer(32, 1, mem::psm::PSMCT32);
   const mem::buffer zbuf = page_buffer(0, 1, zbuf_psm);
   const mem::buffer tex = page_buffer(0, 2, mem::psm::PSMT8);  // TBP0 = DBP, TBW = 2·FBW
@@ -57,7 +58,7 @@ ilp_pass run_ilp_pass(const page_words& dpb_before, dpb_clear variant, mem::psm 
   for (const mem::fetch_sprite& s : red.sprites)
     for (std::uint32_t y = s.y0; y < s.y1; ++y)
       for (std::uint32_t x = s.x0; x < s.x1; ++x) {
-        const int p = static_cast<int>(y * 64 + x);  // the DPB pixel this fragment reads
+        const int p = static_cast<int>(y * 64 + x);                   // the DPB pixel this fragment reads
         const int q = variant == dpb_clear::z_trick ? zsigma(p) : p;  // where it is drawn
         const auto u = mem::wrap_texel(red.CLAMP.WMS, s.u0 + static_cast<std::int32_t>(x - s.x0), fixed::u4::literal(7),
                                        red.CLAMP.MINU, red.CLAMP.MAXU);

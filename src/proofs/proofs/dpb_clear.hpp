@@ -29,8 +29,8 @@ inline constexpr int page_pixels = 64 * 32;
 using page_words = std::array<std::uint32_t, page_pixels>;  // PSMCT32 pixel (x, y) at y·64 + x
 
 struct ilp_pass {
-  page_words dpb_after{};  // the DPB page after the pass (PSMCT32 pixel order)
-  page_words lab{};        // the LAB page read as PSMCT32 (0 = no contribution)
+  page_words dpb_after{};                           // the DPB page after the pass (PSMCT32 pixel order)
+  page_words lab{};                                 // the LAB page read as PSMCT32 (0 = no contribution)
   std::array<std::uint8_t, page_pixels> fetched{};  // per DPB pixel P: the R byte the ILP read for it
 };
 

@@ -46,7 +46,8 @@ constexpr fixed::s11 offset_multiply(u8 a2, u8 b2, const gs::model_options& o) n
 // and the alpha byte. Returns the new PSMCT32 DPB word.
 // The registers are gs_methods' four_pass_x, _y and _z.
 constexpr std::uint32_t four_pass_channel(std::uint32_t dpb, int channel, u8 b2, const gs::model_options& o) noexcept {
-  constexpr const gs_methods::pass_regs* axis[3] = {&gs_methods::four_pass_x, &gs_methods::four_pass_y, &gs_methods::four_pass_z};
+  constexpr const gs_methods::pass_regs* axis[3] = {&gs_methods::four_pass_x, &gs_methods::four_pass_y,
+                                                    &gs_methods::four_pass_z};
   const gs_methods::pass_regs& p = *axis[channel];
   const rgba8 texel{byte(0x80), byte(0x80), byte(0x80), b2};
   const rgba8 cs = gs::texture_function(p.TFX, p.TCC, texel, gs::fragment_colour::flat(grey(0x80, 0x80)), o);
@@ -82,7 +83,8 @@ constexpr pass2_result two_pass_pass2_wide(rgba8 neg_texel, gs::fragment_colour 
   return {gs::alpha_blend(p.ALPHA, cs, dpb, o), cs.a};
 }
 // Pass 2 written: COLCLAMP off (wrap), output alpha As.
-constexpr rgba8 two_pass_pass2(rgba8 neg_texel, gs::fragment_colour light, rgba8 dpb, const gs::model_options& o) noexcept {
+constexpr rgba8 two_pass_pass2(rgba8 neg_texel, gs::fragment_colour light, rgba8 dpb,
+                               const gs::model_options& o) noexcept {
   const auto p = two_pass_pass2_wide(neg_texel, light, dpb, o);
   return gs::colclamp(p.wide, p.as, gs_methods::two_pass_negative.CLAMP);
 }

@@ -38,10 +38,10 @@ struct packed_normal {
   int R_pos = 0, G_pos = 0, B_pos = 0;
   int R_neg = 0, G_neg = 0, B_neg = 0;
   int delta = 0;
-  int alpha = 0;           // after the printed clamp
-  int alpha_unclamped = 0; // (3*128 + delta + 1) / 3
-  bool assert_le = true;   // assert((iX*iX + iY*iY + iZ*iZ) <= 128*128)
-  bool assert_gt = true;   // assert((iX*iX + iY*iY + (iZ+1)*(iZ+1)) > 128*128)
+  int alpha = 0;            // after the printed clamp
+  int alpha_unclamped = 0;  // (3*128 + delta + 1) / 3
+  bool assert_le = true;    // assert((iX*iX + iY*iY + iZ*iZ) <= 128*128)
+  bool assert_gt = true;    // assert((iX*iX + iY*iY + (iZ+1)*(iZ+1)) > 128*128)
 };
 packed_normal pack_normal(float nx, float ny) noexcept;
 // The same code from the point where iX and iY are known (after `(int)(n * scale)`), for the

@@ -19,12 +19,14 @@ identity_case identity_case_at(const identity_grid& g, pvr::azimuth_scale a, std
   const double q = pvr::azimuth_of(Q, a);
   pvr::offset_colour k = pvr::offset_nearest({S_l, T, q}, a);
   k.Q = static_cast<std::uint8_t>(Q);
-  const glm::dvec3 N = pvr::decode_normal(texel, a), L{std::cos(T) * std::cos(q), std::cos(T) * std::sin(q), std::sin(T)};
+  const glm::dvec3 N = pvr::decode_normal(texel, a),
+                   L{std::cos(T) * std::cos(q), std::cos(T) * std::sin(q), std::sin(T)};
   const double v = (1.0 - S_l) + S_l * (N.x * L.x + N.y * L.y + N.z * L.z);
   return {texel, k, S_l, T, 255.0 * std::clamp(v, 0.0, 1.0)};
 }
 
-error_stats identity_8bit_error(const identity_grid& g, pvr::azimuth_scale a, pvr::precision p, const sweep_config& cfg) {
+error_stats identity_8bit_error(const identity_grid& g, pvr::azimuth_scale a, pvr::precision p,
+                                const sweep_config& cfg) {
   const auto fly = p == pvr::precision::float32 ? std::make_unique<pvr::flycast_tables>(a) : nullptr;
   const pvr::fixed_tables* tb = p == pvr::precision::float32 ? nullptr : &pvr::tables(pvr::table_bits(p), a);
   // The grid's lights, in index order within one texel (identity_case_at computes the same per case).
@@ -45,8 +47,10 @@ error_stats identity_8bit_error(const identity_grid& g, pvr::azimuth_scale a, pv
       const glm::dvec3 N = pvr::decode_normal(t, a);
       for (std::size_t j = 0; j < lights.size(); ++j) {
         const light& l = lights[j];
-        const double expected = 255.0 * std::clamp((1.0 - l.S_l) + l.S_l * (N.x * l.L.x + N.y * l.L.y + N.z * l.L.z), 0.0, 1.0);
-        const int out = fly ? static_cast<int>(std::lround(fly->value(t, l.k) * 255.0f)) : pvr::intensity_fixed(*tb, t, l.k);
+        const double expected =
+            255.0 * std::clamp((1.0 - l.S_l) + l.S_l * (N.x * l.L.x + N.y * l.L.y + N.z * l.L.z), 0.0, 1.0);
+        const int out =
+            fly ? static_cast<int>(std::lround(fly->value(t, l.k) * 255.0f)) : pvr::intensity_fixed(*tb, t, l.k);
         acc.add(out - expected, texel * lights.size() + j);
       }
     }

@@ -48,6 +48,7 @@ struct identity_case {
 identity_case identity_case_at(const identity_grid& g, pvr::azimuth_scale a, std::uint64_t i);
 
 // 8-bit output − expected, over the grid (errors in 1/255 of full intensity).
-error_stats identity_8bit_error(const identity_grid& g, pvr::azimuth_scale a, pvr::precision p, const sweep_config& cfg);
+error_stats identity_8bit_error(const identity_grid& g, pvr::azimuth_scale a, pvr::precision p,
+                                const sweep_config& cfg);
 
 }  // namespace gsdot3::proofs::powervr_sweeps

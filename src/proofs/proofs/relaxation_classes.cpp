@@ -42,7 +42,8 @@ std::vector<open_class> open_classes(int s, const gs::model_options& o) {
   });
   std::vector<open_class> out;
   for (const auto& [k, g] : open)
-    out.push_back({g[0], {std::get<0>(k), std::get<1>(k), std::get<2>(k)}, std::get<3>(k), int(g[1]), int(g[2]), int(g[3])});
+    out.push_back(
+        {g[0], {std::get<0>(k), std::get<1>(k), std::get<2>(k)}, std::get<3>(k), int(g[1]), int(g[2]), int(g[3])});
   std::stable_sort(out.begin(), out.end(), [](const open_class& x, const open_class& y) { return x.gap > y.gap; });
   return out;
 }
@@ -68,7 +69,8 @@ std::vector<open_class> uncertified_classes(int s, const gs::model_options& o) {
   return out;
 }
 
-std::vector<paper::packed_normal> normals_in(const std::vector<open_class>& classes, int s, const gs::model_options& o) {
+std::vector<paper::packed_normal> normals_in(const std::vector<open_class>& classes, int s,
+                                             const gs::model_options& o) {
   std::set<class_key> keys;
   for (const auto& c : classes) keys.insert({c.w[0], c.w[1], c.w[2], c.threshold128});
   std::vector<paper::packed_normal> out;
@@ -86,7 +88,8 @@ int certified_relaxation_s(const gs::model_options& o) noexcept {
 
 next_s_survey uncertified_next_s(const gs::model_options& o) noexcept {
   if (o.setup != gs::gouraud_setup::plane_steps) return {};
-  return o.gouraud == gs::gouraud_fraction::keep_fraction ? next_s_survey{84, 3851, 155, 557} : next_s_survey{83, 5270, 303, 1042};
+  return o.gouraud == gs::gouraud_fraction::keep_fraction ? next_s_survey{84, 3851, 155, 557}
+                                                          : next_s_survey{83, 5270, 303, 1042};
 }
 
 }  // namespace gsdot3::proofs::two_pass::triangle::certify

@@ -17,10 +17,10 @@
 namespace gsdot3::proofs::two_pass::triangle::certify {
 
 struct open_class {
-  std::int64_t gap;            // reach + truncation − wrap threshold, 8.7·n units (the bound's shortfall)
-  std::array<int, 3> w;        // |n| sorted
-  std::int64_t threshold128;   // 128·relaxation_threshold
-  int iX, iY, side;            // one normal and side of the class (the one the bound misses by most)
+  std::int64_t gap;           // reach + truncation − wrap threshold, 8.7·n units (the bound's shortfall)
+  std::array<int, 3> w;       // |n| sorted
+  std::int64_t threshold128;  // 128·relaxation_threshold
+  int iX, iY, side;           // one normal and side of the class (the one the bound misses by most)
 };
 // Every class whose reach_units leaves a side open at s, most open first.
 std::vector<open_class> open_classes(int s, const gs::model_options& o);

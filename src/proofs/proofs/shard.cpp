@@ -14,8 +14,8 @@ std::optional<shard_id> parse_shard(std::string_view text) {
   shard_id s;
   const auto a = std::from_chars(text.data(), text.data() + slash, s.k);
   const auto b = std::from_chars(text.data() + slash + 1, text.data() + text.size(), s.n);
-  if (a.ec != std::errc{} || a.ptr != text.data() + slash || b.ec != std::errc{} || b.ptr != text.data() + text.size() ||
-      s.n == 0 || s.k >= s.n)
+  if (a.ec != std::errc{} || a.ptr != text.data() + slash || b.ec != std::errc{} ||
+      b.ptr != text.data() + text.size() || s.n == 0 || s.k >= s.n)
     return std::nullopt;
   return s;
 }
@@ -36,12 +36,14 @@ std::string from_hex(const std::string& hex) {
     throw std::invalid_argument("bad hex digit in a chunk");
   };
   std::string out(hex.size() / 2, '\0');
-  for (std::size_t i = 0; i < out.size(); ++i) out[i] = static_cast<char>(nibble(hex[2 * i]) * 16 + nibble(hex[2 * i + 1]));
+  for (std::size_t i = 0; i < out.size(); ++i)
+    out[i] = static_cast<char>(nibble(hex[2 * i]) * 16 + nibble(hex[2 * i + 1]));
   return out;
 }
 nlohmann::ordered_json options_json(const gs::model_options& o) {
   nlohmann::ordered_json j = nlohmann::ordered_json::object();
-  for (const auto& info : gs::option_catalogue()) j[std::string(info.name)] = std::string(gs::option_value(o, info.name));
+  for (const auto& info : gs::option_catalogue())
+    j[std::string(info.name)] = std::string(gs::option_value(o, info.name));
   return j;
 }
 }  // namespace
@@ -65,7 +67,8 @@ std::string run_shard(const claim& c, const gs::model_options& base, const run_c
   for (const auto& r : log->sweeps) {
     nlohmann::ordered_json parts = nlohmann::ordered_json::array();
     for (const auto& p : r.parts) parts.push_back({p.chunk, to_hex(p.bytes)});
-    sweeps.push_back({{"eval", r.eval}, {"call", r.call}, {"n", r.n}, {"chunks", r.chunks}, {"kind", r.kind}, {"parts", parts}});
+    sweeps.push_back(
+        {{"eval", r.eval}, {"call", r.call}, {"n", r.n}, {"chunks", r.chunks}, {"kind", r.kind}, {"parts", parts}});
   }
   doc["sweeps"] = std::move(sweeps);
   return doc.dump() + "\n";
@@ -87,7 +90,8 @@ merged merge_shards(const std::vector<std::string>& parts, const run_config& cfg
       throw std::invalid_argument("part " + std::to_string(i + 1) + " is not JSON: " + e.what());
     }
     if (!j.is_object() || j.value("partial_ledger", 0) != 1)
-      throw std::invalid_argument("part " + std::to_string(i + 1) + " is not a partial ledger (gsdot3 prove --shard K/N --json)");
+      throw std::invalid_argument("part " + std::to_string(i + 1) +
+                                  " is not a partial ledger (gsdot3 prove --shard K/N --json)");
     try {
       const auto id = j.at("claim").get<std::string>();
       const auto opts = j.at("options").dump();
@@ -98,13 +102,17 @@ merged merge_shards(const std::vector<std::string>& parts, const run_config& cfg
         seen.assign(n, false);
       }
       if (id != claim_id || opts != options || var != variants || bf != brute || nn != n)
-        throw std::invalid_argument("part " + std::to_string(i + 1) + " is of another run (claim, options, variants, brute force or N differ)");
-      if (k >= n || seen[k]) throw std::invalid_argument("shard " + std::to_string(k) + "/" + std::to_string(n) + " given twice");
+        throw std::invalid_argument("part " + std::to_string(i + 1) +
+                                    " is of another run (claim, options, variants, brute force or N differ)");
+      if (k >= n || seen[k])
+        throw std::invalid_argument("shard " + std::to_string(k) + "/" + std::to_string(n) + " given twice");
       seen[k] = true;
       for (const auto& s : j.at("sweeps")) {
-        sweep_record r{s.at("eval").get<std::uint64_t>(), s.at("call").get<std::uint64_t>(), s.at("n").get<std::uint64_t>(),
-                       s.at("chunks").get<std::uint64_t>(), s.at("kind").get<std::uint64_t>(), {}};
-        for (const auto& p : s.at("parts")) r.parts.push_back({p.at(0).get<std::uint64_t>(), from_hex(p.at(1).get<std::string>())});
+        sweep_record r{s.at("eval").get<std::uint64_t>(), s.at("call").get<std::uint64_t>(),
+                       s.at("n").get<std::uint64_t>(),    s.at("chunks").get<std::uint64_t>(),
+                       s.at("kind").get<std::uint64_t>(), {}};
+        for (const auto& p : s.at("parts"))
+          r.parts.push_back({p.at(0).get<std::uint64_t>(), from_hex(p.at(1).get<std::string>())});
         log->sweeps.push_back(std::move(r));
       }
     } catch (const nlohmann::json::exception& e) {

@@ -46,10 +46,10 @@ struct sweep_record {
 struct shard_log {
   enum class mode { record, replay };
   mode m = mode::record;
-  unsigned k = 0, n = 1;              // record: this shard
-  std::vector<sweep_record> sweeps;   // record: this shard's sweeps; replay: every part's
-  std::uint64_t eval = 0, next = 0;   // the current evaluation and its next sweep call
-  std::uint64_t recomputed = 0;       // replay: chunks no part held
+  unsigned k = 0, n = 1;             // record: this shard
+  std::vector<sweep_record> sweeps;  // record: this shard's sweeps; replay: every part's
+  std::uint64_t eval = 0, next = 0;  // the current evaluation and its next sweep call
+  std::uint64_t recomputed = 0;      // replay: chunks no part held
   void begin_evaluation() noexcept { ++eval, next = 0; }
 };
 
@@ -124,7 +124,8 @@ Acc sweep(std::uint64_t n, const sweep_config& cfg, Body&& body, std::uint64_t m
   pool.clear();  // joins
   if constexpr (std::is_trivially_copyable_v<Acc>) {
     if (log != nullptr && log->m == shard_log::mode::record) {
-      for (auto c : to_run) recorded.parts.push_back({c, std::string(reinterpret_cast<const char*>(&parts[c]), sizeof(Acc))});
+      for (auto c : to_run)
+        recorded.parts.push_back({c, std::string(reinterpret_cast<const char*>(&parts[c]), sizeof(Acc))});
       log->sweeps.push_back(std::move(recorded));
     }
   }

@@ -16,13 +16,17 @@ bool both(const channel_view& v) { return v.aligned_x && v.aligned_y; }
 
 constexpr channel_statement statement_table[statement_count] = {
     {"A", "sigma*L_c(p) < sigma*P_c(p) + W (aligned on at most one axis)", not_both,
-     [](const channel_view& v, std::int64_t W) { return std::array<std::int64_t, 2>{v.sigma * (v.L * v.den_p - v.P_p), W * v.den_p}; }},
+     [](const channel_view& v, std::int64_t W) {
+       return std::array<std::int64_t, 2>{v.sigma * (v.L * v.den_p - v.P_p), W * v.den_p};
+     }},
     {"B", "sigma*L_c(p) < sigma*P_c(p) + 1 + a + b (aligned on both axes)", both,
      [](const channel_view& v, std::int64_t) {
        return std::array<std::int64_t, 2>{v.sigma * (v.L * v.den_p - v.P_p), (1 + v.a + v.b) * v.den_p};
      }},
     {"C", "sigma*L_c(p) < sigma*P_c(w) + W (aligned on both axes, w of point_w)", both,
-     [](const channel_view& v, std::int64_t W) { return std::array<std::int64_t, 2>{v.sigma * (v.L * v.den_w - v.P_w), W * v.den_w}; }},
+     [](const channel_view& v, std::int64_t W) {
+       return std::array<std::int64_t, 2>{v.sigma * (v.L * v.den_w - v.P_w), W * v.den_w};
+     }},
 };
 
 // A case set up once: the edge vectors from vertex 0 (1/16 pixel), the GS plane, the vertex
@@ -33,8 +37,8 @@ struct case_setup {
   int xmax, ymax;
   lag_edge edge;
   gs::gouraud_plane plane;
-  std::int64_t value[3][3];   // [vertex][channel] 128·(128 + l)
-  bool aligned[3][2][2];      // [channel][σ = +1, −1][x, y]
+  std::int64_t value[3][3];  // [vertex][channel] 128·(128 + l)
+  bool aligned[3][2][2];     // [channel][σ = +1, −1][x, y]
   bool any_both;
 };
 
@@ -56,7 +60,8 @@ std::optional<case_setup> set_up(const triangle_case& c) {
   for (std::size_t ch = 0; ch < 3; ++ch) {
     for (std::size_t k = 0; k < 3; ++k) s.value[k][ch] = 128 * (128 + c.light[k][ch]);
     const std::int64_t d1 = c.light[1][ch] - c.light[0][ch], d2 = c.light[2][ch] - c.light[0][ch];
-    const std::int64_t gx = (d1 * s.by - d2 * s.ay) * s.sign, gy = (d2 * s.ax - d1 * s.bx) * s.sign;  // the exact gradient ×|det|/128
+    const std::int64_t gx = (d1 * s.by - d2 * s.ay) * s.sign,
+                       gy = (d2 * s.ax - d1 * s.bx) * s.sign;  // the exact gradient ×|det|/128
     for (int side = 0; side < 2; ++side) {
       const std::int64_t sigma = side == 0 ? 1 : -1;
       s.aligned[ch][side][0] = sigma * gx < 0, s.aligned[ch][side][1] = sigma * gy < 0;
@@ -86,7 +91,8 @@ bool visit_pixel(const case_setup& s, int x, int y, std::int64_t window, F&& f) 
   bool w_inside = true;
   if (!w.at_pixel()) {  // w·16·den, from the vertices' own coordinates
     const std::size_t X = 2 * s.edge.X, Y = 2 * s.edge.Y;
-    w_inside = in_closed_triangle(s, s.xy16[X] * (w.den - w.num) + s.xy16[Y] * w.num, s.xy16[X + 1] * (w.den - w.num) + s.xy16[Y + 1] * w.num, w.den);
+    w_inside = in_closed_triangle(s, s.xy16[X] * (w.den - w.num) + s.xy16[Y] * w.num,
+                                  s.xy16[X + 1] * (w.den - w.num) + s.xy16[Y + 1] * w.num, w.den);
   }
   channel_view view;
   view.a = x - s.edge.rx, view.b = y - s.edge.ry;
@@ -105,7 +111,8 @@ bool visit_pixel(const case_setup& s, int x, int y, std::int64_t window, F&& f) 
       // each row by its constant index, so that its two functions are called directly (inlined)
       [&]<std::size_t... K>(std::index_sequence<K...>) {
         ((statement_table[K].applies(view) ? f(K, ch, view, statement_table[K].sides(view, window)) : void()), ...);
-      }(std::make_index_sequence<statement_count>{});
+      }
+      (std::make_index_sequence<statement_count>{});
     }
   }
   return w_inside;
@@ -123,15 +130,19 @@ void check_case(const triangle_case& c, std::uint64_t index, int window, brute_f
       ++acc.pixels;
       const std::uint64_t at = pixel_witness(index, x, y);
       bool broken[statement_count] = {};
-      const bool w_inside = visit_pixel(*s, x, y, window, [&](std::size_t k, std::size_t, const channel_view&, std::array<std::int64_t, 2> sides) {
-        const std::int64_t left = sides[0], allowance = sides[1];
-        auto& st = acc.statement[k];
-        ++st.checked;
-        broken[k] = broken[k] || left >= allowance;
-        // the ratio only where it may raise the maximum (the division is the loop's dearest step)
-        if (st.ratio_ppm.empty() || static_cast<double>(left) * 1e6 >= static_cast<double>(st.ratio_ppm.max - 1) * static_cast<double>(allowance))
-          st.ratio_ppm.add(static_cast<std::int64_t>(std::floor(static_cast<double>(left) / static_cast<double>(allowance) * 1e6)), at);
-      });
+      const bool w_inside = visit_pixel(
+          *s, x, y, window, [&](std::size_t k, std::size_t, const channel_view&, std::array<std::int64_t, 2> sides) {
+            const std::int64_t left = sides[0], allowance = sides[1];
+            auto& st = acc.statement[k];
+            ++st.checked;
+            broken[k] = broken[k] || left >= allowance;
+            // the ratio only where it may raise the maximum (the division is the loop's dearest step)
+            if (st.ratio_ppm.empty() || static_cast<double>(left) * 1e6 >=
+                                            static_cast<double>(st.ratio_ppm.max - 1) * static_cast<double>(allowance))
+              st.ratio_ppm.add(static_cast<std::int64_t>(
+                                   std::floor(static_cast<double>(left) / static_cast<double>(allowance) * 1e6)),
+                               at);
+          });
       for (std::size_t k = 0; k < statement_count; ++k)
         if (broken[k]) acc.statement[k].violations.add(at);
       if (!w_inside) acc.w_outside.add(at);
@@ -140,17 +151,21 @@ void check_case(const triangle_case& c, std::uint64_t index, int window, brute_f
 
 std::string failures_at(const triangle_case& c, int window) {
   const auto s = set_up(c);
-  if (!s || !in_closed_triangle(*s, 16 * std::int64_t{c.px}, 16 * std::int64_t{c.py}, 1)) return "pixel not in the closed triangle";
+  if (!s || !in_closed_triangle(*s, 16 * std::int64_t{c.px}, 16 * std::int64_t{c.py}, 1))
+    return "pixel not in the closed triangle";
   std::string out;
-  const bool w_inside = visit_pixel(*s, c.px, c.py, window, [&](std::size_t k, std::size_t ch, const channel_view& v, std::array<std::int64_t, 2> sides) {
-    if (sides[0] < sides[1]) return;
-    char light[32];
-    std::snprintf(light, sizeof light, "0x%04llx", static_cast<unsigned long long>(v.L));
-    out += std::string(out.empty() ? "(" : "; (") + std::string(statement_table[k].name) + ") " + std::string(statement_table[k].text) + " fails on channel " + "rgb"[ch] + ", sigma " +
-           std::to_string(v.sigma) + ": L_c " + light + ", P_c(p) = " + std::to_string(v.P_p) + "/" + std::to_string(v.den_p) +
-           ", P_c(w) = " + std::to_string(v.P_w) + "/" + std::to_string(v.den_w) + ", left " + std::to_string(sides[0]) +
-           " >= allowance " + std::to_string(sides[1]);
-  });
+  const bool w_inside = visit_pixel(
+      *s, c.px, c.py, window,
+      [&](std::size_t k, std::size_t ch, const channel_view& v, std::array<std::int64_t, 2> sides) {
+        if (sides[0] < sides[1]) return;
+        char light[32];
+        std::snprintf(light, sizeof light, "0x%04llx", static_cast<unsigned long long>(v.L));
+        out += std::string(out.empty() ? "(" : "; (") + std::string(statement_table[k].name) + ") " +
+               std::string(statement_table[k].text) + " fails on channel " + "rgb"[ch] + ", sigma " +
+               std::to_string(v.sigma) + ": L_c " + light + ", P_c(p) = " + std::to_string(v.P_p) + "/" +
+               std::to_string(v.den_p) + ", P_c(w) = " + std::to_string(v.P_w) + "/" + std::to_string(v.den_w) +
+               ", left " + std::to_string(sides[0]) + " >= allowance " + std::to_string(sides[1]);
+      });
   if (!w_inside) out += (out.empty() ? "" : "; ") + std::string("w is outside the closed triangle");
   return out;
 }
@@ -176,7 +191,8 @@ brute_force_acc brute_force(const sweep_config& cfg, std::uint64_t first, std::u
   return sweep<brute_force_acc>(
       count, cfg,
       [first](brute_force_acc& acc, std::uint64_t begin, std::uint64_t end) {
-        for (std::uint64_t i = first + begin; i < first + end; ++i) check_case(brute_force_case(i), i, window_pixels, acc);
+        for (std::uint64_t i = first + begin; i < first + end; ++i)
+          check_case(brute_force_case(i), i, window_pixels, acc);
       },
       std::uint64_t{1} << 16);
 }

@@ -32,10 +32,10 @@ namespace gsdot3::proofs::two_pass::triangle {
 
 // One channel at one pixel for one wrap side, exact.
 struct channel_view {
-  int sigma = 1;                   // +1 or −1
+  int sigma = 1;  // +1 or −1
   bool aligned_x = false, aligned_y = false;
-  std::int64_t a = 0, b = 0;       // p − r
-  std::int64_t L = 0;              // gouraud_at's channel at p, 8.7
+  std::int64_t a = 0, b = 0;        // p − r
+  std::int64_t L = 0;               // gouraud_at's channel at p, 8.7
   std::int64_t P_p = 0, den_p = 1;  // P_c(p) = P_p / den_p, den_p = |det|
   std::int64_t P_w = 0, den_w = 1;  // P_c(w) = P_w / den_w (w = p: P_p / den_p)
 };

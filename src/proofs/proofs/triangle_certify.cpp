@@ -65,8 +65,10 @@ struct smoothed {
     for (int v = 0; v < 3; ++v) {
       double y[3], coef[3][2];
       for (int c = 0; c < 3; ++c) {
-        if (v < 2) y[c] = x[2 * c + v], coef[c][0] = v == 0, coef[c][1] = v == 1;
-        else y[c] = pr.w[c] - x[2 * c] - x[2 * c + 1], coef[c][0] = coef[c][1] = -1;
+        if (v < 2)
+          y[c] = x[2 * c + v], coef[c][0] = v == 0, coef[c][1] = v == 1;
+        else
+          y[c] = pr.w[c] - x[2 * c] - x[2 * c + 1], coef[c][0] = coef[c][1] = -1;
       }
       const double N = std::sqrt(y[0] * y[0] + y[1] * y[1] + y[2] * y[2] + eps * eps);
       f += pr.s * N;
@@ -76,7 +78,8 @@ struct smoothed {
             g[2 * c + i] += pr.s * coef[c][i] * y[c] / N;
             for (int c2 = 0; c2 < 3; ++c2)
               for (int i2 = 0; i2 < 2; ++i2)
-                H[(2 * c + i) * 6 + 2 * c2 + i2] += pr.s * coef[c][i] * coef[c2][i2] * ((c == c2) / N - y[c] * y[c2] / (N * N * N));
+                H[(2 * c + i) * 6 + 2 * c2 + i2] +=
+                    pr.s * coef[c][i] * coef[c2][i2] * ((c == c2) / N - y[c] * y[c2] / (N * N * N));
           }
     }
     // T·log Σ_j exp(S_j/T), S_j = Σ softplus_τ(m/128) over the charged axes at corner j.
@@ -131,9 +134,13 @@ bool newton_step(const std::array<bool, 3>& free, double* H, const double* g, do
         double v = H[idx[i] * 6 + idx[j]] + (i == j ? damp * (trace + 1e-300) : 0);
         for (int k = 0; k < j; ++k) v -= L[i][k] * L[j][k];
         if (i == j) {
-          if (!(v > 0)) { ok = false; break; }
+          if (!(v > 0)) {
+            ok = false;
+            break;
+          }
           L[i][i] = std::sqrt(v);
-        } else L[i][j] = v / L[j][j];
+        } else
+          L[i][j] = v / L[j][j];
       }
     if (!ok) continue;
     double z[6];
@@ -163,14 +170,15 @@ bool interior_direction(const std::vector<row>& rows, int c, double dir[2]) {
   if (normals.empty()) return false;
   std::vector<std::array<double, 2>> ok;
   for (const auto& e : cand)
-    if (std::all_of(normals.begin(), normals.end(), [&](const auto& n) { return n[0] * e[0] + n[1] * e[1] >= -1e-12; })) ok.push_back(e);
+    if (std::all_of(normals.begin(), normals.end(), [&](const auto& n) { return n[0] * e[0] + n[1] * e[1] >= -1e-12; }))
+      ok.push_back(e);
   double best = -2;
   std::array<double, 2> e1{}, e2{};
   for (const auto& a : ok)
     for (const auto& b : ok)
-      if (const double cs = a[0] * b[0] + a[1] * b[1]; -cs > best) best = -cs, e1 = a, e2 = b;  // the widest pair
-  if (ok.empty() || best < -1 + 1e-12) return false;  // a ray or nothing
-  if (best > 1 - 1e-12) {                              // a half-plane: every row parallel
+      if (const double cs = a[0] * b[0] + a[1] * b[1]; - cs > best) best = -cs, e1 = a, e2 = b;  // the widest pair
+  if (ok.empty() || best < -1 + 1e-12) return false;                                             // a ray or nothing
+  if (best > 1 - 1e-12) {  // a half-plane: every row parallel
     dir[0] = normals[0][0], dir[1] = normals[0][1];
     return true;
   }
@@ -193,7 +201,8 @@ vertices family_member(int family, std::int64_t u, std::int64_t v, std::int64_t 
   }
 }
 
-corners family_cell(int family, int p, std::int64_t u0, std::int64_t u1, std::int64_t v0, std::int64_t v1, std::int64_t box) {
+corners family_cell(int family, int p, std::int64_t u0, std::int64_t u1, std::int64_t v0, std::int64_t v1,
+                    std::int64_t box) {
   return {{family_member(family, u0, v0, box), family_member(family, u1, v0, box), family_member(family, u0, v1, box),
            family_member(family, u1, v1, box)},
           p};
@@ -332,8 +341,8 @@ double attained(const problem& pr, const std::array<std::array<double, 2>, 3>& v
   return relaxation_value(x, {double(pr.w[0]), double(pr.w[1]), double(pr.w[2])}, pr.s);
 }
 
-outcome certify_class(const problem& pr, std::int64_t box, std::int64_t min_cell, std::int64_t max_cells, std::size_t max_open,
-                      std::vector<closed_cell>* record) {
+outcome certify_class(const problem& pr, std::int64_t box, std::int64_t min_cell, std::int64_t max_cells,
+                      std::size_t max_open, std::vector<closed_cell>* record) {
   outcome out;
   struct pending {
     std::int64_t u0, u1, v0, v1;
@@ -347,7 +356,8 @@ outcome certify_class(const problem& pr, std::int64_t box, std::int64_t min_cell
         // y_p = w: s·|w| plus every charged axis lagged in full, feasible everywhere; it closes the
         // patterns with few charged axes without a search.
         dual_real t{};
-        for (int ch = 0; ch < 3; ++ch) t[static_cast<std::size_t>(p)][static_cast<std::size_t>(ch)] = pr.w[static_cast<std::size_t>(ch)];
+        for (int ch = 0; ch < 3; ++ch)
+          t[static_cast<std::size_t>(p)][static_cast<std::size_t>(ch)] = pr.w[static_cast<std::size_t>(ch)];
         const dual_grid trivial = to_grid(pr, t, p);
         std::vector<pending> stack{{0, A, 0, A, {}, false}};
         while (!stack.empty()) {
@@ -376,15 +386,18 @@ outcome certify_class(const problem& pr, std::int64_t box, std::int64_t min_cell
             for (std::size_t q = 0; q < 3; ++q) v[q] = {px(V[q][0]), px(V[q][1])};
             const double a = attained(pr, v, p, y);
             ++out.open_count, out.best_attained = std::max(out.best_attained, a);
-            if (out.open.size() < max_open) out.open.push_back({f, p, pi, c.u0, c.u1, c.v0, c.v1, k.feasible ? k.levels : -1, a, y});
-            if (a * 128 > static_cast<double>(pr.threshold128)) {  // the relaxation itself exceeds: no certificate exists
+            if (out.open.size() < max_open)
+              out.open.push_back({f, p, pi, c.u0, c.u1, c.v0, c.v1, k.feasible ? k.levels : -1, a, y});
+            if (a * 128 >
+                static_cast<double>(pr.threshold128)) {  // the relaxation itself exceeds: no certificate exists
               out.exceeds = true, out.witness = {f, p, pi, c.u0, c.u1, c.v0, c.v1, k.feasible ? k.levels : -1, a, y};
               return out;
             }
             continue;
           }
           const std::int64_t um = (c.u0 + c.u1) / 2, vm = (c.v0 + c.v1) / 2;
-          for (const auto& [a0, a1, b0, b1] : {std::array{c.u0, um, c.v0, vm}, {um, c.u1, c.v0, vm}, {c.u0, um, vm, c.v1}, {um, c.u1, vm, c.v1}})
+          for (const auto& [a0, a1, b0, b1] :
+               {std::array{c.u0, um, c.v0, vm}, {um, c.u1, c.v0, vm}, {c.u0, um, vm, c.v1}, {um, c.u1, vm, c.v1}})
             stack.push_back({a0, a1, b0, b1, y, true});
         }
       }

@@ -92,7 +92,8 @@ inline constexpr int family_count = 5;
 inline constexpr const char* family_names[family_count] = {"F1", "F2", "F4", "A1", "A2"};
 vertices family_member(int family, std::int64_t u, std::int64_t v, std::int64_t box);
 // The rectangle [u0, u1] × [v0, v1] (2^-coord_bits pixel) of a family, p = vertex p.
-corners family_cell(int family, int p, std::int64_t u0, std::int64_t u1, std::int64_t v0, std::int64_t v1, std::int64_t box);
+corners family_cell(int family, int p, std::int64_t u0, std::int64_t u1, std::int64_t v0, std::int64_t v1,
+                    std::int64_t box);
 
 // y_{k,c}, doubles (the search) and on the integer grid (the certificate).
 using dual_real = std::array<std::array<double, 3>, 3>;
@@ -140,10 +141,10 @@ struct outcome {
   std::int64_t cells = 0, closed = 0;  // rectangles examined, closed
   std::vector<open_cell> open;         // what could not be closed (at most max_open kept)
   std::int64_t open_count = 0;
-  long double worst_closed = -1e30L;   // the largest certified bound among the closed rectangles
-  double best_attained = -1e30;        // over the open rectangles' centres
-  bool exceeds = false;                // stopped at an open rectangle whose attained value is above the threshold
-  open_cell witness{};                 // that rectangle (the relaxation admits a wrap at its centre)
+  long double worst_closed = -1e30L;  // the largest certified bound among the closed rectangles
+  double best_attained = -1e30;       // over the open rectangles' centres
+  bool exceeds = false;               // stopped at an open rectangle whose attained value is above the threshold
+  open_cell witness{};                // that rectangle (the relaxation admits a wrap at its centre)
 };
 // One closed rectangle and the grid dual that closed it: what a stored certificate would hold.
 struct closed_cell {
@@ -152,7 +153,7 @@ struct closed_cell {
   std::int64_t u0, u1, v0, v1;
   dual_grid y;
 };
-outcome certify_class(const problem& pr, std::int64_t box, std::int64_t min_cell, std::int64_t max_cells, std::size_t max_open = 8,
-                      std::vector<closed_cell>* record = nullptr);
+outcome certify_class(const problem& pr, std::int64_t box, std::int64_t min_cell, std::int64_t max_cells,
+                      std::size_t max_open = 8, std::vector<closed_cell>* record = nullptr);
 
 }  // namespace gsdot3::proofs::two_pass::triangle::certify

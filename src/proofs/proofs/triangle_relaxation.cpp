@@ -17,12 +17,23 @@ namespace {
 // certify 83 --truncate-to-8` stops first (class #0 of 303 that stop; `certify 83 --truncate-to-8 0 1`
 // prints it alone; lights to nine decimals, as printed; 0.018 levels·|n| over; s = 82 is certified).
 constexpr relaxation_witness witness_table[] = {
-    {84, -89, -65, 1, gs::gouraud_fraction::keep_fraction,
-     {{{{0, 2047}, {848.51, 0}, {2047, 2047}}}, {{2047, 2047}},
+    {84,
+     -89,
+     -65,
+     1,
+     gs::gouraud_fraction::keep_fraction,
+     {{{{0, 2047}, {848.51, 0}, {2047, 2047}}},
+      {{2047, 2047}},
       {{{-47.824, 48.849, 48.812}, {17.108, 58.162, 58.142}, {70.091, 32.732, 32.740}}}}},
-    {83, 67, 73, -1, gs::gouraud_fraction::truncate_to_8,
-     {{{{0, 1177.393569946}, {2046.968765259, 0}, {2047, 2047}}}, {{2047, 2047}},
-      {{{51.410199816, 54.828195204, 35.211650993}, {44.616643406, 48.034638802, -50.902147365},
+    {83,
+     67,
+     73,
+     -1,
+     gs::gouraud_fraction::truncate_to_8,
+     {{{{0, 1177.393569946}, {2046.968765259, 0}, {2047, 2047}}},
+      {{2047, 2047}},
+      {{{51.410199816, 54.828195204, 35.211650993},
+        {44.616643406, 48.034638802, -50.902147365},
         {28.624454028, 32.042449548, 71.013534334}}}}},
 };
 
@@ -54,7 +65,8 @@ double relaxation_value(const relaxation_point& x, const std::array<double, 3>& 
     double P = 0, gx = 0, gy = 0;  // levels, levels per pixel
     for (std::size_t k = 0; k < 3; ++k) P += beta[k] * l[k][c], gx += bx[k] * l[k][c], gy += by[k] * l[k][c];
     // aligned: the σ-folded plane falls along the axis; the lag approaches a·min(1, |step in units|)
-    total += w[c] * (P + x.pixel[0] * std::clamp(-128 * gx, 0.0, 1.0) / 128 + x.pixel[1] * std::clamp(-128 * gy, 0.0, 1.0) / 128);
+    total += w[c] * (P + x.pixel[0] * std::clamp(-128 * gx, 0.0, 1.0) / 128 +
+                     x.pixel[1] * std::clamp(-128 * gy, 0.0, 1.0) / 128);
   }
   return total;
 }
@@ -65,8 +77,10 @@ double relaxation_margin(const relaxation_witness& w, const two_pass::table& t, 
   return relaxation_value(w.at, n, w.s) - relaxation_threshold(p, t.alpha_error(p), w.side, o);
 }
 
-std::int64_t relaxation_threshold_units(const paper::packed_normal& p, int e, int side, const gs::model_options& o) noexcept {
-  return wrap_threshold_units(p, e, side, o) - truncation_units(p, side, o) - (std::abs(p.iX) + std::abs(p.iY) + std::abs(p.iZ));
+std::int64_t relaxation_threshold_units(const paper::packed_normal& p, int e, int side,
+                                        const gs::model_options& o) noexcept {
+  return wrap_threshold_units(p, e, side, o) - truncation_units(p, side, o) -
+         (std::abs(p.iX) + std::abs(p.iY) + std::abs(p.iZ));
 }
 
 double relaxation_threshold(const paper::packed_normal& p, int e, int side, const gs::model_options& o) noexcept {

@@ -54,6 +54,7 @@ double relaxation_margin(const relaxation_witness& w, const two_pass::table& t, 
 // wrap_threshold_units minus the start error and truncation_units, in levels·|n|.
 double relaxation_threshold(const paper::packed_normal& p, int e, int side, const gs::model_options& o) noexcept;
 // The same, ×128 (8.7·n units): an integer, what the certified bound (triangle_certify) compares with.
-std::int64_t relaxation_threshold_units(const paper::packed_normal& p, int e, int side, const gs::model_options& o) noexcept;
+std::int64_t relaxation_threshold_units(const paper::packed_normal& p, int e, int side,
+                                        const gs::model_options& o) noexcept;
 
 }  // namespace gsdot3::proofs::two_pass::triangle

@@ -57,8 +57,8 @@ int sign_counts_neg(const paper::packed_normal& p) { return (p.iX < 0) + (p.iY <
 
 // Appends the indices of lights with d·l >= t (d = ±n) to `out`.
 void cap(const light_grid& g, const ivec3& d, std::int64_t t, std::vector<std::uint32_t>& out) {
-  const double len = std::sqrt(static_cast<double>(d[0]) * d[0] + static_cast<double>(d[1]) * d[1] +
-                               static_cast<double>(d[2]) * d[2]);
+  const double len =
+      std::sqrt(static_cast<double>(d[0]) * d[0] + static_cast<double>(d[1]) * d[1] + static_cast<double>(d[2]) * d[2]);
   const double h0 = static_cast<double>(t) / len;  // d̂·l >= h0 on the cap
   if (h0 > g.s + 1e-9) return;                     // |l| <= s: empty
   const double hmin = std::max(h0, -static_cast<double>(g.s));
@@ -81,8 +81,8 @@ void cap(const light_grid& g, const ivec3& d, std::int64_t t, std::vector<std::u
 }
 }  // namespace
 
-wrap_hits wrap_search(const std::vector<paper::packed_normal>& normals, const light_grid& grid, const table& t,
-                      int hi, int lo, const sweep_config& cfg) {
+wrap_hits wrap_search(const std::vector<paper::packed_normal>& normals, const light_grid& grid, const table& t, int hi,
+                      int lo, const sweep_config& cfg) {
   const std::uint64_t nl = grid.lights.size();
   return sweep<wrap_hits>(normals.size(), cfg, [&](wrap_hits& acc, std::uint64_t b, std::uint64_t end) {
     std::vector<std::uint32_t> cand;
@@ -104,8 +104,8 @@ wrap_hits wrap_search(const std::vector<paper::packed_normal>& normals, const li
   });
 }
 
-wrap_hits wrap_search_brute(const std::vector<paper::packed_normal>& normals, const light_grid& grid,
-                            const table& t, int hi, int lo, const sweep_config& cfg) {
+wrap_hits wrap_search_brute(const std::vector<paper::packed_normal>& normals, const light_grid& grid, const table& t,
+                            int hi, int lo, const sweep_config& cfg) {
   const std::uint64_t nl = grid.lights.size();
   return sweep<wrap_hits>(normals.size(), cfg, [&](wrap_hits& acc, std::uint64_t b, std::uint64_t end) {
     for (auto i = b; i < end; ++i)
@@ -153,10 +153,12 @@ first_hit find_error(const std::vector<paper::packed_normal>& normals, const lig
 
 error_result error_extremes(const std::vector<paper::packed_normal>& normals, const light_grid& g, const table& t,
                             const sweep_config& cfg) {
-  const auto hi = find_error(normals, g, t, 3,
-                             [&](const paper::packed_normal& p) { return t.alpha_error(p) == 1 && p.iX < 0 && p.iY < 0; }, cfg);
-  const auto lo = find_error(normals, g, t, -3,
-                             [&](const paper::packed_normal& p) { return t.alpha_error(p) == -1 && p.iX >= 0 && p.iY >= 0; }, cfg);
+  const auto hi = find_error(
+      normals, g, t, 3, [&](const paper::packed_normal& p) { return t.alpha_error(p) == 1 && p.iX < 0 && p.iY < 0; },
+      cfg);
+  const auto lo = find_error(
+      normals, g, t, -3,
+      [&](const paper::packed_normal& p) { return t.alpha_error(p) == -1 && p.iX >= 0 && p.iY >= 0; }, cfg);
   error_result r;
   r.evaluated = hi.evaluated + lo.evaluated;
   if (hi.index != UINT64_MAX && lo.index != UINT64_MAX) {

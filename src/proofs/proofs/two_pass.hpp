@@ -73,7 +73,10 @@ struct light_grid {
 struct wrap_hits {
   tally hits;
   std::uint64_t evaluated = 0;  // pairs actually evaluated (the rest were pruned)
-  void merge(const wrap_hits& later) { hits.merge(later.hits); evaluated += later.evaluated; }
+  void merge(const wrap_hits& later) {
+    hits.merge(later.hits);
+    evaluated += later.evaluated;
+  }
 };
 
 // Pruned search. Argument (with q_c = channel(n_c, l_c) − n_c and e = 3·n'_a − n_a, so that
@@ -84,10 +87,10 @@ struct wrap_hits {
 // n·l <= 128·(lo − e) + 127·#{n_c >= 0}. For |l| <= s those lights lie in a spherical cap around ±n,
 // whose bounding box of (x, y) cells is enumerated; every light in it is evaluated exactly. The
 // tests compare this against brute force (wrap_search_brute) on smaller instances.
-wrap_hits wrap_search(const std::vector<paper::packed_normal>& normals, const light_grid& grid, const table& t,
-                      int hi, int lo, const sweep_config& cfg);
-wrap_hits wrap_search_brute(const std::vector<paper::packed_normal>& normals, const light_grid& grid,
-                            const table& t, int hi, int lo, const sweep_config& cfg);
+wrap_hits wrap_search(const std::vector<paper::packed_normal>& normals, const light_grid& grid, const table& t, int hi,
+                      int lo, const sweep_config& cfg);
+wrap_hits wrap_search_brute(const std::vector<paper::packed_normal>& normals, const light_grid& grid, const table& t,
+                            int hi, int lo, const sweep_config& cfg);
 
 // The extremes of value − exact_dot over normals × grid lights. Reduction (argument in
 // claims_two_pass.cpp, two_pass_error_bound): without wraps the error is e − floor(Σ r_c) ∈ [−3, 3]

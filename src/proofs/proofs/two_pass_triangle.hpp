@@ -100,12 +100,11 @@ struct triangle_case {
 // patterns); so do the same runs for one normal of each of the 55 (|n| class, third channel) pairs of
 // the 249 rows of `bench/proofs_triangle_plan survey 84 400` with a positive margin (F_β >= 15990 for 16
 // of them, a stage-2 F >= 15990 for 3). A wrap needs F > 16000: the floors give back less than the
-// 2 (top) or 3 (bottom) that the threshold counts. Under truncate_to_8 at s = 83 the same runs (`83 truncate_to_8 IX IY SIDE
-// THIRD 15900 40 1 1 2000` for (61, 66, −1), (60, 67, −1), (−67, −63, 1), (−63, −67, 1), (−89, −65,
-// 1)) reach F 15944 at best (n = (60, 67, 91), bottom; exact value 127).
-// s = 124, gouraud_setup=per_pixel with truncate_to_8 only (the dobiestation profile): the exact
-// plane's light at the pixel lies in the unit box of an integer light m = (−27, −63, −105) just
-// outside the packed shell, whose flat value is −129 for n = (24, 59, 111); the multiply's floor hands
+// 2 (top) or 3 (bottom) that the threshold counts. Under truncate_to_8 at s = 83 the same runs (`83 truncate_to_8 IX IY
+// SIDE THIRD 15900 40 1 1 2000` for (61, 66, −1), (60, 67, −1), (−67, −63, 1), (−63, −67, 1), (−89, −65, 1)) reach F
+// 15944 at best (n = (60, 67, 91), bottom; exact value 127). s = 124, gouraud_setup=per_pixel with truncate_to_8 only
+// (the dobiestation profile): the exact plane's light at the pixel lies in the unit box of an integer light m = (−27,
+// −63, −105) just outside the packed shell, whose flat value is −129 for n = (24, 59, 111); the multiply's floor hands
 // it m. `proofs_triangle boxes 124` (1 088 normals open by the bound; this is the third of the
 // three rows it prints, the other two, for n = (23, 79, ·) and (23, 98, ·), wrap the same way; ~4 min
 // on one core).
@@ -135,7 +134,8 @@ gs::rgba8 light_colour(const ivec3& l) noexcept;
 // bounding box, ceil of the least x and y), read at the pixel under the set-up in force
 // (gs::gouraud_colour: gouraud_at for plane_steps, gouraud_exact_at for per_pixel). Whether the
 // pixel is covered is the rasteriser's business: the tests replay every certificate through it.
-gs::fragment_colour pixel_light(const triangle_case& c, gs::gouraud_setup setup = gs::gouraud_setup::plane_steps) noexcept;
+gs::fragment_colour pixel_light(const triangle_case& c,
+                                gs::gouraud_setup setup = gs::gouraud_setup::plane_steps) noexcept;
 
 // The error bound. Write P_c for the exact plane of channel c (8.7 units) through the three vertex
 // values, r for the reference pixel and g_c for the exact gradient. gouraud_triangle truncates the
@@ -233,7 +233,8 @@ constexpr std::int64_t floor_slack_units(const gs::model_options& o) noexcept {
 // −1: the bottom, value <= −129): 16384·(128 − e) − 16384·g·#{n_c < 0} and 16384·(129 + e) −
 // 16384·g·#{n_c > 0}, i.e. 16384·(128 − #{n_c < 0} − e) and 16384·(129 − #{n_c > 0} + e) plus
 // floor_slack_units per channel counted.
-constexpr std::int64_t wrap_threshold_units(const paper::packed_normal& p, int e, int side, const gs::model_options& o) noexcept {
+constexpr std::int64_t wrap_threshold_units(const paper::packed_normal& p, int e, int side,
+                                            const gs::model_options& o) noexcept {
   const int neg = (p.iX < 0) + (p.iY < 0) + (p.iZ < 0), pos = (p.iX > 0) + (p.iY > 0) + (p.iZ > 0);
   const int counted = side > 0 ? neg : pos;
   return std::int64_t{16384} * (side > 0 ? 128 - neg - e : 129 - pos + e) + floor_slack_units(o) * counted;
@@ -247,11 +248,12 @@ constexpr std::int64_t truncation_units(const paper::packed_normal& p, int side,
 }
 // (iii) The curvature, for case (ii). Write D for the set of channels aligned on both axes. Each
 // channel statement holds on its own (the argument of (i) is channel by channel, w is the same for
-// all; tests/proofs/triangle_test.cpp checks them one by one): for c in D both σ_c·L_c < σ_c·P_c(p) + 2W − 1 (1 + a + b <= 2W − 1) and σ_c·L_c < σ_c·P_c(w) + W,
-// with the same w for every channel of D (w comes from the geometry alone); for c not in D,
-// σ_c·L_c < σ_c·P_c(p) + W. P(p) and P(w) both lie in the ball B of radius R = 128·s around the
-// centre (16384 per channel). min(x, y) <= θx + (1 − θ)y for θ in [0, 1], so for every θ_c:
-//   n·L(p) − n·centre < max over v, u in B of [Σ_{c∉D} |n_c|·σ_c·v_c + Σ_{c∈D} |n_c|·(θ_c·σ_c·v_c + (1 − θ_c)·σ_c·u_c)] + K
+// all; tests/proofs/triangle_test.cpp checks them one by one): for c in D both σ_c·L_c < σ_c·P_c(p) + 2W − 1 (1 + a + b
+// <= 2W − 1) and σ_c·L_c < σ_c·P_c(w) + W, with the same w for every channel of D (w comes from the geometry alone);
+// for c not in D, σ_c·L_c < σ_c·P_c(p) + W. P(p) and P(w) both lie in the ball B of radius R = 128·s around the centre
+// (16384 per channel). min(x, y) <= θx + (1 − θ)y for θ in [0, 1], so for every θ_c:
+//   n·L(p) − n·centre < max over v, u in B of [Σ_{c∉D} |n_c|·σ_c·v_c + Σ_{c∈D} |n_c|·(θ_c·σ_c·v_c + (1 − θ_c)·σ_c·u_c)]
+//   + K
 //                     = R·(|α| + |β|) + K   (Cauchy–Schwarz, attained),
 //   α_c = |n_c| (c ∉ D), θ_c·|n_c| (c ∈ D);  β_c = (1 − θ_c)·|n_c| (c ∈ D), 0 (c ∉ D);
 //   K = Σ_{c∉D} |n_c|·W + Σ_{c∈D} |n_c|·(θ_c·(2W − 1) + (1 − θ_c)·W).

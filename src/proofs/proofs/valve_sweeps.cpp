@@ -77,7 +77,8 @@ true_normal_result true_normal_sweep(double step) {
       v::vec3<double> D;
       if (!v::exact_weights(n, D)) continue;
       const v::texel rgb = v::encode_normal_rgb8(n);
-      const v::texel ideal{v::to_unorm8(D.x, v::quantise::nearest), v::to_unorm8(D.y, v::quantise::nearest), v::to_unorm8(D.z, v::quantise::nearest)};
+      const v::texel ideal{v::to_unorm8(D.x, v::quantise::nearest), v::to_unorm8(D.y, v::quantise::nearest),
+                           v::to_unorm8(D.z, v::quantise::nearest)};
       const v::texel source = v::ssbump_texel(v::normal2ssbump(rgb));
       for (int l = 0; l < 3; ++l) {
         const double want = component(D, l);
@@ -111,7 +112,8 @@ precision_result precision_sweep(const texel_domain& dom, const sweep_config& cf
       for (int l = 0; l < 3; ++l) {
         const double want = component(D, l);
         const double got[4] = {v::rnm_diffuse(a32, t, unit_light[l]), v::rnm_diffuse(a24, t, unit_light[l]),
-                               v::ssbump_diffuse(a32, s_trunc, unit_light[l]), v::ssbump_diffuse(a32, s_near, unit_light[l])};
+                               v::ssbump_diffuse(a32, s_trunc, unit_light[l]),
+                               v::ssbump_diffuse(a32, s_near, unit_light[l])};
         for (int p = 0; p < 4; ++p) {
           if (std::isnan(got[p])) {
             r.nan[p] += l == 0;
@@ -123,9 +125,11 @@ precision_result precision_sweep(const texel_domain& dom, const sweep_config& cf
         }
       }
       const v::vec3<double> W = v::ssbump_weights(v::shader_arith{v::precision::exact}, s_trunc);
-      const bool cone = v::dot(U, v::exact_basis[0]) >= 0 && v::dot(U, v::exact_basis[1]) >= 0 && v::dot(U, v::exact_basis[2]) >= 0;
+      const bool cone =
+          v::dot(U, v::exact_basis[0]) >= 0 && v::dot(U, v::exact_basis[1]) >= 0 && v::dot(U, v::exact_basis[2]) >= 0;
       if (W.x + W.y + W.z == 0) continue;
-      const double ang[2] = {angle_degrees(v::reconstruct_normal(W), U), angle_degrees(v::reconstruct_normal_sqrt(W), U)};
+      const double ang[2] = {angle_degrees(v::reconstruct_normal(W), U),
+                             angle_degrees(v::reconstruct_normal_sqrt(W), U)};
       for (int k = 0; k < 2; ++k) {
         r.reconstruct[k][0].add(ang[k], i);
         if (cone) r.reconstruct[k][1].add(ang[k], i);
@@ -172,7 +176,8 @@ zero_sum_result zero_sum_sweep(const sweep_config& cfg) {
       // √6·255·N·B: B0 → 2X + √2·Z; B1 → −X + √3·Y + √2·Z; B2 → −X − √3·Y + √2·Z. None is 0.
       const bool exact = sign_root2(2 * X, Z) < 0 && sign_root3_root2(-X, Y, Z) < 0 && sign_root3_root2(-X, -Y, Z) < 0;
       const v::vec3<double> N = v::encoded_normal(t);
-      const double top = std::max({v::dot(N, v::exact_basis[0]), v::dot(N, v::exact_basis[1]), v::dot(N, v::exact_basis[2])});
+      const double top =
+          std::max({v::dot(N, v::exact_basis[0]), v::dot(N, v::exact_basis[1]), v::dot(N, v::exact_basis[2])});
       bool z32 = false, z24 = false;
       if (top <= 1e-3) z32 = shader_zero(a32, t), z24 = shader_zero(a24, t);
       r.fp32 += z32, r.fp24 += z24;

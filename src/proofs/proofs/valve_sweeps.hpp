@@ -16,10 +16,12 @@ namespace gsdot3::proofs::valve_sweeps {
 struct texel_domain {
   std::vector<std::uint8_t> values;
   std::string description;
-  std::uint64_t size() const noexcept { return static_cast<std::uint64_t>(values.size()) * values.size() * values.size(); }
+  std::uint64_t size() const noexcept {
+    return static_cast<std::uint64_t>(values.size()) * values.size() * values.size();
+  }
   std::uint32_t rgb(std::uint64_t i) const noexcept;  // 0xRRGGBB of index i (b fastest)
-  static texel_domain all();                            // 0..255: 2^24 texels
-  static texel_domain catalogue();                      // {0, 4, …, 252, 255}: 65³ = 274 625 texels
+  static texel_domain all();                          // 0..255: 2^24 texels
+  static texel_domain catalogue();                    // {0, 4, …, 252, 255}: 65³ = 274 625 texels
 };
 
 // A distribution of non-negative errors: max (first index reaching it), mean, RMSE.

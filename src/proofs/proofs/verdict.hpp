@@ -44,7 +44,7 @@ struct outcome {
 
   const figure* find(std::string_view figure_name) const noexcept;
   std::int64_t integer(std::string_view figure_name) const;  // throws if absent or not integral
-  double real(std::string_view figure_name) const;            // either kind, as a double
+  double real(std::string_view figure_name) const;           // either kind, as a double
 };
 
 // How many witnesses a claim reports at most.
@@ -94,12 +94,24 @@ struct extremes {
 
   bool empty() const noexcept { return min > max; }
   void add(std::int64_t v, std::uint64_t index) noexcept {
-    if (v < min) { min = v; arg_min = index; }
-    if (v > max) { max = v; arg_max = index; }
+    if (v < min) {
+      min = v;
+      arg_min = index;
+    }
+    if (v > max) {
+      max = v;
+      arg_max = index;
+    }
   }
   void merge(const extremes& later) noexcept {
-    if (later.min < min) { min = later.min; arg_min = later.arg_min; }
-    if (later.max > max) { max = later.max; arg_max = later.arg_max; }
+    if (later.min < min) {
+      min = later.min;
+      arg_min = later.arg_min;
+    }
+    if (later.max > max) {
+      max = later.max;
+      arg_max = later.arg_max;
+    }
   }
 };
 

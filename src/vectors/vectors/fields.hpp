@@ -25,7 +25,7 @@ gs::frame_psm psm_field(std::uint64_t v);
 std::uint32_t frame_word(std::uint64_t v, gs::frame_psm psm, std::string_view name);
 std::uint64_t fit_frame_word(std::uint32_t w, std::uint64_t psm);
 gs::rgba8 colour_field(std::uint64_t v, std::string_view name);
-gs::gouraud_channel cf_field(std::uint64_t v);                       // 8.7
+gs::gouraud_channel cf_field(std::uint64_t v);                             // 8.7
 gs::fragment_colour fragment_fields(const values& in, std::size_t first);  // Cf R, G, B, A from in[first..]
 
 // Register decoders report a bad value as gs::register_error; here it is a domain error.
@@ -33,16 +33,14 @@ template <typename Decode>
 auto decode(Decode&& d, std::uint64_t v) {
   try {
     return d(v);
-  } catch (const gs::register_error& e) {
-    throw domain_error(e.what());
-  }
+  } catch (const gs::register_error& e) { throw domain_error(e.what()); }
 }
 
 // ---- building cases -------------------------------------------------------------------------------
 inline constexpr std::uint64_t frame_formats[] = {0x00, 0x01, 0x02, 0x0a, 0x30, 0x31, 0x32, 0x3a};
 inline constexpr std::uint64_t level1_formats[] = {0x00, 0x01, 0x02};  // one of each pixel size
 // s11 values at the edges of the blend output range (−509..763), of 8 bits and of 11 bits.
-inline constexpr int wide_boundary[] = {-1024, -509, -256, -255, -1, 0,     1,     0x7F,
+inline constexpr int wide_boundary[] = {-1024, -509, -256, -255,  -1,    0,     1,   0x7F,
                                         0x80,  0xFE, 0xFF, 0x100, 0x101, 0x1FF, 763, 1023};
 // A DIMX matrix with every 3-bit value, the pattern PCSX2's default DIMX resembles.
 inline constexpr std::uint64_t dimx_mixed = 0x7340'2615'0736'5142u;  // every nibble <= 7

@@ -53,7 +53,8 @@ values parse_fields(const std::vector<field>& fields, const std::vector<std::str
 std::string header_line(const unit& u, const gs::model_options& o) {
   std::string s(format_magic);
   s.append(" ").append(std::to_string(format_version)).append(" unit=").append(u.name);
-  for (const auto& row : gs::option_catalogue()) s.append(" ").append(row.name).append("=").append(gs::option_value(o, row.name));
+  for (const auto& row : gs::option_catalogue())
+    s.append(" ").append(row.name).append("=").append(gs::option_value(o, row.name));
   return s;
 }
 
@@ -76,11 +77,13 @@ header parse_header(std::string_view line) {
   header h;
   for (std::size_t i = 2; i < tokens.size(); ++i) {
     const auto eq = tokens[i].find('=');
-    if (eq == std::string_view::npos) throw format_error("header item '" + std::string(tokens[i]) + "' is not NAME=VALUE");
+    if (eq == std::string_view::npos)
+      throw format_error("header item '" + std::string(tokens[i]) + "' is not NAME=VALUE");
     const auto name = tokens[i].substr(0, eq), value = tokens[i].substr(eq + 1);
     if (name == "unit") {
       h.u = find_unit(value);
-      if (!h.u) throw format_error("unknown unit '" + std::string(value) + "' (one of " + std::string(unit_names()) + ")");
+      if (!h.u)
+        throw format_error("unknown unit '" + std::string(value) + "' (one of " + std::string(unit_names()) + ")");
     } else if (auto err = gs::set_option(h.options, name, value)) {
       throw format_error(*err);
     }

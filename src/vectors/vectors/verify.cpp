@@ -27,9 +27,7 @@ verify_result verify_vectors(std::istream& in, std::ostream& report, const verif
       if (is_ignorable(line)) continue;
       try {
         h = parse_header(line);
-      } catch (const format_error& e) {
-        throw format_error("line " + std::to_string(number) + ": " + e.what());
-      }
+      } catch (const format_error& e) { throw format_error("line " + std::to_string(number) + ": " + e.what()); }
       apply_overrides(h->options, s);
       continue;
     }
@@ -41,16 +39,16 @@ verify_result verify_vectors(std::istream& in, std::ostream& report, const verif
       if (expected == c.outputs) {
         rep.pass();
       } else {
-        rep.mismatch(format_fields(u.inputs, c.inputs), format_fields(u.outputs, c.outputs), format_fields(u.outputs, expected));
+        rep.mismatch(format_fields(u.inputs, c.inputs), format_fields(u.outputs, c.outputs),
+                     format_fields(u.outputs, expected));
       }
-    } catch (const format_error& e) {
-      rep.malformed(number, e.what());
-    } catch (const domain_error& e) {
+    } catch (const format_error& e) { rep.malformed(number, e.what()); } catch (const domain_error& e) {
       rep.malformed(number, std::string("input outside the unit's domain: ") + e.what());
     }
   }
-  if (!h) throw format_error("line " + std::to_string(number + 1) + ": no header line '" + std::string(format_magic) + " " +
-                             std::to_string(format_version) + " unit=NAME ...' (empty input)");
+  if (!h)
+    throw format_error("line " + std::to_string(number + 1) + ": no header line '" + std::string(format_magic) + " " +
+                       std::to_string(format_version) + " unit=NAME ...' (empty input)");
   return rep.finish();
 }
 
@@ -58,7 +56,8 @@ namespace {
 
 // The pixel the recording read back: `dst` drawn without blending over a cleared PSMCT32 frame,
 // then `src` with blending on (see ../shared/hw/README.md for the test program's setup).
-std::uint32_t ps2autotests_pixel(const gs::alpha_reg& alpha, std::uint32_t src, std::uint32_t dst, const gs::model_options& o) {
+std::uint32_t ps2autotests_pixel(const gs::alpha_reg& alpha, std::uint32_t src, std::uint32_t dst,
+                                 const gs::model_options& o) {
   gs::gs_registers regs;  // PSMCT32, FBMSK 0, COLCLAMP = 1, no PABE / FBA / dither / texture / alpha test
   regs.PRIM.PRIM = gs::prim_type::SPRITE;
   auto draw = [&](std::uint32_t colour, std::uint32_t old) {
@@ -92,7 +91,10 @@ std::optional<std::uint32_t> take_hex(std::string_view& rest, std::size_t digits
   std::uint32_t v = 0;
   for (std::size_t i = 0; i < digits; ++i) {
     const char c = rest[i];
-    const int d = c >= '0' && c <= '9' ? c - '0' : c >= 'a' && c <= 'f' ? c - 'a' + 10 : c >= 'A' && c <= 'F' ? c - 'A' + 10 : -1;
+    const int d = c >= '0' && c <= '9'   ? c - '0'
+                  : c >= 'a' && c <= 'f' ? c - 'a' + 10
+                  : c >= 'A' && c <= 'F' ? c - 'A' + 10
+                                         : -1;
     if (d < 0) return std::nullopt;
     v = v << 4 | static_cast<std::uint32_t>(d);
   }

@@ -38,7 +38,9 @@ class reporter {
   void mismatch(const std::string& inputs, const std::string& observed, const std::string& expected) {
     fail(inputs + " => " + observed + " expected: " + expected);
   }
-  void malformed(std::size_t line, const std::string& why) { fail("line " + std::to_string(line) + ": malformed: " + why); }
+  void malformed(std::size_t line, const std::string& why) {
+    fail("line " + std::to_string(line) + ": malformed: " + why);
+  }
   bool stopped() const { return s_.errorstop && r_.failed > 0; }
   verify_result finish() {
     out_ << r_.passed << " passed, " << r_.failed << " failed\n";

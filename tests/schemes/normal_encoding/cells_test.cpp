@@ -29,7 +29,8 @@ double sampled_max(const ne::method& m, int bits, std::uint64_t n) {
 // The largest angle over 2^16 directions in the cap of radius 1° around p (a dense local look at
 // the supremum's neighbourhood: suprema at a pole are approached only inside thin slivers there).
 double local_max(const ne::method& m, int bits, ne::vec3 p) {
-  const ne::vec3 a = std::fabs(p.x) < 0.9 ? ne::normalize(ne::cross(p, {1, 0, 0})) : ne::normalize(ne::cross(p, {0, 1, 0}));
+  const ne::vec3 a =
+      std::fabs(p.x) < 0.9 ? ne::normalize(ne::cross(p, {1, 0, 0})) : ne::normalize(ne::cross(p, {0, 1, 0}));
   const ne::vec3 b = ne::cross(p, a);
   double best = 0;
   constexpr std::uint64_t n = 65536;
@@ -57,7 +58,8 @@ TEST(NormalEncodingCells, FarthestPointOfACapAndABox) {
   // An empty region: z >= 0.5 and z <= 0.4.
   EXPECT_FALSE(ne::farthest({0, 0, 1}, {{{0, 0, 1}, 0.5}, {{0, 0, -1}, -0.4}}).nonempty);
   // The box x, y ∈ [0, 0.1], z > 0 seen from +z: farthest at its corner (0.1, 0.1, sqrt(0.98)).
-  const auto box = ne::farthest({0, 0, 1}, {{{1, 0, 0}, 0}, {{-1, 0, 0}, -0.1}, {{0, 1, 0}, 0}, {{0, -1, 0}, -0.1}, {{0, 0, 1}, 0}});
+  const auto box =
+      ne::farthest({0, 0, 1}, {{{1, 0, 0}, 0}, {{-1, 0, 0}, -0.1}, {{0, 1, 0}, 0}, {{0, -1, 0}, -0.1}, {{0, 0, 1}, 0}});
   EXPECT_NEAR(box.min_dot, std::sqrt(0.98), 1e-12);
 }
 

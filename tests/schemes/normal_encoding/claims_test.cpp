@@ -35,7 +35,8 @@ TEST(NormalEncodingClaims, CodesAgainstTheDiscCount) {
     EXPECT_EQ(o.integer(std::string(m) + ".unit"), inside) << m;
   }
   EXPECT_EQ(o.integer("xy-sign.nan_inf"), 2 * (65536 - inside));
-  for (auto m : {"octahedral", "octahedral-snorm", "stereographic", "spherical"}) EXPECT_EQ(o.integer(std::string(m) + ".nan_inf"), 0) << m;
+  for (auto m : {"octahedral", "octahedral-snorm", "stereographic", "spherical"})
+    EXPECT_EQ(o.integer(std::string(m) + ".nan_inf"), 0) << m;
   // Distinct directions, counted by hand in exhaustive_test.cpp: octahedral 254² + 4·128 − 3,
   // spherical 254·255 + 2 (poles and the φ = ±π seam identified), stereographic all 65 536.
   EXPECT_EQ(o.integer("octahedral.distinct_directions"), 254 * 254 + 4 * 128 - 3);
@@ -54,8 +55,10 @@ TEST(NormalEncodingClaims, WorstCaseNotBelowPublishedSampledMaxima) {
   EXPECT_LT(o.real("octahedral-precise.sampled_max_deg"), o.real("octahedral.sampled_max_deg"));
   // #1 at (0, 0, −1): code (128, 128) decodes to (1/255, 1/255, sqrt(1 − 2/255²)): the angle is
   // 180° − atan(sqrt(2)/255 / sqrt(1 − 2/255²)) = 179.6822...°.
-  EXPECT_NEAR(o.real("xy.sup_deg"), 180 - std::atan(std::sqrt(2.0) / 255 / std::sqrt(1 - 2.0 / 65025)) * 180 / std::numbers::pi, 1e-6);
-  for (auto m : {"spheremap", "cryengine3", "lambert"}) EXPECT_GT(o.integer(std::string(m) + ".cells_nan_decode"), 0) << m;
+  EXPECT_NEAR(o.real("xy.sup_deg"),
+              180 - std::atan(std::sqrt(2.0) / 255 / std::sqrt(1 - 2.0 / 65025)) * 180 / std::numbers::pi, 1e-6);
+  for (auto m : {"spheremap", "cryengine3", "lambert"})
+    EXPECT_GT(o.integer(std::string(m) + ".cells_nan_decode"), 0) << m;
 }
 
 TEST(NormalEncodingClaims, EquivalenceSingularitiesRanking) {

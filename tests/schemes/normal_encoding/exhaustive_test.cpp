@@ -68,7 +68,8 @@ TEST(NormalEncodingExhaustive, EveryCodeAt2x8) {
 
 TEST(NormalEncodingExhaustive, WorstCaseTableAt10And12Bits) {
   constexpr std::uint64_t samples = std::uint64_t{1} << 21;
-  std::printf("%-20s %5s %14s %14s %14s %10s  witness n (hex)\n", "method", "bits", "sup_deg", "upper_deg", "sampled_deg", "nan_cells");
+  std::printf("%-20s %5s %14s %14s %14s %10s  witness n (hex)\n", "method", "bits", "sup_deg", "upper_deg",
+              "sampled_deg", "nan_cells");
   for (int bits : {10, 12}) {  // 8 bits: the catalogue's normal-encoding.worst-case
     for (const auto& m : ne::methods()) {
       if (m.only_8_bits && bits != 8) continue;
@@ -83,11 +84,10 @@ TEST(NormalEncodingExhaustive, WorstCaseTableAt10And12Bits) {
       }
       EXPECT_LE(sampled, w.upper_deg + 1e-9) << m.name << " " << bits;
       // liamtyler.github.io "octahedral analysis": 12+12 bits, 10^6 random directions, max 0.0586°.
-      if (m.id == ne::method_id::octahedral && bits == 12) {
-        EXPECT_GE(w.sup_deg, 0.0586);
-      }
-      std::printf("%-20s %5d %14.9f %14.9f %14.9f %10llu  (%a, %a, %a)\n", std::string(m.name).c_str(), bits, w.sup_deg, w.upper_deg,
-                  sampled, static_cast<unsigned long long>(w.nonfinite_cells), w.witness.x, w.witness.y, w.witness.z);
+      if (m.id == ne::method_id::octahedral && bits == 12) { EXPECT_GE(w.sup_deg, 0.0586); }
+      std::printf("%-20s %5d %14.9f %14.9f %14.9f %10llu  (%a, %a, %a)\n", std::string(m.name).c_str(), bits, w.sup_deg,
+                  w.upper_deg, sampled, static_cast<unsigned long long>(w.nonfinite_cells), w.witness.x, w.witness.y,
+                  w.witness.z);
     }
   }
 }

@@ -26,7 +26,8 @@ const ne::worst_case& bound(const ne::method& m, int bits) {
   return it->second;
 }
 rc::Gen<ne::vec3> unit_normal() {
-  return rc::gen::map(rc::gen::pair(rc::gen::inRange<std::int64_t>(0, std::int64_t{1} << 40), rc::gen::inRange<std::int64_t>(0, std::int64_t{1} << 40)),
+  return rc::gen::map(rc::gen::pair(rc::gen::inRange<std::int64_t>(0, std::int64_t{1} << 40),
+                                    rc::gen::inRange<std::int64_t>(0, std::int64_t{1} << 40)),
                       [](std::pair<std::int64_t, std::int64_t> p) {
                         const double z = 2 * std::ldexp(static_cast<double>(p.first), -40) - 1;
                         const double phi = 2 * std::numbers::pi * std::ldexp(static_cast<double>(p.second), -40);

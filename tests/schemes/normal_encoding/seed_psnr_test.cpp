@@ -12,9 +12,9 @@ namespace ne = gsdot3::normal_encoding;
 
 TEST(SeedPsnr, KnownDifferencesClampedAndNonFinite) {
   ne::seed_error_sum s;
-  s.add({0, 0, 0}, {0.1, -0.2, 0.3});   // squares 0.01 + 0.04 + 0.09
-  s.add({1, -1, 0}, {0.5, 1, -0.4});    // |−2| clamps to 1: 0.25 + 1 + 0.16
-  s.add({0, 0, 1}, {NAN, 0, 0});        // full scale: 3
+  s.add({0, 0, 0}, {0.1, -0.2, 0.3});  // squares 0.01 + 0.04 + 0.09
+  s.add({1, -1, 0}, {0.5, 1, -0.4});   // |−2| clamps to 1: 0.25 + 1 + 0.16
+  s.add({0, 0, 1}, {NAN, 0, 0});       // full scale: 3
   const ne::seed_error e = s.done();
   EXPECT_EQ(e.samples, 3u);
   EXPECT_EQ(e.nonfinite, 1u);

@@ -71,7 +71,7 @@ TEST(NormalEncoding, SphereMapLambertCryAxes) {
     EXPECT_TRUE(std::isnan(dec(m, enc(m, {0, 0, -1})).z) || std::isnan(dec(m, enc(m, {0, 0, -1})).x)) << m;
   }
   expect_code(enc("cryengine3", {1, 0, 0}), 218, 128);  // normalize((1,0))·sqrt(1/2)/2 + 1/2 = 0.853553
-  expect_code(enc("cryengine3", {0, 0, 1}), 0, 0);       // normalize(0) = NaN, stored as 0
+  expect_code(enc("cryengine3", {0, 0, 1}), 0, 0);      // normalize(0) = NaN, stored as 0
   // Lambert's decode of code (218, 128): a = (218/255 − 1/2, 1/510); n = (4a·sqrt(1 − 4|a|²), 1 − 8|a|²).
   const double ax = 218.0 / 255 - 0.5, ay = 128.0 / 255 - 0.5, r2 = ax * ax + ay * ay;
   const ne::vec3 d = dec("lambert", {{218, 128, 0}});
@@ -114,9 +114,7 @@ TEST(NormalEncoding, OctahedralAxesAndDiagonals) {
 
 TEST(NormalEncoding, ViewSpaceIsXyInTheViewFrame) {
   // View down −z: the frame is the identity; so #8 = #1 there. View along y: normalize(0) = NaN.
-  for (ne::vec3 n : {ne::vec3{0.6, 0, 0.8}, ne::vec3{0, 0, 1}}) {
-    EXPECT_EQ(enc("view-space", n), enc("xy", n));
-  }
+  for (ne::vec3 n : {ne::vec3{0.6, 0, 0.8}, ne::vec3{0, 0, 1}}) { EXPECT_EQ(enc("view-space", n), enc("xy", n)); }
 }
 
 TEST(NormalEncoding, BadParametersAreOneLineErrors) {

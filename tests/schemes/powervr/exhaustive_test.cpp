@@ -23,7 +23,8 @@ TEST(PowervrExhaustive, IdentityErrorEveryQWithinTheBound) {
       const auto st = proofs::powervr_sweeps::identity_8bit_error(g, a, p, {});
       ASSERT_EQ(st.n, g.size());
       std::printf("%s %s: %llu cases, max %.6f, mean %.6f, RMSE %.6f (1/255), bound %.6f\n", name(p), name(a),
-                  static_cast<unsigned long long>(st.n), st.max_abs, st.mean(), st.rmse(), test::identity_error_bound(p));
+                  static_cast<unsigned long long>(st.n), st.max_abs, st.mean(), st.rmse(),
+                  test::identity_error_bound(p));
       EXPECT_LE(st.max_abs, test::identity_error_bound(p)) << name(p) << " " << name(a);
     }
 }

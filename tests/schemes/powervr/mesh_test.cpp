@@ -40,8 +40,8 @@ TEST(PowervrMesh, ClockwiseUvCheckAgreesWithTheTangentFrameOnEveryTriangle) {
   const auto& v0 = s.model.vertices[s.model.triangles[0][0]];
   const float unmirrored = glm::dot(glm::cross(v0.normal, v0.tangent), v0.bitangent) < 0 ? -1.0f : 1.0f;
   const check plain = run_check(s.model, unmirrored);
-  std::printf("shared mesh: %d triangles, %d with clockwise UVs, %d vertex frames disagreeing\n", plain.triangles, plain.clockwise,
-              plain.disagree);
+  std::printf("shared mesh: %d triangles, %d with clockwise UVs, %d vertex frames disagreeing\n", plain.triangles,
+              plain.clockwise, plain.disagree);
   EXPECT_EQ(plain.clockwise, 0);  // the embedded head has no mirrored UVs
   EXPECT_EQ(plain.disagree, 0);
   // The same mesh with u mirrored (u → −u) and its frames recomputed: every triangle is now clockwise,
@@ -49,8 +49,8 @@ TEST(PowervrMesh, ClockwiseUvCheckAgreesWithTheTangentFrameOnEveryTriangle) {
   for (auto& v : s.model.vertices) v.uv.x = -v.uv.x;
   pipeline::compute_tangents(s.model);
   const check mirrored = run_check(s.model, unmirrored);
-  std::printf("mirrored u: %d triangles, %d with clockwise UVs, %d vertex frames disagreeing\n", mirrored.triangles, mirrored.clockwise,
-              mirrored.disagree);
+  std::printf("mirrored u: %d triangles, %d with clockwise UVs, %d vertex frames disagreeing\n", mirrored.triangles,
+              mirrored.clockwise, mirrored.disagree);
   EXPECT_EQ(mirrored.clockwise, mirrored.triangles);
   EXPECT_EQ(mirrored.disagree, 0);
 }
@@ -65,7 +65,9 @@ TEST(PowervrMesh, MirroringTheFrameGivesTheMirroredTexelsShading) {
     glm::dvec3 N = decode_normal(t, azimuth_scale::flycast_255);
     N.x = -N.x;
     const offset_colour k = offset_nearest(seed_atan2({-L.x, L.y, L.z}, 1.0), azimuth_scale::flycast_255);
-    ASSERT_NEAR(intensity_exact(t, k, azimuth_scale::flycast_255), 255.0 * glm::dot(N, L), 0.5 + 0.5 + k.K3 * 3.1415927 / 255.0) << i;
+    ASSERT_NEAR(intensity_exact(t, k, azimuth_scale::flycast_255), 255.0 * glm::dot(N, L),
+                0.5 + 0.5 + k.K3 * 3.1415927 / 255.0)
+        << i;
   }
 }
 

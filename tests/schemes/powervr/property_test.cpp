@@ -31,18 +31,22 @@ int output(bump_texel t, double S_l, double T, int Q, precision p) {
   return intensity(t, k, a, p);
 }
 
-RC_GTEST_PROP(PowervrProperty, IdentityWithinTheBound, (std::uint16_t texel, std::uint8_t Q, std::uint16_t t16, std::uint16_t s16)) {
+RC_GTEST_PROP(PowervrProperty, IdentityWithinTheBound,
+              (std::uint16_t texel, std::uint8_t Q, std::uint16_t t16, std::uint16_t s16)) {
   const double T = t16 / 65535.0 * std::numbers::pi / 2, S_l = s16 / 65535.0;
   const auto t = bump_texel::unpack(texel);
-  for (auto p : all_precisions) RC_ASSERT(std::abs(output(t, S_l, T, Q, p) - exact(t, S_l, T, Q)) <= test::identity_error_bound(p));
+  for (auto p : all_precisions)
+    RC_ASSERT(std::abs(output(t, S_l, T, Q, p) - exact(t, S_l, T, Q)) <= test::identity_error_bound(p));
 }
 
-RC_GTEST_PROP(PowervrProperty, NonIncreasingInLightIntensity, (std::uint16_t texel, std::uint8_t Q, std::uint16_t t16, std::uint16_t s1, std::uint16_t s2)) {
+RC_GTEST_PROP(PowervrProperty, NonIncreasingInLightIntensity,
+              (std::uint16_t texel, std::uint8_t Q, std::uint16_t t16, std::uint16_t s1, std::uint16_t s2)) {
   const double T = t16 / 65535.0 * std::numbers::pi / 2;
   const double lo = std::min(s1, s2) / 65535.0, hi = std::max(s1, s2) / 65535.0;
   const auto t = bump_texel::unpack(texel);
   RC_ASSERT(exact(t, hi, T, Q) <= exact(t, lo, T, Q) + 1e-9);
-  for (auto p : all_precisions) RC_ASSERT(output(t, hi, T, Q, p) <= output(t, lo, T, Q, p) + 2 * test::identity_error_bound(p));
+  for (auto p : all_precisions)
+    RC_ASSERT(output(t, hi, T, Q, p) <= output(t, lo, T, Q, p) + 2 * test::identity_error_bound(p));
 }
 
 RC_GTEST_PROP(PowervrProperty, EncoderRoundTripIsStable, (std::uint16_t texel)) {

@@ -24,7 +24,8 @@ TEST(PowervrRender, FlatQuadIsTheClosedForm) {
     const auto* m = find_scheme_method(name);
     ASSERT_NE(m, nullptr) << name;
     EXPECT_TRUE(m->non_negative);
-    const auto p = std::string_view(name) == "pvr-fixed8" ? schemes::powervr::precision::fixed8 : schemes::powervr::precision::float32;
+    const auto p = std::string_view(name) == "pvr-fixed8" ? schemes::powervr::precision::fixed8
+                                                          : schemes::powervr::precision::float32;
     const double bound = (schemes::powervr::test::identity_error_bound(p) + 255.0 * angle) * 128.0 / 255.0;
     const scheme_frame f = m->render(q.s, q.ps, g.visible_triangle, {});
     int covered = 0;

@@ -25,9 +25,10 @@ TEST(PowervrUnit, StraightOutIsK1PlusK2) {
         for (int k2 = 0; k2 < 256; k2 += 5)
           for (int k3 : {0, 77, 255})
             for (int q : {0, 100, 255}) {
-              const offset_colour k{static_cast<std::uint8_t>(k1), static_cast<std::uint8_t>(k2), static_cast<std::uint8_t>(k3),
-                                    static_cast<std::uint8_t>(q)};
-              ASSERT_EQ(intensity({255, 17}, k, a, p), std::min(k1 + k2, 255)) << name(p) << " " << name(a) << " K = " << k.packed();
+              const offset_colour k{static_cast<std::uint8_t>(k1), static_cast<std::uint8_t>(k2),
+                                    static_cast<std::uint8_t>(k3), static_cast<std::uint8_t>(q)};
+              ASSERT_EQ(intensity({255, 17}, k, a, p), std::min(k1 + k2, 255))
+                  << name(p) << " " << name(a) << " K = " << k.packed();
             }
 }
 
@@ -42,7 +43,9 @@ TEST(PowervrUnit, AzimuthEqualToQLeavesK3CosS) {
             const offset_colour k{0, 0, static_cast<std::uint8_t>(k3), static_cast<std::uint8_t>(q)};
             const double exact = k3 * std::cos(S * pi / 510.0);
             const double bound = p == precision::float32 ? 0.5 + 1e-3 : 0.5 + k3 * std::ldexp(0.5, -table_bits(p));
-            ASSERT_LE(std::abs(intensity({static_cast<std::uint8_t>(S), static_cast<std::uint8_t>(q)}, k, a, p) - exact), bound)
+            ASSERT_LE(
+                std::abs(intensity({static_cast<std::uint8_t>(S), static_cast<std::uint8_t>(q)}, k, a, p) - exact),
+                bound)
                 << name(p) << " S = " << S << " K3 = " << k3;
           }
 }
@@ -52,8 +55,8 @@ TEST(PowervrUnit, FlycastTablesAreTheFloatFormulaBitForBit) {
     const flycast_tables t(a);
     for (int i = 0; i < 65536; i += 7)
       for (std::uint32_t kw : {0x00FF0010u, 0x4080C0F0u, 0xFF00FFFFu, 0x10203040u}) {
-        const offset_colour k{static_cast<std::uint8_t>(kw >> 24), static_cast<std::uint8_t>(kw >> 16), static_cast<std::uint8_t>(kw >> 8),
-                              static_cast<std::uint8_t>(kw)};
+        const offset_colour k{static_cast<std::uint8_t>(kw >> 24), static_cast<std::uint8_t>(kw >> 16),
+                              static_cast<std::uint8_t>(kw >> 8), static_cast<std::uint8_t>(kw)};
         const auto tx = bump_texel::unpack(static_cast<std::uint16_t>(i));
         ASSERT_EQ(t.value(tx, k), intensity_flycast(tx, k, a)) << i;
       }
@@ -114,8 +117,10 @@ TEST(PowervrUnit, KallistiOSTexelEncoderExamples) {
   // pxlFloattoSpherical: straight out → altitude 0 → 0 ^ 0xFF = 255; in-plane → 255 ^ 0xFF = 0.
   EXPECT_EQ(encode_normal({0, 0, 1}, texel_rounding::kallistios, azimuth_scale::flycast_255), (bump_texel{255, 0}));
   EXPECT_EQ(encode_normal({1, 0, 0}, texel_rounding::kallistios, azimuth_scale::flycast_255), (bump_texel{0, 0}));
-  EXPECT_EQ(encode_normal({0, 1, 0}, texel_rounding::kallistios, azimuth_scale::flycast_255), (bump_texel{0, 64}));   // 63.75 + 0.5
-  EXPECT_EQ(encode_normal({-1, 0, 0}, texel_rounding::kallistios, azimuth_scale::flycast_255), (bump_texel{0, 128}));  // 127.5 + 0.5
+  EXPECT_EQ(encode_normal({0, 1, 0}, texel_rounding::kallistios, azimuth_scale::flycast_255),
+            (bump_texel{0, 64}));  // 63.75 + 0.5
+  EXPECT_EQ(encode_normal({-1, 0, 0}, texel_rounding::kallistios, azimuth_scale::flycast_255),
+            (bump_texel{0, 128}));  // 127.5 + 0.5
   EXPECT_EQ(encode_normal({0, 1, 0}, texel_rounding::nearest, azimuth_scale::kos_256), (bump_texel{0, 64}));
   EXPECT_EQ(encode_normal({0, 0, 0}, texel_rounding::nearest, azimuth_scale::kos_256), (bump_texel{255, 0}));
 }
@@ -134,7 +139,8 @@ TEST(PowervrUnit, RoundTripsWithinTheQuantisationBound) {
           const glm::dvec3 n{std::cos(e) * std::cos(az), std::cos(e) * std::sin(az), std::sin(e)};
           const glm::dvec3 back = decode_normal(encode_normal(n, r, a), dec);
           const double angle = std::acos(std::clamp(glm::dot(n, back), -1.0, 1.0));
-          ASSERT_LE(angle, de + std::cos(std::max(0.0, e - de)) * da + 1e-5) << name(r) << " e = " << ie << " az = " << ia;
+          ASSERT_LE(angle, de + std::cos(std::max(0.0, e - de)) * da + 1e-5)
+              << name(r) << " e = " << ie << " az = " << ia;
         }
     }
 }

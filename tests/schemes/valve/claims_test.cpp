@@ -22,13 +22,15 @@ p::outcome run(std::string_view id) {
 }
 
 void print(const char* what, const vs::stat& s) {
-  std::printf("%-44s max %.6f  mean %.6f  rmse %.6f  (n = %llu)\n", what, s.max, s.mean(), s.rmse(), static_cast<unsigned long long>(s.n));
+  std::printf("%-44s max %.6f  mean %.6f  rmse %.6f  (n = %llu)\n", what, s.max, s.mean(), s.rmse(),
+              static_cast<unsigned long long>(s.n));
 }
 
 TEST(ValveClaims, EveryRowOfTheSectionRuns) {
-  const char* ids[] = {"valve.eq1-not-orthonormal", "valve.basis-orthonormal", "valve.float-literals", "valve.zero-sum",
-                       "valve.flat-normal", "valve.precision", "valve.ssbump-filter-linear", "valve.rnm-filter",
-                       "valve.reconstruct-normal"};
+  const char* ids[] = {
+      "valve.eq1-not-orthonormal", "valve.basis-orthonormal", "valve.float-literals",       "valve.zero-sum",
+      "valve.flat-normal",         "valve.precision",         "valve.ssbump-filter-linear", "valve.rnm-filter",
+      "valve.reconstruct-normal"};
   std::size_t n = 0;
   for (const auto& c : p::catalogue()) n += c.section.starts_with("Seed 001");
   EXPECT_EQ(n, std::size(ids));
@@ -59,7 +61,8 @@ TEST(ValveClaims, FloatLiterals) {
 // Independent count of the zero-sum texels: long double evaluation of 255·N·B_i (no texel is within
 // 1e-9 of a sign change: checked here, so the long double signs are exact).
 TEST(ValveClaims, ZeroSumCountByLongDouble) {
-  const long double s2 = std::sqrt(2.0L / 3.0L), i2 = 1 / std::sqrt(2.0L), i3 = 1 / std::sqrt(3.0L), i6 = 1 / std::sqrt(6.0L);
+  const long double s2 = std::sqrt(2.0L / 3.0L), i2 = 1 / std::sqrt(2.0L), i3 = 1 / std::sqrt(3.0L),
+                    i6 = 1 / std::sqrt(6.0L);
   std::uint64_t count = 0, close = 0;
   for (int r = 0; r < 256; ++r)
     for (int g = 0; g < 256; ++g)

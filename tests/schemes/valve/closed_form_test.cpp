@@ -45,7 +45,7 @@ TEST(ValveBasis, GramMatricesByHand) {
 }
 
 TEST(ValveShaderFloat, Fp24RoundsToSeventeenBitsTiesToEven) {
-  EXPECT_EQ(round_fp24(1.0 + std::ldexp(1.0, -17)), 1.0);                           // tie → even (down)
+  EXPECT_EQ(round_fp24(1.0 + std::ldexp(1.0, -17)), 1.0);                             // tie → even (down)
   EXPECT_EQ(round_fp24(1.0 + 3 * std::ldexp(1.0, -17)), 1.0 + std::ldexp(1.0, -15));  // tie → even (up)
   EXPECT_EQ(round_fp24(1.0 + std::ldexp(1.0, -16)), 1.0 + std::ldexp(1.0, -16));      // representable
   EXPECT_EQ(round_fp24(1.0 / 3.0), 87381.0 / 262144.0);  // round(2^18/3) = 87381, a 17-bit significand
@@ -58,7 +58,8 @@ TEST(ValveShaderFloat, Fp24RoundsToSeventeenBitsTiesToEven) {
 // Σ (N·B_i)² = |N|² = 1 + 2/255², and D_i = (N·B_i)² / |N|².
 TEST(ValveClosedForm, FlatTexelWeights) {
   const double e = 1.0 / 255.0, len2 = 1.0 + 2.0 * e * e;
-  const double p0 = sqrt_2_3 * e + inv_sqrt3, p1 = (inv_sqrt2 - inv_sqrt6) * e + inv_sqrt3, p2 = -(inv_sqrt2 + inv_sqrt6) * e + inv_sqrt3;
+  const double p0 = sqrt_2_3 * e + inv_sqrt3, p1 = (inv_sqrt2 - inv_sqrt6) * e + inv_sqrt3,
+               p2 = -(inv_sqrt2 + inv_sqrt6) * e + inv_sqrt3;
   vec3<double> D;
   ASSERT_TRUE(exact_weights(encoded_normal({128, 128, 255}), D));
   EXPECT_NEAR(D.x, p0 * p0 / len2, 1e-15);
@@ -89,7 +90,8 @@ TEST(ValveClosedForm, Normal2SsbumpFlatTexel) {
   EXPECT_EQ(ssbump_texel(D), (texel{85, 85, 83}));
   EXPECT_EQ(ssbump_texel(D, quantise::nearest), (texel{86, 85, 84}));
   // SSBump evaluation of that texel with unit lightmaps returns the texel / 255 exactly in fp32.
-  EXPECT_EQ(ssbump_diffuse(shader_arith{precision::fp32}, {85, 85, 83}, {1, 0, 0}), static_cast<double>(85.0f / 255.0f));
+  EXPECT_EQ(ssbump_diffuse(shader_arith{precision::fp32}, {85, 85, 83}, {1, 0, 0}),
+            static_cast<double>(85.0f / 255.0f));
 }
 
 // A normal on basis vector B_i: B_j·B_i = 0 for j ≠ i, so D = e_i.

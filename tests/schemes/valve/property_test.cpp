@@ -27,7 +27,8 @@ RC_GTEST_PROP(ValveProperty, SsbumpEvaluationIsLinear, ()) {
 
 // Σ D_i = 1 wherever eq. (3) is defined, exactly (double) and in the shader with unit lightmaps.
 RC_GTEST_PROP(ValveProperty, WeightsSumToOneWhereDefined, ()) {
-  const texel t{*rc::gen::arbitrary<std::uint8_t>(), *rc::gen::arbitrary<std::uint8_t>(), *rc::gen::arbitrary<std::uint8_t>()};
+  const texel t{*rc::gen::arbitrary<std::uint8_t>(), *rc::gen::arbitrary<std::uint8_t>(),
+                *rc::gen::arbitrary<std::uint8_t>()};
   vec3<double> D;
   if (!exact_weights(normalised(encoded_normal(t)), D)) {
     RC_ASSERT(std::isnan(rnm_diffuse(shader_arith{precision::fp32}, t, {1, 0, 0})));
@@ -44,7 +45,8 @@ RC_GTEST_PROP(ValveProperty, WeightsSumToOneWhereDefined, ()) {
 // The weights do not depend on the texel normal's length (up to saturate), so normalising first
 // changes nothing as long as every N·B_i ≤ 1.
 RC_GTEST_PROP(ValveProperty, WeightsAreScaleInvariant, ()) {
-  const texel t{*rc::gen::arbitrary<std::uint8_t>(), *rc::gen::arbitrary<std::uint8_t>(), *rc::gen::arbitrary<std::uint8_t>()};
+  const texel t{*rc::gen::arbitrary<std::uint8_t>(), *rc::gen::arbitrary<std::uint8_t>(),
+                *rc::gen::arbitrary<std::uint8_t>()};
   const vec3<double> N = encoded_normal(t), U = normalised(N);
   vec3<double> D, E;
   RC_PRE(dot(N, exact_basis[0]) <= 1 && dot(N, exact_basis[1]) <= 1 && dot(N, exact_basis[2]) <= 1);

@@ -11,7 +11,9 @@
 namespace gsdot3::pipeline {
 namespace {
 
-float centre(const scheme_frame& f, const test::flat_quad& q) { return f.dot[0][static_cast<std::size_t>(20 * q.s.width + 30)]; }
+float centre(const scheme_frame& f, const test::flat_quad& q) {
+  return f.dot[0][static_cast<std::size_t>(20 * q.s.width + 30)];
+}
 
 scheme_frame run(const char* method, const test::flat_quad& q) {
   const frame g = render(q.s, q.ps, method::two_pass, {});

@@ -33,9 +33,7 @@ run_result run(const std::string& args) {
 }
 
 fs::path dir() {
-  static const fs::path d = [] {
-    return gsdot3::test::fresh_temp_dir("gsdot3-ssbump-tools");
-  }();
+  static const fs::path d = [] { return gsdot3::test::fresh_temp_dir("gsdot3-ssbump-tools"); }();
   return d;
 }
 
@@ -52,7 +50,10 @@ TEST(SsbumpTool, FromNormalByHand) {
   ASSERT_EQ(out.width, 3);
   const std::vector<std::uint8_t> want = {85, 85, 83, 255, 254, 0, 0, 255, 0, 0, 0, 255};
   EXPECT_EQ(out.rgba, want);
-  ASSERT_EQ(run("ssbump from-normal --rounding nearest " + (dir() / "n.png").string() + " " + (dir() / "o2.png").string()).code, 0);
+  ASSERT_EQ(
+      run("ssbump from-normal --rounding nearest " + (dir() / "n.png").string() + " " + (dir() / "o2.png").string())
+          .code,
+      0);
   out = gsdot3::pipeline::read_png_rgba(dir() / "o2.png");
   const std::vector<std::uint8_t> nearest = {86, 85, 84, 255, 255, 0, 0, 255, 0, 0, 0, 255};
   EXPECT_EQ(out.rgba, nearest);
@@ -63,7 +64,8 @@ TEST(SsbumpTool, FromNormalByHand) {
 TEST(SsbumpTool, FromHeightFlatIs147) {
   gsdot3::pipeline::image grey{8, 8, 1, std::vector<std::uint8_t>(64, 128)};
   gsdot3::pipeline::write_png(dir() / "h.png", grey);
-  const auto r = run("ssbump from-height --scale 4 --threads 2 " + (dir() / "h.png").string() + " " + (dir() / "hs.png").string());
+  const auto r =
+      run("ssbump from-height --scale 4 --threads 2 " + (dir() / "h.png").string() + " " + (dir() / "hs.png").string());
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.err.find("100%"), std::string::npos);  // progress on stderr
   const auto out = gsdot3::pipeline::read_png_rgba(dir() / "hs.png");
@@ -77,11 +79,12 @@ TEST(SsbumpTool, FromHeightFlatIs147) {
 TEST(SsbumpTool, HelpAndOneLineErrors) {
   EXPECT_EQ(run("ssbump from-height --help").code, 0);
   std::ofstream(dir() / "bad.png") << "not a png";
-  for (const std::string& args : std::vector<std::string>{"ssbump from-normal " + (dir() / "bad.png").string() + " x.png",
-                                 "ssbump from-normal " + (dir() / "missing.png").string() + " x.png",
-                                 "ssbump from-height " + (dir() / "h.png").string() + " x.png --scale 0",
-                                 "ssbump from-height " + (dir() / "h.png").string() + " x.png --scale 1 --height alpha",
-                                 "ssbump from-normal " + (dir() / "n.png").string() + " x.png --rounding up"}) {
+  for (const std::string& args :
+       std::vector<std::string>{"ssbump from-normal " + (dir() / "bad.png").string() + " x.png",
+                                "ssbump from-normal " + (dir() / "missing.png").string() + " x.png",
+                                "ssbump from-height " + (dir() / "h.png").string() + " x.png --scale 0",
+                                "ssbump from-height " + (dir() / "h.png").string() + " x.png --scale 1 --height alpha",
+                                "ssbump from-normal " + (dir() / "n.png").string() + " x.png --rounding up"}) {
     const auto r = run(args);
     EXPECT_EQ(r.code, 2) << args;
     EXPECT_EQ(r.err.rfind("gsdot3: error: ", 0), 0u) << r.err;

@@ -31,7 +31,8 @@ std::string outside_folder(const std::filesystem::path& folder, const std::strin
   const std::string prefix = folder.empty() ? std::string() : folder.string() + "/";
   if (!prefix.empty() && named.compare(0, prefix.size(), prefix) == 0) named.erase(0, prefix.size());
   named.erase(0, named.find_first_not_of('/'));
-  if (has_scheme(named)) return "a URI scheme (" + named.substr(0, named.find(':') + 1) + ") other than a relative path";
+  if (has_scheme(named))
+    return "a URI scheme (" + named.substr(0, named.find(':') + 1) + ") other than a relative path";
   // The rest as the operating system opens the path: "a//b" is "a/b", ".." and links resolved.
   const fs::path resolved = fs::weakly_canonical(fs::absolute(fs::path(reference), ec), ec);
   if (ec) return "a path that cannot be resolved";

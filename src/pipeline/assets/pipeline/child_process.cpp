@@ -44,7 +44,8 @@ constexpr bool under_address_sanitizer = false;
 // Signals whose handlers a sanitizer or fuzzer runtime may have installed in the parent: the child
 // dies of them as a plain process would, so its crash is reported as a signal and no inherited
 // handler runs (libFuzzer's wrote one crash artifact per assimp abort in the child).
-constexpr int reset_signals[] = {SIGABRT, SIGBUS, SIGFPE, SIGILL, SIGSEGV, SIGTRAP, SIGALRM, SIGINT, SIGTERM, SIGUSR1, SIGUSR2, SIGXCPU, SIGXFSZ};
+constexpr int reset_signals[] = {SIGABRT, SIGBUS,  SIGFPE,  SIGILL,  SIGSEGV, SIGTRAP, SIGALRM,
+                                 SIGINT,  SIGTERM, SIGUSR1, SIGUSR2, SIGXCPU, SIGXFSZ};
 
 void redirect(int target, int flags) {
   const int null = ::open("/dev/null", flags);
@@ -85,8 +86,9 @@ std::string run_in_child(const std::function<std::string()>& work, const child_l
   if (pid == 0) {  // the child: one status byte ('O' result, 'E' error, 'M' out of memory), then the text
     ::close(fds[0]);
     for (int sig : reset_signals) ::signal(sig, SIG_DFL);
-    redirect(STDIN_FILENO, O_RDONLY);   // a file the parser opens by name (/dev/stdin) reads nothing, never the terminal
-    redirect(STDERR_FILENO, O_WRONLY);  // the parser's own complaints (assert text) stay out of gsdot3's one-line errors
+    redirect(STDIN_FILENO, O_RDONLY);  // a file the parser opens by name (/dev/stdin) reads nothing, never the terminal
+    redirect(STDERR_FILENO,
+             O_WRONLY);              // the parser's own complaints (assert text) stay out of gsdot3's one-line errors
     if (!under_address_sanitizer) {  // ASan reserves terabytes of shadow up front: under a cap its next mmap fails
       const rlimit cap{limits.address_space, limits.address_space};
       ::setrlimit(RLIMIT_AS, &cap);
@@ -96,9 +98,7 @@ std::string run_in_child(const std::function<std::string()>& work, const child_l
     std::string out(1, 'O');
     try {
       out.append(work());
-    } catch (const std::bad_alloc&) {
-      out.assign(1, 'M');
-    } catch (const std::exception& e) {
+    } catch (const std::bad_alloc&) { out.assign(1, 'M'); } catch (const std::exception& e) {
       out.assign(1, 'E');
       out.append(e.what());
     }
@@ -108,22 +108,26 @@ std::string run_in_child(const std::function<std::string()>& work, const child_l
   }
   ::close(fds[1]);
   std::string got;
-  const bool finished = read_until(fds[0], std::chrono::steady_clock::now() + std::chrono::seconds(limits.wall_seconds), got);
+  const bool finished =
+      read_until(fds[0], std::chrono::steady_clock::now() + std::chrono::seconds(limits.wall_seconds), got);
   ::close(fds[0]);
   if (!finished) ::kill(pid, SIGKILL);
   int status = 0;
-  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-  }
+  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {}
   if (!finished)
     throw std::runtime_error("the reader did not finish within " + std::to_string(limits.wall_seconds) +
                              " s and was stopped: a malformed file?");
   const std::string gib = std::to_string(limits.address_space >> 30);
   if (WIFSIGNALED(status) && WTERMSIG(status) == SIGXCPU)
-    throw std::runtime_error("the reader used more than " + std::to_string(limits.cpu_seconds) + " s of CPU (stuck on a malformed file?)");
-  if (WIFSIGNALED(status)) throw std::runtime_error("the reader crashed (signal " + std::to_string(WTERMSIG(status)) + "): a malformed file");
+    throw std::runtime_error("the reader used more than " + std::to_string(limits.cpu_seconds) +
+                             " s of CPU (stuck on a malformed file?)");
+  if (WIFSIGNALED(status))
+    throw std::runtime_error("the reader crashed (signal " + std::to_string(WTERMSIG(status)) + "): a malformed file");
   if (got.empty() && WIFEXITED(status) && WEXITSTATUS(status) != 0)
-    throw std::runtime_error("the reader stopped with exit code " + std::to_string(WEXITSTATUS(status)) + " and no result: a malformed file");
-  if (got.empty() || got[0] == 'M') throw std::runtime_error("the reader ran out of memory (more than " + gib + " GiB): a malformed or huge file");
+    throw std::runtime_error("the reader stopped with exit code " + std::to_string(WEXITSTATUS(status)) +
+                             " and no result: a malformed file");
+  if (got.empty() || got[0] == 'M')
+    throw std::runtime_error("the reader ran out of memory (more than " + gib + " GiB): a malformed or huge file");
   if (got[0] == 'E') throw std::runtime_error(got.substr(1));
   return got.substr(1);
 }

@@ -19,7 +19,7 @@ constexpr float pi = std::numbers::pi_v<float>;
 glm::vec3 head_point(float th, float ph) {
   const float s = std::sin(th), c = std::cos(th);
   float r = 1.0f;
-  const float front = std::max(0.0f, std::cos(ph));                    // 1 on the face
+  const float front = std::max(0.0f, std::cos(ph));                                      // 1 on the face
   r += 0.18f * std::exp(-std::pow((th - 1.55f) / 0.22f, 2.0f)) * std::pow(front, 8.0f);  // nose
   r += 0.07f * std::exp(-std::pow((th - 1.05f) / 0.15f, 2.0f)) * std::pow(front, 2.0f);  // brow
   r -= 0.06f * std::exp(-std::pow((th - 1.30f) / 0.12f, 2.0f)) * std::pow(std::fabs(std::sin(ph)), 6.0f) * front;
@@ -108,7 +108,8 @@ texture32 procedural_diffuse(int width, int height) {
     for (int x = 0; x < width; ++x) {
       const bool line = (x % std::max(width / 4, 1)) < 2 || (y % std::max(height / 4, 1)) < 2;
       const std::uint32_t r = line ? 0x58 : 0x98, g = line ? 0x50 : 0x90, b = line ? 0x48 : 0x88;
-      t.texels[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)] = r | g << 8 | b << 16 | 0x80u << 24;
+      t.texels[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)] =
+          r | g << 8 | b << 16 | 0x80u << 24;
     }
   return t;
 }

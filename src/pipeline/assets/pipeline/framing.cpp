@@ -38,8 +38,9 @@ glm::vec3 view_direction(float azimuth, float elevation) {
 // Turns a vector given for the front view (eye on +z) into the view (azimuth, elevation).
 glm::vec3 turn(glm::vec3 p, float azimuth, float elevation) {
   const float az = glm::radians(azimuth), el = glm::radians(std::clamp(elevation, -89.0f, 89.0f));
-  const glm::vec3 q{p.x, p.y * std::cos(el) + p.z * std::sin(el), -p.y * std::sin(el) + p.z * std::cos(el)};  // about x, up by el
-  return {q.x * std::cos(az) + q.z * std::sin(az), q.y, -q.x * std::sin(az) + q.z * std::cos(az)};               // about y by az
+  const glm::vec3 q{p.x, p.y * std::cos(el) + p.z * std::sin(el),
+                    -p.y * std::sin(el) + p.z * std::cos(el)};                                      // about x, up by el
+  return {q.x * std::cos(az) + q.z * std::sin(az), q.y, -q.x * std::sin(az) + q.z * std::cos(az)};  // about y by az
 }
 
 }  // namespace

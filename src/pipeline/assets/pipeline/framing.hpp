@@ -29,7 +29,8 @@ void normalise(mesh& m, const bounding_sphere& b);
 // outline keeps `margin` (a factor, 1.1 = 10 %) inside the nearer frame edge. `fov_degrees` is the
 // field of view across the frame's narrower side (the camera's vertical field widens for a frame
 // taller than wide, up to 160°).
-camera frame_unit_sphere(float azimuth, float elevation, int width, int height, float fov_degrees = 40.0f, float margin = 1.1f);
+camera frame_unit_sphere(float azimuth, float elevation, int width, int height, float fov_degrees = 40.0f,
+                         float margin = 1.1f);
 
 // The embedded scene's two lights (green front-left above, blue right), turned with the view.
 std::vector<point_light> default_lights(float azimuth, float elevation);

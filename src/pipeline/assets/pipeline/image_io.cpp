@@ -24,7 +24,8 @@ void check_image_size(long long width, long long height, const std::string& name
 std::vector<std::uint8_t> read_file_bytes(const std::filesystem::path& file, const std::string& what) {
   std::ifstream in(file, std::ios::binary);
   std::error_code ec;
-  if (!in || !std::filesystem::is_regular_file(file, ec)) throw std::runtime_error(file.string() + ": cannot open the " + what);
+  if (!in || !std::filesystem::is_regular_file(file, ec))
+    throw std::runtime_error(file.string() + ": cannot open the " + what);
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
@@ -90,7 +91,8 @@ png_pixels read_png(const std::uint8_t* data, std::size_t size, const std::strin
     const int channels = rgba ? 4 : (type & PNG_COLOR_MASK_COLOR) ? 3 : 1;
     out.img = {static_cast<int>(w), static_cast<int>(h), channels,
                std::vector<std::uint8_t>(static_cast<std::size_t>(w) * h * static_cast<std::size_t>(channels))};
-    if (png_get_rowbytes(png, info) != static_cast<std::size_t>(w) * static_cast<std::size_t>(channels)) png_error(png, "layout");
+    if (png_get_rowbytes(png, info) != static_cast<std::size_t>(w) * static_cast<std::size_t>(channels))
+      png_error(png, "layout");
     for (png_uint_32 y = 0; y < h; ++y)
       rows.push_back(out.img.data.data() + static_cast<std::size_t>(y) * w * static_cast<std::size_t>(channels));
     png_read_image(png, rows.data());

@@ -10,11 +10,16 @@ namespace {
 std::string escape(const std::string& text) {
   std::string out;
   for (char c : text) {
-    if (c == '<') out += "&lt;";
-    else if (c == '>') out += "&gt;";
-    else if (c == '&') out += "&amp;";
-    else if (c == '"') out += "&quot;";
-    else out += c;
+    if (c == '<')
+      out += "&lt;";
+    else if (c == '>')
+      out += "&gt;";
+    else if (c == '&')
+      out += "&amp;";
+    else if (c == '"')
+      out += "&quot;";
+    else
+      out += c;
   }
   return out;
 }
@@ -23,14 +28,25 @@ std::string escape(const std::string& text) {
 
 std::string mesh_json(const import_report& r) {
   const nlohmann::json j = {
-      {"file", r.file}, {"format", r.format}, {"meshes", r.meshes}, {"instances", r.instances}, {"triangles", r.triangles},
-      {"dropped", {{"points", r.dropped_points}, {"lines", r.dropped_lines}, {"zero_area_triangles", r.dropped_degenerate}}},
+      {"file", r.file},
+      {"format", r.format},
+      {"meshes", r.meshes},
+      {"instances", r.instances},
+      {"triangles", r.triangles},
+      {"dropped",
+       {{"points", r.dropped_points}, {"lines", r.dropped_lines}, {"zero_area_triangles", r.dropped_degenerate}}},
       {"duplicate_triangles", {{"found", r.duplicate_triangles}, {"action", r.duplicates_dropped ? "drop" : "keep"}}},
-      {"normals", {{"source", r.normals}, {"generated_positions", r.normals_generated},
-                   {"renormalised_positions", r.normals_renormalised}, {"replaced_positions", r.normals_replaced}}},
+      {"normals",
+       {{"source", r.normals},
+        {"generated_positions", r.normals_generated},
+        {"renormalised_positions", r.normals_renormalised},
+        {"replaced_positions", r.normals_replaced}}},
       {"uvs", r.uvs},
-      {"tangents", {{"source", r.tangents}, {"convention", "MikkTSpace (glTF 2.0)"},
-                    {"zero_uv_area_triangles", r.zero_uv_area_triangles}, {"fallback_corners", r.fallback_tangent_corners}}}};
+      {"tangents",
+       {{"source", r.tangents},
+        {"convention", "MikkTSpace (glTF 2.0)"},
+        {"zero_uv_area_triangles", r.zero_uv_area_triangles},
+        {"fallback_corners", r.fallback_tangent_corners}}}};
   return j.dump();
 }
 
@@ -59,11 +75,14 @@ std::string input_json(const input_summary& s) {
 }
 
 std::string input_html(const input_summary& s) {
-  auto row = [](const std::string& k, const std::string& v) { return "<tr><th>" + k + "</th><td style=\"text-align:left\">" + escape(v) + "</td></tr>\n"; };
+  auto row = [](const std::string& k, const std::string& v) {
+    return "<tr><th>" + k + "</th><td style=\"text-align:left\">" + escape(v) + "</td></tr>\n";
+  };
   std::string h = "<h2>Input</h2>\n<table>\n";
   if (s.mesh) {
     const import_report& r = *s.mesh;
-    h += row("mesh", r.file + " (" + r.format + "): " + std::to_string(r.meshes) + " mesh(es), " + std::to_string(r.triangles) + " triangles");
+    h += row("mesh", r.file + " (" + r.format + "): " + std::to_string(r.meshes) + " mesh(es), " +
+                         std::to_string(r.triangles) + " triangles");
     h += row("normals", r.normals);
     h += row("UVs", r.uvs);
     h += row("tangents", r.tangents);
@@ -72,8 +91,11 @@ std::string input_html(const input_summary& s) {
   }
   std::string nm = s.normal_map_source;
   if (s.normal_map)
-    nm += " (" + s.normal_map->format + " " + std::to_string(s.normal_map->source_width) + "×" + std::to_string(s.normal_map->source_height) +
-          (s.normal_map->resampled ? ", resampled to " + std::to_string(s.normal_map->map.width) + "×" + std::to_string(s.normal_map->map.height) : "") +
+    nm += " (" + s.normal_map->format + " " + std::to_string(s.normal_map->source_width) + "×" +
+          std::to_string(s.normal_map->source_height) +
+          (s.normal_map->resampled ? ", resampled to " + std::to_string(s.normal_map->map.width) + "×" +
+                                         std::to_string(s.normal_map->map.height)
+                                   : "") +
           ", green " + s.normal_map_y + ")";
   h += row("normal map", nm);
   h += row("camera", s.camera);

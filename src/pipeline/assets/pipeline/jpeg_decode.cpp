@@ -44,7 +44,8 @@ image decode_jpeg(const std::uint8_t* data, std::size_t size, const std::string&
   jpeg_create_decompress(&info);
   jpeg_mem_src(&info, data, static_cast<unsigned long>(size));
   jpeg_read_header(&info, TRUE);
-  too_large = info.image_width > static_cast<JDIMENSION>(max_image_side) || info.image_height > static_cast<JDIMENSION>(max_image_side) ||
+  too_large = info.image_width > static_cast<JDIMENSION>(max_image_side) ||
+              info.image_height > static_cast<JDIMENSION>(max_image_side) ||
               static_cast<long long>(info.image_width) * info.image_height > max_image_pixels;
   if (!too_large) {
     info.out_color_space = info.num_components == 1 ? JCS_GRAYSCALE : JCS_RGB;
@@ -52,7 +53,8 @@ image decode_jpeg(const std::uint8_t* data, std::size_t size, const std::string&
     img = {static_cast<int>(info.output_width), static_cast<int>(info.output_height), info.output_components,
            std::vector<std::uint8_t>(static_cast<std::size_t>(info.output_width) * info.output_height *
                                      static_cast<std::size_t>(info.output_components))};
-    const std::size_t stride = static_cast<std::size_t>(info.output_width) * static_cast<std::size_t>(info.output_components);
+    const std::size_t stride =
+        static_cast<std::size_t>(info.output_width) * static_cast<std::size_t>(info.output_components);
     while (info.output_scanline < info.output_height) {
       JSAMPROW row = img.data.data() + stride * info.output_scanline;
       jpeg_read_scanlines(&info, &row, 1);

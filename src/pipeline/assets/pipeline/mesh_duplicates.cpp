@@ -29,7 +29,8 @@ triangle_key key_of(const mesh& m, const std::array<std::uint32_t, 3>& t) {
                                       key_of(m.vertices[t[2]].position)};
   const std::size_t first = static_cast<std::size_t>(std::min_element(p.begin(), p.end()) - p.begin());
   triangle_key k{};
-  for (std::size_t i = 0; i < 3; ++i) std::copy(p[(first + i) % 3].begin(), p[(first + i) % 3].end(), k.begin() + 3 * i);
+  for (std::size_t i = 0; i < 3; ++i)
+    std::copy(p[(first + i) % 3].begin(), p[(first + i) % 3].end(), k.begin() + 3 * i);
   return k;
 }
 

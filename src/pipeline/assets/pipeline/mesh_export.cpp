@@ -16,7 +16,8 @@ namespace {
 
 // Appends `count` elements of `components` floats (or indices) to the buffer as one view and accessor.
 template <class T>
-int add_accessor(tinygltf::Model& g, const std::vector<T>& values, int type, int component_type, std::size_t count, int target) {
+int add_accessor(tinygltf::Model& g, const std::vector<T>& values, int type, int component_type, std::size_t count,
+                 int target) {
   std::vector<unsigned char>& data = g.buffers[0].data;
   while (data.size() % 4 != 0) data.push_back(0);  // accessors are aligned to their component size
   tinygltf::BufferView view;
@@ -44,8 +45,10 @@ void export_mesh_glb(const mesh& m, const std::filesystem::path& file) {
   for (std::size_t i = 0; i < m.vertices.size(); ++i) {
     const vertex& v = m.vertices[i];
     for (int k = 0; k < 3; ++k) {
-      lo[static_cast<std::size_t>(k)] = i == 0 ? v.position[k] : std::min<double>(lo[static_cast<std::size_t>(k)], v.position[k]);
-      hi[static_cast<std::size_t>(k)] = i == 0 ? v.position[k] : std::max<double>(hi[static_cast<std::size_t>(k)], v.position[k]);
+      lo[static_cast<std::size_t>(k)] =
+          i == 0 ? v.position[k] : std::min<double>(lo[static_cast<std::size_t>(k)], v.position[k]);
+      hi[static_cast<std::size_t>(k)] =
+          i == 0 ? v.position[k] : std::max<double>(hi[static_cast<std::size_t>(k)], v.position[k]);
     }
     position.insert(position.end(), {v.position.x, v.position.y, v.position.z});
     normal.insert(normal.end(), {v.normal.x, v.normal.y, v.normal.z});
@@ -63,12 +66,16 @@ void export_mesh_glb(const mesh& m, const std::filesystem::path& file) {
   const std::size_t n = m.vertices.size();
   tinygltf::Primitive p;
   p.mode = TINYGLTF_MODE_TRIANGLES;
-  p.attributes["POSITION"] = add_accessor(g, position, TINYGLTF_TYPE_VEC3, TINYGLTF_COMPONENT_TYPE_FLOAT, n, TINYGLTF_TARGET_ARRAY_BUFFER);
+  p.attributes["POSITION"] =
+      add_accessor(g, position, TINYGLTF_TYPE_VEC3, TINYGLTF_COMPONENT_TYPE_FLOAT, n, TINYGLTF_TARGET_ARRAY_BUFFER);
   g.accessors.back().minValues = lo;  // required for POSITION (glTF 2.0, "Accessors")
   g.accessors.back().maxValues = hi;
-  p.attributes["NORMAL"] = add_accessor(g, normal, TINYGLTF_TYPE_VEC3, TINYGLTF_COMPONENT_TYPE_FLOAT, n, TINYGLTF_TARGET_ARRAY_BUFFER);
-  p.attributes["TANGENT"] = add_accessor(g, tangent, TINYGLTF_TYPE_VEC4, TINYGLTF_COMPONENT_TYPE_FLOAT, n, TINYGLTF_TARGET_ARRAY_BUFFER);
-  p.attributes["TEXCOORD_0"] = add_accessor(g, uv, TINYGLTF_TYPE_VEC2, TINYGLTF_COMPONENT_TYPE_FLOAT, n, TINYGLTF_TARGET_ARRAY_BUFFER);
+  p.attributes["NORMAL"] =
+      add_accessor(g, normal, TINYGLTF_TYPE_VEC3, TINYGLTF_COMPONENT_TYPE_FLOAT, n, TINYGLTF_TARGET_ARRAY_BUFFER);
+  p.attributes["TANGENT"] =
+      add_accessor(g, tangent, TINYGLTF_TYPE_VEC4, TINYGLTF_COMPONENT_TYPE_FLOAT, n, TINYGLTF_TARGET_ARRAY_BUFFER);
+  p.attributes["TEXCOORD_0"] =
+      add_accessor(g, uv, TINYGLTF_TYPE_VEC2, TINYGLTF_COMPONENT_TYPE_FLOAT, n, TINYGLTF_TARGET_ARRAY_BUFFER);
   p.indices = add_accessor(g, indices, TINYGLTF_TYPE_SCALAR, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, indices.size(),
                            TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
   g.meshes.resize(1);
@@ -82,7 +89,8 @@ void export_mesh_glb(const mesh& m, const std::filesystem::path& file) {
 
   std::ostringstream out;
   tinygltf::TinyGLTF writer;
-  if (!writer.WriteGltfSceneToStream(&g, out, false, true)) throw std::runtime_error(file.string() + ": cannot write the glTF file");
+  if (!writer.WriteGltfSceneToStream(&g, out, false, true))
+    throw std::runtime_error(file.string() + ": cannot write the glTF file");
   write_file_atomically(file, out.str());
 }
 

@@ -41,13 +41,15 @@ source_mesh convert(const aiMesh& am, std::size_t index, import_report& report) 
   for (unsigned i = 0; i < am.mNumVertices; ++i) {
     const glm::vec3 p = v3(am.mVertices[i]);
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-      throw std::runtime_error(which + ": vertex " + std::to_string(i) + " has a non-finite position (NaN or infinity)");
+      throw std::runtime_error(which + ": vertex " + std::to_string(i) +
+                               " has a non-finite position (NaN or infinity)");
     m.positions.push_back(p);
   }
   if (am.mNormals != nullptr)
     for (unsigned i = 0; i < am.mNumVertices; ++i) m.normals.push_back(v3(am.mNormals[i]));
   if (am.mTextureCoords[0] != nullptr)  // assimp: v runs up the image; the renderer's v runs down
-    for (unsigned i = 0; i < am.mNumVertices; ++i) m.uvs.push_back({am.mTextureCoords[0][i].x, 1.0f - am.mTextureCoords[0][i].y});
+    for (unsigned i = 0; i < am.mNumVertices; ++i)
+      m.uvs.push_back({am.mTextureCoords[0][i].x, 1.0f - am.mTextureCoords[0][i].y});
   if (am.mTangents != nullptr && am.mBitangents != nullptr)
     for (unsigned i = 0; i < am.mNumVertices; ++i) {
       m.tangents.push_back(v3(am.mTangents[i]));
@@ -60,8 +62,8 @@ source_mesh convert(const aiMesh& am, std::size_t index, import_report& report) 
     if (face.mNumIndices < 3) continue;
     for (unsigned k = 0; k < face.mNumIndices; ++k)
       if (face.mIndices[k] >= am.mNumVertices)
-        throw std::runtime_error(which + ": face " + std::to_string(f) + " refers to vertex " + std::to_string(face.mIndices[k]) +
-                                 " of " + std::to_string(am.mNumVertices));
+        throw std::runtime_error(which + ": face " + std::to_string(f) + " refers to vertex " +
+                                 std::to_string(face.mIndices[k]) + " of " + std::to_string(am.mNumVertices));
     for (unsigned k = 1; k + 1 < face.mNumIndices; ++k)  // a polygon the triangulation left: a fan
       m.triangles.push_back({face.mIndices[0], face.mIndices[k], face.mIndices[k + 1]});
   }
@@ -135,13 +137,15 @@ const aiScene& scene_or_error(const aiScene* s, const Assimp::Importer& imp, con
   if (s != nullptr) return *s;
   std::string why = imp.GetErrorString();
   std::replace(why.begin(), why.end(), '\n', ' ');
-  throw std::runtime_error(name + ": cannot read the mesh (" + (why.empty() ? std::string("unknown format") : why) + ")");
+  throw std::runtime_error(name + ": cannot read the mesh (" + (why.empty() ? std::string("unknown format") : why) +
+                           ")");
 }
 
 // The importer that read the scene, as assimp records it (AI_METADATA_SOURCE_FORMAT); else the extension.
 std::string format_of(const aiScene* s, const std::string& extension) {
   aiString f;
-  if (s != nullptr && s->mMetaData != nullptr && s->mMetaData->Get(AI_METADATA_SOURCE_FORMAT, f) && f.length > 0) return f.C_Str();
+  if (s != nullptr && s->mMetaData != nullptr && s->mMetaData->Get(AI_METADATA_SOURCE_FORMAT, f) && f.length > 0)
+    return f.C_Str();
   return extension;
 }
 
@@ -149,8 +153,13 @@ std::string format_of(const aiScene* s, const std::string& extension) {
 struct writer {
   std::string out;
   template <class T>
-  void pod(const T& v) { out.append(reinterpret_cast<const char*>(&v), sizeof v); }
-  void text(const std::string& t) { pod(t.size()); out += t; }
+  void pod(const T& v) {
+    out.append(reinterpret_cast<const char*>(&v), sizeof v);
+  }
+  void text(const std::string& t) {
+    pod(t.size());
+    out += t;
+  }
   template <class T>
   void pods(const std::vector<T>& v) {
     pod(v.size());
@@ -192,9 +201,9 @@ std::string serialise(const imported_mesh& m) {
   w.pods(m.model.triangles);
   const import_report& r = m.report;
   for (const std::string* t : {&r.file, &r.format, &r.normals, &r.uvs, &r.tangents}) w.text(*t);
-  for (std::size_t n : {r.meshes, r.instances, r.triangles, r.dropped_points, r.dropped_lines, r.dropped_degenerate, r.normals_generated,
-                        r.normals_renormalised, r.normals_replaced, r.zero_uv_area_triangles, r.fallback_tangent_corners,
-                        r.duplicate_triangles})
+  for (std::size_t n : {r.meshes, r.instances, r.triangles, r.dropped_points, r.dropped_lines, r.dropped_degenerate,
+                        r.normals_generated, r.normals_renormalised, r.normals_replaced, r.zero_uv_area_triangles,
+                        r.fallback_tangent_corners, r.duplicate_triangles})
     w.pod(n);
   w.pod(r.duplicates_dropped);
   w.pod(r.notices.size());
@@ -222,9 +231,9 @@ imported_mesh deserialise(const std::string& bytes) {
   m.model.triangles = rd.pods<std::array<std::uint32_t, 3>>();
   import_report& r = m.report;
   for (std::string* t : {&r.file, &r.format, &r.normals, &r.uvs, &r.tangents}) *t = rd.text();
-  for (std::size_t* n : {&r.meshes, &r.instances, &r.triangles, &r.dropped_points, &r.dropped_lines, &r.dropped_degenerate, &r.normals_generated,
-                         &r.normals_renormalised, &r.normals_replaced, &r.zero_uv_area_triangles, &r.fallback_tangent_corners,
-                         &r.duplicate_triangles})
+  for (std::size_t* n : {&r.meshes, &r.instances, &r.triangles, &r.dropped_points, &r.dropped_lines,
+                         &r.dropped_degenerate, &r.normals_generated, &r.normals_renormalised, &r.normals_replaced,
+                         &r.zero_uv_area_triangles, &r.fallback_tangent_corners, &r.duplicate_triangles})
     *n = rd.pod<std::size_t>();
   r.duplicates_dropped = rd.pod<bool>();
   for (std::size_t i = 0, n = rd.pod<std::size_t>(); i < n && rd.at < bytes.size(); ++i) r.notices.push_back(rd.text());
@@ -251,8 +260,8 @@ constexpr child_limits import_limits{std::size_t{3} << 30, 120, 300};
 
 }  // namespace
 
-imported_mesh from_scene(const aiScene& s, const std::string& name, const std::filesystem::path& dir, const std::string& format,
-                         const import_options& options) {
+imported_mesh from_scene(const aiScene& s, const std::string& name, const std::filesystem::path& dir,
+                         const std::string& format, const import_options& options) {
   imported_mesh out;
   import_report& r = out.report;
   r.file = name;
@@ -273,24 +282,33 @@ imported_mesh from_scene(const aiScene& s, const std::string& name, const std::f
                           " line(s) ignored (only triangles are rendered)");
     out.model = build_mesh(meshes, inst, options, r);
     out.normal_texture = find_normal_map(s, inst, dir);
-  } catch (const std::runtime_error& e) {
-    throw std::runtime_error(name + ": " + e.what());
-  }
-  if (r.dropped_degenerate > 0) r.notices.push_back(std::to_string(r.dropped_degenerate) + " zero-area triangle(s) dropped");
-  if (r.normals_generated > 0) r.notices.push_back("normals: " + std::to_string(r.normals_generated) + " vertex position(s) had none; " + r.normals);
-  if (r.normals_renormalised > 0) r.notices.push_back("normals: " + std::to_string(r.normals_renormalised) + " non-unit normal(s) renormalised");
+  } catch (const std::runtime_error& e) { throw std::runtime_error(name + ": " + e.what()); }
+  if (r.dropped_degenerate > 0)
+    r.notices.push_back(std::to_string(r.dropped_degenerate) + " zero-area triangle(s) dropped");
+  if (r.normals_generated > 0)
+    r.notices.push_back("normals: " + std::to_string(r.normals_generated) + " vertex position(s) had none; " +
+                        r.normals);
+  if (r.normals_renormalised > 0)
+    r.notices.push_back("normals: " + std::to_string(r.normals_renormalised) + " non-unit normal(s) renormalised");
   if (r.normals_replaced > 0)
-    r.notices.push_back("normals: " + std::to_string(r.normals_replaced) + " zero or NaN normal(s) replaced by the smooth normal");
+    r.notices.push_back("normals: " + std::to_string(r.normals_replaced) +
+                        " zero or NaN normal(s) replaced by the smooth normal");
   if (r.duplicate_triangles > 0)
-    r.notices.push_back(std::to_string(r.duplicate_triangles) + " duplicated triangle(s) (the positions and winding of an earlier one) " +
-                        (r.duplicates_dropped ? "dropped (--duplicates drop)"
-                                              : "kept (--duplicates keep): drawn twice, every blending GS pass applies twice and wraps"));
+    r.notices.push_back(
+        std::to_string(r.duplicate_triangles) +
+        " duplicated triangle(s) (the positions and winding of an earlier one) " +
+        (r.duplicates_dropped
+             ? "dropped (--duplicates drop)"
+             : "kept (--duplicates keep): drawn twice, every blending GS pass applies twice and wraps"));
   if (r.uvs != "file") r.notices.push_back("UVs: none in the file; generated by " + r.uvs);
   if (r.zero_uv_area_triangles > 0)
     r.notices.push_back("tangents: " + std::to_string(r.zero_uv_area_triangles) +
                         " triangle(s) with zero UV area: their corners take a neighbouring triangle's frame, " +
-                        std::to_string(r.fallback_tangent_corners) + " corner(s) without one a fixed frame from the normal" +
-                        (2 * r.zero_uv_area_triangles > r.triangles ? "; most of the mesh samples the normal map at single points (are its UVs real?)" : ""));
+                        std::to_string(r.fallback_tangent_corners) +
+                        " corner(s) without one a fixed frame from the normal" +
+                        (2 * r.zero_uv_area_triangles > r.triangles
+                             ? "; most of the mesh samples the normal map at single points (are its UVs real?)"
+                             : ""));
   return out;
 }
 
@@ -306,10 +324,12 @@ imported_mesh import_mesh(const std::filesystem::path& file, const import_option
           imp.SetIOHandler(io);  // owned by imp
           const aiScene* s = imp.ReadFile(file.string(), import_flags);
           if (!io->refused().empty())
-            throw std::runtime_error("refers to " + io->refused() + "; only files in the mesh's folder or below it are read");
+            throw std::runtime_error("refers to " + io->refused() +
+                                     "; only files in the mesh's folder or below it are read");
           std::string ext = file.extension().string();
           if (!ext.empty()) ext.erase(0, 1);
-          return serialise(from_scene(scene_or_error(s, imp, file.string()), file.string(), file.parent_path(), format_of(s, ext), options));
+          return serialise(from_scene(scene_or_error(s, imp, file.string()), file.string(), file.parent_path(),
+                                      format_of(s, ext), options));
         },
         import_limits);
   } catch (const std::runtime_error& e) {
@@ -319,7 +339,8 @@ imported_mesh import_mesh(const std::filesystem::path& file, const import_option
   return deserialise(bytes);
 }
 
-imported_mesh import_mesh_from_memory(const std::string& bytes, const std::string& extension, const import_options& options) {
+imported_mesh import_mesh_from_memory(const std::string& bytes, const std::string& extension,
+                                      const import_options& options) {
   const std::string name = "<memory>." + extension;
   std::string result;
   try {

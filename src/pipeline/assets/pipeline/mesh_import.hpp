@@ -17,10 +17,10 @@ struct aiScene;  // <assimp/scene.h>
 
 namespace gsdot3::pipeline {
 
-enum class normals_mode { smooth, flat };               // for meshes without normals
+enum class normals_mode { smooth, flat };                // for meshes without normals
 enum class uv_projection { none, box, sphere, planar };  // for meshes without UVs; none: refuse
 enum class tangent_mode { automatic, mikktspace };       // automatic: the file's tangents when it has them
-enum class duplicates_mode { drop, keep };              // triangles drawn twice (mesh_duplicates.hpp)
+enum class duplicates_mode { drop, keep };               // triangles drawn twice (mesh_duplicates.hpp)
 
 struct import_options {
   normals_mode normals = normals_mode::smooth;
@@ -42,19 +42,19 @@ struct texture_ref {
 // What was read and what was done to it (report.json "input", and one stderr line per notice).
 struct import_report {
   std::string file, format;
-  std::size_t meshes = 0, instances = 0, triangles = 0;      // source meshes, node instances, triangles kept
+  std::size_t meshes = 0, instances = 0, triangles = 0;  // source meshes, node instances, triangles kept
   std::size_t dropped_points = 0, dropped_lines = 0, dropped_degenerate = 0;
-  std::string normals = "file";            // file | generated smooth | generated flat
+  std::string normals = "file";  // file | generated smooth | generated flat
   // Normal repairs, counted in distinct vertex positions:
-  std::size_t normals_generated = 0;       // positions that had no normal in the file
-  std::size_t normals_renormalised = 0;    // non-unit normals scaled to unit length
-  std::size_t normals_replaced = 0;        // zero or NaN normals replaced by the generated smooth normal
-  std::string uvs = "file";                // file | box projection | sphere projection | planar projection
+  std::size_t normals_generated = 0;               // positions that had no normal in the file
+  std::size_t normals_renormalised = 0;            // non-unit normals scaled to unit length
+  std::size_t normals_replaced = 0;                // zero or NaN normals replaced by the generated smooth normal
+  std::string uvs = "file";                        // file | box projection | sphere projection | planar projection
   std::string tangents = "MikkTSpace (computed)";  // or "file (TANGENT)"
   std::size_t zero_uv_area_triangles = 0, fallback_tangent_corners = 0;
-  std::size_t duplicate_triangles = 0;     // same positions and winding as an earlier triangle
-  bool duplicates_dropped = true;          // import_options::duplicates
-  std::vector<std::string> notices;        // one line each, in the order they arose
+  std::size_t duplicate_triangles = 0;  // same positions and winding as an earlier triangle
+  bool duplicates_dropped = true;       // import_options::duplicates
+  std::vector<std::string> notices;     // one line each, in the order they arose
 };
 
 struct imported_mesh {
@@ -73,14 +73,15 @@ imported_mesh import_mesh(const std::filesystem::path& file, const import_option
 // The same from bytes in memory, also in a child process (the fuzz harness: assimp 5.2's OBJ
 // reader writes to a wild address on some fuzzed files, a crash no gsdot3 code can prevent and the
 // CLI survives the same way); `extension` ("obj", "glb", "ply", …) tells the importer the format.
-imported_mesh import_mesh_from_memory(const std::string& bytes, const std::string& extension, const import_options& options = {});
+imported_mesh import_mesh_from_memory(const std::string& bytes, const std::string& extension,
+                                      const import_options& options = {});
 
 // The conversion both imports run on the scene assimp read (in their child process), here in the
 // calling process: every instanced mesh converted with its node transforms, repaired and merged, the
 // material's normal map found (external names resolved against `dir`). Throws std::runtime_error
 // "NAME: why" like import_mesh. For callers that build the scene themselves and run no parser
 // (fuzz/mesh_from_scene.cpp); `format` goes into the report.
-imported_mesh from_scene(const aiScene& scene, const std::string& name, const std::filesystem::path& dir, const std::string& format,
-                         const import_options& options = {});
+imported_mesh from_scene(const aiScene& scene, const std::string& name, const std::filesystem::path& dir,
+                         const std::string& format, const import_options& options = {});
 
 }  // namespace gsdot3::pipeline

@@ -34,7 +34,10 @@ namespace {
 nlohmann::json normal_map_json(const imported_mesh& im) {
   if (!im.normal_texture) return nullptr;
   const texture_ref& t = *im.normal_texture;
-  return {{"name", t.name}, {"slot", t.slot}, {"embedded", t.file.empty()}, {"file", t.file.empty() ? "" : t.file.string()},
+  return {{"name", t.name},
+          {"slot", t.slot},
+          {"embedded", t.file.empty()},
+          {"file", t.file.empty() ? "" : t.file.string()},
           {"other_maps", t.other_maps}};
 }
 
@@ -68,12 +71,12 @@ std::string mesh_info_text(const imported_mesh& im, const mesh_figures& f) {
     << "duplicates  " << r.duplicate_triangles << " triangle(s) with the positions and winding of an earlier one, "
     << (r.duplicates_dropped ? "dropped" : "kept") << "\n"
     << "bounds      min " << xyz(f.lo) << "  max " << xyz(f.hi) << "\n"
-    << "normals     " << r.normals << "; positions generated " << r.normals_generated << ", renormalised " << r.normals_renormalised
-    << ", replaced " << r.normals_replaced << "\n"
+    << "normals     " << r.normals << "; positions generated " << r.normals_generated << ", renormalised "
+    << r.normals_renormalised << ", replaced " << r.normals_replaced << "\n"
     << "UVs         " << r.uvs << "; area " << f.uv_area << " (repeats of the map), " << r.zero_uv_area_triangles
     << " triangle(s) with zero UV area\n"
-    << "tangents    " << r.tangents << "; w +1 on " << f.w_plus << " vertices, -1 (mirrored UVs) on " << f.w_minus << ", "
-    << r.fallback_tangent_corners << " fallback corner(s)\n";
+    << "tangents    " << r.tangents << "; w +1 on " << f.w_plus << " vertices, -1 (mirrored UVs) on " << f.w_minus
+    << ", " << r.fallback_tangent_corners << " fallback corner(s)\n";
   if (im.normal_texture)
     o << "normal map  " << im.normal_texture->name << " (" << im.normal_texture->slot << ", "
       << (im.normal_texture->file.empty() ? "embedded" : im.normal_texture->file.string()) << ")\n";

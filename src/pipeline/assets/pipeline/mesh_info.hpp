@@ -13,8 +13,8 @@ namespace gsdot3::pipeline {
 
 struct mesh_figures {
   std::size_t vertices = 0, triangles = 0;
-  glm::vec3 lo{0.0f}, hi{0.0f};  // bounds of the positions (model space)
-  double uv_area = 0.0;          // Σ |UV area| over the triangles: how many repeats of the map cover the mesh
+  glm::vec3 lo{0.0f}, hi{0.0f};         // bounds of the positions (model space)
+  double uv_area = 0.0;                 // Σ |UV area| over the triangles: how many repeats of the map cover the mesh
   std::size_t w_plus = 0, w_minus = 0;  // vertices by glTF handedness (TANGENT.w, mesh_export.hpp): −1 = mirrored UVs
 };
 

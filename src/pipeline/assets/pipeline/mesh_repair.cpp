@@ -249,8 +249,9 @@ mesh build_mesh(const std::vector<source_mesh>& meshes, const std::vector<source
       const float handed = glm::dot(glm::cross(n, tp), bt);
       if (!finite(t) || !finite(bt) || !(glm::length(tp) > 1e-6f) || !(std::fabs(handed) > 0.0f)) {
         if (first)
-          report.notices.push_back("tangents: the file's tangent at vertex " + std::to_string(source[c]) +
-                                   " is unusable (zero, NaN or along the normal); MikkTSpace tangents computed for that mesh instead");
+          report.notices.push_back(
+              "tangents: the file's tangent at vertex " + std::to_string(source[c]) +
+              " is unusable (zero, NaN or along the normal); MikkTSpace tangents computed for that mesh instead");
         from_file = false;
         break;
       }
@@ -288,24 +289,30 @@ mesh build_mesh(const std::vector<source_mesh>& meshes, const std::vector<source
       }
       if (mirrored) std::swap(k[1], k[2]);
       if (degenerate(k[0].position, k[1].position, k[2].position) || !finite(k[0].normal) || !finite(k[1].normal) ||
-          !finite(k[2].normal) || !finite(k[0].tangent) || !finite(k[1].tangent) || !finite(k[2].tangent) || ill_conditioned) {
+          !finite(k[2].normal) || !finite(k[0].tangent) || !finite(k[1].tangent) || !finite(k[2].tangent) ||
+          ill_conditioned) {
         ++report.dropped_degenerate;  // collapsed by its node's transform
         continue;
       }
       all.insert(all.end(), k.begin(), k.end());
     }
   }
-  if (all.empty()) throw std::runtime_error("no triangles (0 faces after dropping points, lines and zero-area triangles)");
+  if (all.empty())
+    throw std::runtime_error("no triangles (0 faces after dropping points, lines and zero-area triangles)");
 
-  const std::string gen = options.normals == normals_mode::smooth ? "generated smooth (angle-weighted)" : "generated flat";
-  report.normals = meshes_generated_normals == 0 ? "file" : (meshes_generated_normals == report.meshes ? gen : "file + " + gen);
-  report.uvs = projection_name(std::all_of(meshes.begin(), meshes.end(), [](const source_mesh& m) { return !m.uvs.empty(); })
-                                   ? uv_projection::none
-                                   : options.uvs);
+  const std::string gen =
+      options.normals == normals_mode::smooth ? "generated smooth (angle-weighted)" : "generated flat";
+  report.normals =
+      meshes_generated_normals == 0 ? "file" : (meshes_generated_normals == report.meshes ? gen : "file + " + gen);
+  report.uvs =
+      projection_name(std::all_of(meshes.begin(), meshes.end(), [](const source_mesh& m) { return !m.uvs.empty(); })
+                          ? uv_projection::none
+                          : options.uvs);
   report.tangents = meshes_mikk == 0 ? "file (TANGENT)"
-                    : meshes_file_tangents == 0 ? "MikkTSpace (computed)"
-                                                : "file (TANGENT) for " + std::to_string(meshes_file_tangents) +
-                                                      " meshes, MikkTSpace (computed) for " + std::to_string(meshes_mikk);
+                    : meshes_file_tangents == 0
+                        ? "MikkTSpace (computed)"
+                        : "file (TANGENT) for " + std::to_string(meshes_file_tangents) +
+                              " meshes, MikkTSpace (computed) for " + std::to_string(meshes_mikk);
   mesh out = weld(all);
   report.duplicates_dropped = options.duplicates == duplicates_mode::drop;
   report.duplicate_triangles = find_duplicate_triangles(out, report.duplicates_dropped);

@@ -20,7 +20,6 @@ namespace {
 
 using vertex_key = std::array<std::uint32_t, 8>;
 
-
 // Equal as floats (the reference compares with ==): −0 and +0 are one value.
 std::uint32_t word(float f) { return std::bit_cast<std::uint32_t>(f == 0.0f ? 0.0f : f); }
 
@@ -41,10 +40,10 @@ glm::vec3 fallback_tangent(glm::vec3 n) {
 }
 
 struct triangle_info {
-  glm::vec3 os{0.0f}, ot{0.0f};  // unit dP/du and dP/dv (negated when the UV area is negative), or zero
-  bool positive = false;         // UV orientation (assigned by the first group for a "group with any")
-  bool group_with_any = true;    // zero UV area: no direction of its own
-  bool degenerate = false;       // two equal positions
+  glm::vec3 os{0.0f}, ot{0.0f};              // unit dP/du and dP/dv (negated when the UV area is negative), or zero
+  bool positive = false;                     // UV orientation (assigned by the first group for a "group with any")
+  bool group_with_any = true;                // zero UV area: no direction of its own
+  bool degenerate = false;                   // two equal positions
   std::array<int, 3> neighbour{-1, -1, -1};  // across edge k (corner k to corner k + 1)
 };
 
@@ -64,14 +63,16 @@ void find_neighbours(const std::vector<std::uint32_t>& vertex_of, std::vector<tr
       edges.push_back({std::min(a, b), std::max(a, b), t, k});
     }
   }
-  std::sort(edges.begin(), edges.end(), [](const edge& x, const edge& y) { return std::tie(x.lo, x.hi, x.t) < std::tie(y.lo, y.hi, y.t); });
+  std::sort(edges.begin(), edges.end(),
+            [](const edge& x, const edge& y) { return std::tie(x.lo, x.hi, x.t) < std::tie(y.lo, y.hi, y.t); });
   auto start = [&](const edge& e) { return vertex_of[3 * e.t + static_cast<std::size_t>(e.k)]; };
   for (std::size_t i = 0; i < edges.size(); ++i) {
     const edge& a = edges[i];
     if (tri[a.t].neighbour[static_cast<std::size_t>(a.k)] >= 0) continue;
     for (std::size_t j = i + 1; j < edges.size() && edges[j].lo == a.lo && edges[j].hi == a.hi; ++j) {
       const edge& b = edges[j];
-      if (start(b) == start(a) || tri[b.t].neighbour[static_cast<std::size_t>(b.k)] >= 0) continue;  // same direction, or taken
+      if (start(b) == start(a) || tri[b.t].neighbour[static_cast<std::size_t>(b.k)] >= 0)
+        continue;  // same direction, or taken
       tri[a.t].neighbour[static_cast<std::size_t>(a.k)] = static_cast<int>(b.t);
       tri[b.t].neighbour[static_cast<std::size_t>(b.k)] = static_cast<int>(a.t);
       break;
@@ -114,7 +115,8 @@ std::vector<group> build_groups(const std::vector<std::uint32_t>& vertex_of, std
         slot = g;
         groups[static_cast<std::size_t>(g)].members.push_back(t);
         for (int e : {k, (k + 2) % 3})  // the two edges at the vertex
-          if (const int n = tri[t].neighbour[static_cast<std::size_t>(e)]; n >= 0) pending.push_back(static_cast<std::size_t>(n));
+          if (const int n = tri[t].neighbour[static_cast<std::size_t>(e)]; n >= 0)
+            pending.push_back(static_cast<std::size_t>(n));
       }
     }
   }
@@ -183,7 +185,9 @@ mikktspace_result mikktspace_tangents(const std::vector<tangent_corner>& corners
       for (std::size_t o = 0; o < g.members.size(); ++o) {
         const std::size_t t = g.members[o];
         if (tri[t].group_with_any) continue;  // joins the subgroup, adds nothing
-        if (!tri[f].group_with_any && !(glm::dot(os[m], os[o]) > threshold_cos && glm::dot(ot[m], ot[o]) > threshold_cos)) continue;
+        if (!tri[f].group_with_any &&
+            !(glm::dot(os[m], os[o]) > threshold_cos && glm::dot(ot[m], ot[o]) > threshold_cos))
+          continue;
         sum += angle[o] * os[o];
       }
       const std::size_t c = 3 * f + static_cast<std::size_t>(corner_at(vertex_of, f, g.vertex));

@@ -47,7 +47,10 @@ std::vector<glm::vec3> resample_normals(const std::vector<glm::vec3>& n, int w, 
       glm::dvec3 sum(0.0);
       for (const tap& a : ty[static_cast<std::size_t>(y)])
         for (const tap& b : tx[static_cast<std::size_t>(x)])
-          sum += glm::dvec3(n[static_cast<std::size_t>(a.src) * static_cast<std::size_t>(w) + static_cast<std::size_t>(b.src)]) * (a.weight * b.weight);
+          sum +=
+              glm::dvec3(
+                  n[static_cast<std::size_t>(a.src) * static_cast<std::size_t>(w) + static_cast<std::size_t>(b.src)]) *
+              (a.weight * b.weight);
       out[static_cast<std::size_t>(y) * static_cast<std::size_t>(W) + static_cast<std::size_t>(x)] =
           glm::length(sum) > 1e-12 ? glm::vec3(glm::normalize(sum)) : glm::vec3(0, 0, 1);
     }
@@ -62,12 +65,14 @@ loaded_normal_map normal_map_from_image(const image& img, const std::string& nam
   bool grey = img.channels == 1;
   if (!grey && s.grey_is_height) {
     grey = true;
-    for (std::size_t i = 0; grey && i < texels; ++i) grey = img.data[3 * i] == img.data[3 * i + 1] && img.data[3 * i] == img.data[3 * i + 2];
+    for (std::size_t i = 0; grey && i < texels; ++i)
+      grey = img.data[3 * i] == img.data[3 * i + 1] && img.data[3 * i] == img.data[3 * i + 2];
   }
   std::vector<glm::vec3> normals;
   if (grey) {
     if (!s.grey_is_height)
-      throw std::runtime_error(name + ": the normal map must be 8-bit RGB or RGBA, not grey (a grey image is a height map: --height-map)");
+      throw std::runtime_error(
+          name + ": the normal map must be 8-bit RGB or RGBA, not grey (a grey image is a height map: --height-map)");
     std::vector<float> height(texels);
     for (std::size_t i = 0; i < texels; ++i) height[i] = img.data[i * static_cast<std::size_t>(img.channels)];
     normals = normals_from_height(height, img.width, img.height, s.height_strength);  // y down the image
@@ -76,7 +81,8 @@ loaded_normal_map normal_map_from_image(const image& img, const std::string& nam
     normals.reserve(texels);
     const float y_sign = s.y == normal_map_y::up ? -1.0f : 1.0f;  // into the renderer's v-down frame
     for (std::size_t i = 0; i < texels; ++i) {
-      const glm::vec3 n{img.data[3 * i] / 127.5f - 1.0f, y_sign * (img.data[3 * i + 1] / 127.5f - 1.0f), img.data[3 * i + 2] / 127.5f - 1.0f};
+      const glm::vec3 n{img.data[3 * i] / 127.5f - 1.0f, y_sign * (img.data[3 * i + 1] / 127.5f - 1.0f),
+                        img.data[3 * i + 2] / 127.5f - 1.0f};
       normals.push_back(glm::length(n) > 1e-3f ? glm::normalize(n) : glm::vec3(0, 0, 1));
     }
   }
@@ -87,7 +93,8 @@ loaded_normal_map normal_map_from_image(const image& img, const std::string& nam
   return r;
 }
 
-loaded_normal_map load_normal_map(const std::uint8_t* data, std::size_t size, const std::string& name, const normal_map_settings& s) {
+loaded_normal_map load_normal_map(const std::uint8_t* data, std::size_t size, const std::string& name,
+                                  const normal_map_settings& s) {
   std::string format;
   const image img = decode_image(data, size, name, format);
   loaded_normal_map r = normal_map_from_image(img, name, s);

@@ -21,20 +21,21 @@ namespace gsdot3::pipeline {
 enum class normal_map_y { up, down };
 
 struct normal_map_settings {
-  normal_map_y y = normal_map_y::up;   // glTF's convention
-  bool grey_is_height = false;         // a grey image is a height map (an MTL bump) instead of an error
-  float height_strength = 0.05f;       // slope per grey level for such a height map
+  normal_map_y y = normal_map_y::up;  // glTF's convention
+  bool grey_is_height = false;        // a grey image is a height map (an MTL bump) instead of an error
+  float height_strength = 0.05f;      // slope per grey level for such a height map
 };
 
 struct loaded_normal_map {
   normal_map map;
-  std::string format;                  // PNG, JPEG, TGA (or "texels" for raw embedded ones)
+  std::string format;  // PNG, JPEG, TGA (or "texels" for raw embedded ones)
   int source_width = 0, source_height = 0;
   bool resampled = false, from_height = false;
 };
 
 // The filter used when the size is not a GS texture size, as stated in notices and the report.
-inline constexpr const char* resample_filter = "box (area-weighted mean of the unit normals each texel covers, renormalised)";
+inline constexpr const char* resample_filter =
+    "box (area-weighted mean of the unit normals each texel covers, renormalised)";
 
 // The GS side for an image side: the power of two nearest in log scale, clamped to 8..1024.
 int texture_side(int side);
@@ -43,7 +44,8 @@ int texture_side(int side);
 std::vector<glm::vec3> resample_normals(const std::vector<glm::vec3>& n, int w, int h, int W, int H);
 
 loaded_normal_map normal_map_from_image(const image& img, const std::string& name, const normal_map_settings& s);
-loaded_normal_map load_normal_map(const std::uint8_t* data, std::size_t size, const std::string& name, const normal_map_settings& s);
+loaded_normal_map load_normal_map(const std::uint8_t* data, std::size_t size, const std::string& name,
+                                  const normal_map_settings& s);
 loaded_normal_map load_normal_map(const std::filesystem::path& file, const normal_map_settings& s);
 
 }  // namespace gsdot3::pipeline

@@ -58,8 +58,7 @@ void write_png(const std::filesystem::path& file, const image& img) {
                  PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
     png_write_info(png, info);
     const std::size_t stride = static_cast<std::size_t>(img.width) * img.channels;
-    for (int y = 0; y < img.height; ++y)
-      png_write_row(png, img.data.data() + stride * static_cast<std::size_t>(y));
+    for (int y = 0; y < img.height; ++y) png_write_row(png, img.data.data() + stride * static_cast<std::size_t>(y));
     png_write_end(png, nullptr);
     png_destroy_write_struct(&png, &info);
     if (std::fflush(f.get()) != 0) fail(tmp, "write failed");

@@ -22,13 +22,15 @@ std::string degrees(float v) {
 
 // The material's normal map; nullopt (with a notice) when its file is not there.
 std::optional<loaded_normal_map> material_normal_map(const texture_ref& t, const normal_map_settings& base, float bump,
-                                                     input_summary& sum, const std::function<void(const std::string&)>& say) {
+                                                     input_summary& sum,
+                                                     const std::function<void(const std::string&)>& say) {
   normal_map_settings s = base;
   s.grey_is_height = t.slot == "bump";  // an MTL bump map may be a height map (grey) or a normal map
   s.height_strength = bump;
   if (!t.embedded.empty()) {
     sum.normal_map_source = "material " + t.slot + " texture '" + t.name + "' (embedded)";
-    return load_normal_map(t.embedded.data(), t.embedded.size(), sum.mesh->file + ": embedded texture '" + t.name + "'", s);
+    return load_normal_map(t.embedded.data(), t.embedded.size(), sum.mesh->file + ": embedded texture '" + t.name + "'",
+                           s);
   }
   if (t.raw.width > 0) {
     sum.normal_map_source = "material " + t.slot + " texture '" + t.name + "' (embedded texels)";
@@ -38,7 +40,8 @@ std::optional<loaded_normal_map> material_normal_map(const texture_ref& t, const
   }
   std::error_code ec;
   if (!std::filesystem::is_regular_file(t.file, ec)) {
-    say("normal map: the material names '" + t.name + "', which is not at " + t.file.string() + "; the procedural map is used");
+    say("normal map: the material names '" + t.name + "', which is not at " + t.file.string() +
+        "; the procedural map is used");
     return std::nullopt;
   }
   sum.normal_map_source = "material " + t.slot + " texture " + t.file.string();
@@ -79,16 +82,19 @@ scene_input make_scene(const scene_request& r, const std::function<void(const st
     in.description += ", normal map " + r.normal_map.string();
   } else if (material_map) {
     if (material_map->other_maps > 0)
-      say("normal map: " + std::to_string(material_map->other_maps) + " other material(s) name other normal maps; only '" +
-          material_map->name + "' is used (the renderer has one normal map)");
+      say("normal map: " + std::to_string(material_map->other_maps) +
+          " other material(s) name other normal maps; only '" + material_map->name +
+          "' is used (the renderer has one normal map)");
     nm = material_normal_map(*material_map, r.normal_maps, r.bump, sum, say);
     if (nm) in.description += ", its material's normal map";
   }
   if (nm) {
     if (nm->resampled)
-      say("normal map: " + size_text(nm->source_width, nm->source_height) + " resampled to " + size_text(nm->map.width, nm->map.height) +
-          " (GS textures have power-of-two sides up to 1024), filter " + resample_filter);
-    if (nm->from_height) say("normal map: the bump texture is grey, read as a height map (slope " + degrees(r.bump) + " per grey level)");
+      say("normal map: " + size_text(nm->source_width, nm->source_height) + " resampled to " +
+          size_text(nm->map.width, nm->map.height) + " (GS textures have power-of-two sides up to 1024), filter " +
+          resample_filter);
+    if (nm->from_height)
+      say("normal map: the bump texture is grey, read as a height map (slope " + degrees(r.bump) + " per grey level)");
     s.normals = nm->map;
     sum.normal_map = std::move(nm);
   }
@@ -101,16 +107,18 @@ scene_input make_scene(const scene_request& r, const std::function<void(const st
   if (framed) {
     const bounding_sphere b = bounds_of(s.model);
     normalise(s.model, b);
-    say("the model is centred and scaled to its unit bounding sphere (centre " + degrees(b.centre.x) + "," + degrees(b.centre.y) +
-        "," + degrees(b.centre.z) + ", radius " + degrees(b.radius) + "): --camera and --light positions are in that frame");
+    say("the model is centred and scaled to its unit bounding sphere (centre " + degrees(b.centre.x) + "," +
+        degrees(b.centre.y) + "," + degrees(b.centre.z) + ", radius " + degrees(b.radius) +
+        "): --camera and --light positions are in that frame");
   }
   if (r.eye) {
     s.view.eye = *r.eye;
-    sum.camera = "--camera " + degrees(r.eye->x) + "," + degrees(r.eye->y) + "," + degrees(r.eye->z) + " looking at the origin";
+    sum.camera =
+        "--camera " + degrees(r.eye->x) + "," + degrees(r.eye->y) + "," + degrees(r.eye->z) + " looking at the origin";
   } else if (framed) {
     s.view = frame_unit_sphere(view[0], view[1], r.width, r.height, s.view.fov_y_degrees);
-    sum.camera = "framed: the unit bounding sphere fills the frame with a 10% margin, azimuth " + degrees(view[0]) + ", elevation " +
-                 degrees(view[1]);
+    sum.camera = "framed: the unit bounding sphere fills the frame with a 10% margin, azimuth " + degrees(view[0]) +
+                 ", elevation " + degrees(view[1]);
   }
   if (!r.lights.empty()) {
     s.lights = r.lights;

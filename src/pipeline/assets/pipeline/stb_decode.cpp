@@ -65,8 +65,11 @@ image stb_load(const std::uint8_t* data, std::size_t size, const std::string& na
   if (check != nullptr) check(data, size, name);
   const int channels = n <= 2 && !rgb_only ? 1 : 3;
   stbi_uc* px = stbi_load_from_memory(data, len, &w, &h, &n, channels);
-  if (px == nullptr) throw std::runtime_error(name + ": malformed image data (" + std::string(stbi_failure_reason()) + ")");
-  image img{w, h, channels, std::vector<std::uint8_t>(px, px + static_cast<std::size_t>(w) * static_cast<std::size_t>(h) * static_cast<std::size_t>(channels))};
+  if (px == nullptr)
+    throw std::runtime_error(name + ": malformed image data (" + std::string(stbi_failure_reason()) + ")");
+  image img{w, h, channels,
+            std::vector<std::uint8_t>(px, px + static_cast<std::size_t>(w) * static_cast<std::size_t>(h) *
+                                                   static_cast<std::size_t>(channels))};
   stbi_image_free(px);
   return img;
 }
@@ -76,15 +79,18 @@ image stb_load(const std::uint8_t* data, std::size_t size, const std::string& na
 // width 18, height 22, bit count 28, compression 30; rows padded to 4 bytes).
 void check_bmp_length(const std::uint8_t* d, std::size_t size, const std::string& name) {
   if (size < 34) throw std::runtime_error(name + ": the BMP header is cut short");
-  auto u32 = [&](std::size_t at) { return std::uint32_t{d[at]} | std::uint32_t{d[at + 1]} << 8 | std::uint32_t{d[at + 2]} << 16 | std::uint32_t{d[at + 3]} << 24; };
+  auto u32 = [&](std::size_t at) {
+    return std::uint32_t{d[at]} | std::uint32_t{d[at + 1]} << 8 | std::uint32_t{d[at + 2]} << 16 |
+           std::uint32_t{d[at + 3]} << 24;
+  };
   const std::uint32_t compression = u32(30);
   if (compression != 0 && compression != 3) return;  // BI_RGB, BI_BITFIELDS; stb refuses RLE itself
   const long long width = static_cast<std::int32_t>(u32(18)), height = static_cast<std::int32_t>(u32(22));
   const long long bits = d[28] | d[29] << 8;
   const long long need = u32(10) + (height < 0 ? -height : height) * ((width * bits + 31) / 32 * 4);
   if (static_cast<long long>(size) < need)
-    throw std::runtime_error(name + ": the BMP's pixel data ends at byte " + std::to_string(size) + ", its header needs " +
-                             std::to_string(need));
+    throw std::runtime_error(name + ": the BMP's pixel data ends at byte " + std::to_string(size) +
+                             ", its header needs " + std::to_string(need));
 }
 
 }  // namespace

@@ -83,12 +83,14 @@ void staged_directory::commit(const std::vector<std::string>& last) {
   // Into the existing folder file by file (each rename replaces one file whole), `last` at the end.
   std::vector<fs::path> files;
   for (const fs::directory_entry& e : fs::directory_iterator(staging_, ec)) files.push_back(e.path().filename());
-  std::stable_partition(files.begin(), files.end(),
-                        [&](const fs::path& f) { return std::find(last.begin(), last.end(), f.string()) == last.end(); });
+  std::stable_partition(files.begin(), files.end(), [&](const fs::path& f) {
+    return std::find(last.begin(), last.end(), f.string()) == last.end();
+  });
   for (const fs::path& f : files) {
     if (fs::is_directory(target_ / f, ec) != fs::is_directory(staging_ / f, ec)) fs::remove_all(target_ / f, ec);
     fs::rename(staging_ / f, target_ / f, ec);
-    if (ec) throw std::runtime_error((target_ / f).string() + ": cannot put the output in place (" + ec.message() + ")");
+    if (ec)
+      throw std::runtime_error((target_ / f).string() + ": cannot put the output in place (" + ec.message() + ")");
   }
   fs::remove_all(staging_, ec);
   committed_ = true;

@@ -43,29 +43,31 @@ enum class dpb_clear_mode { explicit_clear, z_trick, z_trick_psmz32 };
 std::string_view name(dpb_clear_mode m);
 
 struct render_options {
-  int s = 122;                     // two-pass tolight scale (section 3.5), 1..127
-  bool bilinear = false;           // TEX1.MMAG for the normal map and the diffuse texture
-  bool specular = false;           // half vectors instead of tolight vectors (section 3.7)
-  double specular_power = 1.0;     // ILP exponent (section 3.7); 1 = diffuse
+  int s = 122;                  // two-pass tolight scale (section 3.5), 1..127
+  bool bilinear = false;        // TEX1.MMAG for the normal map and the diffuse texture
+  bool specular = false;        // half vectors instead of tolight vectors (section 3.7)
+  double specular_power = 1.0;  // ILP exponent (section 3.7); 1 = diffuse
   gs::model_options model{};
   raster_path path = raster_path::cached;
-  int threads = 2;                 // horizontal bands rendered in parallel
+  int threads = 2;                            // horizontal bands rendered in parallel
   std::vector<pass_record>* trace = nullptr;  // non-null: every pass appended here (one band, slower)
-  bool memory_path = false;        // frame buffers in the modelled GS local memory (render.cpp)
+  bool memory_path = false;                   // frame buffers in the modelled GS local memory (render.cpp)
   dpb_clear_mode dpb_clear = dpb_clear_mode::explicit_clear;
-  bool simd = true;                // the SIMD pixel pipeline (gs_simd); false: gs::pixel_pipeline per pixel
+  bool simd = true;  // the SIMD pixel pipeline (gs_simd); false: gs::pixel_pipeline per pixel
 };
 
 struct frame {
   int width = 0, height = 0;
-  std::vector<std::uint32_t> colour;             // the lit frame after step 4 (A8B8G8R8)
-  std::vector<std::vector<std::uint8_t>> dot;    // per light: the DPB byte after the post filter
-                                                 // (dot product + 128, mod 256)
-  std::vector<std::int32_t> visible_triangle;    // per pixel: index into prepared_scene::triangles, −1 = none
-  std::size_t pixel_ops = 0;                     // pixels sent through gs::pixel_pipeline
+  std::vector<std::uint32_t> colour;           // the lit frame after step 4 (A8B8G8R8)
+  std::vector<std::vector<std::uint8_t>> dot;  // per light: the DPB byte after the post filter
+                                               // (dot product + 128, mod 256)
+  std::vector<std::int32_t> visible_triangle;  // per pixel: index into prepared_scene::triangles, −1 = none
+  std::size_t pixel_ops = 0;                   // pixels sent through gs::pixel_pipeline
 };
 
 // The signed dot product (1/128 units) a DPB byte stands for: (v − 128) as a signed byte.
-constexpr int dot_value(std::uint8_t v) noexcept { return static_cast<std::int8_t>(static_cast<std::uint8_t>(v - 128)); }
+constexpr int dot_value(std::uint8_t v) noexcept {
+  return static_cast<std::int8_t>(static_cast<std::uint8_t>(v - 128));
+}
 
 }  // namespace gsdot3::pipeline

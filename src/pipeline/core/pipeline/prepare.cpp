@@ -42,7 +42,8 @@ prepared_scene prepare(const scene& s, float yaw_degrees, bool half_vectors) {
     const float z = std::clamp((1.0f - c.z / c.w) * 0.5f, 0.0f, 1.0f);
     const float lim = xy_offset_pixels - 1.0f;
     if (!(std::fabs(x) < lim && std::fabs(y) < lim)) continue;
-    sv[i] = {true, {static_cast<std::int32_t>(std::lround(x * 16.0f)), static_cast<std::int32_t>(std::lround(y * 16.0f))},
+    sv[i] = {true,
+             {static_cast<std::int32_t>(std::lround(x * 16.0f)), static_cast<std::int32_t>(std::lround(y * 16.0f))},
              static_cast<std::int32_t>(std::lround(z * 16777215.0f))};
   }
 
@@ -57,7 +58,8 @@ prepared_scene prepare(const scene& s, float yaw_degrees, bool half_vectors) {
       const vertex& v = verts[i];
       const glm::vec3 L = glm::normalize(lp - v.position);
       const glm::vec3 H = half_vectors ? glm::normalize(L + glm::normalize(eye - v.position)) : L;
-      ps.lights[l][i].T = glm::normalize(glm::vec3(glm::dot(H, v.tangent), glm::dot(H, v.bitangent), glm::dot(H, v.normal)));
+      ps.lights[l][i].T =
+          glm::normalize(glm::vec3(glm::dot(H, v.tangent), glm::dot(H, v.bitangent), glm::dot(H, v.normal)));
       ps.lights[l][i].fade = std::clamp(6.0f * glm::dot(v.normal, L), 0.0f, 1.0f);
     }
   }

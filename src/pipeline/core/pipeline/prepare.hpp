@@ -23,16 +23,16 @@ struct light_vertex {
 };
 
 struct prepared_triangle {
-  std::array<std::uint32_t, 3> vertex{};   // mesh vertex indices
-  triangle_setup setup;                    // window 12.4 coordinates
-  plane z;                                 // 24-bit depth, larger is nearer
-  std::array<std::int32_t, 3> z24{};       // the vertices' depths the plane is made from (XYZ2.Z)
+  std::array<std::uint32_t, 3> vertex{};              // mesh vertex indices
+  triangle_setup setup;                               // window 12.4 coordinates
+  plane z;                                            // 24-bit depth, larger is nearer
+  std::array<std::int32_t, 3> z24{};                  // the vertices' depths the plane is made from (XYZ2.Z)
   std::array<std::array<std::int32_t, 2>, 3> uv16{};  // normal-map texel coordinates in 12.4
 };
 
 struct prepared_scene {
   int width = 0, height = 0;
-  std::vector<prepared_triangle> triangles;  // front-facing, drawable, in mesh order
+  std::vector<prepared_triangle> triangles;       // front-facing, drawable, in mesh order
   std::vector<std::vector<light_vertex>> lights;  // [light][mesh vertex]
   int culled_back = 0, dropped_outside = 0;
 };

@@ -15,10 +15,10 @@ namespace gsdot3::pipeline {
 
 struct vertex {
   glm::vec3 position{};
-  glm::vec3 normal{};      // unit
-  glm::vec3 tangent{};     // unit, orthogonal to normal (Gram-Schmidt)
-  glm::vec3 bitangent{};   // unit, normal × tangent with the UV handedness
-  glm::vec2 uv{};          // normal-map coordinates, 1.0 = one repeat of the map
+  glm::vec3 normal{};     // unit
+  glm::vec3 tangent{};    // unit, orthogonal to normal (Gram-Schmidt)
+  glm::vec3 bitangent{};  // unit, normal × tangent with the UV handedness
+  glm::vec2 uv{};         // normal-map coordinates, 1.0 = one repeat of the map
 };
 
 struct mesh {

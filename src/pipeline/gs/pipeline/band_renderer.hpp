@@ -96,7 +96,8 @@ class band_renderer {
       const prepared_triangle& tri = ps_.triangles[t];
       rasterise_triangle(tri.setup, band_, [&](int x, int y) {
         const std::size_t i = index(x, y);
-        const gs::depth_result d = gs::depth_test(passes::depth_gequal, passes::z_written, static_cast<std::uint32_t>(tri.z.at(x, y)), z_.read(x, y));
+        const gs::depth_result d = gs::depth_test(passes::depth_gequal, passes::z_written,
+                                                  static_cast<std::uint32_t>(tri.z.at(x, y)), z_.read(x, y));
         if (!d.pass) return;
         if (d.write_z) z_.write(x, y, d.z);
         visible_[i] = static_cast<std::int32_t>(t);
@@ -110,7 +111,8 @@ class band_renderer {
         const prepared_triangle& tri = ps_.triangles[t];
         rasterise_triangle(tri.setup, band_, [&](int x, int y) {
           if (passes_later_depth_test(tri, x, y))
-            frags_.push_back({static_cast<std::int32_t>(t), static_cast<std::int16_t>(x), static_cast<std::int16_t>(y)});
+            frags_.push_back(
+                {static_cast<std::int32_t>(t), static_cast<std::int16_t>(x), static_cast<std::int16_t>(y)});
         });
       }
     }
@@ -119,7 +121,8 @@ class band_renderer {
   // A triangle pass with ZTST = GEQUAL and ZMSK = 1; with `clip` only its pixels in that rectangle
   // (SCISSOR_1 of a streamed texture's piece, pipeline/texture_stream.hpp).
   template <const pass_regs& Pass, class FB>
-  [[gnu::flatten]] void draw(const texture_ref* tex, const std::vector<tri_attr>& attr, const FB& fb, const scissor* clip = nullptr) {
+  [[gnu::flatten]] void draw(const texture_ref* tex, const std::vector<tri_attr>& attr, const FB& fb,
+                             const scissor* clip = nullptr) {
     constexpr gs::gs_registers regs = Pass.registers();
     // A streamed piece (clip) is drawn by the scalar loop below: the span batches know no SCISSOR_1.
     if (vectorised() && clip == nullptr) return draw_spans(batch_registers<Pass>, tex, attr, fb);
@@ -137,7 +140,8 @@ class band_renderer {
         for (const fragment& f : frags_) shade(static_cast<std::size_t>(f.tri), f.x, f.y);
       } else {
         for (const fragment& f : frags_)
-          if (f.x >= clip->x0 && f.x < clip->x1 && f.y >= clip->y0 && f.y < clip->y1) shade(static_cast<std::size_t>(f.tri), f.x, f.y);
+          if (f.x >= clip->x0 && f.x < clip->x1 && f.y >= clip->y0 && f.y < clip->y1)
+            shade(static_cast<std::size_t>(f.tri), f.x, f.y);
       }
       return;
     }
@@ -163,7 +167,8 @@ class band_renderer {
   // The same over rectangle r clipped to the sprite area (or to `clip`): one of the memory path's
   // tile sprites.
   template <const pass_regs& Pass, class Texel, class FB>
-  [[gnu::flatten]] void sprite_rect(gs::rgba8 colour, scissor r, Texel&& texel, const FB& fb, const scissor* clip = nullptr) {
+  [[gnu::flatten]] void sprite_rect(gs::rgba8 colour, scissor r, Texel&& texel, const FB& fb,
+                                    const scissor* clip = nullptr) {
     constexpr gs::gs_registers regs = Pass.registers();
     const gs::fragment_colour cf = gs::fragment_colour::flat(colour);
     const scissor& a = clip != nullptr ? *clip : sprite_area_;
@@ -195,11 +200,14 @@ class band_renderer {
       for (int y = a.y0; y < a.y1; ++y)
         if (a.x0 < a.x1) std::fill(&fb(a.x0, y), &fb(a.x0, y) + (a.x1 - a.x0), v);
     } else {
-      sprite_rect<passes::step1_ambient>(gs::rgba8::from_u32(v), a, [](int, int) { return gs::rgba8{}; }, fb, &a);
+      sprite_rect<passes::step1_ambient>(
+          gs::rgba8::from_u32(v), a, [](int, int) { return gs::rgba8{}; }, fb, &a);
     }
   }
 
-  std::size_t index(int x, int y) const { return static_cast<std::size_t>(y) * static_cast<std::size_t>(ps_.width) + static_cast<std::size_t>(x); }
+  std::size_t index(int x, int y) const {
+    return static_cast<std::size_t>(y) * static_cast<std::size_t>(ps_.width) + static_cast<std::size_t>(x);
+  }
   const scissor& band() const { return band_; }
   const scissor& sprite_area() const { return sprite_area_; }
   std::size_t pixel_ops() const { return ops_; }
@@ -238,7 +246,8 @@ class band_renderer {
   bool vectorised() const noexcept { return o_.simd && pending == nullptr; }
   // draw() through span_batch: one batch per triangle (the cached fragments are in triangle order).
   template <class FB>
-  void draw_spans(const gs::gs_registers& regs, const texture_ref* tex, const std::vector<tri_attr>& attr, const FB& fb) {
+  void draw_spans(const gs::gs_registers& regs, const texture_ref* tex, const std::vector<tri_attr>& attr,
+                  const FB& fb) {
     span_batch batch(regs, o_.model);
     auto add = [&](std::size_t t, int x, int y) {
       const tri_attr& a = attr[t];
@@ -264,7 +273,9 @@ class band_renderer {
 
   // The depth test of every pass after step 1 (GEQUAL, ZMSK = 1: Z is only read).
   bool passes_later_depth_test(const prepared_triangle& tri, int x, int y) const noexcept {
-    return gs::depth_test(passes::depth_gequal, passes::z_masked, static_cast<std::uint32_t>(tri.z.at(x, y)), z_.read(x, y)).pass;
+    return gs::depth_test(passes::depth_gequal, passes::z_masked, static_cast<std::uint32_t>(tri.z.at(x, y)),
+                          z_.read(x, y))
+        .pass;
   }
 
   const prepared_scene& ps_;
@@ -280,8 +291,9 @@ class band_renderer {
 // texture streamed (`stream` set, texture_stream.hpp's argument for why it is the same frame) one
 // draw per piece over its rectangle, after the piece's uploads into `memory`, with the piece's TEX0.
 template <const pass_regs& Pass, class FB>
-void draw_textured(band_renderer& r, gs::mem::local_memory* memory, texture_streamer* stream, const stream_texture& streamed,
-                   texture_ref tex, const std::vector<tri_attr>& attr, const FB& target) {
+void draw_textured(band_renderer& r, gs::mem::local_memory* memory, texture_streamer* stream,
+                   const stream_texture& streamed, texture_ref tex, const std::vector<tri_attr>& attr,
+                   const FB& target) {
   if (stream == nullptr) return r.draw<Pass>(&tex, attr, target);
   for (const stream_piece& p : stream->next_pass(streamed)) {
     upload_piece(*memory, streamed, p);

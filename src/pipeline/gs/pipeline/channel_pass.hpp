@@ -31,8 +31,8 @@ struct frame_buffers {
   std::vector<std::uint32_t> z;  // the value path's Z buffer storage (zb's rows)
   z_view zb;
   FB lab, dpb, diff, out;
-  gs::mem::local_memory* memory = nullptr;  // the memory path's local memory, else null
-  buffer_layout layout;                     // the memory path's buffers (gs_inputs.hpp)
+  gs::mem::local_memory* memory = nullptr;               // the memory path's local memory, else null
+  buffer_layout layout;                                  // the memory path's buffers (gs_inputs.hpp)
   const gs::mem::texel_addresses* page_as_t8 = nullptr;  // the memory path: a page of the DPB / LAB as PSMT8 (BP 0)
   dpb_clear_mode clear = dpb_clear_mode::explicit_clear;
 };
@@ -41,7 +41,8 @@ struct frame_buffers {
 // gs_memory's overlay of a PSMCT32 page on a PSMZ32 page (the four 32×16 quarters of the page
 // swapped along the diagonals), both 32-bit, so each pixel's whole word.
 inline std::array<int, 2> zsigma(int x, int y) {
-  static const std::vector<gs::mem::overlay_cell> cells = gs::mem::page_overlay(gs::mem::psm::PSMZ32, gs::mem::psm::PSMCT32);
+  static const std::vector<gs::mem::overlay_cell> cells =
+      gs::mem::page_overlay(gs::mem::psm::PSMZ32, gs::mem::psm::PSMCT32);
   const gs::mem::overlay_cell& c = cells[static_cast<std::size_t>((y & 31) * 64 + (x & 63))];
   return {(x & ~63) + static_cast<int>(c.x), (y & ~31) + static_cast<int>(c.y)};
 }
@@ -52,9 +53,10 @@ inline constexpr bool in_memory(const memory_view&) { return true; }
 // Value level: the byte of the same pixel's word. Memory path: gs_memory's channel-fetch sprites
 // (8×2 tiles per page, the page read as PSMT8 with TBP0 = its base, TBW = 2·FBW, TW = 7, TH = 6).
 template <const pass_regs& Pass>
-inline void channel_pass(band_renderer& r, const frame_buffers<row_view>&, gs::rgba8 colour, const gs::clut_buffer& clut,
-                  unsigned channel, const row_view& src, const row_view& dst) {
-  r.sprite<Pass>(colour, [&](int x, int y) { return gs::clut_t8(clut, byte(static_cast<int>(src(x, y) >> (8 * channel)))); }, dst);
+inline void channel_pass(band_renderer& r, const frame_buffers<row_view>&, gs::rgba8 colour,
+                         const gs::clut_buffer& clut, unsigned channel, const row_view& src, const row_view& dst) {
+  r.sprite<Pass>(
+      colour, [&](int x, int y) { return gs::clut_t8(clut, byte(static_cast<int>(src(x, y) >> (8 * channel)))); }, dst);
 }
 // The memory path. A source drawn in PSMZ32 (src.z) has logical pixel L in the word of PSMCT32
 // pixel zsigma(L): the tile that fetches PSMCT32 pixel M is drawn at zsigma(M) (the sprites' XYZ
@@ -62,14 +64,16 @@ inline void channel_pass(band_renderer& r, const frame_buffers<row_view>&, gs::r
 // DPB as PSMZ24 at every fragment (after its texel fetch). In the z-trick modes the texel fetches
 // go through gs_memory's texture_page_buffer model (model option texture_buffer).
 template <const pass_regs& Pass>
-inline void channel_pass(band_renderer& r, const frame_buffers<memory_view>& fb, gs::rgba8 colour, const gs::clut_buffer& clut,
-                  unsigned channel, const memory_view& src, const memory_view& dst, bool z_clear = false,
-                  gs::texture_buffer tb = gs::texture_buffer::per_fragment) {
-  static constexpr gs::mem::channel_fetch layout[4] = {gs::mem::channel_fetch_sprites(0), gs::mem::channel_fetch_sprites(1),
-                                                       gs::mem::channel_fetch_sprites(2), gs::mem::channel_fetch_sprites(3)};
+inline void channel_pass(band_renderer& r, const frame_buffers<memory_view>& fb, gs::rgba8 colour,
+                         const gs::clut_buffer& clut, unsigned channel, const memory_view& src, const memory_view& dst,
+                         bool z_clear = false, gs::texture_buffer tb = gs::texture_buffer::per_fragment) {
+  static constexpr gs::mem::channel_fetch layout[4] = {
+      gs::mem::channel_fetch_sprites(0), gs::mem::channel_fetch_sprites(1), gs::mem::channel_fetch_sprites(2),
+      gs::mem::channel_fetch_sprites(3)};
   const gs::mem::channel_fetch& f = layout[channel];
   gs::mem::local_memory& mem = *fb.memory;
-  const gs::mem::buffer zbuf{fixed::uint<14>::from_wrapped(fb.dpb.bp), fixed::uint<6>::from_wrapped(fb.dpb.bw), gs::mem::psm::PSMZ24};
+  const gs::mem::buffer zbuf{fixed::uint<14>::from_wrapped(fb.dpb.bp), fixed::uint<6>::from_wrapped(fb.dpb.bw),
+                             gs::mem::psm::PSMZ24};
   const bool buffered = fb.clear != dpb_clear_mode::explicit_clear;
   const scissor& a = r.sprite_area();
   // With the Z clear the ILP sprites cover every page the area touches (the paper's per-page
@@ -97,29 +101,32 @@ inline void channel_pass(band_renderer& r, const frame_buffers<memory_view>& fb,
   for (int py = a.y0 / 32; py * 32 < a.y1; ++py)
     for (int px = a.x0 / 64; px * 64 < a.x1; ++px) {
       const std::uint32_t page = static_cast<std::uint32_t>(px) + static_cast<std::uint32_t>(py) * src.bw;
-      const gs::mem::buffer tex{fixed::uint<14>::from_wrapped(src.bp + 32 * page), fixed::uint<6>::from_wrapped(2 * src.bw),
-                                gs::mem::psm::PSMT8};
-      gs::mem::texture_page_buffer texels(buffered ? tb : gs::texture_buffer::per_fragment, mem, (src.bp + 32 * page) * 256,
-                                          gs::mem::page_bytes);
+      const gs::mem::buffer tex{fixed::uint<14>::from_wrapped(src.bp + 32 * page),
+                                fixed::uint<6>::from_wrapped(2 * src.bw), gs::mem::psm::PSMT8};
+      gs::mem::texture_page_buffer texels(buffered ? tb : gs::texture_buffer::per_fragment, mem,
+                                          (src.bp + 32 * page) * 256, gs::mem::page_bytes);
       for (std::size_t k = 0; k < f.sprites.size(); ++k) {
         const gs::mem::fetch_sprite& sp = f.sprites[k];
         const std::uint32_t* sprite_texels = &fetched[16 * k];
-        const int mx = px * 64 + static_cast<int>(sp.x0), my = py * 32 + static_cast<int>(sp.y0);  // PSMCT32 pixel fetched
-        const std::array<int, 2> drawn = src.z ? zsigma(mx, my) : std::array<int, 2>{mx, my};   // where it is drawn
+        const int mx = px * 64 + static_cast<int>(sp.x0),
+                  my = py * 32 + static_cast<int>(sp.y0);                                      // PSMCT32 pixel fetched
+        const std::array<int, 2> drawn = src.z ? zsigma(mx, my) : std::array<int, 2>{mx, my};  // where it is drawn
         const int x0 = drawn[0], y0 = drawn[1];  // plain ints: clang 14 cannot capture structured bindings
         const int w = static_cast<int>(sp.x1 - sp.x0), h = static_cast<int>(sp.y1 - sp.y0);
-        r.sprite_rect<Pass>(colour, {x0, y0, x0 + w, y0 + h},
-                            [&](int x, int y) {
-                              const std::uint32_t at = sprite_texels[8 * (y - y0) + (x - x0)] + tex.BP.value() * gs::mem::block_bytes;
-                              const std::uint8_t index = texels.fetch(at % gs::mem::memory_bytes);
-                              if (z_clear) {  // ZBUF = the DPB (PSMZ24), Z = 0x00808080, ZTST = ALWAYS
-                                const auto zx = static_cast<std::uint32_t>(x), zy = static_cast<std::uint32_t>(y);
-                                const gs::depth_result d = gs::depth_test(passes::depth_always, passes::z_written, passes::clear_dpb, mem.read_pixel(zbuf, zx, zy));
-                                if (d.write_z) mem.write_pixel(zbuf, zx, zy, d.z);
-                              }
-                              return gs::clut_t8(clut, gs::u8::from_wrapped(index));
-                            },
-                            dst, z_clear ? &pages : nullptr);
+        r.sprite_rect<Pass>(
+            colour, {x0, y0, x0 + w, y0 + h},
+            [&](int x, int y) {
+              const std::uint32_t at = sprite_texels[8 * (y - y0) + (x - x0)] + tex.BP.value() * gs::mem::block_bytes;
+              const std::uint8_t index = texels.fetch(at % gs::mem::memory_bytes);
+              if (z_clear) {  // ZBUF = the DPB (PSMZ24), Z = 0x00808080, ZTST = ALWAYS
+                const auto zx = static_cast<std::uint32_t>(x), zy = static_cast<std::uint32_t>(y);
+                const gs::depth_result d = gs::depth_test(passes::depth_always, passes::z_written, passes::clear_dpb,
+                                                          mem.read_pixel(zbuf, zx, zy));
+                if (d.write_z) mem.write_pixel(zbuf, zx, zy, d.z);
+              }
+              return gs::clut_t8(clut, gs::u8::from_wrapped(index));
+            },
+            dst, z_clear ? &pages : nullptr);
       }
     }
   r.scalar_sprites = false;
@@ -130,16 +137,19 @@ inline void channel_pass(band_renderer& r, const frame_buffers<memory_view>& fb,
 // the Z layout at the word of logical (x, y)) through `clut`, one sprite over the sprite area.
 template <const pass_regs& Pass>
 void alpha_into_rgb(band_renderer& r, const frame_buffers<row_view>& fb, const gs::clut_buffer& clut) {
-  r.sprite<Pass>(passes::white, [&](int x, int y) { return gs::clut_t8(clut, gs::t8h_index(fb.dpb(x, y))); }, fb.dpb);
+  r.sprite<Pass>(
+      passes::white, [&](int x, int y) { return gs::clut_t8(clut, gs::t8h_index(fb.dpb(x, y))); }, fb.dpb);
 }
 template <const pass_regs& Pass>
 void alpha_into_rgb(band_renderer& r, const frame_buffers<memory_view>& fb, const gs::clut_buffer& clut) {
-  const gs::mem::buffer t8h{fixed::uint<14>::from_wrapped(fb.dpb.bp), fixed::uint<6>::from_wrapped(fb.dpb.bw), gs::mem::psm::PSMT8H};
+  const gs::mem::buffer t8h{fixed::uint<14>::from_wrapped(fb.dpb.bp), fixed::uint<6>::from_wrapped(fb.dpb.bw),
+                            gs::mem::psm::PSMT8H};
   r.sprite<Pass>(
       passes::white,
       [&](int x, int y) {
         const auto [tx, ty] = fb.dpb.z ? zsigma(x, y) : std::array<int, 2>{x, y};
-        return gs::clut_t8(clut, byte(fb.memory->read_pixel(t8h, static_cast<std::uint32_t>(tx), static_cast<std::uint32_t>(ty))));
+        return gs::clut_t8(
+            clut, byte(fb.memory->read_pixel(t8h, static_cast<std::uint32_t>(tx), static_cast<std::uint32_t>(ty))));
       },
       fb.dpb);
 }

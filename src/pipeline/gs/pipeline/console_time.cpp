@@ -12,9 +12,7 @@ console_time price_frame(const scene& s, const prepared_scene& ps, method m, con
   frame_packets fp;
   try {
     fp = build_frame_packets(s, ps, m, o);
-  } catch (const std::invalid_argument& e) {
-    return {std::nullopt, e.what()};
-  } catch (const texture_does_not_fit& e) {
+  } catch (const std::invalid_argument& e) { return {std::nullopt, e.what()}; } catch (const texture_does_not_fit& e) {
     return {std::nullopt, e.what()};
   }
   const auto frames = gs::cost::price_dump(frame_dump(fp), c);

@@ -27,7 +27,9 @@ gs::rgba8 pack_tolight(glm::vec3 t, int s) {
               128 + proofs::paper::pack_light_component(sf, t.z), 0x80);
 }
 
-std::vector<std::uint32_t> sphere_map(int width, int height) { return proofs::paper::generate_sphere_map(width, height); }
+std::vector<std::uint32_t> sphere_map(int width, int height) {
+  return proofs::paper::generate_sphere_map(width, height);
+}
 
 st sphere_coordinates(glm::vec3 t) {
   // m = 2·sqrt(2·Tz + 2); at Tz = −1 the map's rim is reached (m → 0): keep m away from zero.

@@ -64,7 +64,8 @@ class stream {
 
   // FRAME_1 (a buffer of the layout, FBP `fbp`), ALPHA_1, COLCLAMP of a pass.
   void target(std::uint32_t fbp, const pass_regs& p, gs::frame_psm psm = gs::frame_psm::PSMCT32) {
-    set(address("FRAME_1"), gs::encode(gs::frame_reg{fixed::uint<9>::from_wrapped(fbp), fixed::uint<6>::from_wrapped(b_.fbw), psm, p.FBMSK}));
+    set(address("FRAME_1"), gs::encode(gs::frame_reg{fixed::uint<9>::from_wrapped(fbp),
+                                                     fixed::uint<6>::from_wrapped(b_.fbw), psm, p.FBMSK}));
     set(address("ALPHA_1"), gs::encode(p.ALPHA));
     set(address("COLCLAMP"), gs::encode(gs::colclamp_reg{p.CLAMP}));
   }
@@ -85,8 +86,8 @@ class stream {
   void clip(const scissor& r) { set(address("SCISSOR_1"), scissor_reg(r)); }
   // TEX0_1 (with the pass's TFX / TCC), TEX1_1, CLAMP_1.
   // cbp: the palette of a PSMT8 / PSMT8H texture, loaded (CLD = 1) unless `load` is false.
-  void texture(const pass_regs& p, gs::mem::buffer at, int w, int h, std::optional<std::uint32_t> cbp, bool clamp, bool linear,
-               const gs::mem::clamp_reg* region = nullptr, bool load = true) {
+  void texture(const pass_regs& p, gs::mem::buffer at, int w, int h, std::optional<std::uint32_t> cbp, bool clamp,
+               bool linear, const gs::mem::clamp_reg* region = nullptr, bool load = true) {
     gs::tex0_reg t;
     t.TBP0 = at.BP;
     t.TBW = at.BW;
@@ -162,11 +163,10 @@ class stream {
   }
   // One sprite over the sprite area (nothing when it is empty), texel (x, y) at pixel (x, y).
   void area_sprite(const pass_regs& p, gs::rgba8 colour) {
-    if (area_.x0 < area_.x1 && area_.y0 < area_.y1) sprites(p, colour, {{area_.x0, area_.y0, area_.x1, area_.y1, area_.x0, area_.y0}});
+    if (area_.x0 < area_.x1 && area_.y0 < area_.y1)
+      sprites(p, colour, {{area_.x0, area_.y0, area_.x1, area_.y1, area_.x0, area_.y0}});
   }
-  void frame_sprite(const pass_regs& p, gs::rgba8 colour) {
-    sprites(p, colour, {{0, 0, ps_.width, ps_.height, 0, 0}});
-  }
+  void frame_sprite(const pass_regs& p, gs::rgba8 colour) { sprites(p, colour, {{0, 0, ps_.width, ps_.height, 0, 0}}); }
 
   // Byte `channel` of every pixel of buffer src_fbp through palette cbp into the current target:
   // gs_memory's channel-fetch sprites per page of the sprite area (as render.cpp's channel_pass).
@@ -177,13 +177,15 @@ class stream {
     for (int py = a.y0 / 32; py * 32 < a.y1; ++py)
       for (int px = a.x0 / 64; px * 64 < a.x1; ++px) {
         const std::uint32_t page = src_fbp + static_cast<std::uint32_t>(px) + static_cast<std::uint32_t>(py) * b_.fbw;
-        const gs::mem::buffer tex{fixed::uint<14>::from_wrapped(32 * page), fixed::uint<6>::from_wrapped(2 * b_.fbw), gs::mem::psm::PSMT8};
+        const gs::mem::buffer tex{fixed::uint<14>::from_wrapped(32 * page), fixed::uint<6>::from_wrapped(2 * b_.fbw),
+                                  gs::mem::psm::PSMT8};
         texture(p, tex, 128, 64, cbp, false, false, &f.CLAMP, first);  // the CLUT loaded once per pass
         first = false;
         std::vector<rect> rs;
         for (const gs::mem::fetch_sprite& sp : f.sprites) {
           const int x0 = px * 64 + static_cast<int>(sp.x0), y0 = py * 32 + static_cast<int>(sp.y0);
-          rs.push_back({x0, y0, x0 + static_cast<int>(sp.x1 - sp.x0), y0 + static_cast<int>(sp.y1 - sp.y0), sp.u0, sp.v0});
+          rs.push_back(
+              {x0, y0, x0 + static_cast<int>(sp.x1 - sp.x0), y0 + static_cast<int>(sp.y1 - sp.y0), sp.u0, sp.v0});
         }
         sprites(p, colour, rs);
       }
@@ -206,7 +208,8 @@ class stream {
 
 frame_packets build_frame_packets(const scene& s, const prepared_scene& ps, method m, const render_options& o) {
   if (o.dpb_clear != dpb_clear_mode::explicit_clear)
-    throw std::invalid_argument("frame packets: --dpb-clear " + std::string(name(o.dpb_clear)) + " is not written yet (explicit only)");
+    throw std::invalid_argument("frame packets: --dpb-clear " + std::string(name(o.dpb_clear)) +
+                                " is not written yet (explicit only)");
   if (ps.width > 1023 || ps.height > 1023)
     throw std::invalid_argument("frame packets: " + std::to_string(ps.width) + "x" + std::to_string(ps.height) +
                                 ": a sprite's UV (10.4) reaches 1023 texels, so frames are at most 1023x1023");
@@ -248,7 +251,8 @@ frame_packets build_frame_packets(const scene& s, const prepared_scene& ps, meth
   const gs::rgba8 ambient = rgb(s.ambient[0], s.ambient[1], s.ambient[2], 0x80);
   g.depth(depth_gequal, z_written);
   g.target(LAB, step1_ambient);
-  g.triangles(step1_ambient, false, [&](const prepared_triangle&, int) { return ambient; }, nm_uv);
+  g.triangles(
+      step1_ambient, false, [&](const prepared_triangle&, int) { return ambient; }, nm_uv);
 
   const bool linear = o.bilinear;
   const stream_texture nm_stream = normal_map_stream(in), diffuse_texels = diffuse_stream(in);
@@ -281,7 +285,9 @@ frame_packets build_frame_packets(const scene& s, const prepared_scene& ps, meth
   auto cbp = [&](clut_slot c) { return in.cbp[static_cast<std::size_t>(c)]; };
   for (std::size_t l = 0; l < s.lights.size(); ++l) {
     const std::vector<light_vertex>& lv = ps.lights[l];
-    auto at = [&](const prepared_triangle& t, int k) -> const light_vertex& { return lv[t.vertex[static_cast<std::size_t>(k)]]; };
+    auto at = [&](const prepared_triangle& t, int k) -> const light_vertex& {
+      return lv[t.vertex[static_cast<std::size_t>(k)]];
+    };
     // 2.1: the DPB cleared over the sprite area.
     g.clip(area);
     g.depth(depth_always, z_masked);
@@ -295,13 +301,12 @@ frame_packets build_frame_packets(const scene& s, const prepared_scene& ps, meth
       const std::uint32_t cbp = in.cbp[static_cast<std::size_t>(p.clut)];
       auto colour = [&](const prepared_triangle& t, int k) { return vertex_rgbaq(p.colour, at(t, k), o.s); };
       switch (p.source) {
-        case pass_source::normal_map:
-          textured(regs, DPB, cbp, nm_stream, in.nm_at, colour, nm_uv);
-          break;
+        case pass_source::normal_map: textured(regs, DPB, cbp, nm_stream, in.nm_at, colour, nm_uv); break;
         case pass_source::sphere_map:
           g.texture(regs, in.sphere_at, 64, 64, std::nullopt, true, false);
           g.target(DPB, regs);
-          g.triangles(regs, true, colour, [&](const prepared_triangle& t, int k) { return vertex_uv(p.source, t, k, lv); });
+          g.triangles(regs, true, colour,
+                      [&](const prepared_triangle& t, int k) { return vertex_uv(p.source, t, k, lv); });
           break;
         case pass_source::dpb_alpha: {  // the DPB read as PSMT8H through the palette, 1:1
           g.clip(area);

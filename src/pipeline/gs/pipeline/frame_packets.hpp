@@ -46,7 +46,7 @@
 namespace gsdot3::pipeline {
 
 struct frame_packets {
-  std::vector<std::uint8_t> gif;        // the stream (GIF PATH3), little-endian qwords
+  std::vector<std::uint8_t> gif;  // the stream (GIF PATH3), little-endian qwords
   buffer_layout buffers;
   // Privileged registers so the displayed frame is the output buffer: PMODE (circuit 1, ALP = 0xFF),
   // DISPFB1 (FBP, FBW, PSMCT32); DISPLAY1 (from the frame size) and the video mode: frame_dump.

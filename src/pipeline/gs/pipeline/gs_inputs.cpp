@@ -98,7 +98,8 @@ gs_inputs place_inputs(const gs_inputs& direct, std::uint32_t first) {
   };
   auto palettes_page = [&] {
     const gs::mem::buffer page = place(64, 32, gs::mem::psm::PSMCT32);  // one page: 8 CLUTs of 4 blocks
-    for (std::size_t k = 0; k < in.cbp.size(); ++k) in.cbp[k] = static_cast<std::uint32_t>(page.BP.value()) + 4 * static_cast<std::uint32_t>(k);
+    for (std::size_t k = 0; k < in.cbp.size(); ++k)
+      in.cbp[k] = static_cast<std::uint32_t>(page.BP.value()) + 4 * static_cast<std::uint32_t>(k);
   };
   in.nm_at = place(direct.nm->width, direct.nm->height, gs::mem::psm::PSMT8);
   if (!direct.sphere.empty()) in.sphere_at = place(64, 64, gs::mem::psm::PSMCT32);
@@ -110,9 +111,10 @@ gs_inputs place_inputs(const gs_inputs& direct, std::uint32_t first) {
   if (!direct.sphere.empty()) in.sphere_at = place(64, 64, gs::mem::psm::PSMCT32);
   palettes_page();
   if (next + 32 * 4 > gs::mem::memory_blocks)
-    throw texture_does_not_fit("memory path: the frame buffers, palettes and sphere map leave " +
-                               std::to_string(gs::mem::memory_blocks / 32 - std::min(next / 32, 512u)) +
-                               " of the GS's 512 pages to stream the textures through (4 are needed): use a smaller --size");
+    throw texture_does_not_fit(
+        "memory path: the frame buffers, palettes and sphere map leave " +
+        std::to_string(gs::mem::memory_blocks / 32 - std::min(next / 32, 512u)) +
+        " of the GS's 512 pages to stream the textures through (4 are needed): use a smaller --size");
   in.window_first = next / 32;
   in.diffuse_bytes = bytes_of(direct.diffuse->texels);
   return in;
@@ -121,7 +123,8 @@ gs_inputs place_inputs(const gs_inputs& direct, std::uint32_t first) {
 void start_stream(gs_inputs& in, const prepared_scene& ps, const render_options& o, const scissor& area) {
   if (in.window_first == 0) return;
   const gs::bilinear_mode filter = o.bilinear ? o.model.bilinear : gs::bilinear_mode::nearest;
-  in.stream = std::make_shared<texture_streamer>(ps, o.model.setup, filter, area, in.window_first, gs::mem::memory_blocks / 32);
+  in.stream =
+      std::make_shared<texture_streamer>(ps, o.model.setup, filter, area, in.window_first, gs::mem::memory_blocks / 32);
 }
 stream_texture normal_map_stream(const gs_inputs& in) {
   return {1, "normal map", gs::mem::psm::PSMT8, in.nm->width, in.nm->height, in.nm->index};
@@ -139,7 +142,8 @@ void add_uploads(gs::packets::packet_builder& b, const gs_inputs& in) {
   for (std::size_t k = 0; k < all.size(); ++k) {
     std::vector<std::uint32_t> image(256);
     for (unsigned p = 0; p < 256; ++p) image[p] = (*all[k])[gs::csm1_position(gs::u8::from_wrapped(p))].to_u32();
-    const gs::mem::buffer at{fixed::uint<14>::from_wrapped(in.cbp[k]), fixed::uint<6>::from_wrapped(1), gs::mem::psm::PSMCT32};
+    const gs::mem::buffer at{fixed::uint<14>::from_wrapped(in.cbp[k]), fixed::uint<6>::from_wrapped(1),
+                             gs::mem::psm::PSMCT32};
     host_transfer(b, at, 16, 16, bytes_of(image));
   }
 }
@@ -148,15 +152,19 @@ gs_inputs upload_inputs(gs::mem::local_memory& m, const gs_inputs& direct, std::
   gs_inputs in = place_inputs(direct, first);
   auto tables = [&in, &direct] {
     auto addresses = [](const gs::mem::buffer& b, int w, int h) {
-      return std::make_shared<const gs::mem::texel_addresses>(b.PSM, b.BW.value(), static_cast<std::uint32_t>(w), static_cast<std::uint32_t>(h));
+      return std::make_shared<const gs::mem::texel_addresses>(b.PSM, b.BW.value(), static_cast<std::uint32_t>(w),
+                                                              static_cast<std::uint32_t>(h));
     };
     if (in.window_first == 0) in.nm_texels = addresses(in.nm_at, direct.nm->width, direct.nm->height);
     if (!direct.sphere.empty()) in.sphere_texels = addresses(in.sphere_at, 64, 64);
-    if (in.window_first == 0) in.diffuse_texels = addresses(in.diffuse_at, direct.diffuse->width, direct.diffuse->height);
+    if (in.window_first == 0)
+      in.diffuse_texels = addresses(in.diffuse_at, direct.diffuse->width, direct.diffuse->height);
   };
   std::jthread helper;  // joins when it goes out of scope, also when an upload below throws
-  if (parallel) helper = std::jthread(tables);
-  else tables();
+  if (parallel)
+    helper = std::jthread(tables);
+  else
+    tables();
   gs::packets::packet_builder b;
   add_uploads(b, in);
   interpret(m, b);

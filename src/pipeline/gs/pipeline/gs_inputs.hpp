@@ -1,7 +1,8 @@
 // pipeline/gs_inputs.hpp — a method's textures and palettes (built once per frame, the VU1 / tool
 // side) and, for the memory path and the packet stream, where they live in GS local memory, the
-// host -> local transfers that put them there, and the frame buffers' layout with step 4's copy. The renderer's memory path runs these transfers
-// through the packet interpreter (gs_packets), the dump writer sends the same packets: one upload.
+// host -> local transfers that put them there, and the frame buffers' layout with step 4's copy. The renderer's memory
+// path runs these transfers through the packet interpreter (gs_packets), the dump writer sends the same packets: one
+// upload.
 #pragma once
 
 #include <array>

@@ -25,12 +25,12 @@ namespace gsdot3::pipeline {
 
 using gs_methods::pass_regs;  // gs_methods/pass_registers.hpp
 
-
 // One pixel: the new frame-buffer word. Always inlined and flattened, so that with the pass's
 // registers as a compile-time constant the compiler folds gs::pixel_pipeline down to that pass
 // (g++ also does it through the callers' flatten; clang needs it here).
-[[gnu::always_inline, gnu::flatten]] inline std::uint32_t gs_pixel(const gs::gs_registers& r, gs::rgba8 texel, const gs::fragment_colour& cf, std::uint32_t old,
-                              int x, int y, const gs::model_options& o) noexcept {
+[[gnu::always_inline, gnu::flatten]] inline std::uint32_t gs_pixel(const gs::gs_registers& r, gs::rgba8 texel,
+                                                                   const gs::fragment_colour& cf, std::uint32_t old,
+                                                                   int x, int y, const gs::model_options& o) noexcept {
   return gs::pixel_pipeline(r, {cf, texel, old, static_cast<unsigned>(x), static_cast<unsigned>(y)}, o).out;
 }
 
@@ -38,9 +38,9 @@ using gs_methods::pass_regs;  // gs_methods/pass_registers.hpp
 // power-of-two sizes; CLAMP_1.WMS/WMT = REPEAT or CLAMP; TEX1.MMAG = NEAREST or LINEAR.
 struct texture_ref {
   int width = 0, height = 0;
-  const std::uint8_t* index = nullptr;      // PSMT8 (with clut)
+  const std::uint8_t* index = nullptr;  // PSMT8 (with clut)
   const gs::clut_buffer* clut = nullptr;
-  const std::uint32_t* texels = nullptr;    // PSMCT32 / PSMCT24 (alpha as stored)
+  const std::uint32_t* texels = nullptr;  // PSMCT32 / PSMCT24 (alpha as stored)
   bool clamp = false;
   gs::bilinear_mode filter = gs::bilinear_mode::nearest;
   // The memory path: the texels read from the modelled local memory at `at` (TBP0, TBW, PSM)
@@ -59,7 +59,8 @@ struct texture_ref {
       v &= height - 1;
     }
     if (memory != nullptr) {
-      const std::uint32_t t = texel_at->read(*memory, static_cast<std::uint32_t>(u), static_cast<std::uint32_t>(v), at.BP.value());
+      const std::uint32_t t =
+          texel_at->read(*memory, static_cast<std::uint32_t>(u), static_cast<std::uint32_t>(v), at.BP.value());
       return clut != nullptr ? gs::clut_t8(*clut, gs::u8::from_wrapped(t)) : gs::rgba8::from_u32(t);
     }
     const std::size_t i = static_cast<std::size_t>(v) * static_cast<std::size_t>(width) + static_cast<std::size_t>(u);

@@ -15,8 +15,9 @@ struct memory_step {
 };
 
 inline constexpr std::array<memory_step, 9> memory_steps{{
-    {"1", "Z buffer and the ambient colour into the LAB: the LAB cleared, Z cleared (Z = 0, ZTST = ALWAYS), every "
-          "triangle with TEST_1 ZTE = 1, ZTST = GEQUAL, ZBUF_1 PSMZ24, ZMSK = 0",
+    {"1",
+     "Z buffer and the ambient colour into the LAB: the LAB cleared, Z cleared (Z = 0, ZTST = ALWAYS), every "
+     "triangle with TEST_1 ZTE = 1, ZTST = GEQUAL, ZBUF_1 PSMZ24, ZMSK = 0",
      "register level: Z at ZBP = 3P in local memory (PSMZ24 layout), gs::depth_test; the LAB clear is a flat sprite",
      "register level for the depth test (gs::depth_test on a row-major Z array); the clears are fills"},
     {"2.1", "clear the DPB to 0x00808080 (explicit, or section 3.4's Z-buffer clear during 2.6)",
@@ -37,8 +38,9 @@ inline constexpr std::array<memory_step, 9> memory_steps{{
     {"3", "the DPB cleared to zero and the diffuse layer drawn into it",
      "register level: a flat sprite, the diffuse texture uploaded by a transfer, ZTST = GEQUAL in memory",
      "register level for the pixel pipeline (into a separate array); the clear is a fill"},
-    {"4", "diffuse × LAB per channel: the LAB copied into the output, each LAB channel moved into the output's alpha, "
-          "Cs·Ad writing that channel",
+    {"4",
+     "diffuse × LAB per channel: the LAB copied into the output, each LAB channel moved into the output's alpha, "
+     "Cs·Ad writing that channel",
      "register level: the copy is a local -> local transfer (TRXDIR = 2), the channel move a channel-fetch sprite",
      "value level for the copy and the channel move, register level for the multiply"},
 }};

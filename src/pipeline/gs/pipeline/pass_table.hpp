@@ -39,8 +39,10 @@ using gs::blend_colour;
 // the clamp never acts; the layout is PSMZ32's), ZMSK = 0 in step 1 (Z written), 1 in every later pass.
 // The Z clear before step 1 is a sprite with Z = 0 and ZTST = ALWAYS. frame_packets.cpp writes
 // these as TEST_1 and ZBUF_1.
-inline constexpr gs::test_reg depth_gequal{false, gs::atst::NEVER, {}, gs::afail::KEEP, false, false, true, gs::ztst::GEQUAL};
-inline constexpr gs::test_reg depth_always{false, gs::atst::NEVER, {}, gs::afail::KEEP, false, false, true, gs::ztst::ALWAYS};
+inline constexpr gs::test_reg depth_gequal{false, gs::atst::NEVER, {},   gs::afail::KEEP,
+                                           false, false,           true, gs::ztst::GEQUAL};
+inline constexpr gs::test_reg depth_always{false, gs::atst::NEVER, {},   gs::afail::KEEP,
+                                           false, false,           true, gs::ztst::ALWAYS};
 inline constexpr gs::zbuf_reg z_written{{}, gs::zbuf_psm::PSMZ24, false};
 inline constexpr gs::zbuf_reg z_masked{{}, gs::zbuf_psm::PSMZ24, true};
 
@@ -60,12 +62,15 @@ inline gs::rgba8 four_pass_sphere_colour(const light_vertex& l) {
 // Baseline (section 2): TL_pos / TL_neg = nearest(127·max(±T·fade, 0)) per component, alpha 0x80.
 inline gs::rgba8 baseline_colour(const light_vertex& l, bool negative) {
   const glm::vec3 t = l.T * l.fade * (negative ? -1.0f : 1.0f);
-  return rgb(nearest(std::max(t.x, 0.0f) * 127), nearest(std::max(t.y, 0.0f) * 127), nearest(std::max(t.z, 0.0f) * 127), 0x80);
+  return rgb(nearest(std::max(t.x, 0.0f) * 127), nearest(std::max(t.y, 0.0f) * 127), nearest(std::max(t.z, 0.0f) * 127),
+             0x80);
 }
 
 // The texture coordinates (UV, 12.4 texels) per triangle corner: the normal map's, or the 64×64
 // sphere map's from the vertex's tolight vector.
-inline std::array<std::int32_t, 2> normal_map_uv(const prepared_triangle& t, int k) { return t.uv16[static_cast<std::size_t>(k)]; }
+inline std::array<std::int32_t, 2> normal_map_uv(const prepared_triangle& t, int k) {
+  return t.uv16[static_cast<std::size_t>(k)];
+}
 inline std::array<std::int32_t, 2> sphere_uv(const light_vertex& l) {
   const st c = sphere_coordinates(l.T);
   return {static_cast<std::int32_t>(std::lround(c.s * 64 * 16)), static_cast<std::int32_t>(std::lround(c.t * 64 * 16))};
@@ -100,26 +105,40 @@ struct method_passes {
 };
 
 // Two-pass (section 3.5): Max(n, 0)·l − Max(−n, 0)·l, then n'_a added into R, G and B.
-inline constexpr method_passes<3> two_pass_method{method::two_pass, palette_kind::two_pass, {{
-    {&two_pass_positive, pass_source::normal_map, clut_slot::pos, vertex_colour::tolight, "2.3 Max(n,0)·l (MODULATE)"},
-    {&two_pass_negative, pass_source::normal_map, clut_slot::neg, vertex_colour::tolight, "2.3 − Max(−n,0)·l (MODULATE, Cd − Cs)"},
-    {&two_pass_add_alpha, pass_source::dpb_alpha, clut_slot::grey, vertex_colour::white, "2.4a + n'a (PSMT8H of the DPB alpha)"},
-}}};
+inline constexpr method_passes<3> two_pass_method{method::two_pass,
+                                                  palette_kind::two_pass,
+                                                  {{
+                                                      {&two_pass_positive, pass_source::normal_map, clut_slot::pos,
+                                                       vertex_colour::tolight, "2.3 Max(n,0)·l (MODULATE)"},
+                                                      {&two_pass_negative, pass_source::normal_map, clut_slot::neg,
+                                                       vertex_colour::tolight, "2.3 − Max(−n,0)·l (MODULATE, Cd − Cs)"},
+                                                      {&two_pass_add_alpha, pass_source::dpb_alpha, clut_slot::grey,
+                                                       vertex_colour::white, "2.4a + n'a (PSMT8H of the DPB alpha)"},
+                                                  }}};
 // Four-pass (section 3.6): the sphere map · fade, then (Cs − Cd)·As + Cd per axis into R, G, B.
-inline constexpr method_passes<4> four_pass_method{method::four_pass, palette_kind::reordered_axes, {{
-    {&four_pass_sphere, pass_source::sphere_map, clut_slot::pos /* unused */, vertex_colour::sphere_fade,
-     "2.3 sphere map · fade (HIGHLIGHT)"},
-    {&four_pass_x, pass_source::normal_map, clut_slot::axis_x, vertex_colour::white, "2.3 R: x multiply (Cs − Cd)·As + Cd"},
-    {&four_pass_y, pass_source::normal_map, clut_slot::axis_y, vertex_colour::white, "2.3 G: y multiply (Cs − Cd)·As + Cd"},
-    {&four_pass_z, pass_source::normal_map, clut_slot::axis_z, vertex_colour::white, "2.3 B: z multiply (Cs − Cd)·As + Cd"},
-}}};
+inline constexpr method_passes<4> four_pass_method{
+    method::four_pass,
+    palette_kind::reordered_axes,
+    {{
+        {&four_pass_sphere, pass_source::sphere_map, clut_slot::pos /* unused */, vertex_colour::sphere_fade,
+         "2.3 sphere map · fade (HIGHLIGHT)"},
+        {&four_pass_x, pass_source::normal_map, clut_slot::axis_x, vertex_colour::white,
+         "2.3 R: x multiply (Cs − Cd)·As + Cd"},
+        {&four_pass_y, pass_source::normal_map, clut_slot::axis_y, vertex_colour::white,
+         "2.3 G: y multiply (Cs − Cd)·As + Cd"},
+        {&four_pass_z, pass_source::normal_map, clut_slot::axis_z, vertex_colour::white,
+         "2.3 B: z multiply (Cs − Cd)·As + Cd"},
+    }}};
 // The 2002 method (section 2): NM_pos·TL_pos + NM_neg·TL_neg − NM_neg·TL_pos − NM_pos·TL_neg.
-inline constexpr method_passes<4> baseline_method{method::baseline, palette_kind::signed_side, {{
-    {&baseline_add, pass_source::normal_map, clut_slot::pos, vertex_colour::tl_pos, "2.3 + NM_pos·TL_pos"},
-    {&baseline_add, pass_source::normal_map, clut_slot::neg, vertex_colour::tl_neg, "2.3 + NM_neg·TL_neg"},
-    {&baseline_subtract, pass_source::normal_map, clut_slot::neg, vertex_colour::tl_pos, "2.3 − NM_neg·TL_pos"},
-    {&baseline_subtract, pass_source::normal_map, clut_slot::pos, vertex_colour::tl_neg, "2.3 − NM_pos·TL_neg"},
-}}};
+inline constexpr method_passes<4> baseline_method{
+    method::baseline,
+    palette_kind::signed_side,
+    {{
+        {&baseline_add, pass_source::normal_map, clut_slot::pos, vertex_colour::tl_pos, "2.3 + NM_pos·TL_pos"},
+        {&baseline_add, pass_source::normal_map, clut_slot::neg, vertex_colour::tl_neg, "2.3 + NM_neg·TL_neg"},
+        {&baseline_subtract, pass_source::normal_map, clut_slot::neg, vertex_colour::tl_pos, "2.3 − NM_neg·TL_pos"},
+        {&baseline_subtract, pass_source::normal_map, clut_slot::pos, vertex_colour::tl_neg, "2.3 − NM_pos·TL_neg"},
+    }}};
 
 // f.template operator()<D>() with D the method's method_passes (a constant, so a renderer can
 // instantiate its pixel loops per pass register set); the only switch over the GS methods.
@@ -137,7 +156,10 @@ struct method_view {
   std::span<const light_pass> light;
 };
 inline method_view describe(method m) {
-  return with_method(m, []<const auto& D>() { return method_view{D.palettes, D.light}; });
+  return with_method(
+      m, []<const auto & D>() {
+        return method_view{D.palettes, D.light};
+      });
 }
 
 // A light pass's vertex colour and texture coordinates at corner k of triangle t (lv: the light's

@@ -1,10 +1,9 @@
 // pipeline/render.cpp — the pass sequences of the three methods, run over horizontal frame bands.
 //
-// Register level (through gs::pixel_pipeline and the gs_arith units, see gs_pass.hpp): every triangle pass (step 1, 2.3, 3), the
-// clear values, the two-pass alpha post pass (PSMT8H reads the DPB's own alpha byte at the same
-// pixel: gs::t8h_index), the ILP look-up × light colour added into the LAB, the diffuse pass and
-// the per-channel blend of the multiply.
-// Two storage paths (render_options::memory_path):
+// Register level (through gs::pixel_pipeline and the gs_arith units, see gs_pass.hpp): every triangle pass (step
+// 1, 2.3, 3), the clear values, the two-pass alpha post pass (PSMT8H reads the DPB's own alpha byte at the same pixel:
+// gs::t8h_index), the ILP look-up × light colour added into the LAB, the diffuse pass and the per-channel blend of the
+// multiply. Two storage paths (render_options::memory_path):
 // - value level (default, the fast path and the oracle): frame buffers are row-major vectors; the
 //   channel fetch of the R+G+B post filter (the GS reads the DPB as PSMT8 with swizzled sprites,
 //   section 3.3) takes the byte from the same pixel's word directly, as do the ILP's read of the
@@ -60,14 +59,19 @@ using namespace detail;
 using namespace passes;
 
 template <class FB>
-std::size_t render_band(const scene& s, const prepared_scene& ps, method m, const render_options& o, const gs_inputs& in,
-                        scissor band, frame_buffers<FB>& fb, frame& result) {
+std::size_t render_band(const scene& s, const prepared_scene& ps, method m, const render_options& o,
+                        const gs_inputs& in, scissor band, frame_buffers<FB>& fb, frame& result) {
   band_renderer r(ps, o, band, fb.zb, result.visible_triangle);
   // Tracing (render_options::trace, one band): after each pass, its target buffer and inputs.
   pass_record pending;
   const std::size_t frame_pixels = static_cast<std::size_t>(ps.width) * static_cast<std::size_t>(ps.height);
   auto open_pass = [&] {
-    pending = {{}, -1, {}, {}, std::vector<std::uint32_t>(frame_pixels), std::vector<std::uint16_t>(4 * frame_pixels),
+    pending = {{},
+               -1,
+               {},
+               {},
+               std::vector<std::uint32_t>(frame_pixels),
+               std::vector<std::uint16_t>(4 * frame_pixels),
                std::vector<std::uint8_t>(frame_pixels)};
   };
   auto note = [&](std::string_view label, int light, const char* target, const FB& buffer) {
@@ -85,11 +89,20 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
 
   const gs::bilinear_mode filter = o.bilinear ? o.model.bilinear : gs::bilinear_mode::nearest;
   auto nm_texture = [&](const gs::clut_buffer& clut) {
-    return texture_ref{in.nm->width, in.nm->height, in.nm->index.data(), &clut, nullptr, false, filter, in.memory, in.nm_at, in.nm_texels.get()};
+    return texture_ref{in.nm->width, in.nm->height, in.nm->index.data(), &clut,    nullptr,
+                       false,        filter,        in.memory,           in.nm_at, in.nm_texels.get()};
   };
   auto flat_white = [&](std::uint32_t) { return white; };
   const stream_texture nm_stream = normal_map_stream(in), diffuse_texels = diffuse_stream(in);
-  const texture_ref sphere{64, 64, nullptr, nullptr, in.sphere.data(), true, gs::bilinear_mode::nearest, in.memory, in.sphere_at,
+  const texture_ref sphere{64,
+                           64,
+                           nullptr,
+                           nullptr,
+                           in.sphere.data(),
+                           true,
+                           gs::bilinear_mode::nearest,
+                           in.memory,
+                           in.sphere_at,
                            in.sphere_texels.get()};
 
   for (std::size_t l = 0; l < s.lights.size(); ++l) {
@@ -97,7 +110,8 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
     // 2.1 (the DPB starts cleared; nothing is drawn outside the sprite area); 2.2 COLCLAMP = 0 in
     // every pass of 2.3 and 2.4.
     if constexpr (in_memory(FB{})) {
-      if (l == 0 || fb.clear == dpb_clear_mode::explicit_clear) r.fill(fb.dpb, clear_dpb, false);  // else: 2.6's Z clear
+      if (l == 0 || fb.clear == dpb_clear_mode::explicit_clear)
+        r.fill(fb.dpb, clear_dpb, false);  // else: 2.6's Z clear
     } else {
       r.fill(fb.dpb, clear_dpb, false);
     }
@@ -115,10 +129,10 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
             [&](const prepared_triangle& t, int k) { return vertex_uv(p.source, t, k, lv); });
       return a;
     };
-    auto draw_pass = [&]<const pass_regs& Regs, pass_source Source>(const light_pass& p) {
+    auto draw_pass = [&]<const pass_regs & Regs, pass_source Source>(const light_pass& p) {
       if constexpr (Source == pass_source::normal_map) {
-        draw_textured<Regs>(r, fb.memory, in.stream.get(), nm_stream, nm_texture(*palettes(in)[static_cast<std::size_t>(p.clut)]),
-                            attributes_of(p), fb.dpb);
+        draw_textured<Regs>(r, fb.memory, in.stream.get(), nm_stream,
+                            nm_texture(*palettes(in)[static_cast<std::size_t>(p.clut)]), attributes_of(p), fb.dpb);
       } else if constexpr (Source == pass_source::sphere_map) {
         r.draw<Regs>(&sphere, attributes_of(p), fb.dpb);
       } else {
@@ -126,18 +140,21 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
       }
       note(p.label, li, "DPB", fb.dpb);
     };
-    with_method(m, [&]<const auto& D>() {
-      [&]<std::size_t... I>(std::index_sequence<I...>) {
-        (draw_pass.template operator()<*D.light[I].regs, D.light[I].source>(D.light[I]), ...);
-      }(std::make_index_sequence<D.light.size()>{});
-    });
+    with_method(
+        m, [&]<const auto & D>() {
+          [&]<std::size_t... I>(std::index_sequence<I...>) {
+            (draw_pass.template operator()<*D.light[I].regs, D.light[I].source>(D.light[I]), ...);
+          }
+          (std::make_index_sequence<D.light.size()>{});
+        });
     // 2.4: R += G, R += B (mod 256): additive sprites writing red only.
     channel_pass<post_add_into_red>(r, fb, white, in.grey, 1, fb.dpb, fb.dpb);
     note("2.4 R += G", li, "DPB", fb.dpb);
     channel_pass<post_add_into_red>(r, fb, white, in.grey, 2, fb.dpb, fb.dpb);
     note("2.4 R += B (the post-filter sum)", li, "DPB", fb.dpb);
     for (int y = band.y0; y < band.y1; ++y)
-      for (int x = band.x0; x < band.x1; ++x) result.dot[l][r.index(x, y)] = static_cast<std::uint8_t>(fb.dpb(x, y) & 0xFF);
+      for (int x = band.x0; x < band.x1; ++x)
+        result.dot[l][r.index(x, y)] = static_cast<std::uint8_t>(fb.dpb(x, y) & 0xFF);
     // 2.5, 2.6: COLCLAMP = 1; ILP[sum] × light colour (MODULATE) added into the LAB.
     const auto& lc = s.lights[l].colour;
     if constexpr (in_memory(FB{})) {
@@ -151,9 +168,11 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
 
   // Step 3: the unlit diffuse layer.
   r.fill(fb.diff, 0, false);
-  const texture_ref diffuse{in.diffuse->width, in.diffuse->height, nullptr, nullptr, in.diffuse->texels.data(), false, filter,
-                            in.memory, in.diffuse_at, in.diffuse_texels.get()};
-  draw_textured<diffuse_layer>(r, fb.memory, in.stream.get(), diffuse_texels, diffuse, attributes(ps, o.model.setup, flat_white, normal_map_uv), fb.diff);
+  const texture_ref diffuse{
+      in.diffuse->width, in.diffuse->height,     nullptr, nullptr, in.diffuse->texels.data(), false, filter, in.memory,
+      in.diffuse_at,     in.diffuse_texels.get()};
+  draw_textured<diffuse_layer>(r, fb.memory, in.stream.get(), diffuse_texels, diffuse,
+                               attributes(ps, o.model.setup, flat_white, normal_map_uv), fb.diff);
   note("3 diffuse layer", -1, "diffuse", fb.diff);
 
   // Step 4: diffuse × LAB per channel: (Cs − 0)·Ad >> 7 with the LAB channel in the destination
@@ -177,16 +196,15 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
           o = (o & 0x00FFFFFFu) | (((fb.lab(x, y) >> (8 * c)) & 0xFFu) << 24);
         }
     }
-    pass(white, [&](int x, int y) { return gs::rgba8::from_u32(fb.diff(x, y)); }, fb.out);
+    pass(
+        white, [&](int x, int y) { return gs::rgba8::from_u32(fb.diff(x, y)); }, fb.out);
   };
   multiply(0, [&](auto&&... a) { r.sprite<multiply_red>(a...); });
   multiply(1, [&](auto&&... a) { r.sprite<multiply_green>(a...); });
   multiply(2, [&](auto&&... a) { r.sprite<multiply_blue>(a...); });
   note("4 diffuse × LAB (R, G, B)", -1, "frame", fb.out);
   for (int y = band.y0; y < band.y1; ++y)
-    for (int x = band.x0; x < band.x1; ++x) {
-      result.colour[r.index(x, y)] = fb.out(x, y) | 0xFF000000u;
-    }
+    for (int x = band.x0; x < band.x1; ++x) { result.colour[r.index(x, y)] = fb.out(x, y) | 0xFF000000u; }
   return r.pixel_ops();
 }
 
@@ -214,7 +232,6 @@ void render_bands(const scene& s, const prepared_scene& ps, method m, const rend
   for (std::thread& t : workers) t.join();
   for (std::size_t c : ops) result.pixel_ops += c;
 }
-
 
 }  // namespace
 
@@ -254,7 +271,8 @@ frame render(const scene& s, const prepared_scene& ps, method m, const render_op
     std::vector<gs::mem::row_column_address> addresses;
     addresses.reserve(5);
     for (memory_view* v : {&fb.dpb, &fb.lab, &fb.diff, &fb.out, &fb.zb.memory})
-      v->address = &addresses.emplace_back(v->layout(), v->bp, v->bw, 64 * fbw, 32 * static_cast<std::uint32_t>((ps.height + 31) / 32));
+      v->address = &addresses.emplace_back(v->layout(), v->bp, v->bw, 64 * fbw,
+                                           32 * static_cast<std::uint32_t>((ps.height + 31) / 32));
     render_options one = o;
     if (o.dpb_clear != dpb_clear_mode::explicit_clear) one.threads = 1;  // draw order is the model's
     gs_inputs uploaded = upload_inputs(memory, in, layout.first_texture_block(), one.threads > 1);

@@ -27,7 +27,8 @@ struct arrangement {
 };
 std::optional<arrangement> arrange(const std::vector<std::array<int, 2>>& cells, std::uint32_t w) {
   arrangement a;
-  for (const auto& [c, r] : cells) a.at.push_back((static_cast<std::uint32_t>(c) + static_cast<std::uint32_t>(r) * w) % memory_pages);
+  for (const auto& [c, r] : cells)
+    a.at.push_back((static_cast<std::uint32_t>(c) + static_cast<std::uint32_t>(r) * w) % memory_pages);
   std::vector<std::uint32_t> sorted = a.at;
   std::sort(sorted.begin(), sorted.end());
   if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) return std::nullopt;
@@ -44,7 +45,8 @@ std::uint32_t tbw(gs::mem::psm p, std::uint32_t w) { return w * page_of(p).w / 6
 std::uint32_t widest(gs::mem::psm p) { return 63 * 64 / page_of(p).w; }
 // The strides a piece may use: the texture's own row of pages first, then 1, 2, ... up to widest.
 std::vector<std::uint32_t> strides(const stream_texture& t) {
-  const std::uint32_t own = std::min(widest(t.PSM), (static_cast<std::uint32_t>(t.width) + page_of(t.PSM).w - 1) / page_of(t.PSM).w);
+  const std::uint32_t own =
+      std::min(widest(t.PSM), (static_cast<std::uint32_t>(t.width) + page_of(t.PSM).w - 1) / page_of(t.PSM).w);
   std::vector<std::uint32_t> s{own};
   for (std::uint32_t w = 1; w <= widest(t.PSM); ++w)
     if (w != own) s.push_back(w);
@@ -55,12 +57,15 @@ std::vector<std::uint32_t> strides(const stream_texture& t) {
 
 bool may_cover(const prepared_triangle& t, const scissor& r) {
   const auto& v = t.setup.v;
-  const int x0 = ceil_124(std::min({v[0].x, v[1].x, v[2].x})) - 1, x1 = ceil_124(std::max({v[0].x, v[1].x, v[2].x})) + 1;
-  const int y0 = ceil_124(std::min({v[0].y, v[1].y, v[2].y})) - 1, y1 = ceil_124(std::max({v[0].y, v[1].y, v[2].y})) + 1;
+  const int x0 = ceil_124(std::min({v[0].x, v[1].x, v[2].x})) - 1,
+            x1 = ceil_124(std::max({v[0].x, v[1].x, v[2].x})) + 1;
+  const int y0 = ceil_124(std::min({v[0].y, v[1].y, v[2].y})) - 1,
+            y1 = ceil_124(std::max({v[0].y, v[1].y, v[2].y})) + 1;
   return x0 < r.x1 && r.x0 < x1 && y0 < r.y1 && r.y0 < y1;
 }
 
-void host_transfer(gs::packets::packet_builder& out, const gs::mem::buffer& b, int w, int h, std::span<const std::uint8_t> data) {
+void host_transfer(gs::packets::packet_builder& out, const gs::mem::buffer& b, int w, int h,
+                   std::span<const std::uint8_t> data) {
   namespace reg = gs::packets::reg;
   gs::mem::bitbltbuf_reg blt;
   blt.DBP = b.BP;
@@ -68,9 +73,9 @@ void host_transfer(gs::packets::packet_builder& out, const gs::mem::buffer& b, i
   blt.DPSM = b.PSM;
   const gs::mem::trxreg_reg size{fixed::uint<12>::from_wrapped(w), fixed::uint<12>::from_wrapped(h)};
   const std::pair<std::uint8_t, std::uint64_t> writes[] = {{reg::BITBLTBUF, gs::mem::encode(blt)},
-                                                          {reg::TRXPOS, gs::mem::encode(gs::mem::trxpos_reg{})},
-                                                          {reg::TRXREG, gs::mem::encode(size)},
-                                                          {reg::TRXDIR, gs::mem::encode(gs::mem::trxdir_reg{})}};
+                                                           {reg::TRXPOS, gs::mem::encode(gs::mem::trxpos_reg{})},
+                                                           {reg::TRXREG, gs::mem::encode(size)},
+                                                           {reg::TRXDIR, gs::mem::encode(gs::mem::trxdir_reg{})}};
   out.ad(writes);
   out.image(data);
 }
@@ -79,11 +84,12 @@ void interpret(gs::mem::local_memory& m, const gs::packets::packet_builder& b) {
   const std::vector<std::uint8_t> bytes = b.bytes();
   gs::packets::interpreter gs(m);
   for (const gs::packets::gif_event& e : gs::packets::decode_gif(bytes)) gs.apply(e, 16 * std::uint64_t{e.offset});
-  if (!gs.unmodelled_features().empty()) throw std::logic_error("memory path upload: " + gs.unmodelled_features().front().what);
+  if (!gs.unmodelled_features().empty())
+    throw std::logic_error("memory path upload: " + gs.unmodelled_features().front().what);
 }
 
-texture_streamer::texture_streamer(const prepared_scene& ps, gs::gouraud_setup setup, gs::bilinear_mode filter, scissor area,
-                                   std::uint32_t first_page, std::uint32_t end_page)
+texture_streamer::texture_streamer(const prepared_scene& ps, gs::gouraud_setup setup, gs::bilinear_mode filter,
+                                   scissor area, std::uint32_t first_page, std::uint32_t end_page)
     : ps_(ps), filter_(filter), area_(area), first_(first_page), end_(end_page) {
   for (const prepared_triangle& t : ps.triangles)
     uv_.push_back(gs::setup_attributes(t.setup, {}, t.uv16, xy_offset_pixels, xy_offset_pixels, setup));
@@ -136,13 +142,16 @@ void texture_streamer::split(const stream_texture& t, const scissor& a, const st
     return;
   }
   if (a.x1 - a.x0 == 1 && a.y1 - a.y0 == 1)
-    throw texture_does_not_fit("memory path: pixel (" + std::to_string(a.x0) + ", " + std::to_string(a.y0) + ") fetches the " +
-                               std::to_string(t.width) + "x" + std::to_string(t.height) + " " + t.name + " from " +
-                               std::to_string(cells.size()) + " pages, more than the " + std::to_string(window_pages()) +
+    throw texture_does_not_fit("memory path: pixel (" + std::to_string(a.x0) + ", " + std::to_string(a.y0) +
+                               ") fetches the " + std::to_string(t.width) + "x" + std::to_string(t.height) + " " +
+                               t.name + " from " + std::to_string(cells.size()) + " pages, more than the " +
+                               std::to_string(window_pages()) +
                                " pages free beside the frame buffers: use a smaller --size or a smaller normal map");
   scissor lo = a, hi = a;
-  if (a.x1 - a.x0 >= a.y1 - a.y0) lo.x1 = hi.x0 = (a.x0 + a.x1) / 2;
-  else lo.y1 = hi.y0 = (a.y0 + a.y1) / 2;
+  if (a.x1 - a.x0 >= a.y1 - a.y0)
+    lo.x1 = hi.x0 = (a.x0 + a.x1) / 2;
+  else
+    lo.y1 = hi.y0 = (a.y0 + a.y1) / 2;
   split(t, lo, in, out);
   split(t, hi, in, out);
 }
@@ -182,7 +191,10 @@ stream_piece texture_streamer::place(const stream_texture& t, const leaf& l) {
       if ((!best || n > best->kept) && inside(base, *a)) best = choice{w, base, n, *a};
   }
   if (!best) throw std::logic_error("texture_streamer: a leaf that does not fit");  // split() made every leaf fit
-  stream_piece piece{l.area, {fixed::uint<14>::from_wrapped(32 * best->base), fixed::uint<6>::from_wrapped(tbw(t.PSM, best->w)), t.PSM}, {}};
+  stream_piece piece{
+      l.area,
+      {fixed::uint<14>::from_wrapped(32 * best->base), fixed::uint<6>::from_wrapped(tbw(t.PSM, best->w)), t.PSM},
+      {}};
   for (std::size_t i = 0; i < l.cells.size(); ++i) {
     const std::uint32_t page = (best->base + best->a.at[i]) % memory_pages;
     resident& now = window_[page];
@@ -222,11 +234,13 @@ void add_piece_uploads(gs::packets::packet_builder& b, const stream_texture& t, 
     const int w = std::min(static_cast<int>(pg.w), t.width - x0), h = std::min(static_cast<int>(pg.h), t.height - y0);
     image.clear();
     for (int y = y0; y < y0 + h; ++y) {
-      const auto row = t.texels.subspan((static_cast<std::size_t>(y) * static_cast<std::size_t>(t.width) + static_cast<std::size_t>(x0)) * bpp,
-                                        static_cast<std::size_t>(w) * bpp);
+      const auto row = t.texels.subspan(
+          (static_cast<std::size_t>(y) * static_cast<std::size_t>(t.width) + static_cast<std::size_t>(x0)) * bpp,
+          static_cast<std::size_t>(w) * bpp);
       image.insert(image.end(), row.begin(), row.end());
     }
-    const gs::mem::buffer page{fixed::uint<14>::from_wrapped(32 * u.page), fixed::uint<6>::from_wrapped(tbw(t.PSM, 1)), t.PSM};
+    const gs::mem::buffer page{fixed::uint<14>::from_wrapped(32 * u.page), fixed::uint<6>::from_wrapped(tbw(t.PSM, 1)),
+                               t.PSM};
     host_transfer(b, page, w, h, image);
   }
 }

@@ -99,7 +99,8 @@ class texture_streamer {
   };
   const std::vector<leaf>& leaves(const stream_texture& t);
   void split(const stream_texture& t, const scissor& a, const std::vector<std::uint32_t>& tris, std::vector<leaf>& out);
-  std::vector<std::array<int, 2>> cells_in(const stream_texture& t, const scissor& a, const std::vector<std::uint32_t>& tris) const;
+  std::vector<std::array<int, 2>> cells_in(const stream_texture& t, const scissor& a,
+                                           const std::vector<std::uint32_t>& tris) const;
   bool placeable(const stream_texture& t, const std::vector<std::array<int, 2>>& cells) const;
   stream_piece place(const stream_texture& t, const leaf& l);
 
@@ -113,14 +114,15 @@ class texture_streamer {
   struct resident {
     int id = -1, c = 0, r = 0;
   };
-  std::array<resident, 512> window_{};  // what each page of the memory holds (only the window is used)
+  std::array<resident, 512> window_{};                 // what each page of the memory holds (only the window is used)
   std::map<std::array<int, 3>, std::uint32_t> where_;  // (id, c, r) -> the page holding that cell
   std::map<std::array<std::uint32_t, 3>, std::unique_ptr<const gs::mem::texel_addresses>> tables_;
 };
 
 // A host -> local transfer of a w × h image packed as `data` into buffer b: BITBLTBUF (DBP, DBW,
 // DPSM), TRXPOS = 0, TRXREG (RRW, RRH), TRXDIR = 0 as A+D writes, then the pixels as IMAGE data.
-void host_transfer(gs::packets::packet_builder& out, const gs::mem::buffer& b, int w, int h, std::span<const std::uint8_t> data);
+void host_transfer(gs::packets::packet_builder& out, const gs::mem::buffer& b, int w, int h,
+                   std::span<const std::uint8_t> data);
 // Packets run into local memory through gs_packets' interpreter (std::logic_error on what it does not model).
 void interpret(gs::mem::local_memory& m, const gs::packets::packet_builder& b);
 

@@ -60,9 +60,10 @@ pixel_light interpolate_light(const prepared_scene& ps, std::size_t l, const pix
   return r;
 }
 
-glm::dvec3 filtered(const std::function<glm::dvec3(std::int32_t, std::int32_t)>& texel, std::int32_t u16, std::int32_t v16,
-                    bool bilinear) {
-  const gs::texel_footprint f = gs::footprint(u16, v16, bilinear ? gs::bilinear_mode::lerp16_4 : gs::bilinear_mode::nearest);
+glm::dvec3 filtered(const std::function<glm::dvec3(std::int32_t, std::int32_t)>& texel, std::int32_t u16,
+                    std::int32_t v16, bool bilinear) {
+  const gs::texel_footprint f =
+      gs::footprint(u16, v16, bilinear ? gs::bilinear_mode::lerp16_4 : gs::bilinear_mode::nearest);
   if (!bilinear) return texel(f.u0, f.v0);
   const double wu = f.wu.value() / 16.0, wv = f.wv.value() / 16.0;
   const glm::dvec3 top = texel(f.u0, f.v0) * (1 - wu) + texel(f.u0 + 1, f.v0) * wu;
@@ -70,9 +71,11 @@ glm::dvec3 filtered(const std::function<glm::dvec3(std::int32_t, std::int32_t)>&
   return top * (1 - wv) + bottom * wv;
 }
 
-std::vector<std::uint32_t> compose_lit(const scene& s, const prepared_scene& ps, const std::vector<std::int32_t>& visible,
+std::vector<std::uint32_t> compose_lit(const scene& s, const prepared_scene& ps,
+                                       const std::vector<std::int32_t>& visible,
                                        const std::vector<std::vector<float>>& dot, bool bilinear, double power) {
-  std::vector<std::uint32_t> colour(static_cast<std::size_t>(ps.width) * static_cast<std::size_t>(ps.height), 0xFF000000u);
+  std::vector<std::uint32_t> colour(static_cast<std::size_t>(ps.width) * static_cast<std::size_t>(ps.height),
+                                    0xFF000000u);
   const texture32& dt = s.diffuse;
   auto diffuse_texel = [&](std::int32_t u, std::int32_t v) {
     const std::uint32_t w = dt.texels[wrapped_texel(dt.width, dt.height, u, v)];
@@ -86,8 +89,10 @@ std::vector<std::uint32_t> compose_lit(const scene& s, const prepared_scene& ps,
       const auto& lc = s.lights[l].colour;
       lab += glm::dvec3(lc[0], lc[1], lc[2]) * std::pow(std::max(d, 0.0) / 128.0, power);
     }
-    const glm::dvec3 out = glm::min(filtered(diffuse_texel, p.u16, p.v16, bilinear) * glm::min(lab, 255.0) / 128.0, 255.0);
-    colour[p.index] = static_cast<std::uint32_t>(std::lround(out.x)) | static_cast<std::uint32_t>(std::lround(out.y)) << 8 |
+    const glm::dvec3 out =
+        glm::min(filtered(diffuse_texel, p.u16, p.v16, bilinear) * glm::min(lab, 255.0) / 128.0, 255.0);
+    colour[p.index] = static_cast<std::uint32_t>(std::lround(out.x)) |
+                      static_cast<std::uint32_t>(std::lround(out.y)) << 8 |
                       static_cast<std::uint32_t>(std::lround(out.z)) << 16 | 0xFF000000u;
   });
   return colour;

@@ -39,17 +39,19 @@ pixel_light interpolate_light(const prepared_scene& ps, std::size_t l, const pix
 
 // A texel value filtered at (u16, v16): nearest, or the GS's 4-bit-weight bilinear blend of the four
 // texels (gs::footprint) applied to the float values texel(u, v) returns (u, v unwrapped integers).
-glm::dvec3 filtered(const std::function<glm::dvec3(std::int32_t, std::int32_t)>& texel, std::int32_t u16, std::int32_t v16,
-                    bool bilinear);
+glm::dvec3 filtered(const std::function<glm::dvec3(std::int32_t, std::int32_t)>& texel, std::int32_t u16,
+                    std::int32_t v16, bool bilinear);
 
 // Texel (u, v) of a map with power-of-two sides, wrapped (REPEAT), as a row-major index.
 constexpr std::size_t wrapped_texel(int width, int height, std::int32_t u, std::int32_t v) noexcept {
-  return static_cast<std::size_t>(v & (height - 1)) * static_cast<std::size_t>(width) + static_cast<std::size_t>(u & (width - 1));
+  return static_cast<std::size_t>(v & (height - 1)) * static_cast<std::size_t>(width) +
+         static_cast<std::size_t>(u & (width - 1));
 }
 
 // The lit frame from per-light dot products d_l (1/128 units, NaN = not covered), composed as the
 // GS methods' steps 2.6–4 do in float: diffuse · min(ambient + Σ colour_l · (max(d_l, 0)/128)^power, 255) / 128.
-std::vector<std::uint32_t> compose_lit(const scene& s, const prepared_scene& ps, const std::vector<std::int32_t>& visible_triangle,
+std::vector<std::uint32_t> compose_lit(const scene& s, const prepared_scene& ps,
+                                       const std::vector<std::int32_t>& visible_triangle,
                                        const std::vector<std::vector<float>>& dot, bool bilinear, double power);
 
 }  // namespace gsdot3::pipeline

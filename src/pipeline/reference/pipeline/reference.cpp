@@ -35,7 +35,8 @@ reference_frame render_reference(const scene& s, const prepared_scene& ps, const
         const light_vertex& lv = ps.lights[l][tri.vertex[k]];
         faded += glm::dvec3(lv.T) * static_cast<double>(lv.fade) * p.lambda[static_cast<int>(k)];
       }
-      r.renormalised[l][p.index] = static_cast<float>(glm::length(pl.T) > 0.0 ? 128.0 * pl.fade * glm::dot(N, glm::normalize(pl.T)) : 0.0);
+      r.renormalised[l][p.index] =
+          static_cast<float>(glm::length(pl.T) > 0.0 ? 128.0 * pl.fade * glm::dot(N, glm::normalize(pl.T)) : 0.0);
       r.unnormalised[l][p.index] = static_cast<float>(128.0 * glm::dot(N, faded));
     }
   });

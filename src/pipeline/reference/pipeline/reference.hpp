@@ -25,7 +25,7 @@ struct reference_frame {
 
 // `visible_triangle` comes from the GS render's step 1 (the same per-pixel winner).
 // `power`: the lit frame uses (max(dot, 0)/128)^power per light (the ILP's exponent).
-reference_frame render_reference(const scene& s, const prepared_scene& ps, const std::vector<std::int32_t>& visible_triangle,
-                                 bool bilinear, double power = 1.0);
+reference_frame render_reference(const scene& s, const prepared_scene& ps,
+                                 const std::vector<std::int32_t>& visible_triangle, bool bilinear, double power = 1.0);
 
 }  // namespace gsdot3::pipeline

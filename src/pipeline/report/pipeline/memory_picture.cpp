@@ -33,10 +33,12 @@ image page_overlay_image(gs::mem::psm base, gs::mem::psm view, std::string_view 
         rgb[1] = static_cast<std::uint8_t>(255 * c.y / (pb.h - 1));
         rgb[2] = static_cast<std::uint8_t>(c.bit * 255 / 28);
       }
-      const bool edge = scale >= 3 && (px % (scale * static_cast<int>(blk.w)) == 0 || py % (scale * static_cast<int>(blk.h)) == 0);
+      const bool edge =
+          scale >= 3 && (px % (scale * static_cast<int>(blk.w)) == 0 || py % (scale * static_cast<int>(blk.h)) == 0);
       for (int k = 0; k < 3; ++k)
-        img.data[(static_cast<std::size_t>(py) * static_cast<std::size_t>(img.width) + static_cast<std::size_t>(px)) * 3 + static_cast<std::size_t>(k)] =
-            edge ? 0 : rgb[k];
+        img.data[(static_cast<std::size_t>(py) * static_cast<std::size_t>(img.width) + static_cast<std::size_t>(px)) *
+                     3 +
+                 static_cast<std::size_t>(k)] = edge ? 0 : rgb[k];
     }
   return img;
 }
@@ -48,7 +50,8 @@ dpb_pictures post_filter_dpb_pictures(const std::vector<pass_record>& trace, int
     if (p.light == 0 && p.label.rfind("2.4 R += G", 0) == 0) break;
     if (p.light == 0 && p.target == "DPB") dpb = &p;
   }
-  if (dpb == nullptr) throw std::invalid_argument("memory picture: the trace has no DPB pass before light 0's post filter");
+  if (dpb == nullptr)
+    throw std::invalid_argument("memory picture: the trace has no DPB pass before light 0's post filter");
   mem::local_memory m;
   const auto fbw = fixed::uint<6>::from_wrapped((w + 63) / 64);
   const mem::buffer drawn{{}, fbw, z_layout ? mem::psm::PSMZ32 : mem::psm::PSMCT32}, shown{{}, fbw, mem::psm::PSMCT32};
@@ -63,14 +66,17 @@ dpb_pictures post_filter_dpb_pictures(const std::vector<pass_record>& trace, int
     for (int x = 0; x < w; ++x) {
       const std::uint32_t v = m.read_pixel(shown, static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y));
       for (std::size_t k = 0; k < 3; ++k)
-        out.display.data[(static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x)) * 3 + k] =
+        out.display
+            .data[(static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x)) * 3 + k] =
             static_cast<std::uint8_t>(v >> (8 * k));
     }
-  out.as_psmt8 = {2 * w, 2 * h, 1, std::vector<std::uint8_t>(static_cast<std::size_t>(4 * w) * static_cast<std::size_t>(h))};
+  out.as_psmt8 = {2 * w, 2 * h, 1,
+                  std::vector<std::uint8_t>(static_cast<std::size_t>(4 * w) * static_cast<std::size_t>(h))};
   for (int v = 0; v < 2 * h; ++v)
     for (int u = 0; u < 2 * w; ++u)
       out.as_psmt8.data[static_cast<std::size_t>(v) * static_cast<std::size_t>(2 * w) + static_cast<std::size_t>(u)] =
-          static_cast<std::uint8_t>(m.read_pixel(texture, static_cast<std::uint32_t>(u), static_cast<std::uint32_t>(v)));
+          static_cast<std::uint8_t>(
+              m.read_pixel(texture, static_cast<std::uint32_t>(u), static_cast<std::uint32_t>(v)));
   return out;
 }
 

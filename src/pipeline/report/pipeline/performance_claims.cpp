@@ -53,11 +53,13 @@ struct pricer {
 std::uint64_t later_dpb_clears(const cost::frame_cost& f, std::size_t lights, std::uint32_t dpb) {
   std::vector<std::uint64_t> clears;
   for (const cost::pass_cost& p : f.passes)
-    if (p.counts.sprites > 0 && p.counts.triangles == 0 && !p.mode.textured && gs::decode_frame(p.regs.FRAME).FBP.value() == static_cast<int>(dpb))
+    if (p.counts.sprites > 0 && p.counts.triangles == 0 && !p.mode.textured &&
+        gs::decode_frame(p.regs.FRAME).FBP.value() == static_cast<int>(dpb))
       clears.push_back(p.cycles.total());
   if (clears.size() != lights + 2)
-    throw std::logic_error("performance claims: " + std::to_string(clears.size()) +
-                           " untextured sprite passes into the DPB, expected lights + 2 = " + std::to_string(lights + 2));
+    throw std::logic_error(
+        "performance claims: " + std::to_string(clears.size()) +
+        " untextured sprite passes into the DPB, expected lights + 2 = " + std::to_string(lights + 2));
   std::uint64_t sum = 0;
   for (std::size_t i = 2; i <= lights; ++i) sum += clears[i];
   return sum;
@@ -67,11 +69,13 @@ performance_row compare(std::string claim, std::string paper, std::string statem
                         const cost::frame_cost& a, const cost::frame_cost& b) {
   const std::uint64_t ca = a.cycles.total(), cb = b.cycles.total();
   performance_row r{std::move(claim), std::move(paper), std::move(statement), {}, {}};
-  r.figures = std::string(name(cheap)) + " " + cycles_text(ca) + ", " + std::to_string(passes::describe(cheap).light.size()) +
-              " light passes; " + std::string(name(dear)) + " " + cycles_text(cb) + ", " +
-              std::to_string(passes::describe(dear).light.size()) + " light passes (pass_table.hpp: the passes each light "
-              "repeats before the post filter); " + std::string(name(cheap)) +
-              " takes " + format("%.1f %%", 100.0 * static_cast<double>(ca) / static_cast<double>(cb)) + " of " +
+  r.figures = std::string(name(cheap)) + " " + cycles_text(ca) + ", " +
+              std::to_string(passes::describe(cheap).light.size()) + " light passes; " + std::string(name(dear)) + " " +
+              cycles_text(cb) + ", " + std::to_string(passes::describe(dear).light.size()) +
+              " light passes (pass_table.hpp: the passes each light "
+              "repeats before the post filter); " +
+              std::string(name(cheap)) + " takes " +
+              format("%.1f %%", 100.0 * static_cast<double>(ca) / static_cast<double>(cb)) + " of " +
               std::string(name(dear)) + "'s time";
   r.verdict = ca < cb ? "holds" : "refuted";
   return r;
@@ -92,18 +96,23 @@ std::vector<performance_row> performance_rows(const scene& s, const render_optio
   rows.push_back(compare("perf.two-vs-2002", "§2",
                          "the proposed signed multiplication improves the speed compared to [Breugelmanns02]: two-pass",
                          method::two_pass, method::baseline, two, base));
-  rows.push_back(compare("perf.four-vs-2002", "§2",
-                         "the proposed signed multiplication improves the speed compared to [Breugelmanns02]: four-pass",
-                         method::four_pass, method::baseline, four, base));
+  rows.push_back(
+      compare("perf.four-vs-2002", "§2",
+              "the proposed signed multiplication improves the speed compared to [Breugelmanns02]: four-pass",
+              method::four_pass, method::baseline, four, base));
 
   // §3.4: the explicit clear of every light after the first, which the Z-buffer trick removes.
   {
     const std::uint32_t dpb = buffer_layout_for(s.width, s.height).dpb();
-    performance_row r{"perf.free-dpb-clear", "§3.1 step 2.1, §3.4",
-                      "the DPB clear is free for every light after the first one (the Z-buffer trick)", {}, {}};
+    performance_row r{"perf.free-dpb-clear",
+                      "§3.1 step 2.1, §3.4",
+                      "the DPB clear is free for every light after the first one (the Z-buffer trick)",
+                      {},
+                      {}};
     std::string per;
     std::uint64_t most = 0;
-    for (const auto& [m, f] : {std::pair{method::two_pass, &two}, {method::four_pass, &four}, {method::baseline, &base}}) {
+    for (const auto& [m, f] :
+         {std::pair{method::two_pass, &two}, {method::four_pass, &four}, {method::baseline, &base}}) {
       const std::uint64_t k = later_dpb_clears(*f, s.lights.size(), dpb);
       most = std::max(most, k);
       per += (per.empty() ? "" : "; ") + std::string(name(m)) + " " + std::to_string(k) + " cycles (" +
@@ -119,8 +128,11 @@ std::vector<performance_row> performance_rows(const scene& s, const render_optio
 
   // What each light adds: the scene's first light repeated 1, 2 and 3 times.
   {
-    performance_row r{"perf.cost-per-light", "§3.1 steps 2.1-2.6, §4",
-                      "every light repeats steps 2.1-2.6; the paper's scene has two point lights in real time", {}, {}};
+    performance_row r{"perf.cost-per-light",
+                      "§3.1 steps 2.1-2.6, §4",
+                      "every light repeats steps 2.1-2.6; the paper's scene has two point lights in real time",
+                      {},
+                      {}};
     std::uint64_t worst = 0;
     for (method m : {method::two_pass, method::four_pass, method::baseline}) {
       std::uint64_t at[4] = {};
@@ -145,13 +157,13 @@ std::vector<performance_row> performance_rows(const scene& s, const render_optio
   {
     const std::uint64_t c4 = four.cycles.total();
     const double field_share = cost::seconds(c4) * cost::ntsc_hz;
-    rows.push_back({"perf.real-time", "§4",
-                    "the four-pass method running in real time on the PS2 (512 x 448, two point lights)",
-                    "four-pass " + cycles_text(c4) + " at " + std::to_string(s.width) + "x" + std::to_string(s.height) +
-                        " with " + std::to_string(s.lights.size()) + " light(s): " +
-                        format("%.1f %%", 100.0 * field_share) + " of an NTSC field (GS time of the normal-mapped "
-                        "object alone; the rest of a game's frame shares the field)",
-                    field_share <= 1.0 ? "holds" : "refuted"});
+    rows.push_back(
+        {"perf.real-time", "§4", "the four-pass method running in real time on the PS2 (512 x 448, two point lights)",
+         "four-pass " + cycles_text(c4) + " at " + std::to_string(s.width) + "x" + std::to_string(s.height) + " with " +
+             std::to_string(s.lights.size()) + " light(s): " + format("%.1f %%", 100.0 * field_share) +
+             " of an NTSC field (GS time of the normal-mapped "
+             "object alone; the rest of a game's frame shares the field)",
+         field_share <= 1.0 ? "holds" : "refuted"});
   }
 
   // §3.7: specular through the ILP (the n-th power in the palette): the same passes, another palette.
@@ -166,9 +178,10 @@ std::vector<performance_row> performance_rows(const scene& s, const render_optio
     const long long d2 = delta(s2, two), d4 = delta(s4, four);
     rows.push_back({"perf.specular", "§3.7",
                     "a specular light through the ILP raised to the n-th power (n = 16 here) instead of diffuse",
-                    "two-pass " + std::to_string(s2.cycles.total()) + " cycles (diffuse " + std::to_string(two.cycles.total()) +
-                        "), four-pass " + std::to_string(s4.cycles.total()) + " (diffuse " +
-                        std::to_string(four.cycles.total()) + "): the same passes with half vectors and another ILP; "
+                    "two-pass " + std::to_string(s2.cycles.total()) + " cycles (diffuse " +
+                        std::to_string(two.cycles.total()) + "), four-pass " + std::to_string(s4.cycles.total()) +
+                        " (diffuse " + std::to_string(four.cycles.total()) +
+                        "): the same passes with half vectors and another ILP; "
                         "two-pass's vector is a vertex colour, so it draws the same texels, while four-pass looks its "
                         "vector up in the sphere map, whose texture walk (its misses) changes with it",
                     "bound: specular adds " + std::to_string(d2) + " (two-pass) and " + std::to_string(d4) +

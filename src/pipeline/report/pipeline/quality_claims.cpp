@@ -29,7 +29,6 @@ bool sign_changes(const prepared_scene& ps, std::size_t light, const prepared_tr
   return false;
 }
 
-
 // SplitMix64 (Steele, Lea, Flood 2014): the same stream on every platform, unlike <random>'s
 // distributions; uniform doubles from the top 53 bits.
 struct splitmix {
@@ -46,7 +45,8 @@ struct splitmix {
 
 glm::vec3 on_sphere(splitmix& r, double radius, double min_y, double max_y) {
   const double y = r.uniform(min_y, max_y), phi = r.uniform(0, 2 * std::numbers::pi), c = std::sqrt(1 - y * y);
-  return {static_cast<float>(radius * c * std::sin(phi)), static_cast<float>(radius * y), static_cast<float>(radius * c * std::cos(phi))};
+  return {static_cast<float>(radius * c * std::sin(phi)), static_cast<float>(radius * y),
+          static_cast<float>(radius * c * std::cos(phi))};
 }
 
 const method_errors& of(const quality_scene& s, method m) {
@@ -65,10 +65,11 @@ const claim_def claims[] = {
      "seed 000 §3: the proposed signed multiplication \"improves the speed and quality compared to [Breugelmanns02]\"; "
      "two-pass does it \"in two passes without the per vertex clamping problem\" (§2, figure 1)",
      method::two_pass, method::baseline, true, true},
-    {"quality.four-pass-vs-2002", "seed 000 §3: the same sentence for the four-pass method (per-pixel normalised)", method::four_pass,
-     method::baseline, false, true},
+    {"quality.four-pass-vs-2002", "seed 000 §3: the same sentence for the four-pass method (per-pixel normalised)",
+     method::four_pass, method::baseline, false, true},
     {"quality.four-pass-vs-two-pass",
-     "seed 000 §3.6, figure 7: renormalising per pixel removes two-pass's intensity loss across a triangle and its edge highlighting",
+     "seed 000 §3.6, figure 7: renormalising per pixel removes two-pass's intensity loss across a triangle and its "
+     "edge highlighting",
      method::four_pass, method::two_pass, false, false},
 };
 
@@ -157,9 +158,10 @@ std::vector<quality_row> quality_rows(const std::vector<quality_scene>& scenes) 
         row.holds_on += vb < vo ? 1 : 0;
       }
       const std::size_t n = row.per_scene.size();
-      const bool all_equal = std::all_of(row.per_scene.begin(), row.per_scene.end(), [](const auto& p) { return p.first == p.second; });
-      row.verdict = row.holds_on == n  ? "holds"
-                    : all_equal        ? "refuted (equal on every scene)"
+      const bool all_equal =
+          std::all_of(row.per_scene.begin(), row.per_scene.end(), [](const auto& p) { return p.first == p.second; });
+      row.verdict = row.holds_on == n   ? "holds"
+                    : all_equal         ? "refuted (equal on every scene)"
                     : row.holds_on == 0 ? "refuted"
                                         : "mixed (" + std::to_string(row.holds_on) + " of " + std::to_string(n) + ")";
       rows.push_back(row);

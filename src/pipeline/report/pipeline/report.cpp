@@ -55,7 +55,8 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 image rgb_image(int w, int h, const std::vector<std::uint32_t>& words) {
   image img{w, h, 3, std::vector<std::uint8_t>(static_cast<std::size_t>(w) * static_cast<std::size_t>(h) * 3)};
   for (std::size_t i = 0; i < words.size(); ++i)
-    for (int c = 0; c < 3; ++c) img.data[3 * i + static_cast<std::size_t>(c)] = static_cast<std::uint8_t>(words[i] >> (8 * c));
+    for (int c = 0; c < 3; ++c)
+      img.data[3 * i + static_cast<std::size_t>(c)] = static_cast<std::uint8_t>(words[i] >> (8 * c));
   return img;
 }
 
@@ -85,7 +86,9 @@ constexpr int legend_rows = 20;
 // `value(i)` is the method's dot product at pixel i, in 1/128 units.
 template <class Value>
 image error_map(int w, int h, Value&& value, const std::vector<float>& ref) {
-  image img{w, h + legend_rows, 3, std::vector<std::uint8_t>(static_cast<std::size_t>(w) * static_cast<std::size_t>(h + legend_rows) * 3, 0x30)};
+  image img{
+      w, h + legend_rows, 3,
+      std::vector<std::uint8_t>(static_cast<std::size_t>(w) * static_cast<std::size_t>(h + legend_rows) * 3, 0x30)};
   for (std::size_t i = 0; i < ref.size(); ++i) {
     if (std::isnan(ref[i])) continue;
     const auto c = heat(value(i) - ref[i], heat_limit);
@@ -98,7 +101,8 @@ image error_map(int w, int h, Value&& value, const std::vector<float>& ref) {
       const double unit = std::fabs(e - std::round(e)) * (w - 1) / (2.0 * heat_limit);
       const bool tick = unit < 0.5 && (y < h + 10 || std::lround(e) == 0);
       if (tick) c = {0, 0, 0};
-      const std::size_t at = (static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x)) * 3;
+      const std::size_t at =
+          (static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x)) * 3;
       for (int k = 0; k < 3; ++k) img.data[at + static_cast<std::size_t>(k)] = c[static_cast<std::size_t>(k)];
     }
   return img;
@@ -113,13 +117,19 @@ image montage(const image& a, const image& b, const image& c, const image& d) {
     for (int y = 0; y < h; ++y)
       for (int x = 0; x < w; ++x)
         for (int k = 0; k < 3; ++k)
-          m.data[(static_cast<std::size_t>((p / 2) * h + y) * static_cast<std::size_t>(2 * w) + static_cast<std::size_t>((p % 2) * w + x)) * 3 + static_cast<std::size_t>(k)] =
-              parts[p]->data[(static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x)) * 3 + static_cast<std::size_t>(k)];
+          m.data[(static_cast<std::size_t>((p / 2) * h + y) * static_cast<std::size_t>(2 * w) +
+                  static_cast<std::size_t>((p % 2) * w + x)) *
+                     3 +
+                 static_cast<std::size_t>(k)] =
+              parts[p]
+                  ->data[(static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x)) * 3 +
+                         static_cast<std::size_t>(k)];
   return m;
 }
 
 nlohmann::json to_json(const error_stats& s) {
-  return {{"samples", s.samples},   {"max_abs", s.max_abs},   {"mean", s.mean},     {"mean_abs", s.mean_abs},
+  return {{"samples", s.samples},   {"max_abs", s.max_abs},
+          {"mean", s.mean},         {"mean_abs", s.mean_abs},
           {"rmse", s.rmse},         {"psnr_db", std::isfinite(s.psnr) ? nlohmann::json(s.psnr) : nlohmann::json("inf")},
           {"within_1", s.within_1}, {"wrap_errors", s.wraps}};
 }
@@ -130,8 +140,8 @@ std::string nothing_drawn(const scene& s, const prepared_scene& front) {
   const std::size_t n = s.model.triangles.size();
   return "the frame shows no pixel of the mesh: of its " + std::to_string(n) + " triangle(s) " +
          std::to_string(front.culled_back) + " face away from the camera (back faces are culled), " +
-         std::to_string(front.dropped_outside) + " lie outside the view, " +
-         std::to_string(front.triangles.size()) + " are drawn but cover no pixel centre; try another --view AZIMUTH,ELEVATION "
+         std::to_string(front.dropped_outside) + " lie outside the view, " + std::to_string(front.triangles.size()) +
+         " are drawn but cover no pixel centre; try another --view AZIMUTH,ELEVATION "
          "(e.g. --view 180,0), a larger --size, or check the file's winding (front faces are counter-clockwise)";
 }
 
@@ -145,12 +155,14 @@ error_stats compare(const std::vector<std::vector<std::uint8_t>>& dot, const std
   return a.done();
 }
 
-error_stats compare(const std::vector<std::vector<float>>& x, const std::vector<std::vector<float>>& ref, bool clamp_reference_at_zero) {
+error_stats compare(const std::vector<std::vector<float>>& x, const std::vector<std::vector<float>>& ref,
+                    bool clamp_reference_at_zero) {
   accumulator a;
   for (std::size_t l = 0; l < ref.size(); ++l)
     for (std::size_t i = 0; i < ref[l].size(); ++i)
       if (!std::isnan(ref[l][i])) {
-        const double r = clamp_reference_at_zero ? std::max(0.0, static_cast<double>(ref[l][i])) : static_cast<double>(ref[l][i]);
+        const double r =
+            clamp_reference_at_zero ? std::max(0.0, static_cast<double>(ref[l][i])) : static_cast<double>(ref[l][i]);
         a.add(static_cast<double>(x[l][i]) - r);
       }
   return a.done();
@@ -160,22 +172,27 @@ std::string normalisation_warning(const error_stats& n, bool four_pass_brighter)
   if (!(n.rmse > normalisation_warning_rmse)) return "";
   char figures[96];
   std::snprintf(figures, sizeof figures, "RMSE %.1f, max %.1f", n.rmse, n.max_abs);
-  std::string text = std::string("the float reference's own normalisation error is large (") + figures +
-                     " /128): the vertices' tangent-space light vectors differ so much across each triangle that their "
-                     "interpolation, which every method here draws with (per vertex, as the paper's do), is far from the "
-                     "per-pixel vector, so the methods' errors against the renormalised reference are mostly this, not "
-                     "fixed-point error (compare them with the unnormalised reference)";
+  std::string text =
+      std::string("the float reference's own normalisation error is large (") + figures +
+      " /128): the vertices' tangent-space light vectors differ so much across each triangle that their "
+      "interpolation, which every method here draws with (per vertex, as the paper's do), is far from the "
+      "per-pixel vector, so the methods' errors against the renormalised reference are mostly this, not "
+      "fixed-point error (compare them with the unnormalised reference)";
   if (four_pass_brighter)
-    text.append("; four-pass, brighter than the others here, interpolates sphere-map coordinates instead, which stay "
-                "unit length");
-  text.append(". The usual cause is one smooth normal per corner across hard edges (a cube): give the file split "
-              "normals, or --normals flat when it has none");
+    text.append(
+        "; four-pass, brighter than the others here, interpolates sphere-map coordinates instead, which stay "
+        "unit length");
+  text.append(
+      ". The usual cause is one smooth normal per corner across hard edges (a cube): give the file split "
+      "normals, or --normals flat when it has none");
   return text;
 }
 
 report_summary write_report(const scene& s, const report_request& r) {
   namespace fs = std::filesystem;
-  auto say = [&](const std::string& m) { if (r.progress) r.progress(m); };
+  auto say = [&](const std::string& m) {
+    if (r.progress) r.progress(m);
+  };
   std::error_code ec;
   if (fs::is_directory(r.out_dir, ec)) {  // fail early, before minutes of work, if it cannot be written into
     const fs::path probe = r.out_dir / ".gsdot3-write-test";
@@ -231,26 +248,37 @@ report_summary write_report(const scene& s, const report_request& r) {
 
   say("writing images to " + r.out_dir.string());
   nlohmann::json j;
-  j["scene"] = {{"description", r.scene_description}, {"width", w}, {"height", h},
-                {"triangles", s.model.triangles.size()}, {"drawn_triangles", front.triangles.size()},
-                {"culled_back_facing", front.culled_back}, {"dropped_outside_guard_band", front.dropped_outside},
-                {"normal_map", {{"width", s.normals.width}, {"height", s.normals.height}, {"palette", s.normals.palette.size()}}},
-                {"lights", s.lights.size()}};
-  j["options"] = {{"s", r.options.s}, {"filter", r.options.bilinear ? "bilinear" : "nearest"},
-                  {"specular", r.options.specular}, {"specular_power", r.options.specular_power},
-                  {"path", r.options.path == raster_path::cached ? "cached" : "reference"}, {"threads", r.options.threads}};
+  j["scene"] = {
+      {"description", r.scene_description},
+      {"width", w},
+      {"height", h},
+      {"triangles", s.model.triangles.size()},
+      {"drawn_triangles", front.triangles.size()},
+      {"culled_back_facing", front.culled_back},
+      {"dropped_outside_guard_band", front.dropped_outside},
+      {"normal_map", {{"width", s.normals.width}, {"height", s.normals.height}, {"palette", s.normals.palette.size()}}},
+      {"lights", s.lights.size()}};
+  j["options"] = {{"s", r.options.s},
+                  {"filter", r.options.bilinear ? "bilinear" : "nearest"},
+                  {"specular", r.options.specular},
+                  {"specular_power", r.options.specular_power},
+                  {"path", r.options.path == raster_path::cached ? "cached" : "reference"},
+                  {"threads", r.options.threads}};
   for (const auto& opt : gs::option_catalogue())
     j["options"]["model"][std::string(opt.name)] = std::string(gs::option_value(r.options.model, opt.name));
   if (!r.input_json.empty()) j["input"] = nlohmann::json::parse(r.input_json);
   j["units"] = "dot products in 1/128 (a DPB byte 0x80 + d stands for d/128)";
-  j["reference"] = {{"seconds", sum.reference_seconds}, {"normalisation_error", to_json(sum.normalisation)},
+  j["reference"] = {{"seconds", sum.reference_seconds},
+                    {"normalisation_error", to_json(sum.normalisation)},
                     {"warning", sum.warning}};
   if (r.cost)
-    j["ps2"] = {{"clock_hz", gs::cost::gs_clock_hz}, {"options", gs::cost::to_json(*r.cost)},
+    j["ps2"] = {{"clock_hz", gs::cost::gs_clock_hz},
+                {"options", gs::cost::to_json(*r.cost)},
                 {"model", "docs/cost.md: the GS cost model on the frame's dump stream (gsdot3 dump, gsdot3 cost)"}};
   write_png(dir / "reference-lit.png", rgb_image(w, h, ref.colour));
   for (std::size_t l = 0; l < s.lights.size(); ++l)
-    write_png(dir / ("reference-dot-light" + std::to_string(l) + ".png"), grey_image(w, h, reference_bytes(ref.renormalised[l])));
+    write_png(dir / ("reference-dot-light" + std::to_string(l) + ".png"),
+              grey_image(w, h, reference_bytes(ref.renormalised[l])));
 
   for (std::size_t k = 0; k < frames.size(); ++k) {
     method_result& mr = sum.methods[k];
@@ -259,13 +287,16 @@ report_summary write_report(const scene& s, const report_request& r) {
                         {"vs_renormalised", to_json(mr.vs_renormalised)},
                         {"vs_unnormalised", to_json(mr.vs_unnormalised)}};
     if (r.cost)
-      j["methods"][nm]["ps2"] = mr.ps2.frame ? gs::cost::frame_json(*mr.ps2.frame, false)
-                                             : nlohmann::json{{"not_priced", mr.ps2.not_priced}};
+      j["methods"][nm]["ps2"] =
+          mr.ps2.frame ? gs::cost::frame_json(*mr.ps2.frame, false) : nlohmann::json{{"not_priced", mr.ps2.not_priced}};
     write_png(dir / (nm + "-lit.png"), rgb_image(w, h, frames[k].colour));
     for (std::size_t l = 0; l < s.lights.size(); ++l) {
-      const std::string dot = nm + "-dot-light" + std::to_string(l) + ".png", err = nm + "-error-light" + std::to_string(l) + ".png";
+      const std::string dot = nm + "-dot-light" + std::to_string(l) + ".png",
+                        err = nm + "-error-light" + std::to_string(l) + ".png";
       write_png(dir / dot, grey_image(w, h, frames[k].dot[l]));
-      write_png(dir / err, error_map(w, h, [&](std::size_t i) { return dot_value(frames[k].dot[l][i]); }, ref.renormalised[l]));
+      write_png(dir / err,
+                error_map(
+                    w, h, [&](std::size_t i) { return dot_value(frames[k].dot[l][i]); }, ref.renormalised[l]));
     }
   }
 
@@ -273,19 +304,27 @@ report_summary write_report(const scene& s, const report_request& r) {
   auto rendered = [&](method m) { return std::find(r.methods.begin(), r.methods.end(), m) != r.methods.end(); };
   if (rendered(method::two_pass) && rendered(method::four_pass) && rendered(method::baseline)) {
     quality_scene q{"this scene", {}};
-    for (std::size_t k = 0; k < frames.size(); ++k) q.methods.push_back(measure_errors(sum.methods[k].m, frames[k], ref, front));
+    for (std::size_t k = 0; k < frames.size(); ++k)
+      q.methods.push_back(measure_errors(sum.methods[k].m, frames[k], ref, front));
     for (const quality_row& row : quality_rows({q}))
-      j["quality_claims"].push_back({{"claim", row.claim}, {"paper", row.paper}, {"metric", row.metric},
-                                     {"better", std::string(name(row.better))}, {"other", std::string(name(row.other))},
-                                     {"value_better", row.per_scene.front().first}, {"value_other", row.per_scene.front().second},
+      j["quality_claims"].push_back({{"claim", row.claim},
+                                     {"paper", row.paper},
+                                     {"metric", row.metric},
+                                     {"better", std::string(name(row.better))},
+                                     {"other", std::string(name(row.other))},
+                                     {"value_better", row.per_scene.front().first},
+                                     {"value_other", row.per_scene.front().second},
                                      {"verdict", row.verdict}});
   }
 
   // Seed 000's performance sentences priced on this scene (performance_claims.hpp), with --cost.
   if (r.cost && rendered(method::two_pass) && rendered(method::four_pass) && rendered(method::baseline))
     for (const performance_row& row : performance_rows(s, r.options, *r.cost, r.progress))
-      j["performance_claims"].push_back({{"claim", row.claim}, {"paper", row.paper}, {"statement", row.statement},
-                                         {"figures", row.figures}, {"verdict", row.verdict}});
+      j["performance_claims"].push_back({{"claim", row.claim},
+                                         {"paper", row.paper},
+                                         {"statement", row.statement},
+                                         {"figures", row.figures},
+                                         {"verdict", row.verdict}});
 
   // The other seeds' methods on the same geometry (scheme_method.hpp).
   page_inputs page{&s, &front, r.options, r.methods, &frames, &ref, {}, {}, {}, heat_limit, true};
@@ -305,12 +344,14 @@ report_summary write_report(const scene& s, const report_request& r) {
                         {"vs_unnormalised", to_json(sr.vs_unnormalised)}};
     write_png(dir / (nm + "-lit.png"), rgb_image(w, h, sf.colour));
     for (std::size_t l = 0; l < s.lights.size(); ++l) {
-      const std::string dot = nm + "-dot-light" + std::to_string(l) + ".png", err = nm + "-error-light" + std::to_string(l) + ".png";
+      const std::string dot = nm + "-dot-light" + std::to_string(l) + ".png",
+                        err = nm + "-error-light" + std::to_string(l) + ".png";
       std::vector<float> against = ref.renormalised[l];
       if (sm->non_negative)
         for (float& v : against) v = std::isnan(v) ? v : std::max(v, 0.0f);
       write_png(dir / dot, grey_image(w, h, reference_bytes(sf.dot[l])));
-      write_png(dir / err, error_map(w, h, [&](std::size_t i) { return static_cast<double>(sf.dot[l][i]); }, against));
+      write_png(dir / err, error_map(
+                               w, h, [&](std::size_t i) { return static_cast<double>(sf.dot[l][i]); }, against));
     }
     sum.schemes.push_back(sr);
     page.scheme_dots.emplace_back(nm, sf.dot);
@@ -325,18 +366,21 @@ report_summary write_report(const scene& s, const report_request& r) {
     const prepared_scene back = prepare(s, 180.0f, r.options.specular);
     auto lit = [&](const prepared_scene& ps, method m) { return rgb_image(w, h, render(s, ps, m, r.options).colour); };
     write_png(dir / "side-by-side.png", montage(lit(front, method::two_pass), lit(front, method::four_pass),
-                                                      lit(back, method::two_pass), lit(back, method::four_pass)));
+                                                lit(back, method::two_pass), lit(back, method::four_pass)));
   }
 
   // GS local memory (gs_memory): the PSMCT32 DPB page read as the PSMT8 texture of the post filter,
   // and whether the memory path gives the frames above bit for bit.
-  write_png(dir / "memory-psmct32-as-psmt8.png", page_overlay_image(gs::mem::psm::PSMCT32, gs::mem::psm::PSMT8, "channel", 4));
-  write_png(dir / "memory-psmct32-as-psmz32.png", page_overlay_image(gs::mem::psm::PSMCT32, gs::mem::psm::PSMZ32, "pixel", 4));
+  write_png(dir / "memory-psmct32-as-psmt8.png",
+            page_overlay_image(gs::mem::psm::PSMCT32, gs::mem::psm::PSMT8, "channel", 4));
+  write_png(dir / "memory-psmct32-as-psmz32.png",
+            page_overlay_image(gs::mem::psm::PSMCT32, gs::mem::psm::PSMZ32, "pixel", 4));
   j["options"]["memory_path"] = r.options.memory_path;
   j["options"]["dpb_clear"] = std::string(name(r.options.dpb_clear));
   j["memory"]["pictures"] = {"memory-psmct32-as-psmt8.png", "memory-psmct32-as-psmz32.png"};
   for (const memory_step& st : memory_steps)
-    j["memory"]["steps"].push_back({{"step", st.step}, {"does", st.does}, {"memory_path", st.memory_path}, {"value_path", st.value_path}});
+    j["memory"]["steps"].push_back(
+        {{"step", st.step}, {"does", st.does}, {"memory_path", st.memory_path}, {"value_path", st.value_path}});
   if (4 * ((w + 63) / 64) * ((h + 31) / 32) <= 512) {
     // The first method's frame rendered again on the memory path with a trace: its DPB as the post
     // filter of light 0 reads it, displayed as PSMCT32 and read as PSMT8.

@@ -23,7 +23,8 @@ struct error_stats {
   double max_abs = 0, mean = 0, mean_abs = 0, rmse = 0, psnr = 0, within_1 = 0;
   std::size_t wraps = 0;
 };
-error_stats compare(const std::vector<std::vector<std::uint8_t>>& dot, const std::vector<std::vector<float>>& reference);
+error_stats compare(const std::vector<std::vector<std::uint8_t>>& dot,
+                    const std::vector<std::vector<float>>& reference);
 // The same statistics for float values x (a scheme's dot products, or the reference itself) minus the
 // reference; `clamp_reference_at_zero` compares with max(reference, 0) instead.
 error_stats compare(const std::vector<std::vector<float>>& x, const std::vector<std::vector<float>>& reference,
@@ -32,13 +33,13 @@ error_stats compare(const std::vector<std::vector<float>>& x, const std::vector<
 struct report_request {
   std::filesystem::path out_dir = "gsdot3-out";
   std::vector<method> methods{method::two_pass, method::four_pass, method::baseline};
-  std::vector<const scheme_method*> schemes;              // the other seeds' methods (scheme_method.hpp)
+  std::vector<const scheme_method*> schemes;  // the other seeds' methods (scheme_method.hpp)
   render_options options{};
   std::string scene_description = "embedded procedural scene";
-  bool write_html = true;                                 // false: `render` (images + JSON only)
-  std::function<void(const std::string&)> progress;       // one line of stderr progress
-  std::string input_json, input_html;                     // input_report.hpp; empty: no "input" entry
-  std::optional<gs::cost::cost_options> cost;             // price each GS method's frame (console_time.hpp)
+  bool write_html = true;                            // false: `render` (images + JSON only)
+  std::function<void(const std::string&)> progress;  // one line of stderr progress
+  std::string input_json, input_html;                // input_report.hpp; empty: no "input" entry
+  std::optional<gs::cost::cost_options> cost;        // price each GS method's frame (console_time.hpp)
 };
 
 struct method_result {

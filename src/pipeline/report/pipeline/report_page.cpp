@@ -41,8 +41,9 @@ const std::vector<method_claims>& gs_method_claims() {
         "ilp.palette-permutation", "ilp.dpb-clear-zero", "clamp-wrap.intermediates", "lod.two-vs-four"}},
       {"four-pass",
        {"eq1-eq2.ranges", "eq3.identity", "eq4.signed-multiply", "eq8.offset-multiply", "appendix1.sphere-map",
-        "four-pass.channel-exact", "four-pass.sum-wrap", "highlight.attenuation", "eq9.rgb-sum", "ilp.palette-permutation",
-        "ilp.dpb-clear-zero", "clamp-wrap.intermediates", "specular.attenuation-compensation", "lod.two-vs-four"}},
+        "four-pass.channel-exact", "four-pass.sum-wrap", "highlight.attenuation", "eq9.rgb-sum",
+        "ilp.palette-permutation", "ilp.dpb-clear-zero", "clamp-wrap.intermediates",
+        "specular.attenuation-compensation", "lod.two-vs-four"}},
       // Breugelmans 2002 (section 2): products of the positive parts added and subtracted by the
       // blender, then the same R+G+B post filter and ILP.
       {"baseline", {"eq9.rgb-sum", "ilp.palette-permutation", "ilp.dpb-clear-zero"}},
@@ -81,8 +82,10 @@ nlohmann::json claims_json() {
   nlohmann::json out = nlohmann::json::object();
   const auto ledger = ledger_rows();
   for (const proofs::claim& c : proofs::catalogue()) {
-    nlohmann::json row = {{"paper", std::string(c.paper)}, {"statement", std::string(c.statement)},
-                          {"domain", std::string(c.domain)}, {"section", std::string(c.section)}};
+    nlohmann::json row = {{"paper", std::string(c.paper)},
+                          {"statement", std::string(c.statement)},
+                          {"domain", std::string(c.domain)},
+                          {"section", std::string(c.section)}};
     const auto it = std::find_if(ledger.begin(), ledger.end(), [&](const auto& r) { return r.first == c.id; });
     if (it != ledger.end()) {
       row["verdict"] = it->second.verdict;
@@ -98,7 +101,8 @@ nlohmann::json claims_json() {
 
 // The page's images of a method, named as report.cpp writes them.
 nlohmann::json images_of(const std::string& name, std::size_t lights, bool with_error) {
-  nlohmann::json im = {{"lit", name + "-lit.png"}, {"dot", nlohmann::json::array()}, {"error", nlohmann::json::array()}};
+  nlohmann::json im = {
+      {"lit", name + "-lit.png"}, {"dot", nlohmann::json::array()}, {"error", nlohmann::json::array()}};
   for (std::size_t l = 0; l < lights; ++l) {
     im["dot"].push_back(name + "-dot-light" + std::to_string(l) + ".png");
     if (with_error) im["error"].push_back(name + "-error-light" + std::to_string(l) + ".png");
@@ -114,7 +118,9 @@ class columns {
     bool same = !v.empty();  // every row equal to the first: a constant (a number, or one per component)
     for (std::size_t i = width; same && i < v.size(); ++i) same = v[i] == v[i % width];
     if (same) {
-      nlohmann::json value = width == 1 ? nlohmann::json(v.front()) : nlohmann::json(std::vector<T>(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(width)));
+      nlohmann::json value =
+          width == 1 ? nlohmann::json(v.front())
+                     : nlohmann::json(std::vector<T>(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(width)));
       meta_.push_back({{"name", name}, {"const", value}});
       return;
     }
@@ -149,7 +155,8 @@ class columns {
     std::string out;
     out.reserve((b.size() + 2) / 3 * 4);
     for (std::size_t i = 0; i < b.size(); i += 3) {
-      const unsigned v = static_cast<unsigned>(b[i]) << 16 | (i + 1 < b.size() ? static_cast<unsigned>(b[i + 1]) << 8 : 0u) |
+      const unsigned v = static_cast<unsigned>(b[i]) << 16 |
+                         (i + 1 < b.size() ? static_cast<unsigned>(b[i + 1]) << 8 : 0u) |
                          (i + 2 < b.size() ? static_cast<unsigned>(b[i + 2]) : 0u);
       out += digits[(v >> 18) & 63];
       out += digits[(v >> 12) & 63];
@@ -228,7 +235,8 @@ columns pixel_columns(const page_inputs& in, nlohmann::json& passes_of) {
       c.add(key + "shaded", "u8", 1, at_pixels(r.shaded, 1));
       passes.push_back({{"label", r.label}, {"light", r.light}, {"target", r.target}});
     }
-    for (std::size_t l = 0; l < s.lights.size(); ++l) c.add(nm + "/dot" + std::to_string(l), "u8", 1, at_pixels(traced.dot[l], 1));
+    for (std::size_t l = 0; l < s.lights.size(); ++l)
+      c.add(nm + "/dot" + std::to_string(l), "u8", 1, at_pixels(traced.dot[l], 1));
     passes_of[nm] = passes;
   }
   for (const auto& [nm, dot] : in.scheme_dots)
@@ -265,15 +273,19 @@ page_files write_report_page(const std::filesystem::path& dir, const page_inputs
   page["ambient"] = {in.s->ambient[0], in.s->ambient[1], in.s->ambient[2]};
   for (method m : in.methods) {
     const std::string nm(name(m));
-    page["methods"][nm] = {{"kind", "gs"}, {"images", images_of(nm, lights, true)}, {"claims", claims_for_method(nm, "")}};
+    page["methods"][nm] = {
+        {"kind", "gs"}, {"images", images_of(nm, lights, true)}, {"claims", claims_for_method(nm, "")}};
   }
   for (std::size_t k = 0; k < in.scheme_dots.size(); ++k) {
     const std::string& nm = in.scheme_dots[k].first;
-    page["methods"][nm] = {{"kind", "scheme"}, {"images", images_of(nm, lights, true)}, {"claims", claims_for_method(nm, in.scheme_seeds[k])}};
+    page["methods"][nm] = {{"kind", "scheme"},
+                           {"images", images_of(nm, lights, true)},
+                           {"claims", claims_for_method(nm, in.scheme_seeds[k])}};
   }
   page["reference_images"] = images_of("reference", lights, false);
   std::error_code ec;
-  page["side_by_side"] = fs::exists(dir / "side-by-side.png", ec) ? nlohmann::json("side-by-side.png") : nlohmann::json(nullptr);
+  page["side_by_side"] =
+      fs::exists(dir / "side-by-side.png", ec) ? nlohmann::json("side-by-side.png") : nlohmann::json(nullptr);
   fs::remove(files.pixels, ec);
   if (in.pixels) {
     nlohmann::json passes;

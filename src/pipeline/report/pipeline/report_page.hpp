@@ -31,15 +31,15 @@ struct page_inputs {
   const scene* s = nullptr;
   const prepared_scene* front = nullptr;
   render_options options{};
-  std::vector<method> methods;                  // the GS methods of the report, in its order
-  const std::vector<frame>* frames = nullptr;   // their renders (the traced re-render is checked against them)
+  std::vector<method> methods;                 // the GS methods of the report, in its order
+  const std::vector<frame>* frames = nullptr;  // their renders (the traced re-render is checked against them)
   const reference_frame* reference = nullptr;
   // The scheme methods' dot products [light][pixel] by name (scheme_method.hpp), and their seeds.
   std::vector<std::pair<std::string, std::vector<std::vector<float>>>> scheme_dots;
   std::vector<std::string> scheme_seeds;
-  std::string report_json;   // the text of report.json (the page embeds it)
-  double heat_limit = 8.0;   // saturation of the error maps, 1/128 units
-  bool pixels = true;        // write report-pixels.js (the inspector's data)
+  std::string report_json;  // the text of report.json (the page embeds it)
+  double heat_limit = 8.0;  // saturation of the error maps, 1/128 units
+  bool pixels = true;       // write report-pixels.js (the inspector's data)
 };
 
 struct page_files {

@@ -17,11 +17,16 @@ namespace gsdot3::pipeline {
 
 // Render functions of the scheme_methods() rows enc-xyz, enc-xy, enc-spheremap, enc-stereographic,
 // enc-octahedral (the method named after "enc-" in normal_encoding::methods()).
-scheme_frame render_enc_xyz(const scene&, const prepared_scene&, const std::vector<std::int32_t>&, const render_options&);
-scheme_frame render_enc_xy(const scene&, const prepared_scene&, const std::vector<std::int32_t>&, const render_options&);
-scheme_frame render_enc_spheremap(const scene&, const prepared_scene&, const std::vector<std::int32_t>&, const render_options&);
-scheme_frame render_enc_stereographic(const scene&, const prepared_scene&, const std::vector<std::int32_t>&, const render_options&);
-scheme_frame render_enc_octahedral(const scene&, const prepared_scene&, const std::vector<std::int32_t>&, const render_options&);
+scheme_frame render_enc_xyz(const scene&, const prepared_scene&, const std::vector<std::int32_t>&,
+                            const render_options&);
+scheme_frame render_enc_xy(const scene&, const prepared_scene&, const std::vector<std::int32_t>&,
+                           const render_options&);
+scheme_frame render_enc_spheremap(const scene&, const prepared_scene&, const std::vector<std::int32_t>&,
+                                  const render_options&);
+scheme_frame render_enc_stereographic(const scene&, const prepared_scene&, const std::vector<std::int32_t>&,
+                                      const render_options&);
+scheme_frame render_enc_octahedral(const scene&, const prepared_scene&, const std::vector<std::int32_t>&,
+                                   const render_options&);
 
 // Seed 002's quality measure (normal_encoding/seed_psnr.hpp) on the scene: per covered pixel the
 // interpolated view-space vector v (normal-map texel through the barycentrically interpolated vertex
@@ -38,6 +43,7 @@ struct psnr_row {
   normal_encoding::seed_error given, given_8bit_image, raw_self, bug_2009;
   double mean_input_length = 0;  // of v
 };
-std::vector<psnr_row> normal_encoding_psnr(const scene& s, const prepared_scene& ps, const std::vector<std::int32_t>& visible, int bits);
+std::vector<psnr_row> normal_encoding_psnr(const scene& s, const prepared_scene& ps,
+                                           const std::vector<std::int32_t>& visible, int bits);
 
 }  // namespace gsdot3::pipeline

@@ -63,7 +63,8 @@ std::vector<pvr::offset_colour> cheap_offsets(const scene& s) {
 scheme_frame render_with(const scene& s, const prepared_scene& ps, const std::vector<std::int32_t>& visible, source src,
                          pvr::precision prec) {
   std::vector<pvr::bump_texel> palette;
-  for (const auto& n : s.normals.palette) palette.push_back(pvr::encode_normal(glm::dvec3(n), pvr::texel_rounding::kallistios, scale));
+  for (const auto& n : s.normals.palette)
+    palette.push_back(pvr::encode_normal(glm::dvec3(n), pvr::texel_rounding::kallistios, scale));
   // Per light and triangle (flat) or mesh vertex (gouraud): the offset colour.
   std::vector<std::vector<pvr::offset_colour>> per_triangle(s.lights.size()), per_vertex(s.lights.size());
   for (std::size_t l = 0; l < s.lights.size(); ++l) {
@@ -79,7 +80,8 @@ scheme_frame render_with(const scene& s, const prepared_scene& ps, const std::ve
   const std::size_t n = static_cast<std::size_t>(ps.width) * static_cast<std::size_t>(ps.height);
   f.dot.assign(s.lights.size(), std::vector<float>(n, NAN));
   for_each_covered_pixel(ps, visible, [&](const pixel_sample& p) {
-    const auto texel = palette[s.normals.index[wrapped_texel(s.normals.width, s.normals.height, p.u16 >> 4, p.v16 >> 4)]];
+    const auto texel =
+        palette[s.normals.index[wrapped_texel(s.normals.width, s.normals.height, p.u16 >> 4, p.v16 >> 4)]];
     for (std::size_t l = 0; l < s.lights.size(); ++l) {
       const pixel_light pl = interpolate_light(ps, l, p);
       double b = 0;
@@ -106,19 +108,24 @@ scheme_frame render_with(const scene& s, const prepared_scene& ps, const std::ve
 }
 }  // namespace
 
-scheme_frame flat_float(const scene& s, const prepared_scene& ps, const std::vector<std::int32_t>& v, const render_options&) {
+scheme_frame flat_float(const scene& s, const prepared_scene& ps, const std::vector<std::int32_t>& v,
+                        const render_options&) {
   return render_with(s, ps, v, source::flat, pvr::precision::float32);
 }
-scheme_frame flat_fixed8(const scene& s, const prepared_scene& ps, const std::vector<std::int32_t>& v, const render_options&) {
+scheme_frame flat_fixed8(const scene& s, const prepared_scene& ps, const std::vector<std::int32_t>& v,
+                         const render_options&) {
   return render_with(s, ps, v, source::flat, pvr::precision::fixed8);
 }
-scheme_frame gouraud_float(const scene& s, const prepared_scene& ps, const std::vector<std::int32_t>& v, const render_options&) {
+scheme_frame gouraud_float(const scene& s, const prepared_scene& ps, const std::vector<std::int32_t>& v,
+                           const render_options&) {
   return render_with(s, ps, v, source::gouraud, pvr::precision::float32);
 }
-scheme_frame pixel_float(const scene& s, const prepared_scene& ps, const std::vector<std::int32_t>& v, const render_options&) {
+scheme_frame pixel_float(const scene& s, const prepared_scene& ps, const std::vector<std::int32_t>& v,
+                         const render_options&) {
   return render_with(s, ps, v, source::pixel, pvr::precision::float32);
 }
-scheme_frame cheap_float(const scene& s, const prepared_scene& ps, const std::vector<std::int32_t>& v, const render_options&) {
+scheme_frame cheap_float(const scene& s, const prepared_scene& ps, const std::vector<std::int32_t>& v,
+                         const render_options&) {
   return render_with(s, ps, v, source::cheap, pvr::precision::float32);
 }
 

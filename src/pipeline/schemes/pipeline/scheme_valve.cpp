@@ -25,8 +25,8 @@ namespace v = gsdot3::valve;
 
 enum class path { rnm, ssbump };
 
-scheme_frame render_valve(const scene& s, const prepared_scene& ps, const std::vector<std::int32_t>& visible, const render_options& o,
-                          path which) {
+scheme_frame render_valve(const scene& s, const prepared_scene& ps, const std::vector<std::int32_t>& visible,
+                          const render_options& o, path which) {
   // The 8-bit texel of every palette entry, as the map would be stored.
   std::vector<v::texel> texels;
   for (const glm::vec3& n : s.normals.palette) {
@@ -38,7 +38,8 @@ scheme_frame render_valve(const scene& s, const prepared_scene& ps, const std::v
   for (std::size_t l = 0; l < ps.lights.size(); ++l)
     for (const light_vertex& lv : ps.lights[l]) {
       const double len = glm::length(glm::dvec3(lv.T));
-      const v::vec3<double> T = len > 0 ? v::vec3<double>{lv.T.x / len, lv.T.y / len, lv.T.z / len} : v::vec3<double>{0, 0, 1};
+      const v::vec3<double> T =
+          len > 0 ? v::vec3<double>{lv.T.x / len, lv.T.y / len, lv.T.z / len} : v::vec3<double>{0, 0, 1};
       projected[l].push_back(v::project_light(T));
     }
   const v::shader_arith a{v::precision::fp32};
@@ -71,11 +72,13 @@ scheme_frame render_valve(const scene& s, const prepared_scene& ps, const std::v
 
 }  // namespace
 
-scheme_frame render_valve_rnm(const scene& s, const prepared_scene& ps, const std::vector<std::int32_t>& visible, const render_options& o) {
+scheme_frame render_valve_rnm(const scene& s, const prepared_scene& ps, const std::vector<std::int32_t>& visible,
+                              const render_options& o) {
   return render_valve(s, ps, visible, o, path::rnm);
 }
 
-scheme_frame render_valve_ssbump(const scene& s, const prepared_scene& ps, const std::vector<std::int32_t>& visible, const render_options& o) {
+scheme_frame render_valve_ssbump(const scene& s, const prepared_scene& ps, const std::vector<std::int32_t>& visible,
+                                 const render_options& o) {
   return render_valve(s, ps, visible, o, path::ssbump);
 }
 

@@ -91,13 +91,18 @@ using cell_pieces::acc;
 // positive u. The sup over those is the sup over all (test: reduction_matches_full_enumeration).
 bool symmetric(method_id id) {
   switch (id) {
-    case method_id::xyz: case method_id::xy: case method_id::xy_sign: case method_id::view_space:
-    case method_id::spheremap: case method_id::cryengine3: case method_id::lambert:
+    case method_id::xyz:
+    case method_id::xy:
+    case method_id::xy_sign:
+    case method_id::view_space:
+    case method_id::spheremap:
+    case method_id::cryengine3:
+    case method_id::lambert:
     case method_id::stereographic:
-    case method_id::octahedral: case method_id::octahedral_precise: case method_id::octahedral_snorm:
-      return true;
-    default:
-      return false;
+    case method_id::octahedral:
+    case method_id::octahedral_precise:
+    case method_id::octahedral_snorm: return true;
+    default: return false;
   }
 }
 std::uint32_t first_positive(method_id id, int bits) {
@@ -140,7 +145,7 @@ vec3 inside_witness(const method& m, int bits, code q, vec3 p, vec3 d) {
       const double X = q.c[0] == 0 ? -k : q.c[0] == mx ? k : (2 * q.c[0] / mx - 1) * s;
       const double Y = q.c[1] == 0 ? -k : q.c[1] == mx ? k : (2 * q.c[1] / mx - 1) * s;
       const double r2 = X * X + Y * Y;
-      consider(vec3{2 * X, 2 * Y, 1 - r2} );
+      consider(vec3{2 * X, 2 * Y, 1 - r2});
     }
   }
   return best;
@@ -151,9 +156,9 @@ vec3 inside_witness(const method& m, int bits, code q, vec3 p, vec3 d) {
 worst_case cell_worst_case(const method& m, int bits, unsigned threads, double tolerance_rad, bool use_symmetry,
                            code_window win) {
   check_bits(m, bits);
-  const std::uint32_t first = m.id == method_id::spherical_lut ? spherical_lut::size
+  const std::uint32_t first = m.id == method_id::spherical_lut      ? spherical_lut::size
                               : m.id == method_id::octahedral_snorm ? (std::uint32_t{1} << bits)
-                                                                     : unorm_max(bits) + 1;
+                                                                    : unorm_max(bits) + 1;
   const cell_pieces::code_filter filter{use_symmetry && symmetric(m.id), win, first_positive(m.id, bits)};
   auto run = [&](double global_lb, double tol) {
     const unsigned t = std::max(1U, threads);
@@ -163,8 +168,10 @@ worst_case cell_worst_case(const method& m, int bits, unsigned threads, double t
       pool.emplace_back([&, w] {
         for (std::uint32_t i = win.i0 / t * t + w; i < first && i <= win.i1; i += t) {
           if (i < win.i0) continue;
-          if (lambert_family(m.id)) cell_pieces::lambert_pieces(m, bits, i, tol, global_lb, filter, parts[w]);
-          else cell_pieces::planar_pieces(m, bits, i, filter, parts[w]);
+          if (lambert_family(m.id))
+            cell_pieces::lambert_pieces(m, bits, i, tol, global_lb, filter, parts[w]);
+          else
+            cell_pieces::planar_pieces(m, bits, i, filter, parts[w]);
         }
       });
     pool.clear();
@@ -178,12 +185,10 @@ worst_case cell_worst_case(const method& m, int bits, unsigned threads, double t
   worst_case w = all.w;
   w.reduced = use_symmetry && symmetric(m.id);
   w.witness = inside_witness(m, bits, w.q, w.n, all.d);
-  if (w.nonfinite_cells > 0)
-    w.nonfinite_n = inside_witness(m, bits, w.nonfinite_q, w.nonfinite_n, w.nonfinite_n);
+  if (w.nonfinite_cells > 0) w.nonfinite_n = inside_witness(m, bits, w.nonfinite_q, w.nonfinite_n, w.nonfinite_n);
   w.branch_and_bound = lambert_family(m.id);
   w.sup_deg = all.sup_rad * 180 / pi;
-  w.upper_deg =
-      (lambert_family(m.id) ? std::max(all.upper_rad, all.sup_rad + tolerance_rad) : all.sup_rad) * 180 / pi;
+  w.upper_deg = (lambert_family(m.id) ? std::max(all.upper_rad, all.sup_rad + tolerance_rad) : all.sup_rad) * 180 / pi;
   return w;
 }
 

@@ -41,17 +41,17 @@ struct farthest_point {
 farthest_point farthest(vec3 d, std::vector<halfspace> h);
 
 struct worst_case {
-  double sup_deg = 0;           // the supremum of the angle over cells with a finite decode
-  double upper_deg = 0;         // certified upper bound (= sup_deg for the planar methods)
-  vec3 n{};                     // a point of the closure of the worst cell that attains sup_deg
-  code q{};                     // that cell's code
-  std::uint64_t cells = 0;      // non-empty cells (or cell pieces) enumerated
+  double sup_deg = 0;                 // the supremum of the angle over cells with a finite decode
+  double upper_deg = 0;               // certified upper bound (= sup_deg for the planar methods)
+  vec3 n{};                           // a point of the closure of the worst cell that attains sup_deg
+  code q{};                           // that cell's code
+  std::uint64_t cells = 0;            // non-empty cells (or cell pieces) enumerated
   std::uint64_t nonfinite_cells = 0;  // non-empty cells whose code decodes to NaN/Inf
-  vec3 nonfinite_n{};           // a point inside the first such cell
+  vec3 nonfinite_n{};                 // a point inside the first such cell
   code nonfinite_q{};
-  vec3 witness{};                 // a unit n near `n` that encodes to q (its angle approaches sup_deg)
+  vec3 witness{};  // a unit n near `n` that encodes to q (its angle approaches sup_deg)
   bool branch_and_bound = false;
-  bool reduced = false;           // enumerated 1/8 of the codes by the dihedral symmetry
+  bool reduced = false;  // enumerated 1/8 of the codes by the dihedral symmetry
 };
 
 // Every cell of m at `bits` (whole sphere; #8 its front hemisphere z >= 0). Octahedral-precise is
@@ -65,7 +65,8 @@ struct code_window {
 };
 // use_symmetry: enumerate only the codes i >= j >= the first positive code, for the methods that
 // commute with the reflections x -> −x, y -> −y and the swap x <-> y (cells.cpp).
-worst_case cell_worst_case(const method& m, int bits, unsigned threads = 2, double tolerance_rad = default_tolerance_rad,
-                           bool use_symmetry = true, code_window window = {});
+worst_case cell_worst_case(const method& m, int bits, unsigned threads = 2,
+                           double tolerance_rad = default_tolerance_rad, bool use_symmetry = true,
+                           code_window window = {});
 
 }  // namespace gsdot3::normal_encoding

@@ -40,9 +40,15 @@ std::pair<double, double> edge_sup(vec3 d, const edge_job& e, double tol, double
   auto g = [&](double t) { return angle(d, point(t)); };
   double found = -1, upper = -1;
   auto note = [&](double t, double v) {
-    if (v > found) { found = v; at = point(t); }
+    if (v > found) {
+      found = v;
+      at = point(t);
+    }
   };
-  struct iv { double a, b, ga, gb; int depth; };
+  struct iv {
+    double a, b, ga, gb;
+    int depth;
+  };
   std::vector<iv> stack;
   constexpr int pieces = 8;
   double prev_t = t0, prev_g = g(t0);

@@ -33,9 +33,11 @@ const std::vector<method>& methods() {
       {M::spheremap, "spheremap", "#4 (2009)", 2, false, false, spheremap::encode, spheremap::decode},
       {M::cryengine3, "cryengine3", "#5 (2009)", 2, false, false, cryengine3::encode, cryengine3::decode},
       {M::lambert, "lambert", "#6 (2009) = #4 (2010)", 2, false, false, lambert::encode, lambert::decode},
-      {M::stereographic, "stereographic", "#7 (2009, 2010)", 2, false, false, stereographic::encode, stereographic::decode},
+      {M::stereographic, "stereographic", "#7 (2009, 2010)", 2, false, false, stereographic::encode,
+       stereographic::decode},
       {M::view_space, "view-space", "#8 (2010)", 2, false, true, view_space_encode, view_space_decode},
-      {M::octahedral, "octahedral", "not in the seed (unorm, nearest)", 2, false, false, octahedral::encode, octahedral::decode},
+      {M::octahedral, "octahedral", "not in the seed (unorm, nearest)", 2, false, false, octahedral::encode,
+       octahedral::decode},
       {M::octahedral_precise, "octahedral-precise", "not in the seed (unorm, best of 4)", 2, false, false,
        octahedral::encode_precise, octahedral::decode},
       {M::octahedral_snorm, "octahedral-snorm", "not in the seed (snorm, nearest)", 2, false, false,
@@ -59,7 +61,8 @@ const method& method_named(std::string_view name) {
 void check_bits(const method& m, int bits) {
   normal_encoding::check_bits(bits);
   if (m.only_8_bits && bits != 8)
-    throw std::invalid_argument("normal_encoding: " + std::string(m.name) + " exists only at 8 bits, not " + std::to_string(bits));
+    throw std::invalid_argument("normal_encoding: " + std::string(m.name) + " exists only at 8 bits, not " +
+                                std::to_string(bits));
 }
 
 std::uint64_t code_count(const method& m, int bits) {

@@ -12,17 +12,28 @@
 namespace gsdot3::normal_encoding {
 
 enum class method_id {
-  xyz, xy, xy_sign, spherical, spherical_lut, spheremap, cryengine3, lambert, stereographic, view_space,
-  octahedral, octahedral_precise, octahedral_snorm,
+  xyz,
+  xy,
+  xy_sign,
+  spherical,
+  spherical_lut,
+  spheremap,
+  cryengine3,
+  lambert,
+  stereographic,
+  view_space,
+  octahedral,
+  octahedral_precise,
+  octahedral_snorm,
 };
 
 struct method {
   method_id id;
-  std::string_view name;   // e.g. "octahedral"
-  std::string_view seed;   // e.g. "#4 (2009)", "2010", "not in the seed"
-  int channels;            // stored channels of `bits` each (#2 adds one sign bit in channel 2)
-  bool only_8_bits;        // #3a: its LUTs are 8-bit textures
-  bool front_hemisphere;   // the method only claims z >= 0 (#8: the hemisphere facing the viewer)
+  std::string_view name;  // e.g. "octahedral"
+  std::string_view seed;  // e.g. "#4 (2009)", "2010", "not in the seed"
+  int channels;           // stored channels of `bits` each (#2 adds one sign bit in channel 2)
+  bool only_8_bits;       // #3a: its LUTs are 8-bit textures
+  bool front_hemisphere;  // the method only claims z >= 0 (#8: the hemisphere facing the viewer)
   code (*encode)(vec3 n, int bits);
   vec3 (*decode)(code q, int bits);
 };

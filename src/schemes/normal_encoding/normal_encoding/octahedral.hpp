@@ -53,12 +53,14 @@ inline code encode_snorm(vec3 n, int bits) {
   double u, v;
   enc(n, u, v);
   const auto bias = static_cast<std::int32_t>(std::uint32_t{1} << (bits - 1));
-  return {{static_cast<std::uint32_t>(snorm_encode(u, bits) + bias), static_cast<std::uint32_t>(snorm_encode(v, bits) + bias), 0}};
+  return {{static_cast<std::uint32_t>(snorm_encode(u, bits) + bias),
+           static_cast<std::uint32_t>(snorm_encode(v, bits) + bias), 0}};
 }
 inline vec3 decode_snorm(code q, int bits) {
   check_bits(bits);
   const auto bias = static_cast<std::int32_t>(std::uint32_t{1} << (bits - 1));
-  return dec(snorm_decode(static_cast<std::int32_t>(q.c[0]) - bias, bits), snorm_decode(static_cast<std::int32_t>(q.c[1]) - bias, bits));
+  return dec(snorm_decode(static_cast<std::int32_t>(q.c[0]) - bias, bits),
+             snorm_decode(static_cast<std::int32_t>(q.c[1]) - bias, bits));
 }
 
 inline code encode_precise(vec3 n, int bits) {

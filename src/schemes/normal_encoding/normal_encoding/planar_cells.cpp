@@ -180,7 +180,11 @@ void octahedral_pieces(const method& m, int bits, std::uint32_t i, const code_fi
     if (snorm) {
       const double sm = snorm_max(bits);
       const auto qs = static_cast<std::int32_t>(q) - (std::int32_t{1} << (bits - 1));
-      if (qs < -snorm_max(bits)) { lo = 1; hi = -1; return; }  // −2^(b−1): never produced
+      if (qs < -snorm_max(bits)) {
+        lo = 1;
+        hi = -1;
+        return;
+      }  // −2^(b−1): never produced
       lo = (qs - 0.5) / sm;
       hi = (qs + 0.5) / sm;
     } else {
@@ -203,9 +207,13 @@ void octahedral_pieces(const method& m, int bits, std::uint32_t i, const code_fi
           const vec3 sigma{double(sx), double(sy), double(sz)};
           const vec3 alpha_u = sz > 0 ? vec3{1, 0, 0} : vec3{1, 0, -double(sx)};
           const vec3 alpha_v = sz > 0 ? vec3{0, 1, 0} : vec3{0, 1, -double(sy)};
-          std::vector<halfspace> h{{sx * ex, 0}, {sy * ey, 0}, {sz * ez, 0},
-                                   {alpha_u - u0 * sigma, 0}, {u1 * sigma - alpha_u, 0},
-                                   {alpha_v - v0 * sigma, 0}, {v1 * sigma - alpha_v, 0}};
+          std::vector<halfspace> h{{sx * ex, 0},
+                                   {sy * ey, 0},
+                                   {sz * ez, 0},
+                                   {alpha_u - u0 * sigma, 0},
+                                   {u1 * sigma - alpha_u, 0},
+                                   {alpha_v - v0 * sigma, 0},
+                                   {v1 * sigma - alpha_v, 0}};
           evaluate_piece(dm, bits, {{i, j, 0}}, std::move(h), a);
         }
   }
@@ -215,24 +223,17 @@ void octahedral_pieces(const method& m, int bits, std::uint32_t i, const code_fi
 
 void planar_pieces(const method& m, int bits, std::uint32_t i, const code_filter& f, acc& a) {
   switch (m.id) {
-    case method_id::xyz:
-      return xyz_pieces(m, bits, i, f, a);
+    case method_id::xyz: return xyz_pieces(m, bits, i, f, a);
     case method_id::xy:
     case method_id::xy_sign:
-    case method_id::view_space:
-      return xy_pieces(m, bits, i, f, a);
-    case method_id::spherical:
-      return spherical_pieces(m, bits, i, f, a);
-    case method_id::spherical_lut:
-      return spherical_lut_pieces(m, i, a);
-    case method_id::stereographic:
-      return stereographic_pieces(m, bits, i, f, a);
+    case method_id::view_space: return xy_pieces(m, bits, i, f, a);
+    case method_id::spherical: return spherical_pieces(m, bits, i, f, a);
+    case method_id::spherical_lut: return spherical_lut_pieces(m, i, a);
+    case method_id::stereographic: return stereographic_pieces(m, bits, i, f, a);
     case method_id::octahedral:
     case method_id::octahedral_precise:
-    case method_id::octahedral_snorm:
-      return octahedral_pieces(m, bits, i, f, a);
-    default:
-      return;
+    case method_id::octahedral_snorm: return octahedral_pieces(m, bits, i, f, a);
+    default: return;
   }
 }
 

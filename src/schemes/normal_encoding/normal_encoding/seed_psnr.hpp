@@ -25,7 +25,8 @@ struct seed_error {
 
 class seed_error_sum {
  public:
-  explicit seed_error_sum(int image_bits = 0) noexcept : levels_(image_bits > 0 ? std::ldexp(1.0, image_bits) - 1 : 0) {}
+  explicit seed_error_sum(int image_bits = 0) noexcept
+      : levels_(image_bits > 0 ? std::ldexp(1.0, image_bits) - 1 : 0) {}
   void add(vec3 actual, vec3 decoded) noexcept {
     ++samples_;
     if (!finite(decoded)) {
@@ -33,7 +34,8 @@ class seed_error_sum {
       sum_ += 3;
       return;
     }
-    sum_ += square(channel(actual.x - decoded.x)) + square(channel(actual.y - decoded.y)) + square(channel(actual.z - decoded.z));
+    sum_ += square(channel(actual.x - decoded.x)) + square(channel(actual.y - decoded.y)) +
+            square(channel(actual.z - decoded.z));
   }
   [[nodiscard]] seed_error done() const noexcept {
     seed_error e{samples_, nonfinite_, 0, 0};

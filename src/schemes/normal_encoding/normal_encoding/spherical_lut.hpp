@@ -24,7 +24,7 @@ namespace gsdot3::normal_encoding::spherical_lut {
 inline constexpr int size = 256;
 
 struct tables {
-  std::array<std::uint8_t, size * size> atan2_lookup;          // [y·256 + x]
+  std::array<std::uint8_t, size * size> atan2_lookup;           // [y·256 + x]
   std::array<std::array<std::uint8_t, 3>, size * size> sincos;  // [y·256 + x] = r, g, b
 };
 // Built once (spherical_lut.cpp).
@@ -38,13 +38,15 @@ constexpr int texel_of(double u) noexcept {  // point sampling, clamp addressing
 // The code's (texel x, texel y) of the atan2 LUT that n samples (used by the rounding-cell analysis).
 inline code encode(vec3 n, int bits) {
   check_bits(bits);
-  if (bits != 8) throw std::invalid_argument("normal_encoding: #3a spherical-lut exists only at 8 bits (its LUTs are 8-bit)");
+  if (bits != 8)
+    throw std::invalid_argument("normal_encoding: #3a spherical-lut exists only at 8 bits (its LUTs are 8-bit)");
   const int tx = texel_of(n.x * 0.5 + 0.5), ty = texel_of(n.y * 0.5 + 0.5);
   return {{lut().atan2_lookup[static_cast<std::size_t>(ty * size + tx)], unorm_encode(n.z * 0.5 + 0.5, 8), 0}};
 }
 inline vec3 decode(code q, int bits) {
   check_bits(bits);
-  if (bits != 8) throw std::invalid_argument("normal_encoding: #3a spherical-lut exists only at 8 bits (its LUTs are 8-bit)");
+  if (bits != 8)
+    throw std::invalid_argument("normal_encoding: #3a spherical-lut exists only at 8 bits (its LUTs are 8-bit)");
   const auto& t = lut().sincos[static_cast<std::size_t>(texel_of(q.c[1] / 255.0) * size + texel_of(q.c[0] / 255.0))];
   return {t[0] / 255.0 * 2 - 1, t[1] / 255.0 * 2 - 1, t[2] / 255.0 * 2 - 1};
 }

@@ -25,15 +25,16 @@ polar_light seed_atan2(const glm::dvec3& P, double S_l) noexcept {
 offset_colour offset_nearest(const polar_light& l, azimuth_scale a) noexcept {
   const int steps = azimuth_steps(a);
   const long q = std::lround(l.Q * steps / two_pi) % steps;
-  return {byte_nearest(255.0 * (1.0 - l.S_l)), byte_nearest(255.0 * l.S_l * std::sin(l.T)), byte_nearest(255.0 * l.S_l * std::cos(l.T)),
-          static_cast<std::uint8_t>(q)};
+  return {byte_nearest(255.0 * (1.0 - l.S_l)), byte_nearest(255.0 * l.S_l * std::sin(l.T)),
+          byte_nearest(255.0 * l.S_l * std::cos(l.T)), static_cast<std::uint8_t>(q)};
 }
 
 offset_colour pvr_pack_bump(float h, float t, float q) noexcept {
   constexpr float f_pi = 3.1415926f;  // KallistiOS' F_PI
   const auto hp = static_cast<std::uint8_t>(h * 255.0f);
   return {static_cast<std::uint8_t>(~hp), static_cast<std::uint8_t>(static_cast<float>(hp) * std::sin(t)),
-          static_cast<std::uint8_t>(static_cast<float>(hp) * std::cos(t)), static_cast<std::uint8_t>((q / (2 * f_pi)) * 255.0f)};
+          static_cast<std::uint8_t>(static_cast<float>(hp) * std::cos(t)),
+          static_cast<std::uint8_t>((q / (2 * f_pi)) * 255.0f)};
 }
 
 skk fxyz_light_dir_to_skk(float x, float y, float z) noexcept {

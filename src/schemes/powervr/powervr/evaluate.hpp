@@ -51,8 +51,10 @@ const fixed_tables& tables(int bits, azimuth_scale a);
 constexpr std::uint8_t intensity_fixed(const fixed_tables& tb, bump_texel t, offset_colour k) noexcept {
   const int d = ((t.R - k.Q) % tb.steps + tb.steps) % tb.steps;
   const std::int64_t half = std::int64_t{1} << (tb.bits - 1);
-  const std::int64_t cc = (static_cast<std::int64_t>(tb.cos_s[t.S]) * tb.cos_d[static_cast<std::size_t>(d)] + half) >> tb.bits;
-  const std::int64_t acc = (static_cast<std::int64_t>(k.K1) << tb.bits) + static_cast<std::int64_t>(k.K2) * tb.sin_s[t.S] + k.K3 * cc;
+  const std::int64_t cc =
+      (static_cast<std::int64_t>(tb.cos_s[t.S]) * tb.cos_d[static_cast<std::size_t>(d)] + half) >> tb.bits;
+  const std::int64_t acc =
+      (static_cast<std::int64_t>(k.K1) << tb.bits) + static_cast<std::int64_t>(k.K2) * tb.sin_s[t.S] + k.K3 * cc;
   const std::int64_t out = (acc + half) >> tb.bits;
   return static_cast<std::uint8_t>(out < 0 ? 0 : out > 255 ? 255 : out);
 }
@@ -64,7 +66,8 @@ struct flycast_tables {
   std::array<float, 65536> cos_rq{};  // [R·256 + Q]
   explicit flycast_tables(azimuth_scale a);
   float value(bump_texel t, offset_colour k) const noexcept {
-    const float k1 = static_cast<float>(k.K1) / 255.0f, k2 = static_cast<float>(k.K2) / 255.0f, k3 = static_cast<float>(k.K3) / 255.0f;
+    const float k1 = static_cast<float>(k.K1) / 255.0f, k2 = static_cast<float>(k.K2) / 255.0f,
+                k3 = static_cast<float>(k.K3) / 255.0f;
     const float v = k1 + k2 * sin_s[t.S] + k3 * cos_s[t.S] * cos_rq[static_cast<std::size_t>(t.R) << 8 | k.Q];
     return v < 0.0f ? 0.0f : v > 1.0f ? 1.0f : v;
   }

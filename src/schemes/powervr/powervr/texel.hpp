@@ -36,7 +36,8 @@ struct offset_colour {
   std::uint8_t K1 = 0, K2 = 0, K3 = 0, Q = 0;
   // The 32-bit offset colour word as KallistiOS' pvr_pack_bump returns it: K1<<24 | K2<<16 | K3<<8 | Q.
   constexpr std::uint32_t packed() const noexcept {
-    return static_cast<std::uint32_t>(K1) << 24 | static_cast<std::uint32_t>(K2) << 16 | static_cast<std::uint32_t>(K3) << 8 | Q;
+    return static_cast<std::uint32_t>(K1) << 24 | static_cast<std::uint32_t>(K2) << 16 |
+           static_cast<std::uint32_t>(K3) << 8 | Q;
   }
   friend constexpr bool operator==(offset_colour, offset_colour) = default;
 };

@@ -14,7 +14,9 @@
 namespace gsdot3::schemes::powervr {
 
 enum class texel_rounding { kallistios, nearest };
-constexpr const char* name(texel_rounding r) noexcept { return r == texel_rounding::kallistios ? "kallistios" : "nearest"; }
+constexpr const char* name(texel_rounding r) noexcept {
+  return r == texel_rounding::kallistios ? "kallistios" : "nearest";
+}
 
 // `n` need not be unit length (it is normalised; a zero vector gives the flat texel S = 255, R = 0);
 // normals below the surface (z < 0) get elevation 0. `a` is used by `nearest` only (KallistiOS

@@ -50,7 +50,9 @@ inline constexpr std::array<vec3<float>, 3> source_basis_float = {{
 
 constexpr basis3 widen(const std::array<vec3<float>, 3>& b) noexcept {
   basis3 out{};
-  for (int i = 0; i < 3; ++i) out[static_cast<unsigned>(i)] = {b[static_cast<unsigned>(i)].x, b[static_cast<unsigned>(i)].y, b[static_cast<unsigned>(i)].z};
+  for (int i = 0; i < 3; ++i)
+    out[static_cast<unsigned>(i)] = {b[static_cast<unsigned>(i)].x, b[static_cast<unsigned>(i)].y,
+                                     b[static_cast<unsigned>(i)].z};
   return out;
 }
 inline constexpr basis3 source_basis = widen(source_basis_float);

@@ -44,7 +44,8 @@ inline vec3<float> normal2ssbump(const texel& t, const std::array<vec3<float>, 3
     return x * x;
   };
   const vec3<float> n{range_adjust(t.r), range_adjust(t.g), range_adjust(t.b)};
-  const vec3<float> dp{saturate_and_square(dot(n, B[0])), saturate_and_square(dot(n, B[1])), saturate_and_square(dot(n, B[2]))};
+  const vec3<float> dp{saturate_and_square(dot(n, B[0])), saturate_and_square(dot(n, B[1])),
+                       saturate_and_square(dot(n, B[2]))};
   const float sum = dot(dp, vec3<float>{1.0f, 1.0f, 1.0f});
   const float scale = static_cast<float>(1.0 / static_cast<double>(sum));  // Vector::operator*=(float) of 1.0/sum
   return {dp.x * scale, dp.y * scale, dp.z * scale};

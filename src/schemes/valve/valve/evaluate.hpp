@@ -16,7 +16,8 @@ struct lightmaps {
 
 // Listing 1 on a fetched (possibly filtered) texel t ∈ [0, 1]³, already in the shader's format.
 // The zero-sum case (every N·B_i ≤ 0) gives 0·L/0 = NaN, as the shader does.
-constexpr double rnm_diffuse_fetched(const shader_arith& a, const vec3<double>& t, const lightmaps& L, const basis3& B = source_basis) noexcept {
+constexpr double rnm_diffuse_fetched(const shader_arith& a, const vec3<double>& t, const lightmaps& L,
+                                     const basis3& B = source_basis) noexcept {
   const vec3<double> N{a.sub(a.mul(2.0, t.x), 1.0), a.sub(a.mul(2.0, t.y), 1.0), a.sub(a.mul(2.0, t.z), 1.0)};
   auto dp = [&](const vec3<double>& b) {
     const double s = a.saturate(a.dp3(N.x, N.y, N.z, a.r(b.x), a.r(b.y), a.r(b.z)));
@@ -29,7 +30,8 @@ constexpr double rnm_diffuse_fetched(const shader_arith& a, const vec3<double>& 
 }
 
 // Listing 1 on an 8-bit texel (eq. (2): N = 2·T − 1 after the UNORM8 fetch).
-constexpr double rnm_diffuse(const shader_arith& a, const texel& t, const lightmaps& L, const basis3& B = source_basis) noexcept {
+constexpr double rnm_diffuse(const shader_arith& a, const texel& t, const lightmaps& L,
+                             const basis3& B = source_basis) noexcept {
   return rnm_diffuse_fetched(a, vec3<double>{unorm8(a, t.r), unorm8(a, t.g), unorm8(a, t.b)}, L, B);
 }
 
@@ -52,6 +54,8 @@ constexpr lightmaps project_light(const vec3<double>& l, const basis3& B = exact
 }
 
 // Σ D_i·L_i exactly (the reference both are measured against).
-constexpr double weighted(const vec3<double>& D, const lightmaps& L) noexcept { return D.x * L.L0 + D.y * L.L1 + D.z * L.L2; }
+constexpr double weighted(const vec3<double>& D, const lightmaps& L) noexcept {
+  return D.x * L.L0 + D.y * L.L1 + D.z * L.L2;
+}
 
 }  // namespace gsdot3::valve

@@ -49,14 +49,16 @@ void for_rows(int h, unsigned threads, const std::function<void(double)>& progre
       }
     }
   };
-  const unsigned n = std::max(1U, std::min(threads == 0 ? std::thread::hardware_concurrency() : threads, static_cast<unsigned>(h)));
+  const unsigned n =
+      std::max(1U, std::min(threads == 0 ? std::thread::hardware_concurrency() : threads, static_cast<unsigned>(h)));
   std::vector<std::jthread> pool;
   for (unsigned t = 1; t < n; ++t) pool.emplace_back(work);
   work();
 }
 
 // Möller–Trumbore, both faces: does the segment o + t·d, t ∈ (0, 1], cross triangle (a, b, c)?
-bool hits(const vec3<float>& o, const vec3<float>& d, const vec3<float>& a, const vec3<float>& b, const vec3<float>& c) noexcept {
+bool hits(const vec3<float>& o, const vec3<float>& d, const vec3<float>& a, const vec3<float>& b,
+          const vec3<float>& c) noexcept {
   const vec3<float> e1 = sub(b, a), e2 = sub(c, a), p = cross(d, e2);
   const float det = dot(e1, p);
   if (std::fabs(det) < 1e-12f) return false;
@@ -78,7 +80,8 @@ struct height_field {
   int x_lo, x_hi, y_lo, y_hi;  // cells present in Source's tiled triangle soup
   float z_max;
   vec3<float> corner(int x, int y) const noexcept {
-    return {static_cast<float>(x), static_cast<float>(y), scale * h[static_cast<std::size_t>(wrap(y, hh) * w + wrap(x, w))]};
+    return {static_cast<float>(x), static_cast<float>(y),
+            scale * h[static_cast<std::size_t>(wrap(y, hh) * w + wrap(x, w))]};
   }
   bool cell_blocks(int cx, int cy, const vec3<float>& o, const vec3<float>& d) const noexcept {
     if (cx < x_lo || cx > x_hi || cy < y_lo || cy > y_hi) return false;
@@ -96,7 +99,8 @@ struct height_field {
     float t = 0.0f;
     while (t <= 1.0f) {
       // The origin is a vertex: the 2×2 cells meeting there are all under the ray's start.
-      if (t == 0.0f && (cell_blocks(cx - 1, cy - 1, o, d) || cell_blocks(cx, cy - 1, o, d) || cell_blocks(cx - 1, cy, o, d)))
+      if (t == 0.0f &&
+          (cell_blocks(cx - 1, cy - 1, o, d) || cell_blocks(cx, cy - 1, o, d) || cell_blocks(cx - 1, cy, o, d)))
         return true;
       if (cell_blocks(cx, cy, o, d)) return true;
       if (o.z + d.z * t > z_max) return false;
@@ -123,7 +127,8 @@ std::vector<float> bilateral_filter(const std::vector<float>& height, int w, int
       for (int iy = -radius; iy <= radius; ++iy)
         for (int ix = -radius; ix <= radius; ++ix) {
           const float p = height[static_cast<std::size_t>(wrap(y + iy, h) * w + wrap(x + ix, w))];
-          const float g = std::exp(-static_cast<float>(ix * ix + iy * iy) * (1.0f / (2.0f * static_cast<float>(radius) * 0.033f)));
+          const float g =
+              std::exp(-static_cast<float>(ix * ix + iy * iy) * (1.0f / (2.0f * static_cast<float>(radius) * 0.033f)));
           const float diff = std::fabs(centre - p);
           const float s = diff > threshold ? 0.0f : 1.0f - diff / threshold;  // FLerp(1, 0, 0, threshold, diff)
           sum_weights += s * g;
@@ -136,7 +141,8 @@ std::vector<float> bilateral_filter(const std::vector<float>& height, int w, int
 
 std::vector<vec3<float>> vertex_normals(const std::vector<float>& height, int w, int h, float bump_scale) {
   auto vert = [&](int x, int y) {
-    return vec3<float>{static_cast<float>(x), static_cast<float>(y), bump_scale * height[static_cast<std::size_t>(y * w + x)]};
+    return vec3<float>{static_cast<float>(x), static_cast<float>(y),
+                       bump_scale * height[static_cast<std::size_t>(y * w + x)]};
   };
   std::vector<vec3<float>> normals(height.size());
   for (int y = 0; y < h; ++y)
@@ -171,7 +177,8 @@ std::vector<vec3<float>> trace_directions(int rays) {
   return dirs;
 }
 
-std::vector<vec3<float>> height2ssbump(const std::vector<float>& height_in, int w, int h, const height2ssbump_options& o) {
+std::vector<vec3<float>> height2ssbump(const std::vector<float>& height_in, int w, int h,
+                                       const height2ssbump_options& o) {
   const std::vector<float> height = bilateral_filter(height_in, w, h, o.filter_radius, o.filter_threshold);
   const std::vector<vec3<float>> normals = vertex_normals(height, w, h, o.bump_scale);
   const std::vector<vec3<float>> dirs = trace_directions(o.rays);
@@ -179,8 +186,14 @@ std::vector<vec3<float>> height2ssbump(const std::vector<float>& height_in, int 
   // NREPS_TILE = 1: Source adds the 3×3 tiles, the outer ones only from (or up to) the half width,
   // so the cells span [W/2 − W, W + W/2] × [H/2 − H, H + H/2]; 0: the map alone.
   const bool tiled = o.tile_reps > 0;
-  const height_field field{height, w, h, o.bump_scale, tiled ? w / 2 - w : 0, tiled ? w + w / 2 : w - 1,
-                           tiled ? h / 2 - h : 0, tiled ? h + h / 2 : h - 1,
+  const height_field field{height,
+                           w,
+                           h,
+                           o.bump_scale,
+                           tiled ? w / 2 - w : 0,
+                           tiled ? w + w / 2 : w - 1,
+                           tiled ? h / 2 - h : 0,
+                           tiled ? h + h / 2 : h - 1,
                            o.bump_scale * *std::max_element(height.begin(), height.end())};
   std::vector<vec3<float>> out(height.size());
   const auto& B = bumpvects_basis_float;

@@ -24,13 +24,13 @@
 namespace gsdot3::valve {
 
 struct height2ssbump_options {
-  float bump_scale = 1.0f;      // Source's second argument (no default there)
-  int rays = 250;               // -r
-  float origin_bias = 0.55f;    // "move the ray origin up a hair"
-  int tile_reps = 1;            // NREPS_TILE: 1 (Source) or 0 (no tiling)
-  int filter_radius = 10;       // -f (0 = no filter)
+  float bump_scale = 1.0f;    // Source's second argument (no default there)
+  int rays = 250;             // -r
+  float origin_bias = 0.55f;  // "move the ray origin up a hair"
+  int tile_reps = 1;          // NREPS_TILE: 1 (Source) or 0 (no tiling)
+  int filter_radius = 10;     // -f (0 = no filter)
   float filter_threshold = 2.0f / 255.0f;
-  unsigned threads = 0;         // 0: hardware concurrency
+  unsigned threads = 0;                  // 0: hardware concurrency
   std::function<void(double)> progress;  // fraction done, from worker threads one at a time
 };
 

@@ -16,7 +16,9 @@ struct q23 {
   std::array<std::int64_t, 4> n{};  // coefficients of 1, √2, √3, √6
   std::int64_t den = 1;             // > 0
 
-  static constexpr q23 rational(std::int64_t num, std::int64_t d = 1) noexcept { return q23{{num, 0, 0, 0}, d}.reduced(); }
+  static constexpr q23 rational(std::int64_t num, std::int64_t d = 1) noexcept {
+    return q23{{num, 0, 0, 0}, d}.reduced();
+  }
   // (k/d)·√r for r ∈ {1, 2, 3, 6}.
   static constexpr q23 root(int r, std::int64_t k, std::int64_t d) noexcept {
     q23 q;
@@ -41,7 +43,8 @@ struct q23 {
   friend constexpr q23 operator+(const q23& a, const q23& b) noexcept {
     q23 q;
     q.den = a.den * b.den;
-    for (int i = 0; i < 4; ++i) q.n[static_cast<unsigned>(i)] = a.n[static_cast<unsigned>(i)] * b.den + b.n[static_cast<unsigned>(i)] * a.den;
+    for (int i = 0; i < 4; ++i)
+      q.n[static_cast<unsigned>(i)] = a.n[static_cast<unsigned>(i)] * b.den + b.n[static_cast<unsigned>(i)] * a.den;
     return q.reduced();
   }
   friend constexpr q23 operator-(const q23& a) noexcept {
