@@ -22,11 +22,7 @@ namespace ps = powervr_sweeps;
 constexpr double pi = std::numbers::pi;
 constexpr double deg = pi / 180.0;
 
-std::string num(double v, int digits = 6) {
-  char b[64];
-  std::snprintf(b, sizeof b, "%.*g", digits, v);
-  return b;
-}
+std::string num(double v, int digits = 6) { return real_text(v, digits); }
 std::string texel_text(pvr::bump_texel t) { return "S = " + hexdec(t.S) + ", R = " + hexdec(t.R); }
 std::string offset_text(pvr::offset_colour k) {
   return "K1 = " + hexdec(k.K1) + ", K2 = " + hexdec(k.K2) + ", K3 = " + hexdec(k.K3) + ", Q = " + hexdec(k.Q);

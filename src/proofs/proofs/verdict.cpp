@@ -16,9 +16,7 @@ const char* name(verdict v) noexcept {
 
 std::string to_string(const std::variant<std::int64_t, double>& value) {
   if (const auto* i = std::get_if<std::int64_t>(&value)) return std::to_string(*i);
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.9g", std::get<double>(value));
-  return buf;
+  return real_text(std::get<double>(value));
 }
 
 const figure* outcome::find(std::string_view figure_name) const noexcept {
@@ -46,6 +44,18 @@ std::string hexdec(std::int64_t v, int bits) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "0x%0*llx (%lld)", (bits + 3) / 4,
                 static_cast<unsigned long long>(static_cast<std::uint64_t>(v) & mask), static_cast<long long>(v));
+  return buf;
+}
+
+std::string real_text(double v, int digits) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*g", digits, v);
+  return buf;
+}
+
+std::string hex_float(double v) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%a", v);
   return buf;
 }
 

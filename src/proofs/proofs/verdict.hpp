@@ -117,5 +117,9 @@ struct extremes {
 
 // "0x7f (127)": a value in hex and decimal; negative values show their `bits`-wide two's complement.
 std::string hexdec(std::int64_t v, int bits = 8);
+// A real with `digits` significant digits ("%.*g"; figures are printed with 9).
+std::string real_text(double v, int digits = 9);
+// A double exactly, as a hexadecimal float ("%a"), so a witness can be pasted back.
+std::string hex_float(double v);
 
 }  // namespace gsdot3::proofs

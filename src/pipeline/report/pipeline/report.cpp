@@ -16,12 +16,20 @@
 #include "pipeline/memory_steps.hpp"
 #include "pipeline/performance_claims.hpp"
 #include "pipeline/quality_claims.hpp"
+#include "pipeline/report_images.hpp"
 #include "pipeline/report_page.hpp"
 #include "pipeline/render.hpp"
 
 namespace gsdot3::pipeline {
 
 namespace {
+
+using report_images::error_map;
+using report_images::grey_image;
+using report_images::heat_limit;
+using report_images::montage;
+using report_images::reference_bytes;
+using report_images::rgb_image;
 
 struct accumulator {
   error_stats s;
@@ -50,81 +58,6 @@ struct accumulator {
 
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
-image rgb_image(int w, int h, const std::vector<std::uint32_t>& words) {
-  image img{w, h, 3, std::vector<std::uint8_t>(static_cast<std::size_t>(w) * static_cast<std::size_t>(h) * 3)};
-  for (std::size_t i = 0; i < words.size(); ++i)
-    for (int c = 0; c < 3; ++c)
-      img.data[3 * i + static_cast<std::size_t>(c)] = static_cast<std::uint8_t>(words[i] >> (8 * c));
-  return img;
-}
-
-image grey_image(int w, int h, const std::vector<std::uint8_t>& bytes) { return {w, h, 1, bytes}; }
-
-// Float dot products (the reference's, a scheme's) as the byte a DPB would hold: nearest(dot) + 128,
-// clamped to 0..255.
-std::vector<std::uint8_t> reference_bytes(const std::vector<float>& ref) {
-  std::vector<std::uint8_t> b(ref.size(), 128);
-  for (std::size_t i = 0; i < ref.size(); ++i)
-    if (!std::isnan(ref[i])) b[i] = static_cast<std::uint8_t>(std::clamp(std::lround(ref[i]) + 128, 0L, 255L));
-  return b;
-}
-
-// Heat-map colour of a signed error: white at 0, red for positive, blue for negative, saturated at ±limit.
-std::array<std::uint8_t, 3> heat(double e, double limit) {
-  const double t = std::clamp(std::fabs(e) / limit, 0.0, 1.0);
-  const auto fade = static_cast<std::uint8_t>(std::lround(255.0 * (1.0 - t)));
-  return e >= 0 ? std::array<std::uint8_t, 3>{255, fade, fade} : std::array<std::uint8_t, 3>{fade, fade, 255};
-}
-
-constexpr double heat_limit = 8.0;  // 1/128 units at full saturation
-constexpr int legend_rows = 20;
-
-// The error map of one light, plus a legend strip under it: −limit .. +limit left to right, with a
-// dark tick at every whole unit and a long one at 0.
-// `value(i)` is the method's dot product at pixel i, in 1/128 units.
-template <class Value>
-image error_map(int w, int h, Value&& value, const std::vector<float>& ref) {
-  image img{
-      w, h + legend_rows, 3,
-      std::vector<std::uint8_t>(static_cast<std::size_t>(w) * static_cast<std::size_t>(h + legend_rows) * 3, 0x30)};
-  for (std::size_t i = 0; i < ref.size(); ++i) {
-    if (std::isnan(ref[i])) continue;
-    const auto c = heat(value(i) - ref[i], heat_limit);
-    for (int k = 0; k < 3; ++k) img.data[3 * i + static_cast<std::size_t>(k)] = c[static_cast<std::size_t>(k)];
-  }
-  for (int y = h + 4; y < h + legend_rows; ++y)
-    for (int x = 0; x < w; ++x) {
-      const double e = (2.0 * x / (w - 1) - 1.0) * heat_limit;
-      auto c = heat(e, heat_limit);
-      const double unit = std::fabs(e - std::round(e)) * (w - 1) / (2.0 * heat_limit);
-      const bool tick = unit < 0.5 && (y < h + 10 || std::lround(e) == 0);
-      if (tick) c = {0, 0, 0};
-      const std::size_t at =
-          (static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x)) * 3;
-      for (int k = 0; k < 3; ++k) img.data[at + static_cast<std::size_t>(k)] = c[static_cast<std::size_t>(k)];
-    }
-  return img;
-}
-
-// Four frames of equal size in a 2×2 grid: a b / c d (figure 7).
-image montage(const image& a, const image& b, const image& c, const image& d) {
-  const int w = a.width, h = a.height;
-  image m{2 * w, 2 * h, 3, std::vector<std::uint8_t>(static_cast<std::size_t>(4 * w * h) * 3)};
-  const image* parts[4] = {&a, &b, &c, &d};
-  for (int p = 0; p < 4; ++p)
-    for (int y = 0; y < h; ++y)
-      for (int x = 0; x < w; ++x)
-        for (int k = 0; k < 3; ++k)
-          m.data[(static_cast<std::size_t>((p / 2) * h + y) * static_cast<std::size_t>(2 * w) +
-                  static_cast<std::size_t>((p % 2) * w + x)) *
-                     3 +
-                 static_cast<std::size_t>(k)] =
-              parts[p]
-                  ->data[(static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x)) * 3 +
-                         static_cast<std::size_t>(k)];
-  return m;
 }
 
 nlohmann::json to_json(const error_stats& s) {
