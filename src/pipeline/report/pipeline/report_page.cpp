@@ -1,7 +1,7 @@
-// pipeline/report_page.cpp — report.html and report-pixels.js (see report_page.hpp). The page's
-// HTML/CSS/JS is pipeline/report_page.html, embedded at build time with docs/claims.md (whose
-// summary table gives the claims' verdicts without running the catalogue: the report stays fast,
-// and tests/proofs keeps that file current).
+// pipeline/report_page.cpp — report.html and report-pixels.js (see report_page.hpp). The page is
+// pipeline/report_page.html (HTML, CSS) and its script, report_page.js then report_page_panels.js,
+// embedded at build time with docs/claims.md (whose summary table gives the claims' verdicts without
+// running the catalogue: the report stays fast, and tests/proofs keeps that file current).
 #include "pipeline/report_page.hpp"
 
 #include <algorithm>
@@ -20,8 +20,11 @@
 #include "pipeline/render.hpp"
 #include "proofs/claim.hpp"
 
-// Generated from pipeline/report_page.html and docs/claims.md (src/pipeline/CMakeLists.txt).
+// Generated from report_page.html, report_page.js, report_page_panels.js and docs/claims.md
+// (src/pipeline/CMakeLists.txt).
 extern const char gsdot3_report_page_html[];
+extern const char gsdot3_report_page_js[];
+extern const char gsdot3_report_page_panels_js[];
 extern const char gsdot3_claims_md[];
 
 namespace gsdot3::pipeline {
@@ -301,6 +304,7 @@ page_files write_report_page(const std::filesystem::path& dir, const page_inputs
     if (at == std::string::npos) throw std::logic_error("report_page.html: no " + marker);
     html.replace(at, marker.size(), text);
   };
+  put("/*GSDOT3_PAGE_SCRIPT*/", std::string(gsdot3_report_page_js) + gsdot3_report_page_panels_js);
   put("/*GSDOT3_REPORT_JSON*/", script_json(in.report_json));
   put("/*GSDOT3_PAGE_JSON*/", script_json(page.dump()));
   write_file_atomically(files.html, html);
