@@ -1,0 +1,2 @@
+// The header the upward fixture includes.
+#pragma once
