@@ -2,21 +2,24 @@
 # include in src/"). Run as `cmake -DSOURCE=<repo> -P layering_check.cmake`
 # (-DMIN_FILES=N: the fewest files a whole tree has; the upward fixture sets 1). Each folder of src/ has a
 # layer below; a file may #include "M/..." only from its own folder or a folder of a lower layer, so
-# folders of one layer do not include each other either. A header "pipeline/NAME.hpp" belongs to the
-# src/pipeline sub-folder that holds it. Quoted includes of folders not in the table (e.g. hwy/) are
-# not the project's and are skipped; a src folder missing from the table fails the check.
+# folders of one layer do not include each other either. An include belongs to the folder of the file
+# it names ("pipeline/NAME.hpp" to the src/pipeline sub-folder that holds it, likewise src/proofs');
+# one that names no file of the tree (hwy/, generated headers) is skipped; a folder missing from the
+# table fails the check.
 set(layers
   "fixed" 0
-  "gs_regs" 1 "normal_encoding" 1 "powervr" 1 "valve" 1
-  "gs_arith" 2
-  "gs_memory" 3 "gs_methods" 3 "gs_simd" 3 "vectors" 3
-  "gs_packets" 4 "proofs" 4
-  "gs_cost" 5 "probe" 5
-  "pipeline/core" 6
-  "pipeline/reference" 7 "pipeline/assets" 7 "pipeline/gs" 7
-  "pipeline/schemes" 8
-  "pipeline/report" 9
-  "cli" 10)
+  "gs_regs" 10 "normal_encoding" 10 "powervr" 10 "valve" 10
+  "gs_arith" 20
+  "gs_memory" 30 "gs_methods" 30 "gs_simd" 30 "vectors" 30
+  "gs_packets" 40 "proofs/base" 40
+  "proofs/two_pass_triangle" 44
+  "proofs/proofs" 48
+  "gs_cost" 50 "probe" 50
+  "pipeline/core" 60
+  "pipeline/reference" 70 "pipeline/assets" 70 "pipeline/gs" 70
+  "pipeline/schemes" 80
+  "pipeline/report" 90
+  "cli" 100)
 function(layer_of module out)
   list(FIND layers "${module}" at)
   if(at EQUAL -1)
@@ -33,8 +36,8 @@ function(module_of path out)
     set(${out} "fixed" PARENT_SCOPE)
   elseif(path MATCHES "^src/schemes/([a-z_0-9]+)/")
     set(${out} "${CMAKE_MATCH_1}" PARENT_SCOPE)
-  elseif(path MATCHES "^src/pipeline/([a-z_0-9]+)/")
-    set(${out} "pipeline/${CMAKE_MATCH_1}" PARENT_SCOPE)
+  elseif(path MATCHES "^src/(pipeline|proofs)/([a-z_0-9]+)/")
+    set(${out} "${CMAKE_MATCH_1}/${CMAKE_MATCH_2}" PARENT_SCOPE)
   elseif(path MATCHES "^src/([a-z_0-9]+)/")
     set(${out} "${CMAKE_MATCH_1}" PARENT_SCOPE)
   else()
@@ -64,19 +67,22 @@ foreach(f IN LISTS files)
     if(NOT line MATCHES "\"([a-z_0-9]+)/([^\"]+)\"")
       continue()
     endif()
-    set(to "${CMAKE_MATCH_1}")
+    set(prefix "${CMAKE_MATCH_1}")
     set(header "${CMAKE_MATCH_2}")
-    if(to STREQUAL "pipeline")
-      file(GLOB holder RELATIVE ${SOURCE} ${SOURCE}/src/pipeline/*/pipeline/${header})
-      if(NOT holder)
-        list(APPEND problems "${f}: includes pipeline/${header}, which no src/pipeline folder holds")
-        continue()
-      endif()
-      module_of("${holder}" to)
+    # The file the include names: NAME/... lives in src/NAME/NAME/, src/schemes/NAME/NAME/,
+    # src/pipeline/*/NAME/ or src/proofs/*/NAME/, or include/NAME/.
+    file(GLOB holder RELATIVE ${SOURCE} ${SOURCE}/include/${prefix}/${header} ${SOURCE}/src/${prefix}/${prefix}/${header}
+         ${SOURCE}/src/schemes/${prefix}/${prefix}/${header} ${SOURCE}/src/pipeline/*/${prefix}/${header}
+         ${SOURCE}/src/proofs/*/${prefix}/${header})
+    if(NOT holder)
+      continue()  # not the project's (e.g. hwy/), or generated into the build tree
     endif()
+    list(GET holder 0 holder)
+    module_of("${holder}" to)
     layer_of("${to}" to_rank)
     if(to_rank STREQUAL "")
-      continue()  # not a project folder (e.g. hwy/)
+      list(APPEND problems "${holder}: folder ${to} has no layer in tests/layering/layering_check.cmake")
+      continue()
     endif()
     math(EXPR checked "${checked} + 1")
     if(NOT to STREQUAL from AND NOT to_rank LESS from_rank)
