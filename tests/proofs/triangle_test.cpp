@@ -20,9 +20,9 @@
 #include "pipeline/raster.hpp"
 #include "proofs/domains.hpp"
 #include "proofs/two_pass.hpp"
-#include "proofs/triangle_brute_force.hpp"
-#include "proofs/two_pass_triangle.hpp"
-#include "proofs/triangle_relaxation.hpp"
+#include "two_pass_triangle/triangle_brute_force.hpp"
+#include "two_pass_triangle/two_pass_triangle.hpp"
+#include "two_pass_triangle/triangle_relaxation.hpp"
 #include "reference.hpp"
 
 namespace p = gsdot3::proofs;
@@ -215,7 +215,7 @@ namespace {
 //   (B) aligned on both:           σ·(L_c − P_c(p)) < 1 + a + b;
 //   (C) aligned on both:           σ·L_c < σ·P_c(w) + W (w = p: then also a + b < max(a_Y, b_X)),
 // and w in the closed triangle. Summing them with weights |n_c| gives (i)–(iii) for every normal.
-// Written apart from proofs/triangle_brute_force.cpp (the pixel set by edge functions or the
+// Written apart from two_pass_triangle/triangle_brute_force.cpp (the pixel set by edge functions or the
 // pipeline's rasteriser, the light by tt::pixel_light per pixel, P_c(w) as the convex combination
 // of two vertex values, the statements spelled out), so the brute force is checked against it.
 enum class pixel_set { covered, closed_triangle };

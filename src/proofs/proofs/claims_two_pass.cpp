@@ -11,11 +11,11 @@
 #include "proofs/claims.hpp"
 #include "proofs/domains.hpp"
 #include "proofs/methods.hpp"
-#include "proofs/relaxation_classes.hpp"
+#include "two_pass_triangle/relaxation_classes.hpp"
 #include "proofs/two_pass.hpp"
-#include "proofs/two_pass_triangle.hpp"
-#include "proofs/triangle_brute_force.hpp"
-#include "proofs/triangle_relaxation.hpp"
+#include "two_pass_triangle/two_pass_triangle.hpp"
+#include "two_pass_triangle/triangle_brute_force.hpp"
+#include "two_pass_triangle/triangle_relaxation.hpp"
 
 namespace gsdot3::proofs::claims {
 
@@ -169,7 +169,7 @@ std::string describe_certificate(const triangle_case& c, const gs::model_options
          hexdec(r.dot);
 }
 
-// --brute-force (two_pass::triangle::brute_force, proofs/triangle_brute_force.hpp): the bound's
+// --brute-force (two_pass::triangle::brute_force, two_pass_triangle/triangle_brute_force.hpp): the bound's
 // per-channel statements at full size, for gouraud_setup=plane_steps (under per_pixel the statement
 // is |L_c − P_c(p)| < 1, the truncation of the exact value itself). The light does not depend on the
 // other model options (truncate_to_8 is applied after, in the multiply, and adds its 128 units to the
@@ -235,7 +235,7 @@ outcome interpolated_under(const gs::model_options& o, const sweep_config& cfg) 
   const auto& normals = appendix2_normals();
   const int bound_safe = two_pass::triangle::bound_safe_s(o, cfg.domain.light == domain_options::tolight::attenuated);
   // (1') plane_steps: from there, the relaxation of the bound's statements certified class by class
-  // (proofs/relaxation_classes.hpp; re-run by ctest proofs_certify_survey, too slow for prove).
+  // (two_pass_triangle/relaxation_classes.hpp; re-run by ctest proofs_certify_survey, too slow for prove).
   const int certified = two_pass::triangle::certify::certified_relaxation_s(o);
   const int proven_safe = std::max(bound_safe, certified);
   int first_wrap = 128;
@@ -362,7 +362,8 @@ outcome interpolated_under(const gs::model_options& o, const sweep_config& cfg) 
                 "certified "
                 "below the wrap threshold: a dual with the alignment signs as constraints over rectangles of the five "
                 "geometry "
-                "families, checked in exact integers (proofs/triangle_certify.hpp; run by ctest proofs_certify_survey, "
+                "families, checked in exact integers (two_pass_triangle/triangle_certify.hpp; run by ctest "
+                "proofs_certify_survey, "
                 "not by "
                 "prove: ~40 s under keep_fraction, ~60 s under truncate_to_8)"
           : std::string();

@@ -1,10 +1,10 @@
-#include "proofs/triangle_certify.hpp"
+#include "two_pass_triangle/triangle_certify.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
 
-#include "proofs/triangle_relaxation.hpp"
+#include "two_pass_triangle/triangle_relaxation.hpp"
 
 namespace gsdot3::proofs::two_pass::triangle::certify {
 

@@ -1,4 +1,4 @@
-#include "proofs/two_pass_triangle.hpp"
+#include "two_pass_triangle/two_pass_triangle.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-// proofs/two_pass_triangle.hpp — section 3.5's interpolated light vectors on whole triangles, as the
+// two_pass_triangle/two_pass_triangle.hpp — section 3.5's interpolated light vectors on whole triangles, as the
 // GS model sets them up (gs::gouraud_triangle), and the bound on how far a pixel's light can leave
 // the vertex lights' sphere.
 #pragma once
@@ -292,7 +292,7 @@ int bound_safe_s(const gs::model_options& o, bool attenuated = false);
 std::array<int, 2> reference_pixel(const std::array<int, 6>& xy16) noexcept;
 
 // The point w of (i), built from the geometry alone (the same w for every channel; --brute-force
-// checks (A)–(C) with it at full size, proofs/triangle_brute_force.hpp). lag_edge: the edge from
+// checks (A)–(C) with it at full size, two_pass_triangle/triangle_brute_force.hpp). lag_edge: the edge from
 // X, the first vertex of least x, to Y, the first vertex of least y, as offsets from r in 1/16
 // pixel: X = 16·r + (ξ, b_X), Y = 16·r + (a_Y, η), −16 < ξ, η <= 0.
 struct lag_edge {
