@@ -1,7 +1,7 @@
 // triangle_score.hpp — the exact score the certificate searches of tools/proofs_triangle share: a case's
 // covered pixels next to its vertices, each light through tt::pixel_light and the pixel through the
 // model's two-pass passes (two_pass::pixel), and the certificate row in the table's format
-// (src/proofs/two_pass_triangle/two_pass_triangle/two_pass_triangle.cpp).
+// (src/proofs/two_pass_triangle/certificates.csv).
 #pragma once
 
 #include <cstddef>

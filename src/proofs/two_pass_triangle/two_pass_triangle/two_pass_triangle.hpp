@@ -124,7 +124,7 @@ struct triangle_case {
 // |4·g| above 32767) keeps A's value.
 // tests/proofs replays each through the pipeline's rasteriser (the pixel is covered) and
 // gs::pixel_pipeline.
-std::span<const triangle_case> certificates() noexcept;
+std::span<const triangle_case> certificates();  // certificates.csv (two_pass_triangle/certificates.hpp)
 
 // The vertex colour of a packed light: 128 + l per channel, vertex alpha 0x80.
 gs::rgba8 light_colour(const ivec3& l) noexcept;
