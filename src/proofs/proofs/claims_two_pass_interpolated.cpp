@@ -105,6 +105,102 @@ outcome interpolated_brute_force(const gs::model_options&, const sweep_config& c
   return out;
 }
 
+// What interpolated_under found, for its note.
+struct findings {
+  int proven_safe, bound_safe, certified, first_wrap;
+  bool paper_wraps;
+  std::vector<int> wrapping_s;
+  double lowest_lag;
+  int limit;  // the least s of a relaxation witness above the threshold (0: none)
+  std::string limit_text;
+  bool next_bracketed;
+  two_pass::triangle::certify::next_s_survey next;
+  std::size_t normals;
+};
+
+std::string settled(const findings& f) {
+  return f.first_wrap > f.proven_safe + 1
+             ? "s = " + s_ranges({f.proven_safe + 1, f.first_wrap - 1}) + " is bracketed, not settled"
+             : std::string("the bound meets the lowest certificate");
+}
+
+// The note under a set-up other than plane_steps: how far a pixel's light is from the plane, the bound's s.
+std::string set_up_note(const gs::model_options& o, const findings& f) {
+  const std::string setup(gs::option_value(o, "gouraud_setup"));
+  const std::string w = std::to_string(two_pass::triangle::lag_window(o));
+  const std::string how =
+      o.setup == gs::gouraud_setup::per_pixel ? "the exact plane at every pixel, truncated to whole 8.7 units: a "
+                                                "pixel's light is within one unit per channel"
+      : o.setup == gs::gouraud_setup::per_pixel_level
+          ? "the exact plane plus 1/256 level floored to a whole level: within 128 units per channel"
+          : "each row from the plane at its first pixel, truncated 16-bit lane offsets and vector steps: within " + w +
+                " units per channel where no step saturates; where one does (a steep row's second vector) each "
+                "channel "
+                "takes a value between the row's first pixel's and its own, so the light is only in the cube of the "
+                "vertex lights' ball";
+  return "under gouraud_setup=" + setup + " (" + how +
+         ") of a convex combination of the vertex lights; the bound "
+         "(two_pass_triangle's lag_window = " +
+         w + ") proves no s <= " + std::to_string(f.proven_safe) +
+         " wraps; wraps are certified at s = " + s_ranges(f.wrapping_s) +
+         " (the lowest, s = " + std::to_string(f.first_wrap) + "); " + settled(f) +
+         ". The paper's s = " + std::to_string(paper_s) +
+         (f.paper_wraps              ? " wraps"
+          : f.proven_safe >= paper_s ? " is safe"
+                                     : " is not settled") +
+         " under this set-up";
+}
+
+// The note under plane_steps: the lag, the bound and its certified relaxation, the certificates, the searches.
+std::string plane_steps_note(const findings& f) {
+  char lag_text[16];
+  std::snprintf(lag_text, sizeof lag_text, "%.1f", f.lowest_lag);
+  const std::string certified_text =
+      f.certified > f.bound_safe
+          ? "; for the classes it leaves open (|n| sorted, wrap side) up to s = " + std::to_string(f.certified) +
+                " the continuous relaxation of its per-channel statements (real vertices, real lights in the ball) is "
+                "certified "
+                "below the wrap threshold: a dual with the alignment signs as constraints over rectangles of the five "
+                "geometry "
+                "families, checked in exact integers (two_pass_triangle/triangle_certify.hpp; run by ctest "
+                "proofs_certify_survey, "
+                "not by "
+                "prove: ~40 s under keep_fraction, ~60 s under truncate_to_8)"
+          : std::string();
+  return "on whole triangles the paper's s = " + std::to_string(paper_s) +
+         (f.paper_wraps ? " wraps" : " is not shown to wrap") +
+         ": a pixel ~2030 pixels from the plane's reference pixel "
+         "misses the truncated fraction of each 8.7 step, up to 16 levels per channel and axis, and that pushes its "
+         "light "
+         "out of the vertex sphere along the normal. Wraps are certified at s = " +
+         s_ranges(f.wrapping_s) +
+         " (certificates, each a refutation at its s; the lowest s = " + std::to_string(f.first_wrap) +
+         "). No s <= " + std::to_string(f.proven_safe) +
+         " wraps: the error bound (one axis's lag, 16 levels, per channel; two axes' only on "
+         "channels whose plane falls along both axes, and not on all channels at once, and then weighed against a "
+         "second "
+         "point of the vertex lights' ball that the falling plane passes) proves s <= " +
+         std::to_string(f.bound_safe) + " for every normal" + certified_text + ". " + settled(f) +
+         (f.next_bracketed ? " (at s = " + std::to_string(f.next.s) + " the relaxation certifies all but " +
+                                 std::to_string(f.next.uncertified) + " of the " + std::to_string(f.next.classes) +
+                                 " classes the bound leaves open, ctest proofs_certify_next_s: "
+                                 "a wrap there needs one of their " +
+                                 std::to_string(f.next.normals) + " normals, of the " + std::to_string(f.normals) + ")"
+                           : std::string()) +
+         ": the lowest certificate (s = " + std::to_string(f.first_wrap) + ") puts its pixel's light " + lag_text +
+         " levels from the light of the vertex next to it" +
+         (f.lowest_lag > 2047.0 / 128 ? " (more than one axis's 2047/128: its plane lags along both axes)"
+                                      : " (one axis's lag)") +
+         "; the searches (tools/proofs_triangle two-axis, corner and steep; the local search, steep's planners and "
+         "the free-x search of commit 9f63566's bench/proofs_triangle_*) found no wrap below " +
+         std::to_string(f.first_wrap) + "." + f.limit_text +
+         (f.limit > 0 ? std::string(", so s = ") + std::to_string(f.limit) +
+                            " and above can only be settled with the lattice (integer "
+                            "lights, the whole-unit steps' lattice of gradients, 12.4 vertices; the floors' and the "
+                            "truncation's integer slack are in the bound already)"
+                      : std::string());
+}
+
 outcome interpolated_under(const gs::model_options& o, const sweep_config& cfg) {
   // Domain: every triangle the GS can draw in its 2048² window (vertices in 12.4), three vertex
   // lights of L_s (packed_lights), every pixel it covers, the light from gs::gouraud_triangle with
@@ -168,8 +264,6 @@ outcome interpolated_under(const gs::model_options& o, const sweep_config& cfg) 
     for (std::size_t ch = 0; ch < 3; ++ch)
       lowest_lag = std::max(lowest_lag, std::abs(Lc[ch] / 128.0 - 128 - c.light[near][ch]));
   }
-  char lag_text[16];
-  std::snprintf(lag_text, sizeof lag_text, "%.1f", lowest_lag);
   const bool paper_wraps = std::find(wrapping_s.begin(), wrapping_s.end(), paper_s) != wrapping_s.end();
   // How far the bound's own statements can go: the least s of a relaxation witness (real geometry,
   // real lights in the ball) above the threshold under this option (triangle_relaxation.hpp). The
@@ -216,79 +310,9 @@ outcome interpolated_under(const gs::model_options& o, const sweep_config& cfg) 
                  fig("s_max_upper_classes_uncertified", next.uncertified),
                  fig("s_max_upper_normals", next.normals)};
   out.witnesses = std::move(witnesses);
-  const std::string settled = first_wrap > proven_safe + 1
-                                  ? "s = " + s_ranges({proven_safe + 1, first_wrap - 1}) + " is bracketed, not settled"
-                                  : std::string("the bound meets the lowest certificate");
-  if (per_pixel) {
-    const std::string setup(gs::option_value(o, "gouraud_setup"));
-    const std::string w = std::to_string(two_pass::triangle::lag_window(o));
-    const std::string how =
-        o.setup == gs::gouraud_setup::per_pixel ? "the exact plane at every pixel, truncated to whole 8.7 units: a "
-                                                  "pixel's light is within one unit per channel"
-        : o.setup == gs::gouraud_setup::per_pixel_level
-            ? "the exact plane plus 1/256 level floored to a whole level: within 128 units per channel"
-            : "each row from the plane at its first pixel, truncated 16-bit lane offsets and vector steps: within " +
-                  w +
-                  " units per channel where no step saturates; where one does (a steep row's second vector) each "
-                  "channel "
-                  "takes a value between the row's first pixel's and its own, so the light is only in the cube of the "
-                  "vertex lights' ball";
-    out.note = "under gouraud_setup=" + setup + " (" + how +
-               ") of a convex combination of the vertex lights; the bound "
-               "(two_pass_triangle's lag_window = " +
-               w + ") proves no s <= " + std::to_string(proven_safe) +
-               " wraps; wraps are certified at s = " + s_ranges(wrapping_s) +
-               " (the lowest, s = " + std::to_string(first_wrap) + "); " + settled +
-               ". The paper's s = " + std::to_string(paper_s) +
-               (paper_wraps              ? " wraps"
-                : proven_safe >= paper_s ? " is safe"
-                                         : " is not settled") +
-               " under this set-up";
-    return for_domain(std::move(out), cfg);
-  }
-  const std::string certified_text =
-      certified > bound_safe
-          ? "; for the classes it leaves open (|n| sorted, wrap side) up to s = " + std::to_string(certified) +
-                " the continuous relaxation of its per-channel statements (real vertices, real lights in the ball) is "
-                "certified "
-                "below the wrap threshold: a dual with the alignment signs as constraints over rectangles of the five "
-                "geometry "
-                "families, checked in exact integers (two_pass_triangle/triangle_certify.hpp; run by ctest "
-                "proofs_certify_survey, "
-                "not by "
-                "prove: ~40 s under keep_fraction, ~60 s under truncate_to_8)"
-          : std::string();
-  out.note =
-      "on whole triangles the paper's s = " + std::to_string(paper_s) +
-      (paper_wraps ? " wraps" : " is not shown to wrap") +
-      ": a pixel ~2030 pixels from the plane's reference pixel "
-      "misses the truncated fraction of each 8.7 step, up to 16 levels per channel and axis, and that pushes its light "
-      "out of the vertex sphere along the normal. Wraps are certified at s = " +
-      s_ranges(wrapping_s) +
-      " (certificates, each a refutation at its s; the lowest s = " + std::to_string(first_wrap) +
-      "). No s <= " + std::to_string(proven_safe) +
-      " wraps: the error bound (one axis's lag, 16 levels, per channel; two axes' only on "
-      "channels whose plane falls along both axes, and not on all channels at once, and then weighed against a second "
-      "point of the vertex lights' ball that the falling plane passes) proves s <= " +
-      std::to_string(bound_safe) + " for every normal" + certified_text + ". " + settled +
-      (next_bracketed ? " (at s = " + std::to_string(next.s) + " the relaxation certifies all but " +
-                            std::to_string(next.uncertified) + " of the " + std::to_string(next.classes) +
-                            " classes the bound leaves open, ctest proofs_certify_next_s: "
-                            "a wrap there needs one of their " +
-                            std::to_string(next.normals) + " normals, of the " + std::to_string(normals.size()) + ")"
-                      : std::string()) +
-      ": the lowest certificate (s = " + std::to_string(first_wrap) + ") puts its pixel's light " + lag_text +
-      " levels from the light of the vertex next to it" +
-      (lowest_lag > 2047.0 / 128 ? " (more than one axis's 2047/128: its plane lags along both axes)"
-                                 : " (one axis's lag)") +
-      "; the searches (tools/proofs_triangle two-axis, corner and steep; the local search, steep's planners and "
-      "the free-x search of commit 9f63566's bench/proofs_triangle_*) found no wrap below " +
-      std::to_string(first_wrap) + "." + limit_text +
-      (limit > 0 ? std::string(", so s = ") + std::to_string(limit) +
-                       " and above can only be settled with the lattice (integer "
-                       "lights, the whole-unit steps' lattice of gradients, 12.4 vertices; the floors' and the "
-                       "truncation's integer slack are in the bound already)"
-                 : std::string());
+  const findings f{proven_safe, bound_safe, certified,  first_wrap,     paper_wraps, wrapping_s,
+                   lowest_lag,  limit,      limit_text, next_bracketed, next,        normals.size()};
+  out.note = per_pixel ? set_up_note(o, f) : plane_steps_note(f);
   return for_domain(std::move(out), cfg);
 }
 
