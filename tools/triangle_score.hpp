@@ -106,7 +106,7 @@ inline found explore(const proofs::two_pass::triangle::triangle_case& c, int sid
   return best;
 }
 
-// One certificate row, as in two_pass_triangle.cpp's table (the pixel from `at`); `what` names the
+// One certificate row: certificates.csv's first twenty columns, in order (the pixel from `at`); `what` names the
 // row in its heading ("wrap", or "best" for a search's best case that does not wrap).
 inline void print_certificate_row(const proofs::two_pass::triangle::triangle_case& k, const scored& at,
                                   const char* option, const char* what = "wrap") {

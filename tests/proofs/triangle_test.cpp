@@ -585,7 +585,7 @@ TEST(Triangle, PerPixelTruncatedSafeSIsWhatTheInequalityGives) {
   // The dobiestation profile (per_pixel with truncate_to_8): the same inequality in doubles with the
   // multiply's floor adding up to 127/128 level on each channel against the side (n_c < 0 at the top,
   // > 0 at the bottom). Every normal is safe at bound_safe_s = 123 that way, and some normal is not
-  // at 124 (where the certificate of two_pass_triangle.cpp wraps).
+  // at 124 (where the certificate of certificates.csv wraps).
   gs::model_options o{.setup = gs::gouraud_setup::plane_steps};
   o.setup = gs::gouraud_setup::per_pixel;
   o.gouraud = gs::gouraud_fraction::truncate_to_8;
