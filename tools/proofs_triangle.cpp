@@ -1,5 +1,5 @@
 // proofs_triangle — re-derives the stored verdicts of two-pass.max-s.interpolated's triangle search
-// (src/proofs): the certificate rows of two_pass_triangle.cpp, the relaxation witnesses of
+// (src/proofs): the certificate rows of two_pass_triangle/certificates.csv, the relaxation witnesses of
 // triangle_relaxation.cpp and the certified bound of relaxation_classes.hpp. Not a test and not
 // part of `gsdot3 prove`: the tool that finds what the ledger stores (tools/README.md lists which
 // subcommand re-derives which row). Built with -DGSDOT3_TOOLS=ON.

@@ -24,7 +24,7 @@
 
 #include "proofs/domains.hpp"
 #include "proofs/two_pass.hpp"
-#include "proofs/two_pass_triangle.hpp"
+#include "two_pass_triangle/two_pass_triangle.hpp"
 #include "triangle_args.hpp"
 
 namespace p = gsdot3::proofs;

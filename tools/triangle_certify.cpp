@@ -1,6 +1,6 @@
 // proofs_triangle certify, certify-class — a certified upper bound on the continuous relaxation of
 // two-pass.max-s.interpolated's error bound, class by class: the branch and bound of
-// proofs/triangle_certify.hpp (its header: the sign-constrained dual, why a fixed dual point certifies a
+// two_pass_triangle/triangle_certify.hpp (its header: the sign-constrained dual, why a fixed dual point certifies a
 // whole rectangle of geometries from its four corners, and the exact integer check). Not a benchmark
 // and not a test; reproducible (no randomness). A class that closes is proven safe at S and every
 // s <= S by the bound's statements (the ball of radius s lies in that of S, the threshold does not
@@ -50,8 +50,8 @@
 #include <memory>
 #include <vector>
 
-#include "proofs/relaxation_classes.hpp"
-#include "proofs/triangle_certify.hpp"
+#include "two_pass_triangle/relaxation_classes.hpp"
+#include "two_pass_triangle/triangle_certify.hpp"
 #include "triangle_args.hpp"
 
 namespace tc = gsdot3::proofs::two_pass::triangle::certify;

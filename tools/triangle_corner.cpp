@@ -3,13 +3,12 @@
 // re-verified by the claim and replayed through the rasteriser in tests/proofs/triangle_test.cpp.
 //
 //   proofs_triangle corner S [--truncate-to-8] [CANDIDATES]
-// The corner model (case (ii) of the bound in src/proofs/proofs/two_pass_triangle.hpp at its
-// extreme): X = (0, yX), Y = (xY, 0), Z = (xZ, yZ) near the window's corners, so the reference pixel
-// is r = (0, 0) and the pixel p next to Z lies ~2046 pixels from it along both axes. X and Y carry
-// the light u, Z the light v. On two channels (the lag channels) u = v + 16·σ_c (σ_c the wrap side's
-// sign): with Z and X's y, Y's x moved by sub-pixel amounts both steps are just below one unit per
-// pixel and truncate to 0, so the pixel keeps the plane's value at r, u + ~15.98 levels (~2046
-// units: both axes' lag, 32 levels above v). The third channel keeps v less what its steps'
+// The corner model (case (ii) of the bound in src/proofs/two_pass_triangle/two_pass_triangle/two_pass_triangle.hpp at
+// its extreme): X = (0, yX), Y = (xY, 0), Z = (xZ, yZ) near the window's corners, so the reference pixel is r = (0, 0)
+// and the pixel p next to Z lies ~2046 pixels from it along both axes. X and Y carry the light u, Z the light v. On two
+// channels (the lag channels) u = v + 16·σ_c (σ_c the wrap side's sign): with Z and X's y, Y's x moved by sub-pixel
+// amounts both steps are just below one unit per pixel and truncate to 0, so the pixel keeps the plane's value at r, u
+// + ~15.98 levels (~2046 units: both axes' lag, 32 levels above v). The third channel keeps v less what its steps'
 // truncation loses (its difference u − v is free, u on the shell next to the lag channels; with both
 // lag steps just below 1 it loses most of a level on one axis, see two_pass_triangle.hpp).
 //   1. Candidates: for every Appendix 2 normal the bound does not settle at S, both wrap sides and
@@ -42,7 +41,7 @@
 
 #include "proofs/domains.hpp"
 #include "proofs/two_pass.hpp"
-#include "proofs/two_pass_triangle.hpp"
+#include "two_pass_triangle/two_pass_triangle.hpp"
 #include "triangle_args.hpp"
 #include "triangle_score.hpp"
 

@@ -34,8 +34,8 @@
 
 #include "proofs/domains.hpp"
 #include "proofs/two_pass.hpp"
-#include "proofs/two_pass_triangle.hpp"
-#include "proofs/triangle_relaxation.hpp"
+#include "two_pass_triangle/two_pass_triangle.hpp"
+#include "two_pass_triangle/triangle_relaxation.hpp"
 #include "triangle_args.hpp"
 
 namespace p = gsdot3::proofs;

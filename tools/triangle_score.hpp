@@ -1,7 +1,7 @@
 // triangle_score.hpp — the exact score the certificate searches of tools/proofs_triangle share: a case's
 // covered pixels next to its vertices, each light through tt::pixel_light and the pixel through the
 // model's two-pass passes (two_pass::pixel), and the certificate row in the table's format
-// (src/proofs/proofs/two_pass_triangle.cpp).
+// (src/proofs/two_pass_triangle/certificates.csv).
 #pragma once
 
 #include <cstddef>
@@ -12,7 +12,7 @@
 #include "pipeline/raster.hpp"
 #include "proofs/paper_code.hpp"
 #include "proofs/two_pass.hpp"
-#include "proofs/two_pass_triangle.hpp"
+#include "two_pass_triangle/two_pass_triangle.hpp"
 
 namespace gsdot3::tools {
 
@@ -106,7 +106,7 @@ inline found explore(const proofs::two_pass::triangle::triangle_case& c, int sid
   return best;
 }
 
-// One certificate row, as in two_pass_triangle.cpp's table (the pixel from `at`); `what` names the
+// One certificate row: certificates.csv's first twenty columns, in order (the pixel from `at`); `what` names the
 // row in its heading ("wrap", or "best" for a search's best case that does not wrap).
 inline void print_certificate_row(const proofs::two_pass::triangle::triangle_case& k, const scored& at,
                                   const char* option, const char* what = "wrap") {

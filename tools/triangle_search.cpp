@@ -2,7 +2,7 @@
 // (src/proofs/proofs/claims_two_pass.cpp) at s = 100 and 122..125. Not a test: a reproducible tool.
 //
 //   proofs_triangle search S [--truncate-to-8]
-// The construction (argument in src/proofs/proofs/two_pass_triangle.hpp): a right triangle
+// The construction (argument in src/proofs/two_pass_triangle/two_pass_triangle/two_pass_triangle.hpp): a right triangle
 // A = (W, 0), B = (0, H), C = (W, H) in the 2048² window, so the plane's reference pixel (the
 // bounding box's top-left, as the pipeline sets it up) is the bbox corner (0, 0) and a pixel next to
 // A lies a ≈ W pixels from it. Its x step per channel is trunc(128·(l_C − l_B)/W): the truncated
@@ -22,7 +22,7 @@
 #include "pipeline/raster.hpp"
 #include "proofs/methods.hpp"
 #include "proofs/two_pass.hpp"
-#include "proofs/two_pass_triangle.hpp"
+#include "two_pass_triangle/two_pass_triangle.hpp"
 #include "triangle_args.hpp"
 
 namespace p = gsdot3::proofs;

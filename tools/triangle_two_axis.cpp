@@ -1,7 +1,7 @@
 // proofs_triangle two-axis — triangle certificates of two-pass.max-s.interpolated whose pixel lags
-// along both axes (src/proofs/proofs/two_pass_triangle.hpp, case (ii) of the bound). Not a benchmark
-// and not a test: a reproducible tool; every row it prints is re-verified by the claim and replayed
-// through the rasteriser in tests/proofs/triangle_test.cpp.
+// along both axes (src/proofs/two_pass_triangle/two_pass_triangle/two_pass_triangle.hpp, case (ii) of the bound). Not a
+// benchmark and not a test: a reproducible tool; every row it prints is re-verified by the claim and replayed through
+// the rasteriser in tests/proofs/triangle_test.cpp.
 //
 //   proofs_triangle two-axis S [--truncate-to-8]
 // The construction: X = (0, E), Y = (E, 0), Z = (E, E) (12.4, E = 32752: the reference pixel is the
@@ -21,7 +21,7 @@
 #include "pipeline/raster.hpp"
 #include "proofs/domains.hpp"
 #include "proofs/two_pass.hpp"
-#include "proofs/two_pass_triangle.hpp"
+#include "two_pass_triangle/two_pass_triangle.hpp"
 #include "triangle_args.hpp"
 
 namespace p = gsdot3::proofs;

@@ -152,7 +152,8 @@ void add_prove_command(CLI::App& app, context& ctx) {
   cmd->add_flag(
       "--brute-force", args->brute_force,
       "Claims with a direct enumeration beside their reduction run it instead. two-pass.max-s.interpolated: "
-      "the bound's per-channel statements (proofs/triangle_brute_force.hpp), for every channel c and both wrap "
+      "the bound's per-channel statements (two_pass_triangle/triangle_brute_force.hpp), for every channel c and both "
+      "wrap "
       "sides sigma, exact against the rational plane P_c; a channel is aligned on an axis where sigma times its "
       "exact gradient is < 0, p = r + (a, b) from the reference pixel r: (A) sigma*L_c(p) < sigma*P_c(p) + W where the "
       "channel is aligned on at most one axis, (B) < "

@@ -1,5 +1,5 @@
 // What the certified relaxation step of two-pass.max-s.interpolated leaves at the next s
-// (proofs/relaxation_classes.hpp uncertified_next_s, which prove reports): the whole survey at
+// (two_pass_triangle/relaxation_classes.hpp uncertified_next_s, which prove reports): the whole survey at
 // certified_relaxation_s + 1, re-run here because it takes ~2.5 min per gouraud_fraction value. The
 // classes that stay uncertified, and the normals in them, are the same under every tfx_rounding ×
 // blend_shift value; the counts and the normals are prove's figures; the relaxation witness at that s
@@ -16,8 +16,8 @@
 #include <vector>
 
 #include "proofs/paper_code.hpp"
-#include "proofs/relaxation_classes.hpp"
-#include "proofs/triangle_relaxation.hpp"
+#include "two_pass_triangle/relaxation_classes.hpp"
+#include "two_pass_triangle/triangle_relaxation.hpp"
 #include "proofs/two_pass.hpp"
 
 namespace tc = gsdot3::proofs::two_pass::triangle::certify;

@@ -1,4 +1,4 @@
-// The certified relaxation step of two-pass.max-s.interpolated (proofs/relaxation_classes.hpp), re-run
+// The certified relaxation step of two-pass.max-s.interpolated (two_pass_triangle/relaxation_classes.hpp), re-run
 // in full: prove takes certified_relaxation_s (83 under keep_fraction, 82 under truncate_to_8) because
 // the branch and bound over every open class takes ~23 s per gouraud_fraction value. Here the open
 // classes at that s are the same under every value of the claim's other options (so certifying them
@@ -10,8 +10,8 @@
 #include <set>
 #include <tuple>
 
-#include "proofs/relaxation_classes.hpp"
-#include "proofs/triangle_relaxation.hpp"
+#include "two_pass_triangle/relaxation_classes.hpp"
+#include "two_pass_triangle/triangle_relaxation.hpp"
 
 namespace tc = gsdot3::proofs::two_pass::triangle::certify;
 namespace tt = gsdot3::proofs::two_pass::triangle;

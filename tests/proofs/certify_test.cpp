@@ -14,9 +14,9 @@
 
 #include "proofs/paper_code.hpp"
 #include "proofs/two_pass.hpp"
-#include "proofs/two_pass_triangle.hpp"
-#include "proofs/triangle_certify.hpp"
-#include "proofs/triangle_relaxation.hpp"
+#include "two_pass_triangle/two_pass_triangle.hpp"
+#include "two_pass_triangle/triangle_certify.hpp"
+#include "two_pass_triangle/triangle_relaxation.hpp"
 
 namespace p = gsdot3::proofs;
 namespace tt = gsdot3::proofs::two_pass::triangle;

@@ -11,7 +11,7 @@
 #include <random>
 
 #include "gs_arith/gouraud.hpp"
-#include "proofs/two_pass_triangle.hpp"
+#include "two_pass_triangle/two_pass_triangle.hpp"
 
 namespace {
 namespace tt = gsdot3::proofs::two_pass::triangle;

@@ -14,7 +14,7 @@
 #include "proofs/claim.hpp"
 #include "proofs/runner.hpp"
 #include "proofs/shard.hpp"
-#include "proofs/triangle_brute_force.hpp"
+#include "two_pass_triangle/triangle_brute_force.hpp"
 
 namespace p = gsdot3::proofs;
 

@@ -20,9 +20,9 @@
 #include "pipeline/raster.hpp"
 #include "proofs/domains.hpp"
 #include "proofs/two_pass.hpp"
-#include "proofs/triangle_brute_force.hpp"
-#include "proofs/two_pass_triangle.hpp"
-#include "proofs/triangle_relaxation.hpp"
+#include "two_pass_triangle/triangle_brute_force.hpp"
+#include "two_pass_triangle/two_pass_triangle.hpp"
+#include "two_pass_triangle/triangle_relaxation.hpp"
 #include "reference.hpp"
 
 namespace p = gsdot3::proofs;
@@ -215,7 +215,7 @@ namespace {
 //   (B) aligned on both:           σ·(L_c − P_c(p)) < 1 + a + b;
 //   (C) aligned on both:           σ·L_c < σ·P_c(w) + W (w = p: then also a + b < max(a_Y, b_X)),
 // and w in the closed triangle. Summing them with weights |n_c| gives (i)–(iii) for every normal.
-// Written apart from proofs/triangle_brute_force.cpp (the pixel set by edge functions or the
+// Written apart from two_pass_triangle/triangle_brute_force.cpp (the pixel set by edge functions or the
 // pipeline's rasteriser, the light by tt::pixel_light per pixel, P_c(w) as the convex combination
 // of two vertex values, the statements spelled out), so the brute force is checked against it.
 enum class pixel_set { covered, closed_triangle };
@@ -585,7 +585,7 @@ TEST(Triangle, PerPixelTruncatedSafeSIsWhatTheInequalityGives) {
   // The dobiestation profile (per_pixel with truncate_to_8): the same inequality in doubles with the
   // multiply's floor adding up to 127/128 level on each channel against the side (n_c < 0 at the top,
   // > 0 at the bottom). Every normal is safe at bound_safe_s = 123 that way, and some normal is not
-  // at 124 (where the certificate of two_pass_triangle.cpp wraps).
+  // at 124 (where the certificate of certificates.csv wraps).
   gs::model_options o{.setup = gs::gouraud_setup::plane_steps};
   o.setup = gs::gouraud_setup::per_pixel;
   o.gouraud = gs::gouraud_fraction::truncate_to_8;

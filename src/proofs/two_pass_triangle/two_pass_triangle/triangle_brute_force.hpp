@@ -1,4 +1,4 @@
-// proofs/triangle_brute_force.hpp — `gsdot3 prove --claim two-pass.max-s.interpolated --brute-force`:
+// two_pass_triangle/triangle_brute_force.hpp — `gsdot3 prove --claim two-pass.max-s.interpolated --brute-force`:
 // the per-channel statements the bound of two_pass_triangle.hpp sums (its (i)–(iii)), checked
 // directly at full size, every pixel, channel and wrap side, against the exact rational plane.
 //
@@ -25,7 +25,7 @@
 #include <vector>
 
 #include "proofs/sweep.hpp"
-#include "proofs/two_pass_triangle.hpp"
+#include "two_pass_triangle/two_pass_triangle.hpp"
 #include "proofs/verdict.hpp"
 
 namespace gsdot3::proofs::two_pass::triangle {

@@ -1,4 +1,4 @@
-// proofs/triangle_relaxation.hpp — how far the error bound of two-pass.max-s.interpolated can go:
+// two_pass_triangle/triangle_relaxation.hpp — how far the error bound of two-pass.max-s.interpolated can go:
 // the continuous relaxation of its per-channel statements, and the witnesses that it admits a wrap.
 //
 // The statements (two_pass_triangle.hpp): at a covered pixel p = r + (a, b), channel c with wrap-side

@@ -1,18 +1,18 @@
-#include "proofs/triangle_relaxation.hpp"
+#include "two_pass_triangle/triangle_relaxation.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
 
 #include "proofs/paper_code.hpp"
-#include "proofs/two_pass_triangle.hpp"
+#include "two_pass_triangle/two_pass_triangle.hpp"
 
 namespace gsdot3::proofs::two_pass::triangle {
 
 namespace {
 // One witness per gouraud_fraction value, at the lowest s found: keep_fraction, the top side of
 // n = (−89, −65, 65) (the normal of the s = 85 certificates), printed by `tools/proofs_triangle
-// relaxation 84 -89 -65 4 150` (lights to three decimals, as printed; proofs/relaxation_classes.hpp
+// relaxation 84 -89 -65 4 150` (lights to three decimals, as printed; two_pass_triangle/relaxation_classes.hpp
 // certifies s = 83); truncate_to_8, the bottom side of n = pack(67, 73), where `tools/proofs_triangle
 // certify 83 --truncate-to-8` stops first (class #0 of 303 that stop; `certify 83 --truncate-to-8 0 1`
 // prints it alone; lights to nine decimals, as printed; 0.018 levels·|n| over; s = 82 is certified).

@@ -1,4 +1,4 @@
-// proofs/triangle_certify.hpp — a certified upper bound on the continuous relaxation of
+// two_pass_triangle/triangle_certify.hpp — a certified upper bound on the continuous relaxation of
 // two-pass.max-s.interpolated's error bound (triangle_relaxation.hpp), over a rectangle of geometries
 // at once, by a dual with sign constraints checked in exact integers.
 //

@@ -1,4 +1,4 @@
-// proofs/two_pass_triangle.hpp — section 3.5's interpolated light vectors on whole triangles, as the
+// two_pass_triangle/two_pass_triangle.hpp — section 3.5's interpolated light vectors on whole triangles, as the
 // GS model sets them up (gs::gouraud_triangle), and the bound on how far a pixel's light can leave
 // the vertex lights' sphere.
 #pragma once
@@ -34,97 +34,10 @@ struct triangle_case {
   int px, py;
 };
 
-// Wrapping cases, with the tools/proofs_triangle command that finds each (tools/README.md; the
-// programs cited at a commit were dropped from the tree, `git show COMMIT:PATH` has them).
-// s = 100 and 122..125: found by `proofs_triangle search S` (its construction: a
-// right triangle whose x step fractions are near 1 and point along the normal, the pixel next to its
-// top-right vertex, ~2030 pixels from the plane's reference pixel), one per s it was run for
-// (s = 100 twice: `search 100` and `search 100 --truncate-to-8`). s = 98, one per gouraud_fraction:
-// found by the local search bench/proofs_triangle_anneal as it was at commit 2d5fcd4 (`98 1 300000` and
-// `98 truncate_to_8 14 1000000`; its later two-axis start changes those runs), again one axis of
-// lag (~2046 pixels).
-// s = 91 (`proofs_triangle two-axis 91`, with and without --truncate-to-8) and s = 90
-// (bench/proofs_triangle_anneal at commit f646b24, `90 3 300000` and `90 truncate_to_8 3 300000`,
-// started from the s = 91 row; at 9f63566 `90 3 300000` ends at 127): the pixel lags along both
-// axes, 15 levels per axis, on the two largest channels, the third keeping the plane level along the
-// normal (case (ii) of the bound below).
-// s = 89, one per gouraud_fraction: `proofs_triangle corner 89` and `corner 89 --truncate-to-8` (300
-// candidates each): the corner model's lattice candidates (X, Y ~2046 pixels from Z on either axis,
-// u = v + 16 levels on two channels), then the sub-pixel geometry that keeps both of their steps
-// just below one unit per pixel and a steepest ascent: the pixel keeps 31.9 levels of lag (~2046
-// units per axis) on those two channels; the third loses most of a level on one axis (X and Y
-// differ by 15 there, which no geometry with both lag steps below 1 makes lossless). The same tool
-// reaches 127 at s = 88 (`88`, 300 candidates) and 126 under truncate_to_8 (`88 --truncate-to-8`),
-// where its lattice candidates' predicted value (the truncated light is a flat one) tops out at 127.
-// s = 86, one per gouraud_fraction: `proofs_triangle steep 86 -79 -57 1 0 -20 -51 65 7 23
-// 880 940` and `steep 86 --truncate-to-8 -79 -57 1 0 -22 -50 65 7 23 860 900 6`, its start
-// values from bench/proofs_triangle_relaxation at commit 9f63566 (`57 79 83 86 300000 7`): X = (0, ~870), far above
-// the pixel's row. The two lag channels fall along both axes with steps just below one unit per
-// pixel (31.9 levels of lag, as at s = 89), and the third channel lags one axis too: its x step is
-// just below one unit and its y step an integer K = 7 (a steep rise towards Z's row that truncation
-// keeps), which lets P_c(pixel) on that channel sit ~50 levels from X's light; the third vertex Y,
-// ~7·880/128 levels away on that channel, pays for it. Case (ii) of the bound charges that channel
-// W over P_c(p) with nothing but the ball tying P(p) to the vertex lights, which is where the bound
-// and these certificates still differ (the relaxation's best at s = 86 for n = (−79, −57, 83) is
-// 16297 against the wrap threshold 16000 in n·level units; see the closing notes of issue 13).
-// s = 85, one per gouraud_fraction: the same construction, `proofs_triangle steep 85 -89 -65 1 0 -17
-// -59 59 4 26 750 775 6` (188 cases) and `steep 85 --truncate-to-8 -89 -65 1 0 -17 -59
-// 59 4 26 750 775 6` (190 cases), its start values from bench/proofs_triangle_plan at commit 9f63566
-// (`survey 85`: the
-// exact optimum of the truncated-step model, 16188 against 16000 for n = (−89, −65, 65), top side,
-// e = +1, with X = (0, ~761), K = 7, Z = p = (2047, 2047)). The earlier steep runs at s = 85 (best
-// 127) took D1 = 9 from the relaxation; with the plan's lights that puts Y inside the ball (|l_Y| ~ 80),
-// but a packed light sits on the shell: the plan's objective does not depend on xY, and moving Y =
-// (xY, 0) until |l_Y| = s gives D1 = 4.
-// s = 84, truncate_to_8 only: the same construction on the bottom side of an all-positive normal,
-// where the multiply's floor of each channel's light level (folded: the ceiling, all three σ_c =
-// −1) gives back up to a level per channel. bench/proofs_triangle_lattice at commit 9f63566 (`84
-// truncate_to_8 60 67 -1 2 16000 40`: the construction's integer data in the limit of its windows,
-// best F 16049 against 16000) and its first steep command with neighbouring normals, `proofs_triangle
-// steep 84 --truncate-to-8 60 67 -1 2 -53 -62 -19 6 25 828 832 1 60 200 2 0 124.5` (7 cases):
-// n = (61, 66, 91). The searches below, which found no wrap, are bench/ programs at commit 9f63566.
-// Under keep_fraction no case of the construction reaches the threshold at s = 84 (search results,
-// not a proof). bench/proofs_triangle_lattice finds F >= 16000 for none of the 65 weight classes of the
-// top 300 rows of `bench/proofs_triangle_plan survey 84` (the best of the top nine classes 15999.59, n =
-// (−87, −73, 59)), and its F counts a pixel on row 2047, which no triangle of the window covers
-// (tests/proofs/triangle_test.cpp): on row 2046 the third channel gets K·|n_3|/128 levels·|n| less.
-// bench/proofs_triangle_free_x frees every x step in (−1, 1) (Y's and Z's lights per channel, the
-// lag planes no longer equal) and puts the pixel on row 2046: `84 IX IY SIDE THIRD 15990 40 1 1 2000`
-// with THIRD = 0, 1, 2 for (IX, IY, SIDE) = (−73, −87, 1), (−69, −88, 1), (−63, −67, 1), (−63, −72,
-// 1), (−64, −66, 1), (−64, −71, 1), (−71, −85, 1), (−65, −65, 1), (−65, −89, 1), (−67, −86, 1),
-// (60, 67, −1), (61, 66, −1) (the |n| classes (59, 73, 87), (62, 69, 88), (63, 67, 89), (63, 72,
-// 85), (64, 66, 89), (64, 71, 85), (65, 65, 89), (67, 67, 86), (60, 67, 91), (61, 66, 91), each at a
-// sign pattern whose threshold is 16000) reaches F 15996.31 at best (n = (−63, −67, 89), third
-// channel 2; 15996.51 with Z at each of the 256 positions of (2046, 2047]², `84 -67 -63 1 2 15996
-// 40 1 1 10 1`), and the exact scorer 127 (n = (−73, −87, 59), with its neighbours and sign
-// patterns); so do the same runs for one normal of each of the 55 (|n| class, third channel) pairs of
-// the 249 rows of `bench/proofs_triangle_plan survey 84 400` with a positive margin (F_β >= 15990 for 16
-// of them, a stage-2 F >= 15990 for 3). A wrap needs F > 16000: the floors give back less than the
-// 2 (top) or 3 (bottom) that the threshold counts. Under truncate_to_8 at s = 83 the same runs (`83 truncate_to_8 IX IY
-// SIDE THIRD 15900 40 1 1 2000` for (61, 66, −1), (60, 67, −1), (−67, −63, 1), (−63, −67, 1), (−89, −65, 1)) reach F
-// 15944 at best (n = (60, 67, 91), bottom; exact value 127). s = 124, gouraud_setup=per_pixel with truncate_to_8 only
-// (the dobiestation profile): the exact plane's light at the pixel lies in the unit box of an integer light m = (−27,
-// −63, −105) just outside the packed shell, whose flat value is −129 for n = (24, 59, 111); the multiply's floor hands
-// it m. `proofs_triangle boxes 124` (1 088 normals open by the bound; this is the third of the
-// three rows it prints, the other two, for n = (23, 79, ·) and (23, 98, ·), wrap the same way; ~4 min
-// on one core).
-// s = 126: a flat triangle (three equal lights, the first witness of two-pass.max-s.vertex, n =
-// (−127, −15, 5), l = (−125, −15, 0)): every set-up gives its pixels that light exactly, so it wraps
-// under every option; it is the lowest wrap under gouraud_setup=per_pixel, where no pixel lags.
-// pcsx2_rows_8 (8 lanes), s = 110 and 122: a steep first row's second vector (two_pass_triangle.hpp's
-// argument above lag_window). Vertices at pixel centres: A = (1007, 1000), B = (1009, 1000), C = (1007,
-// 1002) with lights A, B, A; the row at y = 1000 starts at A, 1007 = 7 mod 8, so the pixel (1008, 1000),
-// whose exact light is (A + B)/2, is lane 0 of the next vector: on the channel whose lights differ by
-// >= 74 levels (|8·g| and |7·g| above 32767 units) the saturated offset and step give A's value back
-// (minus a unit), the other channels keep (A + B)/2, and that mix leaves the ball along n. Found by a
-// scan over sampled Appendix 2 normals, the steep channel set and the 200 best packed lights A and B by
-// that mix's n·light (a scratch search, not kept: the construction above is all it used).
-// pcsx2_rows_4, s = 100 and 122: the same with 4 lanes, A = (1003, 1000) (3 mod 4) and B = (1004 + 1/16, 1000),
-// so that P(1004, 1000) = A + (16/17)·(B − A) and the steep channel (lights >= 81 levels apart, |3·g| and
-// |4·g| above 32767) keeps A's value.
-// tests/proofs replays each through the pipeline's rasteriser (the pixel is covered) and
-// gs::pixel_pipeline.
-std::span<const triangle_case> certificates() noexcept;
+// The wrapping cases of certificates.csv (two_pass_triangle/certificates.hpp; README.md says how
+// each kind wraps and how to re-derive it). tests/proofs replays each through the pipeline's
+// rasteriser (the pixel is covered) and gs::pixel_pipeline.
+std::span<const triangle_case> certificates();  // certificates.csv (two_pass_triangle/certificates.hpp)
 
 // The vertex colour of a packed light: 128 + l per channel, vertex alpha 0x80.
 gs::rgba8 light_colour(const ivec3& l) noexcept;
@@ -292,7 +205,7 @@ int bound_safe_s(const gs::model_options& o, bool attenuated = false);
 std::array<int, 2> reference_pixel(const std::array<int, 6>& xy16) noexcept;
 
 // The point w of (i), built from the geometry alone (the same w for every channel; --brute-force
-// checks (A)–(C) with it at full size, proofs/triangle_brute_force.hpp). lag_edge: the edge from
+// checks (A)–(C) with it at full size, two_pass_triangle/triangle_brute_force.hpp). lag_edge: the edge from
 // X, the first vertex of least x, to Y, the first vertex of least y, as offsets from r in 1/16
 // pixel: X = 16·r + (ξ, b_X), Y = 16·r + (a_Y, η), −16 < ξ, η <= 0.
 struct lag_edge {

@@ -1,4 +1,4 @@
-// proofs/relaxation_classes.hpp — the step from the error bound (i)–(iii) of two_pass_triangle.hpp to
+// two_pass_triangle/relaxation_classes.hpp — the step from the error bound (i)–(iii) of two_pass_triangle.hpp to
 // the s two-pass.max-s.interpolated proves under gouraud_setup = plane_steps: the classes (|n| sorted,
 // wrap-side threshold) the bound's reach_units leaves open at s, each certified by triangle_certify's
 // branch and bound on the continuous relaxation of the bound's own statements. A class that closes is

@@ -1,4 +1,4 @@
-#include "proofs/triangle_brute_force.hpp"
+#include "two_pass_triangle/triangle_brute_force.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "proofs/relaxation_classes.hpp"
+#include "two_pass_triangle/relaxation_classes.hpp"
 
 #include <algorithm>
 #include <cstdlib>
@@ -7,10 +7,10 @@
 #include <tuple>
 
 #include "proofs/domains.hpp"
-#include "proofs/triangle_certify.hpp"
-#include "proofs/triangle_relaxation.hpp"
+#include "two_pass_triangle/triangle_certify.hpp"
+#include "two_pass_triangle/triangle_relaxation.hpp"
 #include "proofs/two_pass.hpp"
-#include "proofs/two_pass_triangle.hpp"
+#include "two_pass_triangle/two_pass_triangle.hpp"
 
 namespace gsdot3::proofs::two_pass::triangle::certify {
 
