@@ -29,12 +29,12 @@ bool well_formed(std::span<const field> fields) {
 TEST(RegisterTables, FieldsAreDisjointAndFitIn64Bits) {
   using table = std::span<const field>;
   for (const table r : std::initializer_list<table>{
-           PRIM::fields,    RGBAQ::fields,    ST::fields,     UV::fields,         XYZ2::fields,   XYZF2::fields,
-           TEX0::fields,    TEX1::fields,     TEXA::fields,   TEXCLUT::fields,    CLAMP::fields,  XYOFFSET::fields,
-           SCISSOR::fields, ALPHA::fields,    TEST::fields,   FRAME::fields,      ZBUF::fields,   FBA::fields,
-           PABE::fields,    COLCLAMP::fields, DTHE::fields,   PRMODECONT::fields, DIMX::fields,   BITBLTBUF::fields,
-           TRXPOS::fields,  TRXREG::fields,   TRXDIR::fields, PMODE::fields,      SMODE1::fields, SMODE2::fields,
-           SYNCV::fields,   DISPFB::fields,   DISPLAY::fields})
+           PRIM::fields,    RGBAQ::fields,    ST::fields,      UV::fields,         XYZ2::fields,   XYZF2::fields,
+           TEX0::fields,    TEX1::fields,     TEXA::fields,    TEXCLUT::fields,    CLAMP::fields,  XYOFFSET::fields,
+           SCISSOR::fields, ALPHA::fields,    TEST::fields,    FRAME::fields,      ZBUF::fields,   FBA::fields,
+           PABE::fields,    COLCLAMP::fields, DTHE::fields,    PRMODECONT::fields, DIMX::fields,   BITBLTBUF::fields,
+           TRXPOS::fields,  TRXREG::fields,   TRXDIR::fields,  PMODE::fields,      SMODE1::fields, SMODE2::fields,
+           SYNCV::fields,   DISPFB::fields,   DISPLAY::fields, SCANMSK::fields})
     EXPECT_TRUE(well_formed(r));
 }
 
@@ -51,6 +51,7 @@ TEST(RegisterTables, MasksMatchTheManual) {
   EXPECT_EQ(mask(CLAMP::fields), 0x00000FFFFFFFFFFFu);
   EXPECT_EQ(mask(XYOFFSET::fields), 0x0000FFFF0000FFFFu);
   EXPECT_EQ(mask(SCISSOR::fields), 0x07FF07FF07FF07FFu);
+  EXPECT_EQ(mask(SCANMSK::fields), 0x3u);
   EXPECT_EQ(mask(ALPHA::fields), 0x000000FF000000FFu);
   EXPECT_EQ(mask(TEST::fields), 0x7FFFFu);
   EXPECT_EQ(mask(FRAME::fields), 0xFFFFFFFF3F3F01FFu);

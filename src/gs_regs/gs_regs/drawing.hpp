@@ -45,6 +45,17 @@ inline constexpr field X{"X", 0, 16}, Y{"Y", 16, 16}, Z{"Z", 32, 32};
 inline constexpr field fields[] = {X, Y, Z};
 }  // namespace XYZ2
 
+// PRMODE: PRIM's attribute bits (IIP to FIX) without the primitive type, used while PRMODECONT.AC = 0.
+namespace PRMODE {
+inline constexpr field fields[] = {PRIM::IIP, PRIM::TME, PRIM::FGE,  PRIM::ABE,
+                                   PRIM::AA1, PRIM::FST, PRIM::CTXT, PRIM::FIX};
+}  // namespace PRMODE
+
+namespace FOG {
+inline constexpr field F{"F", 56, 8};
+inline constexpr field fields[] = {F};
+}  // namespace FOG
+
 namespace XYZF2 {
 inline constexpr field X{"X", 0, 16}, Y{"Y", 16, 16}, Z{"Z", 32, 24}, F{"F", 56, 8};
 inline constexpr field fields[] = {X, Y, Z, F};
@@ -60,9 +71,14 @@ inline constexpr field TBP0{"TBP0", 0, 14}, TBW{"TBW", 14, 6}, PSM{"PSM", 20, 6}
     TCC{"TCC", 34, 1}, TFX{"TFX", 35, 2}, CBP{"CBP", 37, 14}, CPSM{"CPSM", 51, 4}, CSM{"CSM", 55, 1}, CSA{"CSA", 56, 5},
     CLD{"CLD", 61, 3};
 inline constexpr field fields[] = {TBP0, TBW, PSM, TW, TH, TCC, TFX, CBP, CPSM, CSM, CSA, CLD};
-inline constexpr std::uint64_t TW_max = 10, TH_max = 10;        // texture sides are at most 2^10
+inline constexpr int TW_max = 10, TH_max = 10;                  // texture sides are at most 2^10
 inline constexpr std::uint64_t CPSM_valid[] = {0x0, 0x2, 0xA};  // PSMCT32, PSMCT16, PSMCT16S
 }  // namespace TEX0
+
+// TEX2: TEX0's PSM and CLUT fields at TEX0's positions (writing it changes only those of TEX0).
+namespace TEX2 {
+inline constexpr field fields[] = {TEX0::PSM, TEX0::CBP, TEX0::CPSM, TEX0::CSM, TEX0::CSA, TEX0::CLD};
+}  // namespace TEX2
 
 namespace TEX1 {
 inline constexpr field LCM{"LCM", 0, 1}, MXL{"MXL", 2, 3}, MMAG{"MMAG", 5, 1}, MMIN{"MMIN", 6, 3}, MTBA{"MTBA", 9, 1},
@@ -95,6 +111,12 @@ namespace SCISSOR {
 inline constexpr field SCAX0{"SCAX0", 0, 11}, SCAX1{"SCAX1", 16, 11}, SCAY0{"SCAY0", 32, 11}, SCAY1{"SCAY1", 48, 11};
 inline constexpr field fields[] = {SCAX0, SCAX1, SCAY0, SCAY1};
 }  // namespace SCISSOR
+
+namespace SCANMSK {
+inline constexpr field MSK{"MSK", 0, 2};
+inline constexpr field fields[] = {MSK};
+inline constexpr std::uint64_t MSK_reserved = 1;  // 0 normal, 2 odd rows off, 3 even rows off
+}  // namespace SCANMSK
 
 namespace ALPHA {
 inline constexpr field A{"A", 0, 2}, B{"B", 2, 2}, C{"C", 4, 2}, D{"D", 6, 2}, FIX{"FIX", 32, 8};

@@ -35,10 +35,22 @@ constexpr std::uint64_t mask(std::span<const field> fields) {
 // The field's value taken out of a register value.
 constexpr std::uint64_t decode(field f, std::uint64_t word) { return (word >> f.lo) & max_value(f); }
 
+// The field's value as the narrower unsigned type T the caller stores it in (T holds the field's width).
+template <typename T = std::uint32_t>
+constexpr T decode_as(field f, std::uint64_t word) {
+  return static_cast<T>(decode(f, word));
+}
+
 // The value placed at the field's bits; a value wider than the field is an error, not truncated.
 constexpr std::uint64_t encode(field f, std::uint64_t value) {
   if (value > max_value(f)) throw std::out_of_range("GS register field too narrow for the value");
   return value << f.lo;
+}
+
+// The value's low `width` bits placed at the field (the rest dropped, as the GS drops the bits a
+// narrower register field has no room for, e.g. a PACKED qword's 32-bit U in UV's 14-bit U).
+constexpr std::uint64_t encode_low_bits(field f, std::uint64_t value) noexcept {
+  return (value & max_value(f)) << f.lo;
 }
 
 // Whether a field's value is one the manual lists as valid (e.g. a PSM field's pixel formats).

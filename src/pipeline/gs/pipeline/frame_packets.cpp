@@ -15,6 +15,8 @@
 #include "gs_packets/packed.hpp"
 #include "gs_packets/packetiser.hpp"
 #include "gs_packets/video_mode.hpp"
+#include "gs_regs/drawing.hpp"
+#include "gs_regs/privileged.hpp"
 #include "pipeline/band_renderer.hpp"
 #include "pipeline/pass_table.hpp"
 
@@ -28,22 +30,32 @@ namespace pk = gs::packets;
 // The A+D addresses this stream writes (GS User's Manual register map; gs_registers.hpp's table).
 constexpr std::uint8_t address(std::string_view name) { return *pk::gs_register_address(name); }
 
-// Registers without a decoder in gs_arith / gs_memory, packed by their manual layouts (PCSX2
-// `GSRegs.h` REG64_ structs): XYOFFSET OFX 0-15, OFY 32-47; SCISSOR SCAX0 0-10, SCAX1 16-26, SCAY0
-// 32-42, SCAY1 48-58; TEX1 LCM 0, MXL 2-4, MMAG 5, MMIN 6-8, MTBA 9, L 19-20, K 32-43; PRMODECONT AC 0.
-constexpr std::uint64_t xyoffset(std::uint32_t ofx, std::uint32_t ofy) { return ofx | (std::uint64_t{ofy} << 32); }
-constexpr std::uint64_t scissor_reg(const scissor& r) {
-  return static_cast<std::uint64_t>(r.x0) | (static_cast<std::uint64_t>(r.x1 - 1) << 16) |
-         (static_cast<std::uint64_t>(r.y0) << 32) | (static_cast<std::uint64_t>(r.y1 - 1) << 48);
+// Registers without an encoder in gs_arith / gs_memory, packed by their field tables (gs_regs).
+namespace R = gs::regs;
+using R::encode;
+constexpr std::uint64_t xyoffset(std::uint32_t ofx, std::uint32_t ofy) {
+  return encode(R::XYOFFSET::OFX, ofx) | encode(R::XYOFFSET::OFY, ofy);
 }
-// LCM = 1 (LOD = K = 0: the base level), MXL = 0, MMAG = MMIN = the filter.
-constexpr std::uint64_t tex1(bool linear) { return 1u | (std::uint64_t{linear} << 5) | (std::uint64_t{linear} << 6); }
+constexpr std::uint64_t scissor_reg(const scissor& r) {
+  auto put = [](R::field f, int v) { return encode(f, static_cast<std::uint64_t>(v)); };
+  namespace S = R::SCISSOR;
+  return put(S::SCAX0, r.x0) | put(S::SCAX1, r.x1 - 1) | put(S::SCAY0, r.y0) | put(S::SCAY1, r.y1 - 1);
+}
+// LCM = 1 (LOD = K = 0: the base level), MXL = 0, MMAG = MMIN = the filter (1 LINEAR, 0 NEAREST).
+constexpr std::uint64_t tex1(bool linear) {
+  return encode(R::TEX1::LCM, 1) | encode(R::TEX1::MMAG, linear) | encode(R::TEX1::MMIN, linear);
+}
 
-// Privileged registers (GS User's Manual): PMODE EN1 0, EN2 1, CRTMD 2-4 (always 001), MMOD 5,
-// AMOD 6, SLBG 7, ALP 8-15; DISPFB FBP 0-8, FBW 9-14, PSM 15-19, DBX 32-42, DBY 43-53. DISPLAY1 and
-// the video mode's registers: gs_packets/video_mode.hpp.
-constexpr std::uint64_t pmode_circuit1() { return 1u | (1u << 2) | (1u << 5) | (0xFFu << 8); }
-constexpr std::uint64_t dispfb(std::uint32_t fbp, std::uint32_t fbw) { return fbp | (std::uint64_t{fbw} << 9); }
+// Privileged registers: PMODE with read circuit 1 on (EN1), CRTMD 001 (the manual's fixed value),
+// MMOD = 1 (blend with ALP = 0xFF: circuit 1 opaque); DISPFB1 at FBP, FBW (PSMCT32,
+// DBX = DBY = 0). DISPLAY1 and the video mode's registers: gs_packets/video_mode.hpp.
+constexpr std::uint64_t pmode_circuit1() {
+  namespace P = R::PMODE;
+  return encode(P::EN1, 1) | encode(P::CRTMD, 1) | encode(P::MMOD, 1) | encode(P::ALP, 0xFF);
+}
+constexpr std::uint64_t dispfb(std::uint32_t fbp, std::uint32_t fbw) {
+  return encode(R::DISPFB::FBP, fbp) | encode(R::DISPFB::FBW, fbw);
+}
 
 std::uint64_t rgbaq(gs::rgba8 c) { return gs::encode(gs::rgbaq_reg{c, 0x3F800000u}); }  // Q = 1.0
 
