@@ -14,9 +14,8 @@
 #include "gs_packets/gs_registers.hpp"
 #include "gs_packets/packed.hpp"
 #include "gs_packets/packetiser.hpp"
+#include "gs_packets/register_values.hpp"
 #include "gs_packets/video_mode.hpp"
-#include "gs_regs/drawing.hpp"
-#include "gs_regs/privileged.hpp"
 #include "pipeline/band_renderer.hpp"
 #include "pipeline/pass_table.hpp"
 
@@ -29,33 +28,6 @@ namespace pk = gs::packets;
 
 // The A+D addresses this stream writes (GS User's Manual register map; gs_registers.hpp's table).
 constexpr std::uint8_t address(std::string_view name) { return *pk::gs_register_address(name); }
-
-// Registers without an encoder in gs_arith / gs_memory, packed by their field tables (gs_regs).
-namespace R = gs::regs;
-using R::encode;
-constexpr std::uint64_t xyoffset(std::uint32_t ofx, std::uint32_t ofy) {
-  return encode(R::XYOFFSET::OFX, ofx) | encode(R::XYOFFSET::OFY, ofy);
-}
-constexpr std::uint64_t scissor_reg(const scissor& r) {
-  auto put = [](R::field f, int v) { return encode(f, static_cast<std::uint64_t>(v)); };
-  namespace S = R::SCISSOR;
-  return put(S::SCAX0, r.x0) | put(S::SCAX1, r.x1 - 1) | put(S::SCAY0, r.y0) | put(S::SCAY1, r.y1 - 1);
-}
-// LCM = 1 (LOD = K = 0: the base level), MXL = 0, MMAG = MMIN = the filter (1 LINEAR, 0 NEAREST).
-constexpr std::uint64_t tex1(bool linear) {
-  return encode(R::TEX1::LCM, 1) | encode(R::TEX1::MMAG, linear) | encode(R::TEX1::MMIN, linear);
-}
-
-// Privileged registers: PMODE with read circuit 1 on (EN1), CRTMD 001 (the manual's fixed value),
-// MMOD = 1 (blend with ALP = 0xFF: circuit 1 opaque); DISPFB1 at FBP, FBW (PSMCT32,
-// DBX = DBY = 0). DISPLAY1 and the video mode's registers: gs_packets/video_mode.hpp.
-constexpr std::uint64_t pmode_circuit1() {
-  namespace P = R::PMODE;
-  return encode(P::EN1, 1) | encode(P::CRTMD, 1) | encode(P::MMOD, 1) | encode(P::ALP, 0xFF);
-}
-constexpr std::uint64_t dispfb(std::uint32_t fbp, std::uint32_t fbw) {
-  return encode(R::DISPFB::FBP, fbp) | encode(R::DISPFB::FBW, fbw);
-}
 
 std::uint64_t rgbaq(gs::rgba8 c) { return gs::encode(gs::rgbaq_reg{c, 0x3F800000u}); }  // Q = 1.0
 
@@ -94,7 +66,7 @@ class stream {
     set(address("TRXREG"), gs::mem::encode(c->TRXREG));
     set(address("TRXDIR"), gs::mem::encode(lab_copy::TRXDIR));
   }
-  void clip(const scissor& r) { set(address("SCISSOR_1"), scissor_reg(r)); }
+  void clip(const scissor& r) { set(address("SCISSOR_1"), pk::scissor_value(r.x0, r.x1 - 1, r.y0, r.y1 - 1)); }
   // TEX0_1 (with the pass's TFX / TCC), TEX1_1, CLAMP_1.
   // cbp: the palette of a PSMT8 / PSMT8H texture, loaded (CLD = 1) unless `load` is false.
   void texture(const pass_regs& p, gs::mem::buffer at, int w, int h, std::optional<std::uint32_t> cbp, bool clamp,
@@ -112,7 +84,7 @@ class stream {
       t.CLD = gs::u3::from_wrapped(load ? 1 : 0);
     }
     set(address("TEX0_1"), gs::encode(t));
-    set(address("TEX1_1"), tex1(linear));
+    set(address("TEX1_1"), pk::tex1_value(linear, true));
     gs::mem::clamp_reg c;
     if (clamp) c.WMS = c.WMT = gs::mem::wrap_mode::CLAMP;
     set(address("CLAMP_1"), gs::mem::encode(region != nullptr ? *region : c));
@@ -238,7 +210,7 @@ frame_packets build_frame_packets(const scene& s, const prepared_scene& ps, meth
 
   // 1. Environment.
   g.set(address("PRMODECONT"), 1);
-  g.set(address("XYOFFSET_1"), xyoffset(16 * xy_offset_pixels, 16 * xy_offset_pixels));
+  g.set(address("XYOFFSET_1"), pk::xyoffset_value(16 * xy_offset_pixels, 16 * xy_offset_pixels));
   g.clip(g.frame());
   g.set(address("DTHE"), gs::encode(gs::dthe_reg{false}));
   g.set(address("PABE"), gs::encode(gs::pabe_reg{false}));
@@ -375,8 +347,8 @@ frame_packets build_frame_packets(const scene& s, const prepared_scene& ps, meth
   fp.gif = g.out.bytes();
   fp.triangles = g.triangles_written;
   fp.sprites = g.sprites_written;
-  fp.PMODE = pmode_circuit1();
-  fp.DISPFB1 = dispfb(OUT, b.fbw);
+  fp.PMODE = pk::pmode_circuit1();
+  fp.DISPFB1 = pk::dispfb_value(OUT, b.fbw);
   fp.width = ps.width;
   fp.height = ps.height;
   return fp;
