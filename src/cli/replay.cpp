@@ -91,11 +91,12 @@ struct args {
   model_args model;
 };
 
-void write_picture(const std::filesystem::path& file, const pipeline::image& img) {
+// Writes into the staging folder; prints the name the file has once the folder is committed (--out).
+void write_picture(const std::filesystem::path& file, const std::string& out, const pipeline::image& img) {
   try {
     pipeline::write_png(file, img);
   } catch (const std::runtime_error& e) { throw usage_error(e.what()); }
-  std::cout << file.string() << "\n";
+  std::cout << (std::filesystem::path(out) / file.filename()).string() << "\n";
 }
 
 void run(const args& a, context& ctx) {
@@ -140,7 +141,7 @@ void run(const args& a, context& ctx) {
   int compared = 0;
   if (disp.frame && disp.frame->width > 0 && disp.frame->height > 0) {
     const auto file = out->path() / "display.png";
-    write_picture(file,
+    write_picture(file, a.out,
                   picture(m, disp.frame->buffer, disp.frame->x, disp.frame->y, disp.frame->width, disp.frame->height));
     if (!a.expect.empty()) compared = compare_pngs(file.string(), a.expect, a.heat, 10, std::cout) == 0 ? 0 : 1;
   }
@@ -155,7 +156,7 @@ void run(const args& a, context& ctx) {
     const auto file = out->path() / ("buffer_" + std::to_string(b.fbp) + "_" + std::to_string(b.fbw) + "_" +
                                      std::string(mem::name_of(b.psm)) + ".png");
     const mem::buffer buf{fixed::uint<14>::from_wrapped(b.fbp * 32), fixed::uint<6>::from_wrapped(b.fbw), b.psm};
-    write_picture(file, picture(m, buf, 0, 0, 64 * b.fbw, h));
+    write_picture(file, a.out, picture(m, buf, 0, 0, 64 * b.fbw, h));
   }
   try {
     out->commit();

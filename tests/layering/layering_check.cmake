@@ -8,6 +8,7 @@
 # table fails the check.
 set(layers
   "fixed" 0
+  "gs_regs" 5
   "normal_encoding" 10 "powervr" 10 "valve" 10
   "gs_arith" 20
   "gs_memory" 30 "gs_methods" 30 "gs_simd" 30 "vectors" 30

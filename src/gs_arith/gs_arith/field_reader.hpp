@@ -1,16 +1,19 @@
 // gs_arith/field_reader.hpp — the fields of a 64-bit GS register value, for the strict decoders and
 // the encoders of gs_arith/registers.cpp and gs_memory/memory_registers.cpp: each field taken by its
 // low bit and width as the GS manual lays the register out, every bit outside the fields checked to
-// be 0, errors (gs::register_error) naming the register, the field and the value in hex.
+// be 0 (the field tables are gs_regs/drawing.hpp's), errors (gs::register_error) naming the register, the field and the
+// value in hex.
 #pragma once
 
 #include <cstdint>
 #include <cstdio>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 
 #include "fixed/integer.hpp"
 #include "gs_arith/registers.hpp"
+#include "gs_regs/field.hpp"
 
 namespace gs {
 
@@ -18,15 +21,16 @@ namespace gs {
 class field_reader {
  public:
   field_reader(std::string_view reg, std::uint64_t v) : reg_(reg), v_(v) {}
-  std::uint64_t take(int lo, int width) {
-    const std::uint64_t mask = width == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << width) - 1;
-    used_ |= mask << lo;
-    return (v_ >> lo) & mask;
+  std::uint64_t take(regs::field f) {
+    used_ |= regs::mask(f);
+    return regs::decode(f, v_);
   }
-  bool bit(int lo) { return take(lo, 1) != 0; }
+  bool bit(regs::field f) { return take(f) != 0; }
+  // A field of width N as its fixed-width type (N is the table's width: a mismatch is a coding error).
   template <int N>
-  fixed::uint<N> uint(int lo) {
-    return fixed::uint<N>::from_wrapped(take(lo, N));
+  fixed::uint<N> uint(regs::field f) {
+    if (f.width != N) throw std::logic_error("field_reader::uint: width differs from the field table's");
+    return fixed::uint<N>::from_wrapped(take(f));
   }
   [[noreturn]] void fail(std::string_view field, std::uint64_t value, std::string_view why) const {
     throw register_error(std::string(reg_) + "." + std::string(field) + " = " + hex(value) + ": " + std::string(why));
@@ -59,5 +63,11 @@ std::uint64_t bits(fixed::uint<N> v) {
   return static_cast<std::uint64_t>(v.value());
 }
 }  // namespace field_bits
+
+// A register value's field from the table: regs::encode of the field's bits.
+template <typename T>
+std::uint64_t place(regs::field f, T v) {
+  return regs::encode(f, field_bits::bits(v));
+}
 
 }  // namespace gs

@@ -13,13 +13,12 @@
 #include "gs_memory/memory_registers.hpp"
 #include "gs_memory/psm_names.hpp"
 #include "gs_memory/texture_wrap.hpp"
+#include "gs_regs/drawing.hpp"
 
 namespace gs::cost {
 namespace {
 
-constexpr std::uint32_t bits(std::uint64_t v, unsigned lo, unsigned n) noexcept {
-  return static_cast<std::uint32_t>((v >> lo) & ((std::uint64_t{1} << n) - 1));
-}
+namespace R = gs::regs;
 
 // A format gs_memory lays out (an unknown PSM is walked as PSMCT32).
 mem::psm known_psm(std::uint32_t p) noexcept {
@@ -29,7 +28,11 @@ mem::psm known_psm(std::uint32_t p) noexcept {
 
 // A texel coordinate in 12.4 for a vertex (UV with FST = 1, else S/Q · 2^TW, as draw.cpp does).
 std::array<std::int32_t, 2> texel_124(const packets::vertex& x, bool fst, std::uint32_t tw, std::uint32_t th) {
-  if (fst) return {x.U & 0x3FFF, x.V & 0x3FFF};
+  if (fst) {
+    constexpr auto u_max = static_cast<std::int32_t>(R::max_value(R::UV::U));
+    constexpr auto v_max = static_cast<std::int32_t>(R::max_value(R::UV::V));
+    return {x.U & u_max, x.V & v_max};
+  }
   const double q = std::bit_cast<float>(x.Q);
   auto fix = [&](std::uint32_t st, std::uint32_t size_log2) {
     const double u =
@@ -47,20 +50,21 @@ struct span {
 
 draw_mode decode_mode(const packets::draw_registers& r) {
   draw_mode m;
-  m.prim = bits(r.PRIM, 0, 3);
-  m.textured = bits(r.PRIM, 4, 1) != 0;
-  m.fst = bits(r.PRIM, 8, 1) != 0;
-  const bool abe = bits(r.PRIM, 6, 1) != 0;
+  m.prim = R::decode_as(R::PRIM::PRIM, r.PRIM);
+  m.textured = R::decode_as(R::PRIM::TME, r.PRIM) != 0;
+  m.fst = R::decode_as(R::PRIM::FST, r.PRIM) != 0;
+  const bool abe = R::decode_as(R::PRIM::ABE, r.PRIM) != 0;
   // ALPHA A 0-1, B 2-3, D 6-7: selector 1 is Cd (the destination colour).
-  m.blend_reads_dst = abe && (bits(r.ALPHA, 0, 2) == 1 || bits(r.ALPHA, 2, 2) == 1 || bits(r.ALPHA, 6, 2) == 1);
-  const bool zte = bits(r.TEST, 16, 1) != 0;
-  const std::uint32_t ztst = bits(r.TEST, 17, 2);  // 0 NEVER, 1 ALWAYS, 2 GEQUAL, 3 GREATER
+  m.blend_reads_dst = abe && (R::decode_as(R::ALPHA::A, r.ALPHA) == 1 || R::decode_as(R::ALPHA::B, r.ALPHA) == 1 ||
+                              R::decode_as(R::ALPHA::D, r.ALPHA) == 1);
+  const bool zte = R::decode_as(R::TEST::ZTE, r.TEST) != 0;
+  const std::uint32_t ztst = R::decode_as(R::TEST::ZTST, r.TEST);  // 0 NEVER, 1 ALWAYS, 2 GEQUAL, 3 GREATER
   m.z_read = zte && ztst >= 2;
-  m.z_write = zte && ztst != 0 && bits(r.ZBUF, 32, 1) == 0;
-  m.frame_psm = bits(r.FRAME, 24, 6);
-  m.z_psm = 0x30 | bits(r.ZBUF, 24, 4);
-  m.tex_psm = bits(r.TEX0, 20, 6);
-  const std::uint32_t mmag = bits(r.TEX1, 5, 1), mmin = bits(r.TEX1, 6, 3);
+  m.z_write = zte && ztst != 0 && R::decode_as(R::ZBUF::ZMSK, r.ZBUF) == 0;
+  m.frame_psm = R::decode_as(R::FRAME::PSM, r.FRAME);
+  m.z_psm = 0x30 | R::decode_as(R::ZBUF::PSM, r.ZBUF);
+  m.tex_psm = R::decode_as(R::TEX0::PSM, r.TEX0);
+  const std::uint32_t mmag = R::decode_as(R::TEX1::MMAG, r.TEX1), mmin = R::decode_as(R::TEX1::MMIN, r.TEX1);
   m.bilinear = m.textured && (mmag == 1 || mmin == 1 || mmin == 4 || mmin == 5);
   return m;
 }
@@ -71,10 +75,12 @@ walk_counts walk_primitive(const packets::draw_registers& r, std::span<const pac
   walk_counts c;
   const bool sprite = m.prim == 6, triangle = m.prim >= 3 && m.prim <= 5;
   if ((!sprite && !triangle) || v.size() < (sprite ? 2u : 3u)) return c;
-  const std::int32_t ofx = static_cast<std::int32_t>(bits(r.XYOFFSET, 0, 16));
-  const std::int32_t ofy = static_cast<std::int32_t>(bits(r.XYOFFSET, 32, 16));
-  const scissor clip{static_cast<int>(bits(r.SCISSOR, 0, 11)), static_cast<int>(bits(r.SCISSOR, 32, 11)),
-                     static_cast<int>(bits(r.SCISSOR, 16, 11)) + 1, static_cast<int>(bits(r.SCISSOR, 48, 11)) + 1};
+  const std::int32_t ofx = static_cast<std::int32_t>(R::decode_as(R::XYOFFSET::OFX, r.XYOFFSET));
+  const std::int32_t ofy = static_cast<std::int32_t>(R::decode_as(R::XYOFFSET::OFY, r.XYOFFSET));
+  const scissor clip{static_cast<int>(R::decode_as(R::SCISSOR::SCAX0, r.SCISSOR)),
+                     static_cast<int>(R::decode_as(R::SCISSOR::SCAY0, r.SCISSOR)),
+                     static_cast<int>(R::decode_as(R::SCISSOR::SCAX1, r.SCISSOR)) + 1,
+                     static_cast<int>(R::decode_as(R::SCISSOR::SCAY1, r.SCISSOR)) + 1};
   auto window = [&](const packets::vertex& x) { return xy124{x.X - ofx, x.Y - ofy}; };
 
   // The covered span of every row, from the rasteriser itself.
@@ -90,7 +96,7 @@ walk_counts walk_primitive(const packets::draw_registers& r, std::span<const pac
   };
   // Texel planes (12.4) for textured primitives.
   plane pu{}, pv{};
-  const std::uint32_t tw = bits(r.TEX0, 26, 4), th = bits(r.TEX0, 30, 4);
+  const std::uint32_t tw = R::decode_as(R::TEX0::TW, r.TEX0), th = R::decode_as(R::TEX0::TH, r.TEX0);
   if (sprite) {
     const xy124 a = window(v[0]), b = window(v[1]);
     const xy124 lo{std::min(a.x, b.x), std::min(a.y, b.y)}, hi{std::max(a.x, b.x), std::max(a.y, b.y)};
@@ -128,15 +134,16 @@ walk_counts walk_primitive(const packets::draw_registers& r, std::span<const pac
   }
   if (y_first > y_last) return c;
 
-  const auto fbw = fixed::uint<6>::from_wrapped(bits(r.FRAME, 16, 6));
-  const mem::buffer frame{mem::from_page(fixed::uint<9>::from_wrapped(bits(r.FRAME, 0, 9))), fbw,
+  const auto fbw = fixed::uint<6>::from_wrapped(R::decode_as(R::FRAME::FBW, r.FRAME));
+  const mem::buffer frame{mem::from_page(fixed::uint<9>::from_wrapped(R::decode_as(R::FRAME::FBP, r.FRAME))), fbw,
                           known_psm(m.frame_psm)};
-  const mem::buffer zbuf{mem::from_page(fixed::uint<9>::from_wrapped(bits(r.ZBUF, 0, 9))), fbw, known_psm(m.z_psm)};
-  const mem::buffer tex{fixed::uint<14>::from_wrapped(bits(r.TEX0, 0, 14)),
-                        fixed::uint<6>::from_wrapped(bits(r.TEX0, 14, 6)), known_psm(m.tex_psm)};
+  const mem::buffer zbuf{mem::from_page(fixed::uint<9>::from_wrapped(R::decode_as(R::ZBUF::ZBP, r.ZBUF))), fbw,
+                         known_psm(m.z_psm)};
+  const mem::buffer tex{fixed::uint<14>::from_wrapped(R::decode_as(R::TEX0::TBP0, r.TEX0)),
+                        fixed::uint<6>::from_wrapped(R::decode_as(R::TEX0::TBW, r.TEX0)), known_psm(m.tex_psm)};
   mem::clamp_reg clamp{};
   try {
-    clamp = mem::decode_clamp(r.CLAMP & ((std::uint64_t{1} << 44) - 1));
+    clamp = mem::decode_clamp(r.CLAMP & R::mask(R::CLAMP::fields));
   } catch (const std::invalid_argument&) {  // a reserved mode: walked as REPEAT
   }
   const bool z = m.z_read || m.z_write;

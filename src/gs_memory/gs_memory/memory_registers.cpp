@@ -3,6 +3,7 @@
 #include <string_view>
 
 #include "gs_arith/field_reader.hpp"
+#include "gs_regs/drawing.hpp"
 
 namespace gs::mem {
 namespace {
@@ -11,96 +12,105 @@ namespace {
 class fields : public field_reader {
  public:
   using field_reader::field_reader;
-  psm format(std::string_view field, int lo) {
-    const auto v = static_cast<std::uint64_t>(uint<6>(lo).value());
+  psm format(regs::field f) {
+    const auto v = static_cast<std::uint64_t>(uint<6>(f).value());
     for (const psm p : {psm::PSMCT32, psm::PSMCT24, psm::PSMCT16, psm::PSMCT16S, psm::PSMT8, psm::PSMT8H, psm::PSMT4,
                         psm::PSMT4HL, psm::PSMT4HH, psm::PSMZ32, psm::PSMZ24, psm::PSMZ16, psm::PSMZ16S})
       if (static_cast<std::uint64_t>(p) == v) return p;
-    fail(field, v, "not a GS pixel storage format");
+    fail(f.name, v, "not a GS pixel storage format");
   }
 };
 
-using field_bits::bits;
+namespace R = gs::regs;
 
 }  // namespace
 
 bitbltbuf_reg decode_bitbltbuf(std::uint64_t v) {
   fields f("BITBLTBUF", v);
   bitbltbuf_reg r;
-  r.SBP = f.uint<14>(0);
-  r.SBW = f.uint<6>(16);
-  r.SPSM = f.format("SPSM", 24);
-  r.DBP = f.uint<14>(32);
-  r.DBW = f.uint<6>(48);
-  r.DPSM = f.format("DPSM", 56);
+  namespace B = R::BITBLTBUF;
+  r.SBP = f.uint<14>(B::SBP);
+  r.SBW = f.uint<6>(B::SBW);
+  r.SPSM = f.format(B::SPSM);
+  r.DBP = f.uint<14>(B::DBP);
+  r.DBW = f.uint<6>(B::DBW);
+  r.DPSM = f.format(B::DPSM);
   f.done();
   return r;
 }
 std::uint64_t encode(const bitbltbuf_reg& r) {
-  return bits(r.SBP) | bits(r.SBW) << 16 | bits(r.SPSM) << 24 | bits(r.DBP) << 32 | bits(r.DBW) << 48 |
-         bits(r.DPSM) << 56;
+  namespace B = R::BITBLTBUF;
+  return place(B::SBP, r.SBP) | place(B::SBW, r.SBW) | place(B::SPSM, r.SPSM) | place(B::DBP, r.DBP) |
+         place(B::DBW, r.DBW) | place(B::DPSM, r.DPSM);
 }
 
 trxpos_reg decode_trxpos(std::uint64_t v) {
   fields f("TRXPOS", v);
   trxpos_reg r;
-  r.SSAX = f.uint<11>(0);
-  r.SSAY = f.uint<11>(16);
-  r.DSAX = f.uint<11>(32);
-  r.DSAY = f.uint<11>(48);
-  r.DIR = f.uint<2>(59);
+  namespace P = R::TRXPOS;
+  r.SSAX = f.uint<11>(P::SSAX);
+  r.SSAY = f.uint<11>(P::SSAY);
+  r.DSAX = f.uint<11>(P::DSAX);
+  r.DSAY = f.uint<11>(P::DSAY);
+  r.DIR = f.uint<2>(P::DIR);
   f.done();
   return r;
 }
 std::uint64_t encode(const trxpos_reg& r) {
-  return bits(r.SSAX) | bits(r.SSAY) << 16 | bits(r.DSAX) << 32 | bits(r.DSAY) << 48 | bits(r.DIR) << 59;
+  namespace P = R::TRXPOS;
+  return place(P::SSAX, r.SSAX) | place(P::SSAY, r.SSAY) | place(P::DSAX, r.DSAX) | place(P::DSAY, r.DSAY) |
+         place(P::DIR, r.DIR);
 }
 
 trxreg_reg decode_trxreg(std::uint64_t v) {
   fields f("TRXREG", v);
   trxreg_reg r;
-  r.RRW = f.uint<12>(0);
-  r.RRH = f.uint<12>(32);
+  r.RRW = f.uint<12>(R::TRXREG::RRW);
+  r.RRH = f.uint<12>(R::TRXREG::RRH);
   f.done();
   return r;
 }
-std::uint64_t encode(const trxreg_reg& r) { return bits(r.RRW) | bits(r.RRH) << 32; }
+std::uint64_t encode(const trxreg_reg& r) { return place(R::TRXREG::RRW, r.RRW) | place(R::TRXREG::RRH, r.RRH); }
 
 trxdir_reg decode_trxdir(std::uint64_t v) {
   fields f("TRXDIR", v);
   trxdir_reg r;
-  r.XDIR = static_cast<xdir>(f.uint<2>(0).value());
+  r.XDIR = static_cast<xdir>(f.uint<2>(R::TRXDIR::XDIR).value());
   f.done();
   return r;
 }
-std::uint64_t encode(const trxdir_reg& r) { return bits(r.XDIR); }
+std::uint64_t encode(const trxdir_reg& r) { return place(R::TRXDIR::XDIR, r.XDIR); }
 
 clamp_reg decode_clamp(std::uint64_t v) {
   fields f("CLAMP_1", v);
   clamp_reg r;
-  r.WMS = static_cast<wrap_mode>(f.uint<2>(0).value());
-  r.WMT = static_cast<wrap_mode>(f.uint<2>(2).value());
-  r.MINU = f.uint<10>(4);
-  r.MAXU = f.uint<10>(14);
-  r.MINV = f.uint<10>(24);
-  r.MAXV = f.uint<10>(34);
+  namespace C = R::CLAMP;
+  r.WMS = static_cast<wrap_mode>(f.uint<2>(C::WMS).value());
+  r.WMT = static_cast<wrap_mode>(f.uint<2>(C::WMT).value());
+  r.MINU = f.uint<10>(C::MINU);
+  r.MAXU = f.uint<10>(C::MAXU);
+  r.MINV = f.uint<10>(C::MINV);
+  r.MAXV = f.uint<10>(C::MAXV);
   f.done();
   return r;
 }
 std::uint64_t encode(const clamp_reg& r) {
-  return bits(r.WMS) | bits(r.WMT) << 2 | bits(r.MINU) << 4 | bits(r.MAXU) << 14 | bits(r.MINV) << 24 |
-         bits(r.MAXV) << 34;
+  namespace C = R::CLAMP;
+  return place(C::WMS, r.WMS) | place(C::WMT, r.WMT) | place(C::MINU, r.MINU) | place(C::MAXU, r.MAXU) |
+         place(C::MINV, r.MINV) | place(C::MAXV, r.MAXV);
 }
 
 texclut_reg decode_texclut(std::uint64_t v) {
   fields f("TEXCLUT", v);
   texclut_reg r;
-  r.CBW = f.uint<6>(0);
-  r.COU = f.uint<6>(6);
-  r.COV = f.uint<10>(12);
+  r.CBW = f.uint<6>(R::TEXCLUT::CBW);
+  r.COU = f.uint<6>(R::TEXCLUT::COU);
+  r.COV = f.uint<10>(R::TEXCLUT::COV);
   f.done();
   return r;
 }
-std::uint64_t encode(const texclut_reg& r) { return bits(r.CBW) | bits(r.COU) << 6 | bits(r.COV) << 12; }
+std::uint64_t encode(const texclut_reg& r) {
+  return place(R::TEXCLUT::CBW, r.CBW) | place(R::TEXCLUT::COU, r.COU) | place(R::TEXCLUT::COV, r.COV);
+}
 
 }  // namespace gs::mem

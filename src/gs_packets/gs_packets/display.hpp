@@ -3,10 +3,7 @@
 // The 8 KiB privileged block of a dump is the GS's privileged register space from 0x12000000, one
 // 64-bit register per 16 bytes (GS User's Manual register map; PCSX2 `GSPrivRegSet` mirrors it):
 //   PMODE 0x00, SMODE2 0x20, DISPFB1 0x70, DISPLAY1 0x80, DISPFB2 0x90, DISPLAY2 0xA0, BGCOLOR 0xE0.
-// Fields (the manual's PMODE / DISPFB / DISPLAY):
-//   PMODE    EN1 0, EN2 1, CRTMD 2-4, MMOD 5, AMOD 6, SLBG 7, ALP 8-15
-//   DISPFB   FBP 0-8, FBW 9-14, PSM 15-19, DBX 32-42, DBY 43-53
-//   DISPLAY  DX 0-11, DY 12-22, MAGH 23-26, MAGV 27-28, DW 32-43, DH 44-54
+// Fields: gs_regs/privileged.hpp's PMODE, DISPFB and DISPLAY tables.
 // A read circuit shows the rectangle at (DBX, DBY) of its buffer, (DW + 1) / (MAGH + 1) pixels wide and
 // (DH + 1) / (MAGV + 1) rows high, in buffer pixels (the magnification and the CRT timing are the
 // output's, not the frame's). With both circuits on, the merge circuit (alpha blend of circuit 1 over
@@ -21,6 +18,7 @@
 #include <string>
 
 #include "gs_memory/address.hpp"
+#include "gs_regs/privileged.hpp"
 
 namespace gs::packets {
 
@@ -43,11 +41,9 @@ inline std::uint64_t privileged_register(std::span<const std::uint8_t> block, st
 }
 
 inline display_state decode_display(std::span<const std::uint8_t> privileged) {
-  auto bits = [](std::uint64_t v, unsigned lo, unsigned n) {
-    return static_cast<std::uint32_t>((v >> lo) & ((std::uint64_t{1} << n) - 1));
-  };
+  namespace R = gs::regs;
   const std::uint64_t pmode = privileged_register(privileged, 0x00);
-  const bool en1 = bits(pmode, 0, 1) != 0, en2 = bits(pmode, 1, 1) != 0;
+  const bool en1 = R::decode_as(R::PMODE::EN1, pmode) != 0, en2 = R::decode_as(R::PMODE::EN2, pmode) != 0;
   display_state s;
   if (!en1 && !en2) {
     s.unmodelled = "PMODE: both read circuits disabled (no displayed frame)";
@@ -58,19 +54,21 @@ inline display_state decode_display(std::span<const std::uint8_t> privileged) {
   const unsigned c = en1 ? 1 : 2;
   const std::uint64_t dispfb = privileged_register(privileged, c == 1 ? 0x70 : 0x90);
   const std::uint64_t display = privileged_register(privileged, c == 1 ? 0x80 : 0xA0);
-  const std::uint32_t psm = bits(dispfb, 15, 5);
-  if (psm != 0 && psm != 1 && psm != 2 && psm != 0xA) {
+  namespace F = R::DISPFB;
+  namespace D = R::DISPLAY;
+  const std::uint32_t psm = R::decode_as(F::PSM, dispfb);
+  if (!R::is_one_of(psm, F::PSM_valid)) {
     s.unmodelled = "DISPFB" + std::to_string(c) + ".PSM = " + std::to_string(psm) + " (not a display format)";
     return s;
   }
   displayed_frame f;
   f.circuit = c;
-  f.buffer = {mem::from_page(fixed::uint<9>::from_wrapped(bits(dispfb, 0, 9))),
-              fixed::uint<6>::from_wrapped(bits(dispfb, 9, 6)), static_cast<mem::psm>(psm)};
-  f.x = bits(dispfb, 32, 11);
-  f.y = bits(dispfb, 43, 11);
-  f.width = (bits(display, 32, 12) + 1) / (bits(display, 23, 4) + 1);
-  f.height = (bits(display, 44, 11) + 1) / (bits(display, 27, 2) + 1);
+  f.buffer = {mem::from_page(fixed::uint<9>::from_wrapped(R::decode_as(F::FBP, dispfb))),
+              fixed::uint<6>::from_wrapped(R::decode_as(F::FBW, dispfb)), static_cast<mem::psm>(psm)};
+  f.x = R::decode_as(F::DBX, dispfb);
+  f.y = R::decode_as(F::DBY, dispfb);
+  f.width = (R::decode_as(D::DW, display) + 1) / (R::decode_as(D::MAGH, display) + 1);
+  f.height = (R::decode_as(D::DH, display) + 1) / (R::decode_as(D::MAGV, display) + 1);
   s.frame = f;
   return s;
 }

@@ -1,15 +1,12 @@
 // gs_packets/draw.cpp — one primitive through the model (see draw.hpp).
 //
-// Register fields decoded here (GS User's Manual register map, as PCSX2 `pcsx2/GS/GSRegs.h` transcribes
-// it; the other registers go through gs_arith / gs_memory's strict decoders):
-//   XYOFFSET OFX 0-15, OFY 32-47 (12.4)      SCISSOR SCAX0 0-10, SCAX1 16-26, SCAY0 32-42, SCAY1 48-58
-//   TEXA     TA0 0-7, AEM 15, TA1 32-39      SCANMSK MSK 0-1
-//   TEX1     LCM 0, MXL 2-4, MMAG 5, MMIN 6-8, MTBA 9, L 19-20, K 32-43 (signed 7.4)
+// XYOFFSET, SCISSOR, TEXA, TEX1 and SCANMSK are read here by their field tables (gs_regs/drawing.hpp);
+// the other registers go through gs_arith / gs_memory's strict decoders.
 // Bits that belong to no field are dropped before the strict decoders see a value (the GS has nothing
 // there to read; PCSX2's newest `GSState.h` masks register writes the same way, e.g. FRAME_REG_MASK
 // 0xFFFFFFFF3F3F01FF, ALPHA_REG_MASK 0xFF000000FF, DIMX_REG_MASK 0x7777777777777777, ZBUF_REG_MASK
-// 0x10F0001FF); reserved values
-// in a field (ALPHA selector 3, PRIM 7, an unknown PSM) are still refused and named.
+// 0x10F0001FF, which are gs_regs' `mask(REG::fields)`); reserved values in a field (ALPHA selector 3,
+// PRIM 7, an unknown PSM) are still refused and named.
 // The Z buffer is addressed with FRAME.FBW (the GS has no Z width; PCSX2 `GSState::Reset` builds the Z
 // offset from ZBUF.Block() and FRAME.FBW).
 #include "gs_packets/draw.hpp"
@@ -32,13 +29,12 @@
 #include "gs_memory/memory_registers.hpp"
 #include "gs_memory/texture_buffer.hpp"
 #include "gs_memory/texture_wrap.hpp"
+#include "gs_regs/drawing.hpp"
 
 namespace gs::packets {
 namespace {
 
-constexpr std::uint32_t bits(std::uint64_t v, unsigned lo, unsigned n) noexcept {
-  return static_cast<std::uint32_t>((v >> lo) & ((std::uint64_t{1} << n) - 1));
-}
+namespace R = gs::regs;
 
 // Everything one primitive draws with, decoded.
 struct decoded {
@@ -61,9 +57,12 @@ float as_float(std::uint32_t b) noexcept { return std::bit_cast<float>(b); }
 // or one Q for every vertex), or what is not modelled.
 std::string texture_filter(const draw_registers& r, const decoded& d, std::span<const vertex> v, bool& linear) {
   const std::uint64_t t = r.TEX1;
-  const bool lcm = bits(t, 0, 1) != 0;
-  const unsigned mxl = bits(t, 2, 3), mmag = bits(t, 5, 1), mmin = bits(t, 6, 3), l = bits(t, 19, 2);
-  const auto k16 = static_cast<std::int32_t>(bits(t, 32, 12) << 20) >> 20;  // signed 7.4
+  namespace T = R::TEX1;
+  const bool lcm = R::decode_as(T::LCM, t) != 0;
+  const unsigned mxl = R::decode_as(T::MXL, t), mmag = R::decode_as(T::MMAG, t), mmin = R::decode_as(T::MMIN, t),
+                 l = R::decode_as(T::L, t);
+  const int k_sign = 32 - T::K.width;
+  const auto k16 = static_cast<std::int32_t>(R::decode_as(T::K, t) << k_sign) >> k_sign;  // signed 7.4
   if (mmin > 5) return "TEX1.MMIN = " + std::to_string(mmin) + " (reserved)";
   double lod = k16 / 16.0;
   if (!lcm && !d.regs.PRIM.FST) {
@@ -80,9 +79,12 @@ std::string texture_filter(const draw_registers& r, const decoded& d, std::span<
 }
 
 // The field bits of each register the strict decoders read (the manual's layouts, registers.hpp).
-constexpr std::uint64_t prim_fields = 0x7FF, frame_fields = 0xFFFFFFFF3F3F01FFull, test_fields = 0x7FFFF,
-                        alpha_fields = 0xFF000000FFull, one_bit = 1, dimx_fields = 0x7777777777777777ull,
-                        clamp_fields = (std::uint64_t{1} << 44) - 1, zbuf_fields = 0x10F0001FFull;
+constexpr std::uint64_t prim_fields = R::mask(R::PRIM::fields), frame_fields = R::mask(R::FRAME::fields),
+                        test_fields = R::mask(R::TEST::fields), alpha_fields = R::mask(R::ALPHA::fields),
+                        fba_fields = R::mask(R::FBA::fields), colclamp_fields = R::mask(R::COLCLAMP::fields),
+                        pabe_fields = R::mask(R::PABE::fields), dthe_fields = R::mask(R::DTHE::fields),
+                        dimx_fields = R::mask(R::DIMX::fields), clamp_fields = R::mask(R::CLAMP::fields),
+                        zbuf_fields = R::mask(R::ZBUF::fields);
 
 std::string decode(const draw_registers& r, std::span<const vertex> v, decoded& d) {
   const std::string ctx = "context " + std::to_string(r.context) + " ";
@@ -100,10 +102,10 @@ std::string decode(const draw_registers& r, std::span<const vertex> v, decoded& 
     d.regs.FRAME_1 = decode_frame(r.FRAME & frame_fields);
     d.regs.TEST_1 = decode_test(r.TEST & test_fields);
     d.regs.ALPHA_1 = decode_alpha(r.ALPHA & alpha_fields);
-    d.regs.FBA_1 = decode_fba(r.FBA & one_bit);
-    d.regs.COLCLAMP = decode_colclamp(r.COLCLAMP & one_bit);
-    d.regs.PABE = decode_pabe(r.PABE & one_bit);
-    d.regs.DTHE = decode_dthe(r.DTHE & one_bit);
+    d.regs.FBA_1 = decode_fba(r.FBA & fba_fields);
+    d.regs.COLCLAMP = decode_colclamp(r.COLCLAMP & colclamp_fields);
+    d.regs.PABE = decode_pabe(r.PABE & pabe_fields);
+    d.regs.DTHE = decode_dthe(r.DTHE & dthe_fields);
     d.regs.DIMX = decode_dimx(r.DIMX & dimx_fields);
     d.ZBUF = decode_zbuf(r.ZBUF & zbuf_fields);
     if (p.TME) {
@@ -117,15 +119,17 @@ std::string decode(const draw_registers& r, std::span<const vertex> v, decoded& 
              static_cast<mem::psm>(static_cast<std::uint8_t>(d.regs.FRAME_1.PSM))};
   d.zbuf = {mem::from_page(d.ZBUF.ZBP), d.regs.FRAME_1.FBW,
             static_cast<mem::psm>(0x30 | static_cast<unsigned>(d.ZBUF.PSM))};
-  d.ofx = static_cast<std::int32_t>(bits(r.XYOFFSET, 0, 16));
-  d.ofy = static_cast<std::int32_t>(bits(r.XYOFFSET, 32, 16));
-  d.clip = {static_cast<int>(bits(r.SCISSOR, 0, 11)), static_cast<int>(bits(r.SCISSOR, 32, 11)),
-            static_cast<int>(bits(r.SCISSOR, 16, 11)) + 1, static_cast<int>(bits(r.SCISSOR, 48, 11)) + 1};
-  d.ta0 = static_cast<std::uint8_t>(bits(r.TEXA, 0, 8));
-  d.aem = bits(r.TEXA, 15, 1) != 0;
-  d.ta1 = static_cast<std::uint8_t>(bits(r.TEXA, 32, 8));
-  d.scanmsk = bits(r.SCANMSK, 0, 2);
-  if (d.scanmsk == 1) return "SCANMSK.MSK = 1 (reserved)";
+  d.ofx = static_cast<std::int32_t>(R::decode_as(R::XYOFFSET::OFX, r.XYOFFSET));
+  d.ofy = static_cast<std::int32_t>(R::decode_as(R::XYOFFSET::OFY, r.XYOFFSET));
+  namespace S = R::SCISSOR;
+  d.clip = {static_cast<int>(R::decode_as(S::SCAX0, r.SCISSOR)), static_cast<int>(R::decode_as(S::SCAY0, r.SCISSOR)),
+            static_cast<int>(R::decode_as(S::SCAX1, r.SCISSOR)) + 1,
+            static_cast<int>(R::decode_as(S::SCAY1, r.SCISSOR)) + 1};
+  d.ta0 = static_cast<std::uint8_t>(R::decode_as(R::TEXA::TA0, r.TEXA));
+  d.aem = R::decode_as(R::TEXA::AEM, r.TEXA) != 0;
+  d.ta1 = static_cast<std::uint8_t>(R::decode_as(R::TEXA::TA1, r.TEXA));
+  d.scanmsk = R::decode_as(R::SCANMSK::MSK, r.SCANMSK);
+  if (d.scanmsk == R::SCANMSK::MSK_reserved) return "SCANMSK.MSK = 1 (reserved)";
   if (!p.TME) return {};
   if (!p.FST)
     for (const vertex& x : v) {
@@ -173,7 +177,11 @@ rgba8 texel_colour(const decoded& d, const clut_buffer& clut, std::uint32_t t) {
 // so this is exact affine texturing; the conversion floors, a model choice).
 std::array<std::int32_t, 2> texel_position(const decoded& d, const vertex& x) {
   if (!d.regs.PRIM.TME) return {0, 0};  // no texture: the coordinates are not used (nor checked)
-  if (d.regs.PRIM.FST) return {x.U & 0x3FFF, x.V & 0x3FFF};
+  if (d.regs.PRIM.FST) {
+    constexpr auto u_max = static_cast<std::int32_t>(R::max_value(R::UV::U));
+    constexpr auto v_max = static_cast<std::int32_t>(R::max_value(R::UV::V));
+    return {x.U & u_max, x.V & v_max};
+  }
   const double q = as_float(x.Q);
   auto fix = [&](std::uint32_t st, unsigned size_log2) {
     const double u = static_cast<double>(as_float(st)) / q * 16.0 * static_cast<double>(1u << size_log2);

@@ -16,6 +16,7 @@
 #include <optional>
 
 #include "fixed/integer.hpp"
+#include "gs_regs/field.hpp"
 
 namespace gs::packets {
 
@@ -43,27 +44,40 @@ struct gif_tag {
   }
 };
 
+// The tag's fields in word 0 (the layout above) and one descriptor of word 1 (REGS[i] at 4i).
+namespace gif_tag_layout {
+using gs::regs::field;
+inline constexpr field NLOOP{"NLOOP", 0, 15}, EOP{"EOP", 15, 1}, PRE{"PRE", 46, 1}, PRIM{"PRIM", 47, 11},
+    FLG{"FLG", 58, 2}, NREG{"NREG", 60, 4};
+inline constexpr field fields[] = {NLOOP, EOP, PRE, PRIM, FLG, NREG};
+constexpr field REGS(unsigned i) noexcept { return {"REGS", static_cast<int>(4 * i), 4}; }
+}  // namespace gif_tag_layout
+
 constexpr qword encode(const gif_tag& t) noexcept {
+  namespace L = gif_tag_layout;
+  using gs::regs::encode_low_bits;
   qword q;
-  q.lo = static_cast<std::uint64_t>(t.NLOOP.value()) | (std::uint64_t{t.EOP} << 15) | (std::uint64_t{t.PRE} << 46) |
-         (static_cast<std::uint64_t>(t.PRIM.value()) << 47) | (static_cast<std::uint64_t>(t.FLG) << 58) |
-         (static_cast<std::uint64_t>(t.NREG.value()) << 60);
-  for (unsigned i = 0; i < 16; ++i) q.hi |= static_cast<std::uint64_t>(t.REGS[i].value()) << (4 * i);
+  q.lo = encode_low_bits(L::NLOOP, t.NLOOP.value()) | encode_low_bits(L::EOP, t.EOP) | encode_low_bits(L::PRE, t.PRE) |
+         encode_low_bits(L::PRIM, t.PRIM.value()) | encode_low_bits(L::FLG, static_cast<std::uint64_t>(t.FLG)) |
+         encode_low_bits(L::NREG, t.NREG.value());
+  for (unsigned i = 0; i < 16; ++i) q.hi |= encode_low_bits(L::REGS(i), t.REGS[i].value());
   return q;
 }
 
 // The tag of a qword; std::nullopt when FLG = 3 (disabled).
 constexpr std::optional<gif_tag> decode_gif_tag(const qword& q) noexcept {
-  const unsigned flg = static_cast<unsigned>((q.lo >> 58) & 3);
+  namespace L = gif_tag_layout;
+  using gs::regs::decode;
+  const auto flg = decode(L::FLG, q.lo);
   if (flg == 3) return std::nullopt;
   gif_tag t;
-  t.NLOOP = fixed::uint<15>::from_wrapped(q.lo & 0x7FFF);
-  t.EOP = ((q.lo >> 15) & 1) != 0;
-  t.PRE = ((q.lo >> 46) & 1) != 0;
-  t.PRIM = fixed::uint<11>::from_wrapped((q.lo >> 47) & 0x7FF);
+  t.NLOOP = fixed::uint<15>::from_wrapped(decode(L::NLOOP, q.lo));
+  t.EOP = decode(L::EOP, q.lo) != 0;
+  t.PRE = decode(L::PRE, q.lo) != 0;
+  t.PRIM = fixed::uint<11>::from_wrapped(decode(L::PRIM, q.lo));
   t.FLG = static_cast<gif_flg>(flg);
-  t.NREG = fixed::uint<4>::from_wrapped((q.lo >> 60) & 0xF);
-  for (unsigned i = 0; i < 16; ++i) t.REGS[i] = fixed::uint<4>::from_wrapped((q.hi >> (4 * i)) & 0xF);
+  t.NREG = fixed::uint<4>::from_wrapped(decode(L::NREG, q.lo));
+  for (unsigned i = 0; i < 16; ++i) t.REGS[i] = fixed::uint<4>::from_wrapped(decode(L::REGS(i), q.hi));
   return t;
 }
 

@@ -7,6 +7,7 @@
 #include "gs_memory/transfer.hpp"
 #include "gs_packets/gs_registers.hpp"
 #include "gs_packets/state.hpp"
+#include "gs_regs/drawing.hpp"
 
 namespace gs::packets {
 namespace {
@@ -19,16 +20,18 @@ constexpr std::uint8_t XYOFFSET_1 = 0x18, TEX0_1 = 0x06, TEX1_1 = 0x14, TEX2_1 =
                        ALPHA_1 = 0x42, TEST_1 = 0x47, FBA_1 = 0x4A, FRAME_1 = 0x4C, ZBUF_1 = 0x4E, PRMODECONT = 0x1A,
                        PRMODE = 0x1B, TEXCLUT = 0x1C, TEXA = 0x3B, DIMX = 0x44, DTHE = 0x45, COLCLAMP = 0x46,
                        PABE = 0x49, SCANMSK = 0x22;
-// TEX2's fields (PSM 20-25, CBP 37-50, CPSM 51-54, CSM 55, CSA 56-60, CLD 61-63) at TEX0's positions.
-constexpr std::uint64_t tex2_mask = (std::uint64_t{0x3F} << 20) | (~std::uint64_t{0} << 37);
+namespace R = gs::regs;
+constexpr std::uint64_t tex2_mask = R::mask(R::TEX2::fields);  // the TEX0 fields a TEX2 write replaces
 
 }  // namespace
 
 draw_registers interpreter::drawing_registers() const {
   const std::uint64_t prim = regs_[reg::PRIM];
   draw_registers r;
-  r.PRIM = (regs_[PRMODECONT] & 1) != 0 ? prim : (prim & 7) | (regs_[PRMODE] & 0x7F8);
-  const unsigned c = (r.PRIM >> 9) & 1;
+  r.PRIM = R::decode(R::PRMODECONT::AC, regs_[PRMODECONT]) != 0
+               ? prim
+               : (prim & R::mask(R::PRIM::PRIM)) | (regs_[PRMODE] & R::mask(R::PRMODE::fields));
+  const auto c = R::decode_as<unsigned>(R::PRIM::CTXT, r.PRIM);
   r.context = c + 1;
   r.XYOFFSET = regs_[XYOFFSET_1 + c];
   r.TEX0 = regs_[TEX0_1 + c];
@@ -49,7 +52,7 @@ draw_registers interpreter::drawing_registers() const {
   return r;
 }
 
-// TEXCLUT (CBW 0-5, COU 6-11, COV 12-21: bits outside them dropped) is what CSM2 loads read.
+// TEXCLUT (its fields; the bits outside them dropped) is what CSM2 loads read.
 // A CLUT load that cannot be modelled leaves its message until a later load succeeds; a TEX0 that
 // loads nothing (CLD = 0, CLD 4 / 5 with an unchanged CBP, a non-indexed PSM) keeps it. CLD 4 / 5 load
 // exactly when they change CBP0 / CBP1 (gs_memory/clut_load.hpp).
@@ -57,7 +60,8 @@ void interpreter::tex0_written(unsigned context, std::uint64_t offset) {
   try {
     const tex0_reg t = decode_tex0(regs_[TEX0_1 + context]);
     const mem::clut_state before = clut_.state;
-    clut_.state = mem::load_clut(mem_, t, clut_.state, mem::decode_texclut(regs_[TEXCLUT] & 0x3FFFFF));
+    clut_.state =
+        mem::load_clut(mem_, t, clut_.state, mem::decode_texclut(regs_[TEXCLUT] & R::mask(R::TEXCLUT::fields)));
     const unsigned cld = static_cast<unsigned>(t.CLD.value());
     const bool loaded =
         mem::is_indexed(t.PSM) && ((cld >= 1 && cld <= 3) || (cld == 4 && clut_.state.CBP0 != before.CBP0) ||
@@ -76,17 +80,19 @@ void interpreter::vertex_kick(bool draw, bool with_fog, std::uint64_t offset) {
   const std::uint64_t xyz = regs_[draw ? (with_fog ? reg::XYZF2 : reg::XYZ2) : (with_fog ? reg::XYZF3 : reg::XYZ3)];
   const std::uint64_t rgbaq = regs_[reg::RGBAQ], st = regs_[reg::ST], uv = regs_[reg::UV];
   vertex v;
-  v.X = static_cast<std::uint16_t>(xyz);
-  v.Y = static_cast<std::uint16_t>(xyz >> 16);
-  v.Z = with_fog ? static_cast<std::uint32_t>((xyz >> 32) & 0xFFFFFF) : static_cast<std::uint32_t>(xyz >> 32);
-  v.F = static_cast<std::uint8_t>(with_fog ? xyz >> 56 : regs_[reg::FOG] >> 56);
-  v.colour = rgba8::from_u32(static_cast<std::uint32_t>(rgbaq));
-  v.Q = static_cast<std::uint32_t>(rgbaq >> 32);
-  v.S = static_cast<std::uint32_t>(st);
-  v.T = static_cast<std::uint32_t>(st >> 32);
-  v.U = static_cast<std::uint16_t>(uv & 0x3FFF);
-  v.V = static_cast<std::uint16_t>((uv >> 16) & 0x3FFF);
-  const unsigned type = regs_[reg::PRIM] & 7, need = prim_vertices[type];
+  v.X = R::decode_as<std::uint16_t>(R::XYZ2::X, xyz);  // XYZF2's X and Y are XYZ2's
+  v.Y = R::decode_as<std::uint16_t>(R::XYZ2::Y, xyz);
+  v.Z = with_fog ? R::decode_as<std::uint32_t>(R::XYZF2::Z, xyz) : R::decode_as<std::uint32_t>(R::XYZ2::Z, xyz);
+  v.F =
+      with_fog ? R::decode_as<std::uint8_t>(R::XYZF2::F, xyz) : R::decode_as<std::uint8_t>(R::FOG::F, regs_[reg::FOG]);
+  v.colour = rgba8::from_u32(static_cast<std::uint32_t>(rgbaq));  // RGBAQ's R, G, B, A: rgba8's own order
+  v.Q = R::decode_as<std::uint32_t>(R::RGBAQ::Q, rgbaq);
+  v.S = R::decode_as<std::uint32_t>(R::ST::S, st);
+  v.T = R::decode_as<std::uint32_t>(R::ST::T, st);
+  v.U = R::decode_as<std::uint16_t>(R::UV::U, uv);
+  v.V = R::decode_as<std::uint16_t>(R::UV::V, uv);
+  const auto type = R::decode_as<unsigned>(R::PRIM::PRIM, regs_[reg::PRIM]);
+  const unsigned need = prim_vertices[type];
   if (queued_ >= need) queued_ = 0;
   queue_[queued_++] = v;
   if (queued_ < need) return;

@@ -4,11 +4,13 @@
 #include <string>
 
 #include "gs_packets/gif_tag.hpp"
+#include "gs_packets/packed.hpp"
 
 namespace gs::packets {
 namespace {
 
-constexpr std::uint64_t nloop_mask = 0x7FFF, eop_bit = std::uint64_t{1} << 15, pre_bit = std::uint64_t{1} << 46;
+constexpr std::uint64_t nloop_mask = gs::regs::mask(gif_tag_layout::NLOOP),
+                        eop_bit = gs::regs::mask(gif_tag_layout::EOP), pre_bit = gs::regs::mask(gif_tag_layout::PRE);
 
 std::uint64_t le64(std::span<const std::uint8_t> b, std::size_t at) {
   std::uint64_t v = 0;
@@ -126,8 +128,8 @@ class packetiser {
       const unsigned d = t.REGS[r].value();
       if (t.FLG == gif_flg::PACKED) {
         const qword q = qword_at(s_, data0 + k * nreg + r);
-        if (d == 0x0E)
-          w.write(static_cast<unsigned>(q.hi & 0xFF), q.lo);
+        if (d == desc::A_D)
+          w.write(gs::regs::decode_as<unsigned>(packed_layout::A_D_ADDR, q.hi), q.lo);
         else if (d <= 0x0D)
           w.write(d, q.lo);
       } else if (d <= 0x0D) {

@@ -2,12 +2,9 @@
 // and the DISPLAY rectangle for a frame, for the modes a dump can ask for: NTSC, PAL (interlaced
 // 480i / 576i) and VESA (640x480 at 60 Hz).
 //
-// Layouts: PCSX2 `pcsx2/GS/GSRegs.h` (`REG64_(GSReg, SMODE1)`: RC 0-2, LC 3-9, T1248 10-11, SLCK 12,
-// CMOD 13-14, EX 15, PRST 16, SINT 17, XPCK 18, PCK2 19-20, SPML 21-24, GCONT 25, PHS 26, PVS 27,
-// PEHS 28, PEVS 29, CLKSEL 30-31, NVCK 32, SLCK2 33, VCKSEL 34-35, VHP 36; SMODE2 INT 0, FFMD 1,
-// DPMS 2-3; SYNCV VFP 0-9, VFPE 10-19, VBP 20-31, VBPE 32-41, VDP 42-52, VS 53-63; DISPLAY DX 0-11,
-// DY 12-22, MAGH 23-26, MAGV 27-28, DW 32-43, DH 44-54). Register offsets in the 8 KiB block: the GS
-// manual's map (SMODE1 0x10, SMODE2 0x20, SYNCV 0x60, DISPLAY1 0x80).
+// Layouts: gs_regs/privileged.hpp's SMODE1, SYNCV and DISPLAY tables (PCSX2 `pcsx2/GS/GSRegs.h`,
+// `REG64_(GSReg, SMODE1)` and the others, lays them out the same way). Register offsets in the 8 KiB
+// block: the GS manual's map (SMODE1 0x10, SMODE2 0x20, SYNCV 0x60, DISPLAY1 0x80).
 //
 // Values, two sources read with the search tool:
 // - NTSC / PAL SMODE1: the field values GSRegs.h records for PAL and NTSC (CLKSEL 1, CMOD 3 / 2, LC 32,
@@ -31,6 +28,8 @@
 #include <optional>
 #include <string_view>
 
+#include "gs_regs/privileged.hpp"
+
 namespace gs::packets {
 
 enum class video_mode { ntsc, pal, vesa };
@@ -51,19 +50,24 @@ struct smode1_reg {
            GCONT = 0, PHS = 0, PVS = 0, PEHS = 0, PEVS = 0, CLKSEL = 0, NVCK = 0, SLCK2 = 0, VCKSEL = 0, VHP = 0;
 };
 constexpr std::uint64_t encode(const smode1_reg& r) {
-  auto f = [](unsigned v, unsigned at) { return std::uint64_t{v} << at; };
-  return f(r.RC, 0) | f(r.LC, 3) | f(r.T1248, 10) | f(r.SLCK, 12) | f(r.CMOD, 13) | f(r.EX, 15) | f(r.PRST, 16) |
-         f(r.SINT, 17) | f(r.XPCK, 18) | f(r.PCK2, 19) | f(r.SPML, 21) | f(r.GCONT, 25) | f(r.PHS, 26) | f(r.PVS, 27) |
-         f(r.PEHS, 28) | f(r.PEVS, 29) | f(r.CLKSEL, 30) | f(r.NVCK, 32) | f(r.SLCK2, 33) | f(r.VCKSEL, 34) |
-         f(r.VHP, 36);
+  namespace S = gs::regs::SMODE1;
+  using gs::regs::encode;
+  return encode(S::RC, r.RC) | encode(S::LC, r.LC) | encode(S::T1248, r.T1248) | encode(S::SLCK, r.SLCK) |
+         encode(S::CMOD, r.CMOD) | encode(S::EX, r.EX) | encode(S::PRST, r.PRST) | encode(S::SINT, r.SINT) |
+         encode(S::XPCK, r.XPCK) | encode(S::PCK2, r.PCK2) | encode(S::SPML, r.SPML) | encode(S::GCONT, r.GCONT) |
+         encode(S::PHS, r.PHS) | encode(S::PVS, r.PVS) | encode(S::PEHS, r.PEHS) | encode(S::PEVS, r.PEVS) |
+         encode(S::CLKSEL, r.CLKSEL) | encode(S::NVCK, r.NVCK) | encode(S::SLCK2, r.SLCK2) |
+         encode(S::VCKSEL, r.VCKSEL) | encode(S::VHP, r.VHP);
 }
 
 struct syncv_reg {
   unsigned VFP = 0, VFPE = 0, VBP = 0, VBPE = 0, VDP = 0, VS = 0;
 };
 constexpr std::uint64_t encode(const syncv_reg& r) {
-  return std::uint64_t{r.VFP} | (std::uint64_t{r.VFPE} << 10) | (std::uint64_t{r.VBP} << 20) |
-         (std::uint64_t{r.VBPE} << 32) | (std::uint64_t{r.VDP} << 42) | (std::uint64_t{r.VS} << 53);
+  namespace S = gs::regs::SYNCV;
+  using gs::regs::encode;
+  return encode(S::VFP, r.VFP) | encode(S::VFPE, r.VFPE) | encode(S::VBP, r.VBP) | encode(S::VBPE, r.VBPE) |
+         encode(S::VDP, r.VDP) | encode(S::VS, r.VS);
 }
 
 constexpr smode1_reg smode1_for(video_mode m) {
@@ -109,9 +113,9 @@ constexpr std::uint64_t display_for(video_mode m, int width, int height) {
     dx = 254 + (pal ? 262 : 222) + std::max(0, 2892 - dw) / 2 - 1;
     dy = static_cast<int>(v.VS + v.VBP + v.VBPE) + std::max(0, static_cast<int>(v.VDP) - height) / 2 - 1;
   }
-  return static_cast<std::uint64_t>(dx) | (static_cast<std::uint64_t>(dy) << 12) |
-         (static_cast<std::uint64_t>(magh) << 23) | (static_cast<std::uint64_t>(dw - 1) << 32) |
-         (static_cast<std::uint64_t>(height - 1) << 44);
+  namespace D = gs::regs::DISPLAY;
+  auto put = [](gs::regs::field f, int v) { return gs::regs::encode(f, static_cast<std::uint64_t>(v)); };
+  return put(D::DX, dx) | put(D::DY, dy) | put(D::MAGH, magh) | put(D::DW, dw - 1) | put(D::DH, height - 1);
 }
 
 }  // namespace gs::packets

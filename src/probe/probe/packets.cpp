@@ -7,6 +7,7 @@
 #include "gs_arith/registers.hpp"
 #include "gs_memory/memory_registers.hpp"
 #include "gs_packets/packetiser.hpp"
+#include "gs_packets/register_values.hpp"
 #include "gs_packets/video_mode.hpp"
 #include "gs_packets/gs_registers.hpp"
 #include "gs_packets/state.hpp"
@@ -18,21 +19,21 @@ namespace {
 namespace pk = gs::packets;
 using write = std::pair<std::uint8_t, std::uint64_t>;
 
-// SCISSOR_1: SCAX0 0-10, SCAX1 16-26, SCAY0 32-42, SCAY1 48-58 (GS manual; PCSX2 GSRegs.h GIFRegSCISSOR).
-std::uint64_t scissor_value(const rect& r) {
-  auto f = [](int v) { return static_cast<std::uint64_t>(v) & 0x7FF; };
-  return f(r.x0) | f(r.x1) << 16 | f(r.y0) << 32 | f(r.y1) << 48;
-}
-// TEX1_1: MMAG bit 5, MMIN bits 6-8 (1 = LINEAR) (PCSX2 GSRegs.h GIFRegTEX1).
-std::uint64_t tex1_value(bool linear) { return linear ? (1u << 5) | (1u << 6) : 0; }
-
 // The state registers of a draw, in the order they are written (PRIM last: it resets the vertex queue).
 std::vector<write> state_writes(const draw& d) {
   const gs::gs_registers& r = d.regs;
-  return {{0x06, gs::encode(r.TEX0_1)},   {0x14, tex1_value(d.linear)}, {0x40, scissor_value(d.scissor)},
-          {0x42, gs::encode(r.ALPHA_1)},  {0x47, gs::encode(r.TEST_1)}, {0x4C, gs::encode(r.FRAME_1)},
-          {0x46, gs::encode(r.COLCLAMP)}, {0x49, gs::encode(r.PABE)},   {0x4A, gs::encode(r.FBA_1)},
-          {0x45, gs::encode(r.DTHE)},     {0x44, gs::encode(r.DIMX)},   {0x00, gs::encode(r.PRIM)}};
+  return {{0x06, gs::encode(r.TEX0_1)},
+          {0x14, pk::tex1_value(d.linear, false)},
+          {0x40, pk::scissor_value(d.scissor.x0, d.scissor.x1, d.scissor.y0, d.scissor.y1)},
+          {0x42, gs::encode(r.ALPHA_1)},
+          {0x47, gs::encode(r.TEST_1)},
+          {0x4C, gs::encode(r.FRAME_1)},
+          {0x46, gs::encode(r.COLCLAMP)},
+          {0x49, gs::encode(r.PABE)},
+          {0x4A, gs::encode(r.FBA_1)},
+          {0x45, gs::encode(r.DTHE)},
+          {0x44, gs::encode(r.DIMX)},
+          {0x00, gs::encode(r.PRIM)}};
 }
 
 void add_texture_upload(pk::packet_builder& pb, const std::vector<std::uint32_t>& texels) {
@@ -55,11 +56,12 @@ void add_texture_upload(pk::packet_builder& pb, const std::vector<std::uint32_t>
 }  // namespace
 
 display_registers probe_display() {
-  const std::uint64_t pmode = 1u | 1u << 2 | 1u << 5 | 0xFFu << 8;
-  const std::uint64_t dispfb = std::uint64_t{frame_fbw} << 9;  // FBP 0, PSM PSMCT32, DBX = DBY = 0
-  const std::uint64_t display =
-      636u | 50u << 12 | 3u << 23 | std::uint64_t{4 * frame_width - 1} << 32 | std::uint64_t{frame_height - 1} << 44;
-  return {pmode, 1, dispfb, display};
+  namespace D = gs::regs::DISPLAY;
+  using gs::regs::encode;
+  const std::uint64_t dispfb = pk::dispfb_value(0, frame_fbw);
+  const std::uint64_t display = encode(D::DX, 636) | encode(D::DY, 50) | encode(D::MAGH, 3) |
+                                encode(D::DW, 4 * frame_width - 1) | encode(D::DH, frame_height - 1);
+  return {pk::pmode_circuit1(), 1, dispfb, display};
 }
 
 pk::packet_builder probe_packets() {

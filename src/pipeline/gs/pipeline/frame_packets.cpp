@@ -14,6 +14,7 @@
 #include "gs_packets/gs_registers.hpp"
 #include "gs_packets/packed.hpp"
 #include "gs_packets/packetiser.hpp"
+#include "gs_packets/register_values.hpp"
 #include "gs_packets/video_mode.hpp"
 #include "pipeline/band_renderer.hpp"
 #include "pipeline/pass_table.hpp"
@@ -27,23 +28,6 @@ namespace pk = gs::packets;
 
 // The A+D addresses this stream writes (GS User's Manual register map; gs_registers.hpp's table).
 constexpr std::uint8_t address(std::string_view name) { return *pk::gs_register_address(name); }
-
-// Registers without a decoder in gs_arith / gs_memory, packed by their manual layouts (PCSX2
-// `GSRegs.h` REG64_ structs): XYOFFSET OFX 0-15, OFY 32-47; SCISSOR SCAX0 0-10, SCAX1 16-26, SCAY0
-// 32-42, SCAY1 48-58; TEX1 LCM 0, MXL 2-4, MMAG 5, MMIN 6-8, MTBA 9, L 19-20, K 32-43; PRMODECONT AC 0.
-constexpr std::uint64_t xyoffset(std::uint32_t ofx, std::uint32_t ofy) { return ofx | (std::uint64_t{ofy} << 32); }
-constexpr std::uint64_t scissor_reg(const scissor& r) {
-  return static_cast<std::uint64_t>(r.x0) | (static_cast<std::uint64_t>(r.x1 - 1) << 16) |
-         (static_cast<std::uint64_t>(r.y0) << 32) | (static_cast<std::uint64_t>(r.y1 - 1) << 48);
-}
-// LCM = 1 (LOD = K = 0: the base level), MXL = 0, MMAG = MMIN = the filter.
-constexpr std::uint64_t tex1(bool linear) { return 1u | (std::uint64_t{linear} << 5) | (std::uint64_t{linear} << 6); }
-
-// Privileged registers (GS User's Manual): PMODE EN1 0, EN2 1, CRTMD 2-4 (always 001), MMOD 5,
-// AMOD 6, SLBG 7, ALP 8-15; DISPFB FBP 0-8, FBW 9-14, PSM 15-19, DBX 32-42, DBY 43-53. DISPLAY1 and
-// the video mode's registers: gs_packets/video_mode.hpp.
-constexpr std::uint64_t pmode_circuit1() { return 1u | (1u << 2) | (1u << 5) | (0xFFu << 8); }
-constexpr std::uint64_t dispfb(std::uint32_t fbp, std::uint32_t fbw) { return fbp | (std::uint64_t{fbw} << 9); }
 
 std::uint64_t rgbaq(gs::rgba8 c) { return gs::encode(gs::rgbaq_reg{c, 0x3F800000u}); }  // Q = 1.0
 
@@ -82,7 +66,7 @@ class stream {
     set(address("TRXREG"), gs::mem::encode(c->TRXREG));
     set(address("TRXDIR"), gs::mem::encode(lab_copy::TRXDIR));
   }
-  void clip(const scissor& r) { set(address("SCISSOR_1"), scissor_reg(r)); }
+  void clip(const scissor& r) { set(address("SCISSOR_1"), pk::scissor_value(r.x0, r.x1 - 1, r.y0, r.y1 - 1)); }
   // TEX0_1 (with the pass's TFX / TCC), TEX1_1, CLAMP_1.
   // cbp: the palette of a PSMT8 / PSMT8H texture, loaded (CLD = 1) unless `load` is false.
   void texture(const pass_regs& p, gs::mem::buffer at, int w, int h, std::optional<std::uint32_t> cbp, bool clamp,
@@ -100,7 +84,7 @@ class stream {
       t.CLD = gs::u3::from_wrapped(load ? 1 : 0);
     }
     set(address("TEX0_1"), gs::encode(t));
-    set(address("TEX1_1"), tex1(linear));
+    set(address("TEX1_1"), pk::tex1_value(linear, true));
     gs::mem::clamp_reg c;
     if (clamp) c.WMS = c.WMT = gs::mem::wrap_mode::CLAMP;
     set(address("CLAMP_1"), gs::mem::encode(region != nullptr ? *region : c));
@@ -226,7 +210,7 @@ frame_packets build_frame_packets(const scene& s, const prepared_scene& ps, meth
 
   // 1. Environment.
   g.set(address("PRMODECONT"), 1);
-  g.set(address("XYOFFSET_1"), xyoffset(16 * xy_offset_pixels, 16 * xy_offset_pixels));
+  g.set(address("XYOFFSET_1"), pk::xyoffset_value(16 * xy_offset_pixels, 16 * xy_offset_pixels));
   g.clip(g.frame());
   g.set(address("DTHE"), gs::encode(gs::dthe_reg{false}));
   g.set(address("PABE"), gs::encode(gs::pabe_reg{false}));
@@ -363,8 +347,8 @@ frame_packets build_frame_packets(const scene& s, const prepared_scene& ps, meth
   fp.gif = g.out.bytes();
   fp.triangles = g.triangles_written;
   fp.sprites = g.sprites_written;
-  fp.PMODE = pmode_circuit1();
-  fp.DISPFB1 = dispfb(OUT, b.fbw);
+  fp.PMODE = pk::pmode_circuit1();
+  fp.DISPFB1 = pk::dispfb_value(OUT, b.fbw);
   fp.width = ps.width;
   fp.height = ps.height;
   return fp;
