@@ -3,6 +3,7 @@
 // claims that take longer than a second. `--shard K/N` and `prove merge` split one claim's sweeps
 // across processes (proofs/shard.hpp; docs/sharding.md). Exit 0 when the catalogue ran (refutations are results),
 // 2 for bad arguments or an unknown claim id.
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -20,7 +21,12 @@
 #include "gs_arith/profiles.hpp"
 #include "proofs/claim.hpp"
 #include "proofs/ledger.hpp"
+#include "pipeline/method.hpp"
+#include "pipeline/performance_claims.hpp"
+#include "pipeline/quality_claims.hpp"
+#include "pipeline/scheme_method.hpp"
 #include "proofs/runner.hpp"
+#include "proofs/seed_coverage.hpp"
 #include "proofs/shard.hpp"
 
 namespace gsdot3::cli {
@@ -29,7 +35,7 @@ namespace {
 struct prove_args {
   std::vector<std::string> claims;
   model_args model{"--option"};
-  bool json = false, markdown = false, no_variants = false, list = false, brute_force = false;
+  bool json = false, markdown = false, no_variants = false, list = false, brute_force = false, coverage = false;
   unsigned threads = 0;
   std::string shard, output;       // --shard K/N, --output FILE
   std::vector<std::string> parts;  // prove merge PARTS...
@@ -69,7 +75,48 @@ struct progress_printer {
   }
 };
 
-void run_prove(const prove_args& a, context& ctx) {
+// Whether a reference of the coverage table names something this program has: a quality or
+// performance claim id, a `gsdot3 render --method` or a `gsdot3 render` option.
+bool resolves(std::string_view ref, const CLI::App& app) {
+  using proofs::reference_kind;
+  const std::string r(ref);
+  switch (proofs::kind_of(ref)) {
+    case reference_kind::catalogue_claim: return proofs::find_claim(ref) != nullptr;
+    case reference_kind::quality_claim: {
+      const auto ids = pipeline::quality_claim_ids();
+      return std::find(ids.begin(), ids.end(), r) != ids.end();
+    }
+    case reference_kind::performance_claim:
+      return std::find(std::begin(pipeline::performance_ids::all), std::end(pipeline::performance_ids::all), ref) !=
+             std::end(pipeline::performance_ids::all);
+    case reference_kind::method: {
+      const std::string_view m = ref.substr(7);
+      for (auto gs : {pipeline::method::two_pass, pipeline::method::four_pass, pipeline::method::baseline})
+        if (pipeline::name(gs) == m) return true;
+      return pipeline::find_scheme_method(m) != nullptr;
+    }
+    case reference_kind::option: {
+      const auto render = app.get_subcommands([](const CLI::App* sub) { return sub->get_name() == "render"; });
+      return render.size() == 1 && render[0]->get_option_no_throw(r.substr(7)) != nullptr;
+    }
+  }
+  return false;
+}
+
+// Seed 000's coverage table as Markdown, after checking every row (a problem is an internal error:
+// the table ships with the program, ctest runs this).
+std::string coverage_section(const CLI::App& app) {
+  const auto& rows = proofs::seed_coverage();
+  const auto problems = proofs::coverage_problems(rows, [&](std::string_view r) { return resolves(r, app); });
+  if (!problems.empty()) {
+    std::string all;
+    for (const auto& p : problems) all += "\n  " + p;
+    throw std::logic_error("seed_coverage.json:" + all);
+  }
+  return proofs::coverage_markdown(rows);
+}
+
+void run_prove(const prove_args& a, const CLI::App& app, context& ctx) {
   if (a.json && a.markdown) throw usage_error("--json and --markdown are exclusive");
   const gs::model_options opts = a.model.resolve();
   std::vector<const proofs::claim*> selected;
@@ -106,7 +153,8 @@ void run_prove(const prove_args& a, context& ctx) {
   }
   const auto results = proofs::run(selected, opts, cfg);
   printer->finish();
-  emit(ledger_as(results, a), a.output);
+  // The whole catalogue's Markdown is docs/claims.md, which ends with seed 000's coverage table.
+  emit(ledger_as(results, a) + (a.markdown && a.claims.empty() ? coverage_section(app) : ""), a.output);
   ctx.exit_code = 0;
 }
 
@@ -144,6 +192,9 @@ void add_prove_command(CLI::App& app, context& ctx) {
   cmd->add_flag("--no-variants", args->no_variants, "Skip the re-runs under the other option values");
   cmd->add_option("--threads", args->threads, "Worker threads (default: all cores)")->check(CLI::Range(1U, 256U));
   cmd->add_flag("--list", args->list, "List the claim ids and exit");
+  cmd->add_flag("--coverage", args->coverage,
+                "Print seed 000's coverage table (the last section of docs/claims.md: every step, equation, figure "
+                "and statement of the paper with the claim, method or option covering it) and exit");
   cmd->add_option(
       "--shard", args->shard,
       "K/N: evaluate only the K-th of N deterministic slices of the claim's sweeps (0 <= K < N) and write a "
@@ -179,14 +230,19 @@ void add_prove_command(CLI::App& app, context& ctx) {
     if (args->parts.empty()) throw usage_error("merge: no partial ledger files given");
     run_merge(*args, ctx);
   });
-  cmd->callback([args, merge, &ctx] {
+  cmd->callback([args, merge, &app, &ctx] {
     if (merge->parsed()) return;
+    if (args->coverage) {
+      emit(coverage_section(app), args->output);
+      ctx.exit_code = 0;
+      return;
+    }
     if (args->list) {
       for (const auto& c : proofs::catalogue()) std::cout << c.id << "\t" << c.paper << "\n";
       ctx.exit_code = 0;
       return;
     }
-    run_prove(*args, ctx);
+    run_prove(*args, app, ctx);
   });
 }
 

@@ -90,21 +90,21 @@ std::vector<performance_row> performance_rows(const scene& s, const render_optio
   const cost::frame_cost two = price(s, method::two_pass), four = price(s, method::four_pass),
                          base = price(s, method::baseline);
   std::vector<performance_row> rows;
-  rows.push_back(compare("perf.two-vs-four", "abstract, §5",
+  rows.push_back(compare(std::string(performance_ids::two_vs_four), "abstract, §5",
                          "a cheap two-pass solution and a more expensive four-pass alternative", method::two_pass,
                          method::four_pass, two, four));
-  rows.push_back(compare("perf.two-vs-2002", "§2",
+  rows.push_back(compare(std::string(performance_ids::two_vs_2002), "§2",
                          "the proposed signed multiplication improves the speed compared to [Breugelmanns02]: two-pass",
                          method::two_pass, method::baseline, two, base));
   rows.push_back(
-      compare("perf.four-vs-2002", "§2",
+      compare(std::string(performance_ids::four_vs_2002), "§2",
               "the proposed signed multiplication improves the speed compared to [Breugelmanns02]: four-pass",
               method::four_pass, method::baseline, four, base));
 
   // §3.4: the explicit clear of every light after the first, which the Z-buffer trick removes.
   {
     const std::uint32_t dpb = buffer_layout_for(s.width, s.height).dpb();
-    performance_row r{"perf.free-dpb-clear",
+    performance_row r{std::string(performance_ids::free_dpb_clear),
                       "§3.1 step 2.1, §3.4",
                       "the DPB clear is free for every light after the first one (the Z-buffer trick)",
                       {},
@@ -128,7 +128,7 @@ std::vector<performance_row> performance_rows(const scene& s, const render_optio
 
   // What each light adds: the scene's first light repeated 1, 2 and 3 times.
   {
-    performance_row r{"perf.cost-per-light",
+    performance_row r{std::string(performance_ids::cost_per_light),
                       "§3.1 steps 2.1-2.6, §4",
                       "every light repeats steps 2.1-2.6; the paper's scene has two point lights in real time",
                       {},
@@ -157,13 +157,14 @@ std::vector<performance_row> performance_rows(const scene& s, const render_optio
   {
     const std::uint64_t c4 = four.cycles.total();
     const double field_share = cost::seconds(c4) * cost::ntsc_hz;
-    rows.push_back(
-        {"perf.real-time", "§4", "the four-pass method running in real time on the PS2 (512 x 448, two point lights)",
-         "four-pass " + cycles_text(c4) + " at " + std::to_string(s.width) + "x" + std::to_string(s.height) + " with " +
-             std::to_string(s.lights.size()) + " light(s): " + format("%.1f %%", 100.0 * field_share) +
-             " of an NTSC field (GS time of the normal-mapped "
-             "object alone; the rest of a game's frame shares the field)",
-         field_share <= 1.0 ? "holds" : "refuted"});
+    rows.push_back({std::string(performance_ids::real_time), "§4",
+                    "the four-pass method running in real time on the PS2 (512 x 448, two point lights)",
+                    "four-pass " + cycles_text(c4) + " at " + std::to_string(s.width) + "x" + std::to_string(s.height) +
+                        " with " + std::to_string(s.lights.size()) +
+                        " light(s): " + format("%.1f %%", 100.0 * field_share) +
+                        " of an NTSC field (GS time of the normal-mapped "
+                        "object alone; the rest of a game's frame shares the field)",
+                    field_share <= 1.0 ? "holds" : "refuted"});
   }
 
   // §3.7: specular through the ILP (the n-th power in the palette): the same passes, another palette.
@@ -176,7 +177,7 @@ std::vector<performance_row> performance_rows(const scene& s, const render_optio
       return static_cast<long long>(a.cycles.total()) - static_cast<long long>(b.cycles.total());
     };
     const long long d2 = delta(s2, two), d4 = delta(s4, four);
-    rows.push_back({"perf.specular", "§3.7",
+    rows.push_back({std::string(performance_ids::specular), "§3.7",
                     "a specular light through the ILP raised to the n-th power (n = 16 here) instead of diffuse",
                     "two-pass " + std::to_string(s2.cycles.total()) + " cycles (diffuse " +
                         std::to_string(two.cycles.total()) + "), four-pass " + std::to_string(s4.cycles.total()) +

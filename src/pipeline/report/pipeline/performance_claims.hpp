@@ -8,6 +8,7 @@
 
 #include <functional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "gs_cost/constants.hpp"
@@ -15,6 +16,16 @@
 #include "pipeline/scene.hpp"
 
 namespace gsdot3::pipeline {
+
+// The rows' ids, in the order performance_rows returns them (the coverage table cites them).
+namespace performance_ids {
+inline constexpr std::string_view two_vs_four = "perf.two-vs-four", two_vs_2002 = "perf.two-vs-2002",
+                                  four_vs_2002 = "perf.four-vs-2002", free_dpb_clear = "perf.free-dpb-clear",
+                                  cost_per_light = "perf.cost-per-light", real_time = "perf.real-time",
+                                  specular = "perf.specular";
+inline constexpr std::string_view all[] = {two_vs_four,    two_vs_2002, four_vs_2002, free_dpb_clear,
+                                           cost_per_light, real_time,   specular};
+}  // namespace performance_ids
 
 struct performance_row {
   std::string claim, paper, statement;  // the claim id, where in the seed, the sentence tested

@@ -75,6 +75,12 @@ const claim_def claims[] = {
 
 }  // namespace
 
+std::vector<std::string> quality_claim_ids() {
+  std::vector<std::string> ids;
+  for (const claim_def& c : claims) ids.emplace_back(c.id);
+  return ids;
+}
+
 method_errors measure_errors(method m, const frame& f, const reference_frame& ref, const prepared_scene& ps) {
   method_errors e{m};
   e.pixel_ops = f.pixel_ops;

@@ -54,6 +54,9 @@ quality_scene measure_quality(const std::string& name, const scene& s, const ren
 // The scene of the random set with this seed: the embedded head at a random tessellation, 1 to 3 point
 // lights and a camera at random positions (a SplitMix64 stream, the same on every platform), w × h.
 scene random_quality_scene(std::uint64_t seed, int width = 256, int height = 224);
+// The ids of the claims the rows test ("quality.two-pass-vs-2002", ...; the coverage table cites them).
+std::vector<std::string> quality_claim_ids();
+
 // The rows of every claim × metric over the given scenes (each scene must hold all three methods).
 std::vector<quality_row> quality_rows(const std::vector<quality_scene>& scenes);
 
