@@ -59,17 +59,29 @@ std::vector<float> parse_floats(const std::string& what, const std::string& text
   return v;
 }
 
-// X,Y,Z:RRGGBB — world position and colour in hex (0x80 per channel = 1.0).
-pipeline::point_light parse_light(const std::string& text) {
+// [point:|directional:]X,Y,Z:RRGGBB — a point light's world position, or the world direction towards a
+// directional light (nonzero), and the colour in hex (0x80 per channel = 1.0).
+pipeline::scene_light parse_light(std::string text) {
+  pipeline::light_kind kind = pipeline::light_kind::point;
+  for (const auto& [prefix, k] : {std::pair{std::string("point:"), pipeline::light_kind::point},
+                                  std::pair{std::string("directional:"), pipeline::light_kind::directional}})
+    if (text.starts_with(prefix)) {
+      kind = k;
+      text.erase(0, prefix.size());
+    }
   const auto colon = text.find(':');
-  if (colon == std::string::npos) throw usage_error("--light: expected X,Y,Z:RRGGBB, got '" + text + "'");
+  if (colon == std::string::npos)
+    throw usage_error("--light: expected [point:|directional:]X,Y,Z:RRGGBB, got '" + text + "'");
   const auto p = parse_floats("--light", text.substr(0, colon), 3);
   const std::string hex = text.substr(colon + 1);
   if (hex.size() != 6 || hex.find_first_not_of("0123456789abcdefABCDEF") != std::string::npos)
     throw usage_error("--light: colour must be 6 hex digits RRGGBB, got '" + hex + "'");
+  if (kind == pipeline::light_kind::directional && p[0] == 0.0f && p[1] == 0.0f && p[2] == 0.0f)
+    throw usage_error("--light: a directional light needs a nonzero direction, got '" + text + "'");
   const unsigned long c = std::stoul(hex, nullptr, 16);
   return {{p[0], p[1], p[2]},
-          {static_cast<std::uint8_t>(c >> 16), static_cast<std::uint8_t>(c >> 8), static_cast<std::uint8_t>(c)}};
+          {static_cast<std::uint8_t>(c >> 16), static_cast<std::uint8_t>(c >> 8), static_cast<std::uint8_t>(c)},
+          kind};
 }
 
 std::pair<int, int> parse_size(const std::string& text) {
@@ -162,7 +174,7 @@ scene_setup setup(const render_args& a) {
     throw usage_error("--dpb-clear: expected explicit, z-trick or z-trick-psmz32, got '" + a.dpb_clear + "'");
   if ((a.memory_path || a.dpb_clear != "explicit") && 4 * ((w + 63) / 64) * ((h + 31) / 32) > 512)
     throw usage_error("--memory-path: four " + a.size + " PSMCT32 buffers do not fit in the GS's 4 MiB (512 pages)");
-  std::vector<pipeline::point_light> lights;
+  std::vector<pipeline::scene_light> lights;
   for (const std::string& l : a.lights) lights.push_back(parse_light(l));
   std::vector<float> eye;
   if (!a.camera.empty()) eye = parse_floats("--camera", a.camera, 3);
@@ -269,7 +281,9 @@ void add_options(CLI::App* cmd, render_args& a) {
   cmd->add_option("--bump", a.bump, "height-map slope scale (per grey level)")->capture_default_str();
   cmd->add_option(
       "--light", a.lights,
-      "point light X,Y,Z:RRGGBB (world position; colour in hex, 0x80 = 1.0); repeat for more lights; "
+      "light [point:]X,Y,Z:RRGGBB (point light at a world position) or directional:X,Y,Z:RRGGBB (world "
+      "direction towards the light; section 3: the same tolight at every vertex); colour in hex, 0x80 = 1.0; "
+      "repeat for more lights; "
       "default: green 109820 at -2.2,1.4,2.2 and blue 1038B0 at 2.6,-0.2,0.4 (for a framed mesh: turned with --view)");
   cmd->add_option(
       "--camera", a.camera,

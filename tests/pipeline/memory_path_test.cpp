@@ -66,7 +66,9 @@ TEST_P(MemoryPath, EqualsTheValueLevelFrameOnRandomScenes) {
     scene s = base;
     s.width = size(rng);
     s.height = size(rng);
-    s.lights = {{{pos(rng), pos(rng), pos(rng)}, colour()}, {{pos(rng), pos(rng), pos(rng)}, colour()}};
+    // Even trials make the second light directional (section 3: the same tolight at every vertex).
+    const light_kind second = trial % 2 == 0 ? light_kind::directional : light_kind::point;
+    s.lights = {{{pos(rng), pos(rng), pos(rng)}, colour()}, {{pos(rng), pos(rng), pos(rng)}, colour(), second}};
     s.view.eye = glm::vec3(pos(rng), pos(rng), 3.0f + std::fabs(pos(rng)));
     const prepared_scene ps = prepare(s, yaw(rng), trial % 3 == 2);
     render_options o;

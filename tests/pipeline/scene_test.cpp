@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <random>
 
+#include <glm/geometric.hpp>
+
 #include "gs_arith/gouraud.hpp"
 #include "pipeline/default_scene.hpp"
 #include "pipeline/encoders.hpp"
@@ -245,6 +247,29 @@ TEST(Reference, CoversTheSamePixelsAndStaysInRange) {
     ASSERT_LE(std::fabs(r.unnormalised[0][i]), 128.001f);
   }
   EXPECT_GT(covered, 3000u);
+}
+
+// A directional light is the limit of a point light moved away along its direction: the per-vertex
+// tolight vectors and fades of directional d equal those of a point light at 10^5·d (within float
+// error), under a yaw too, and unlike a nearby point light's they do not depend on the vertex.
+TEST(Prepare, DirectionalLightIsThePointLightAtInfinity) {
+  scene far = shared_scene(), dir = far, near = far;
+  const glm::vec3 d = glm::normalize(glm::vec3(-1.0f, 0.6f, 1.0f));
+  far.lights = {{d * 1.0e5f, {0x80, 0x80, 0x80}}};
+  dir.lights = {{d * 3.0f, {0x80, 0x80, 0x80}, light_kind::directional}};  // any length
+  near.lights = {{d * 3.0f, {0x80, 0x80, 0x80}}};
+  for (const float yaw : {0.0f, 90.0f}) {
+    const prepared_scene pf = prepare(far, yaw), pd = prepare(dir, yaw), pn = prepare(near, yaw);
+    ASSERT_EQ(pd.lights[0].size(), pf.lights[0].size());
+    float worst_far = 0.0f, worst_near = 0.0f;
+    for (std::size_t i = 0; i < pd.lights[0].size(); ++i) {
+      worst_far = std::max({worst_far, glm::length(pd.lights[0][i].T - pf.lights[0][i].T),
+                            std::fabs(pd.lights[0][i].fade - pf.lights[0][i].fade)});
+      worst_near = std::max(worst_near, glm::length(pd.lights[0][i].T - pn.lights[0][i].T));
+    }
+    EXPECT_LT(worst_far, 1.0e-3f) << "yaw " << yaw;
+    EXPECT_GT(worst_near, 0.05f) << "yaw " << yaw;  // a point light at 3·d is not the same light
+  }
 }
 
 }  // namespace

@@ -58,9 +58,9 @@ camera frame_unit_sphere(float azimuth, float elevation, int width, int height, 
   return {view_direction(azimuth, elevation) * d, glm::vec3(0.0f), glm::degrees(2.0f * half_y)};
 }
 
-std::vector<point_light> default_lights(float azimuth, float elevation) {
-  std::vector<point_light> lights = default_scene(8).lights;
-  for (point_light& l : lights) l.position = turn(l.position, azimuth, elevation);
+std::vector<scene_light> default_lights(float azimuth, float elevation) {
+  std::vector<scene_light> lights = default_scene(8).lights;
+  for (scene_light& l : lights) l.position = turn(l.position, azimuth, elevation);
   return lights;
 }
 

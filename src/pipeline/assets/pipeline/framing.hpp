@@ -33,6 +33,6 @@ camera frame_unit_sphere(float azimuth, float elevation, int width, int height, 
                          float margin = 1.1f);
 
 // The embedded scene's two lights (green front-left above, blue right), turned with the view.
-std::vector<point_light> default_lights(float azimuth, float elevation);
+std::vector<scene_light> default_lights(float azimuth, float elevation);
 
 }  // namespace gsdot3::pipeline

@@ -22,7 +22,7 @@ struct scene_request {
   normal_map_settings normal_maps;
   std::optional<std::array<float, 2>> view;  // azimuth, elevation in degrees (meshes: default 0, 0)
   std::optional<glm::vec3> eye;              // --camera: looking at the origin
-  std::vector<point_light> lights;           // empty: the defaults
+  std::vector<scene_light> lights;           // empty: the defaults
   int width = 512, height = 448;
 };
 

@@ -47,16 +47,18 @@ prepared_scene prepare(const scene& s, float yaw_degrees, bool half_vectors) {
              static_cast<std::int32_t>(std::lround(z * 16777215.0f))};
   }
 
-  // Light vectors in tangent space, from the light positions taken into object space.
+  // Light vectors in tangent space, from the light positions (directions, for a directional light)
+  // taken into object space.
   const glm::mat4 to_object = glm::inverse(model);
   const glm::vec3 eye = glm::vec3(to_object * glm::vec4(s.view.eye, 1.0f));
   ps.lights.resize(s.lights.size());
   for (std::size_t l = 0; l < s.lights.size(); ++l) {
-    const glm::vec3 lp = glm::vec3(to_object * glm::vec4(s.lights[l].position, 1.0f));
+    const bool directional = s.lights[l].kind == light_kind::directional;
+    const glm::vec3 lp = glm::vec3(to_object * glm::vec4(s.lights[l].position, directional ? 0.0f : 1.0f));
     ps.lights[l].resize(verts.size());
     for (std::size_t i = 0; i < verts.size(); ++i) {
       const vertex& v = verts[i];
-      const glm::vec3 L = glm::normalize(lp - v.position);
+      const glm::vec3 L = glm::normalize(directional ? lp : lp - v.position);
       const glm::vec3 H = half_vectors ? glm::normalize(L + glm::normalize(eye - v.position)) : L;
       ps.lights[l][i].T =
           glm::normalize(glm::vec3(glm::dot(H, v.tangent), glm::dot(H, v.bitangent), glm::dot(H, v.normal)));

@@ -40,9 +40,15 @@ struct texture32 {
   std::vector<std::uint32_t> texels;
 };
 
-struct point_light {
-  glm::vec3 position{};
+// Section 3 ("both methods work with directional, spot and point lights"): a point light at a world
+// position, or a directional light whose `position` is the world direction towards the light (any
+// length; the same tolight vector at every vertex). Spot lights (§3.6's projective intensity texture)
+// are not modelled.
+enum class light_kind { point, directional };
+struct scene_light {
+  glm::vec3 position{};                  // point: world position; directional: direction towards the light
   std::array<std::uint8_t, 3> colour{};  // GS colour units: 0x80 = 1.0
+  light_kind kind = light_kind::point;
 };
 
 struct camera {
@@ -55,7 +61,7 @@ struct scene {
   mesh model;
   normal_map normals;
   texture32 diffuse;
-  std::vector<point_light> lights;
+  std::vector<scene_light> lights;
   std::array<std::uint8_t, 3> ambient{0x10, 0x10, 0x10};
   camera view;
   int width = 512, height = 448;

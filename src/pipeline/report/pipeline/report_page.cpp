@@ -272,7 +272,7 @@ page_files write_report_page(const std::filesystem::path& dir, const page_inputs
   page["palette"] = nlohmann::json::array();
   for (const glm::vec3& n : in.s->normals.palette) page["palette"].push_back({n.x, n.y, n.z});
   page["light_colours"] = nlohmann::json::array();
-  for (const point_light& l : in.s->lights) page["light_colours"].push_back({l.colour[0], l.colour[1], l.colour[2]});
+  for (const scene_light& l : in.s->lights) page["light_colours"].push_back({l.colour[0], l.colour[1], l.colour[2]});
   page["ambient"] = {in.s->ambient[0], in.s->ambient[1], in.s->ambient[2]};
   for (method m : in.methods) {
     const std::string nm(name(m));

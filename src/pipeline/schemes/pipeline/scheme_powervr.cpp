@@ -48,7 +48,7 @@ std::vector<pvr::offset_colour> cheap_offsets(const scene& s) {
   const glm::dvec3 right = glm::normalize(glm::cross(forward, glm::dvec3(0, 1, 0))), up = glm::cross(right, forward);
   std::vector<pvr::offset_colour> out;
   for (const auto& l : s.lights) {
-    const glm::dvec3 d = glm::dvec3(l.position) - centre;
+    const glm::dvec3 d = glm::dvec3(l.position) - (l.kind == light_kind::directional ? glm::dvec3(0.0) : centre);
     const double light_angle = std::atan2(glm::dot(d, up), glm::dot(d, right));
     const double up_angle = std::atan2(glm::dot(glm::dvec3(0, 1, 0), up), glm::dot(glm::dvec3(0, 1, 0), right));
     double q = std::numbers::pi / 2 + (light_angle - up_angle);
