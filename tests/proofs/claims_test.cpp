@@ -57,6 +57,9 @@ TEST(Claims, EveryCatalogueRowRunsAndIsTested) {
                                              "eq9.rgb-sum",
                                              "ilp.palette-permutation",
                                              "ilp.dpb-clear-zero",
+                                             "ilp.light-into-lab",
+                                             "lab.saturation",
+                                             "step4.diffuse-times-lab",
                                              "appendix2.packing",
                                              "two-pass.na-rounding",
                                              "appendix1.sphere-map",
@@ -161,6 +164,29 @@ TEST(Claims, IlpRotationAndTheClearValue) {
   EXPECT_EQ(fig(o, "intensity_four_pass_minus_128"), 1);
   EXPECT_EQ(fig(o, "intensity_two_pass"), 1);
   EXPECT_EQ(fig(o, "intensity_clear_0x0080807F"), 0);
+}
+
+// Section 3.1 steps 2, 2.6 and 4: the LAB. The saturated counts are written another way: for an ILP
+// entry i and colour c the LAB bytes d that overflow are those above 255 − floor(i·c/128), i.e.
+// floor(i·c/128) of them; a diffuse·LAB product saturates when t·l ≥ 256·128.
+TEST(Claims, LabAccumulationAndTheDiffuseMultiply) {
+  const auto& ilp = base("ilp.light-into-lab");
+  EXPECT_EQ(ilp.result, p::verdict::proven);
+  std::int64_t over = 0;
+  for (int i = 0; i <= 128; ++i)
+    for (int c = 0; c < 256; ++c) over += i * c / 128;
+  EXPECT_EQ(fig(ilp, "saturated"), over);
+  EXPECT_EQ(fig(ilp, "loss_max_128ths"), 127);  // e.g. i = 127, c = 1: 127/128 dropped
+  EXPECT_EQ(fig(ilp, "full_intensity_not_light"), 0);
+  EXPECT_EQ(base("lab.saturation").result, p::verdict::proven);
+  EXPECT_EQ(fig(base("lab.saturation"), "default_green_lights_to_saturate"), 2);  // 0x10 + 2·0x98 = 320
+  const auto& s4 = base("step4.diffuse-times-lab");
+  EXPECT_EQ(s4.result, p::verdict::proven);
+  std::int64_t sat = 0;
+  for (int t = 1; t < 256; ++t) sat += std::max(0, 256 - (32768 + t - 1) / t);  // l >= ceil(32768 / t)
+  EXPECT_EQ(fig(s4, "saturated"), sat);
+  EXPECT_EQ(fig(s4, "loss_max_128ths"), 127);
+  EXPECT_EQ(fig(s4, "lab_0x80_not_identity"), 0);
 }
 
 TEST(Claims, Appendix2PackingAndNaRounding) {

@@ -7,7 +7,10 @@
 #include <cstdio>
 #include <vector>
 
+#include "gs_arith/alpha_blend.hpp"
+#include "gs_arith/colclamp.hpp"
 #include "proofs/domains.hpp"
+#include "proofs/methods.hpp"
 #include "proofs/two_pass.hpp"
 #include "reference.hpp"
 
@@ -222,4 +225,24 @@ TEST(Reduction, AttenuatedLightsKeepTheTwoPassBoundsAtSmallerS) {
   EXPECT_EQ(bvlo, svlo);
   EXPECT_EQ(behi, sehi);
   EXPECT_EQ(belo, selo);
+}
+
+// lab.saturation sweeps two additions and argues n by induction; here three and four lights added in
+// turn through the model's blend and clamp, against min(255, sum), on every 7th byte.
+TEST(Reduction, LabSaturationHoldsForThreeAndFourLights) {
+  namespace m = gsdot3::proofs::methods;
+  const gs::model_options o{};
+  auto add = [&](int d, int x) {
+    return gs::colclamp(gs::alpha_blend(m::add_blend, m::grey(x, 0), m::grey(d, 0), o), m::byte(0), true).r.value();
+  };
+  std::uint64_t checked = 0;
+  for (int d = 0; d < 256; d += 7)
+    for (int x = 0; x < 256; x += 7)
+      for (int y = 0; y < 256; y += 7)
+        for (int z = 0; z < 256; z += 7) {
+          ASSERT_EQ(add(add(add(d, x), y), z), std::min(255, d + x + y + z)) << d << " " << x << " " << y << " " << z;
+          ASSERT_EQ(add(add(add(add(d, x), y), z), x), std::min(255, d + 2 * x + y + z));
+          ++checked;
+        }
+  EXPECT_EQ(checked, 37u * 37 * 37 * 37);
 }

@@ -18,6 +18,9 @@ GSDOT3_CLAIM(eq8_offset_multiply);
 GSDOT3_CLAIM(eq9_rgb_sum);
 GSDOT3_CLAIM(ilp_palette_permutation);
 GSDOT3_CLAIM(ilp_dpb_clear_zero);
+GSDOT3_CLAIM(ilp_light_into_lab);
+GSDOT3_CLAIM(lab_saturation);
+GSDOT3_CLAIM(step4_diffuse_times_lab);
 // appendices and section 3.5 (claims_packing.cpp, claims_two_pass.cpp)
 GSDOT3_CLAIM(appendix2_packing);
 GSDOT3_CLAIM(two_pass_na_rounding);
