@@ -4,6 +4,7 @@
 // (gs_methods' ilp_into_lab, multiply_red); each expected value is the exact integer formula.
 #include <algorithm>
 #include <string>
+#include <vector>
 
 #include "proofs/claim_util.hpp"
 #include "proofs/claims.hpp"
@@ -45,6 +46,13 @@ struct product_acc {
   }
 };
 
+// The figures of a product sweep: what floor drops at most, how many cases clamp, how many unit
+// cases (the factor that stands for 1.0) do not give the other factor back.
+std::vector<figure> product_figures(const product_acc& r, const char* unit_case) {
+  return {fig("loss_max_128ths", r.loss.max), fig("saturated", static_cast<std::int64_t>(r.saturated)),
+          fig(unit_case, static_cast<std::int64_t>(r.unit_wrong))};
+}
+
 }  // namespace
 
 outcome ilp_light_into_lab(const gs::model_options& o, const sweep_config& cfg) {
@@ -68,8 +76,7 @@ outcome ilp_light_into_lab(const gs::model_options& o, const sweep_config& cfg) 
            hexdec(ilp_into_lab(i, c, d, o)) +
            ", min(255, LAB + floor(ILP·light/128)) = " + hexdec(std::min(255, d + i * c / 128));
   });
-  out.figures = {fig("loss_max_128ths", r.loss.max), fig("saturated", static_cast<std::int64_t>(r.saturated)),
-                 fig("full_intensity_not_light", static_cast<std::int64_t>(r.unit_wrong))};
+  out.figures = product_figures(r, "full_intensity_not_light");
   out.note =
       "one light adds floor(ILP·colour/128) to each LAB channel, clamped at 255: the look-up times the colour "
       "with 0x80 = 1.0 (ILP 128, a dot product of 127, adds the colour itself), rounded down by less than 1";
@@ -125,8 +132,7 @@ outcome step4_diffuse_times_lab(const gs::model_options& o, const sweep_config& 
     return "diffuse " + hexdec(t) + ", LAB " + hexdec(l) + " => GS " + hexdec(diffuse_times_lab(t, l, o)) +
            ", min(255, floor(diffuse·LAB/128)) = " + hexdec(std::min(255, t * l / 128));
   });
-  out.figures = {fig("loss_max_128ths", r.loss.max), fig("saturated", static_cast<std::int64_t>(r.saturated)),
-                 fig("lab_0x80_not_identity", static_cast<std::int64_t>(r.unit_wrong))};
+  out.figures = product_figures(r, "lab_0x80_not_identity");
   out.note =
       "step 4 gives min(255, floor(diffuse·LAB/128)) per channel: the product with LAB 0x80 = 1.0 (the diffuse "
       "texel itself), rounded down, and a LAB above 0x80 brightens up to the clamp";
