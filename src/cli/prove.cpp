@@ -233,6 +233,8 @@ void add_prove_command(CLI::App& app, context& ctx) {
   cmd->callback([args, merge, &app, &ctx] {
     if (merge->parsed()) return;
     if (args->coverage) {
+      if (args->json || args->markdown || args->list || !args->claims.empty() || !args->shard.empty())
+        throw usage_error("--coverage prints the coverage table alone (Markdown): it takes only --output");
       emit(coverage_section(app), args->output);
       ctx.exit_code = 0;
       return;
