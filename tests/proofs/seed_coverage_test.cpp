@@ -13,6 +13,7 @@
 #include <string>
 
 #include "pipeline/performance_claims.hpp"
+#include "proofs/claim.hpp"
 #include "pipeline/quality_claims.hpp"
 
 namespace gsdot3::proofs {
@@ -22,6 +23,7 @@ namespace {
 // (ctest proofs_cli_coverage runs `gsdot3 prove --coverage`, which resolves them against `render`).
 bool resolves(std::string_view ref) {
   switch (kind_of(ref)) {
+    case reference_kind::catalogue_claim: return find_claim(ref) != nullptr;
     case reference_kind::quality_claim: {
       const auto ids = pipeline::quality_claim_ids();
       return std::find(ids.begin(), ids.end(), std::string(ref)) != ids.end();

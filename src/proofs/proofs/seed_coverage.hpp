@@ -34,8 +34,8 @@ reference_kind kind_of(std::string_view reference);
 // The rows' problems, one line each ("row 12 (3.1 step 2.1): ..."), empty when there are none: a kind
 // that is not one of the four; kind "none" with a cover or a cover without a kind; an uncovered row
 // without a note; kind "claim" without a claim id among its references, "method" without a method
-// (and no claim), "option" with neither; a catalogue id that is not in the catalogue; a reference
-// `resolves` rejects (methods, options, quality and performance ids: the layers above know them).
+// (and no claim), "option" with neither; a reference `resolves` rejects (catalogue ids through
+// find_claim; methods, options, quality and performance ids: the layers above know them).
 std::vector<std::string> coverage_problems(std::span<const coverage_row> rows,
                                            const std::function<bool(std::string_view)>& resolves);
 
