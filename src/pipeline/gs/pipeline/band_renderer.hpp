@@ -8,10 +8,12 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <type_traits>
 #include <vector>
 
 #include "gs_arith/attribute_setup.hpp"
+#include "gs_arith/attribute_walk.hpp"
 #include "gs_arith/depth_test.hpp"
 #include "gs_arith/gouraud.hpp"
 #include "gs_memory/fast_address.hpp"
@@ -244,28 +246,31 @@ class band_renderer {
   static constexpr gs::gs_registers batch_registers = Pass.registers();
   // The SIMD pixel pipeline (render_options::simd; a traced render records every pixel, so it is scalar).
   bool vectorised() const noexcept { return o_.simd && pending == nullptr; }
-  // draw() through span_batch: one batch per triangle (the cached fragments are in triangle order).
+  // draw() through span_batch: one batch per triangle (the cached fragments are in triangle order),
+  // the attributes stepped along each row (gs::attribute_walker, equal to colour_at and plane::at).
   template <class FB>
   void draw_spans(const gs::gs_registers& regs, const texture_ref* tex, const std::vector<tri_attr>& attr,
                   const FB& fb) {
     span_batch batch(regs, o_.model);
-    auto add = [&](std::size_t t, int x, int y) {
-      const tri_attr& a = attr[t];
-      const gs::rgba8 texel = tex != nullptr ? tex->sample(a.u.at(x, y), a.v.at(x, y)) : gs::rgba8{};
-      batch.add(fb(x, y), texel, a.colour_at(x, y), x, y);
+    auto add = [&](gs::attribute_walker& w, int x, int y) {
+      const gs::attribute_walker::values a = w.at(x, y);
+      const gs::rgba8 texel = tex != nullptr ? tex->sample(a.u, a.v) : gs::rgba8{};
+      batch.add(fb(x, y), texel, a.cf, x, y);
       ++ops_;
     };
     if (o_.path == raster_path::cached) {
       std::int32_t last = -1;
+      std::optional<gs::attribute_walker> w;
       for (const fragment& f : frags_) {
-        if (f.tri != last) batch.flush(), last = f.tri;
-        add(static_cast<std::size_t>(f.tri), f.x, f.y);
+        if (f.tri != last) batch.flush(), last = f.tri, w.emplace(attr[static_cast<std::size_t>(f.tri)]);
+        add(*w, f.x, f.y);
       }
       return;
     }
     for (std::size_t t = 0; t < ps_.triangles.size(); ++t) {
+      gs::attribute_walker w(attr[t]);
       rasterise_triangle(ps_.triangles[t].setup, band_, [&](int x, int y) {
-        if (passes_later_depth_test(ps_.triangles[t], x, y)) add(t, x, y);
+        if (passes_later_depth_test(ps_.triangles[t], x, y)) add(w, x, y);
       });
       batch.flush();
     }
