@@ -64,12 +64,12 @@ void expect_walk_equal(const walk_case& k, gs::gouraud_setup s, int skip) {
 
 rc::Gen<walk_case> triangle_gen(int span) {
   auto xy = rc::gen::construct<gs::xy124>(rc::gen::inRange(0, span * 16), rc::gen::inRange(0, span * 16));
-  auto colour = rc::gen::map(rc::gen::arbitrary<std::uint32_t>(), [](std::uint32_t c) { return gs::rgba8::from_u32(c); });
+  auto colour =
+      rc::gen::map(rc::gen::arbitrary<std::uint32_t>(), [](std::uint32_t c) { return gs::rgba8::from_u32(c); });
   auto uv = rc::gen::container<std::array<std::int32_t, 2>>(rc::gen::inRange(-(1 << 16), 1 << 16));
-  return rc::gen::construct<walk_case>(rc::gen::container<std::array<gs::xy124, 3>>(xy),
-                                       rc::gen::container<std::array<gs::rgba8, 3>>(colour),
-                                       rc::gen::container<std::array<std::array<std::int32_t, 2>, 3>>(uv),
-                                       rc::gen::element(0, 2048, 4000));
+  return rc::gen::construct<walk_case>(
+      rc::gen::container<std::array<gs::xy124, 3>>(xy), rc::gen::container<std::array<gs::rgba8, 3>>(colour),
+      rc::gen::container<std::array<std::array<std::int32_t, 2>, 3>>(uv), rc::gen::element(0, 2048, 4000));
 }
 
 RC_GTEST_PROP(AttributeWalk, EqualsTheReferenceOnSmallTriangles, ()) {
@@ -87,8 +87,7 @@ RC_GTEST_PROP(AttributeWalk, EqualsTheReferenceOnLargeAndThinTriangles, ()) {
 // there, as the reference's clamp stops the plane. A 4000-pixel triangle whose red rises by four levels
 // (0.128 units per pixel) stays unsaturated 65 536 pixels out, so the clamp shows in the colour.
 TEST(AttributeWalk, RowsAcrossTheDistanceClamp) {
-  const gs::triangle_setup t =
-      gs::setup_triangle({gs::xy124{0, 0}, gs::xy124{16 * 4000, 0}, gs::xy124{0, 16 * 4000}});
+  const gs::triangle_setup t = gs::setup_triangle({gs::xy124{0, 0}, gs::xy124{16 * 4000, 0}, gs::xy124{0, 16 * 4000}});
   const std::array<gs::rgba8, 3> c{gs::rgba8::from_u32(0x80808080), gs::rgba8::from_u32(0x7C7C8484),
                                    gs::rgba8::from_u32(0x80808080)};
   for (gs::gouraud_setup s : setups) {
