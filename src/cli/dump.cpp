@@ -39,7 +39,7 @@ void add_dump_command(CLI::App& app, context& ctx) {
   cmd->callback([out, video, max_packet, scene, &ctx] {
     scene_setup st = scene();
     if (st.methods.size() != 1 || !st.schemes.empty())
-      throw usage_error("--method: name one GS method (two-pass, four-pass or baseline) for a dump");
+      throw usage_error("--method: name one GS method (" + pipeline::method_names() + ") for a dump");
     st.options.memory_path = true;
     const auto t0 = std::chrono::steady_clock::now();
     std::cerr << "gsdot3: building the " << pipeline::name(st.methods[0]) << " packets\n";

@@ -91,7 +91,7 @@ bool resolves(std::string_view ref, const CLI::App& app) {
              std::end(pipeline::performance_ids::all);
     case reference_kind::method: {
       const std::string_view m = ref.substr(7);
-      for (auto gs : {pipeline::method::two_pass, pipeline::method::four_pass, pipeline::method::baseline})
+      for (auto gs : pipeline::gs_methods)
         if (pipeline::name(gs) == m) return true;
       return pipeline::find_scheme_method(m) != nullptr;
     }

@@ -94,14 +94,12 @@ std::pair<int, int> parse_size(const std::string& text) {
 }
 
 // A comma-separated list of method names: the GS methods, the other seeds' scheme methods
-// (pipeline::scheme_methods()), "gs" (the three GS methods) or "all" (every method).
+// (pipeline::scheme_methods()), "gs" (every GS method) or "all" (every method).
 struct method_choice {
   std::vector<pipeline::method> gs;
   std::vector<const pipeline::scheme_method*> schemes;
 };
 method_choice parse_methods(const std::string& list) {
-  const std::vector<pipeline::method> gs_methods{pipeline::method::two_pass, pipeline::method::four_pass,
-                                                 pipeline::method::baseline};
   method_choice c;
   auto add_gs = [&](pipeline::method m) {
     if (std::find(c.gs.begin(), c.gs.end(), m) == c.gs.end()) c.gs.push_back(m);
@@ -112,19 +110,17 @@ method_choice parse_methods(const std::string& list) {
   std::stringstream in(list);
   for (std::string name; std::getline(in, name, ',');) {
     if (name == "all" || name == "gs") {
-      for (auto m : gs_methods) add_gs(m);
+      for (auto m : pipeline::gs_methods) add_gs(m);
       if (name == "all")
         for (const auto& sm : pipeline::scheme_methods()) add_scheme(&sm);
       continue;
     }
-    const auto gm = std::find_if(gs_methods.begin(), gs_methods.end(),
-                                 [&](pipeline::method m) { return pipeline::name(m) == name; });
-    if (gm != gs_methods.end()) {
+    if (const auto gm = pipeline::find_method(name)) {
       add_gs(*gm);
     } else if (const auto* sm = pipeline::find_scheme_method(name)) {
       add_scheme(sm);
     } else {
-      std::string known = "two-pass, four-pass, baseline";
+      std::string known = pipeline::method_names();
       for (const auto& m : pipeline::scheme_methods()) known += ", " + std::string(m.name);
       throw usage_error("--method: unknown method '" + name + "' (expected a comma-separated list of " + known +
                         ", gs or all)");
@@ -132,8 +128,8 @@ method_choice parse_methods(const std::string& list) {
   }
   // The float reference and the schemes take the visible triangle per pixel from a GS render.
   if (c.gs.empty())
-    throw usage_error(
-        "--method: name at least one GS method (two-pass, four-pass, baseline): the others are drawn on its geometry");
+    throw usage_error("--method: name at least one GS method (" + pipeline::method_names() +
+                      "): the others are drawn on its geometry");
   return c;
 }
 
@@ -259,10 +255,9 @@ void run(const render_args& a, bool html, context& ctx) {
 }
 
 void add_options(CLI::App* cmd, render_args& a) {
-  std::string methods = "comma-separated: two-pass, four-pass, baseline";
+  std::string methods = "comma-separated: " + pipeline::method_names();
   for (const auto& m : pipeline::scheme_methods()) methods += ", " + std::string(m.name);
-  cmd->add_option("--method", a.method, methods + "; gs = the three GS methods, all = every method")
-      ->capture_default_str();
+  cmd->add_option("--method", a.method, methods + "; gs = the GS methods, all = every method")->capture_default_str();
   cmd->add_option(
       "--mesh", a.mesh,
       "mesh file read by assimp: OBJ, glTF 2.0 (.gltf, .glb), PLY, FBX, Collada, ...; all its meshes merged with "

@@ -47,6 +47,20 @@ int two_pass_expected(glm::vec3 n, glm::vec3 T, int s) {
   return sum & 0xFF;
 }
 
+// Section 3.5's three-pass alternative: passes 1 and 2 as above, then 128 + N − P added to each
+// channel instead of n'_a; R+G+B mod 256.
+int three_pass_expected(glm::vec3 n, glm::vec3 T, int s) {
+  const two_pass_texel t = pack_two_pass(n);
+  const int P[3] = {t.positive.r.value(), t.positive.g.value(), t.positive.b.value()};
+  const int N[3] = {t.negative.r.value(), t.negative.g.value(), t.negative.b.value()};
+  int sum = 0;
+  for (int k = 0; k < 3; ++k) {
+    const int L = 128 + static_cast<signed char>(static_cast<int>(static_cast<float>(s) * T[k]));
+    sum += ((P[k] * L) >> 7) - ((N[k] * L) >> 7) + 128 + N[k] - P[k];
+  }
+  return sum & 0xFF;
+}
+
 // Section 2: 128 + NMpos·TLpos + NMneg·TLneg − NMneg·TLpos − NMpos·TLneg per channel (each >> 7).
 int baseline_expected(glm::vec3 n, glm::vec3 T) {
   int sum = 0;
@@ -103,6 +117,12 @@ TEST(ClosedForm, TwoPass) {
           two_pass_expected(glm::normalize(n), glm::normalize(T), 122));
 }
 
+TEST(ClosedForm, ThreePass) {
+  for (auto [n, T] : cases())
+    check(method::three_pass, glm::normalize(n), glm::normalize(T),
+          three_pass_expected(glm::normalize(n), glm::normalize(T), 122));
+}
+
 TEST(ClosedForm, Baseline) {
   for (auto [n, T] : cases())
     check(method::baseline, glm::normalize(n), glm::normalize(T),
@@ -111,11 +131,14 @@ TEST(ClosedForm, Baseline) {
 
 // The head-on case in numbers: n = T = (0, 0, 1) is a dot product of 1.0 (128). Four-pass: 127·127 >> 7
 // = 126; two-pass: 128·250 >> 7 = 250 for z, and 3·n'_a = 3·85 = 255 instead of n_a = 256, so
-// 250 + 255 − 384 = 121 (s/128 of full scale, less one for the rounding of n'_a); baseline 126.
+// 250 + 255 − 384 = 121 (s/128 of full scale, less one for the rounding of n'_a); three-pass adds
+// n_a itself (128 + 128 + 0): 250 + 256 − 384 = 122; baseline 126.
 TEST(ClosedForm, HeadOnValues) {
   EXPECT_EQ(dot_value(static_cast<std::uint8_t>(four_pass_expected({0, 0, 1}, {0, 0, 1}))), 126);
   EXPECT_EQ(dot_value(static_cast<std::uint8_t>(two_pass_expected({0, 0, 1}, {0, 0, 1}, 122))), 121);
+  EXPECT_EQ(dot_value(static_cast<std::uint8_t>(three_pass_expected({0, 0, 1}, {0, 0, 1}, 122))), 122);
   EXPECT_EQ(dot_value(static_cast<std::uint8_t>(baseline_expected({0, 0, 1}, {0, 0, 1}))), 126);
+  check(method::three_pass, {0, 0, 1}, {0, 0, 1}, 122 + 128);
   check(method::four_pass, {0, 0, 1}, {0, 0, 1}, 126 + 128);
 }
 

@@ -22,6 +22,7 @@
 #include "pipeline/encoders.hpp"
 #include "pipeline/frame_packets.hpp"
 #include "pipeline/pass_table.hpp"
+#include "method_param.hpp"
 
 namespace gsdot3::pipeline {
 namespace {
@@ -44,23 +45,25 @@ const scene& small_scene() {
 // The pass table by name (lookup of a drawn pass's decoded registers).
 const std::vector<std::pair<std::string, const pass_regs*>>& table() {
   using namespace passes;
-  static const std::vector<std::pair<std::string, const pass_regs*>> t = {{"fill", &step1_ambient},
-                                                                          {"two_pass_positive", &two_pass_positive},
-                                                                          {"two_pass_negative", &two_pass_negative},
-                                                                          {"two_pass_add_alpha", &two_pass_add_alpha},
-                                                                          {"four_pass_sphere", &four_pass_sphere},
-                                                                          {"four_pass_x", &four_pass_x},
-                                                                          {"four_pass_y", &four_pass_y},
-                                                                          {"four_pass_z", &four_pass_z},
-                                                                          {"baseline_add", &baseline_add},
-                                                                          {"baseline_subtract", &baseline_subtract},
-                                                                          {"post_add_into_red", &post_add_into_red},
-                                                                          {"ilp_into_lab", &ilp_into_lab},
-                                                                          {"diffuse_layer", &diffuse_layer},
-                                                                          {"multiply_red", &multiply_red},
-                                                                          {"multiply_green", &multiply_green},
-                                                                          {"multiply_blue", &multiply_blue},
-                                                                          {"move_into_alpha", &move_into_alpha}};
+  static const std::vector<std::pair<std::string, const pass_regs*>> t = {
+      {"fill", &step1_ambient},
+      {"two_pass_positive", &two_pass_positive},
+      {"two_pass_negative", &two_pass_negative},
+      {"three_pass_add_terms", &three_pass_add_terms},
+      {"two_pass_add_alpha", &two_pass_add_alpha},
+      {"four_pass_sphere", &four_pass_sphere},
+      {"four_pass_x", &four_pass_x},
+      {"four_pass_y", &four_pass_y},
+      {"four_pass_z", &four_pass_z},
+      {"baseline_add", &baseline_add},
+      {"baseline_subtract", &baseline_subtract},
+      {"post_add_into_red", &post_add_into_red},
+      {"ilp_into_lab", &ilp_into_lab},
+      {"diffuse_layer", &diffuse_layer},
+      {"multiply_red", &multiply_red},
+      {"multiply_green", &multiply_green},
+      {"multiply_blue", &multiply_blue},
+      {"move_into_alpha", &move_into_alpha}};
   return t;
 }
 
@@ -105,6 +108,8 @@ decoded decode(const frame_packets& fp) {
     std::string pass = "?";
     if (!prim.TME) r.TEX0_1 = {};  // untextured: TEX0 is not part of the pass
     for (const auto& [n, p] : table()) {
+      // Three-pass's pass 3 has two-pass's post-pass registers (DECAL, Cs + Cd, alpha kept), on triangles.
+      if (p == &passes::three_pass_add_terms && prim.PRIM != gs::prim_type::TRIANGLE) continue;
       gs::gs_registers want = p->registers();
       if (!prim.TME) want.TEX0_1 = {};
       if (want == r) {
@@ -135,6 +140,10 @@ std::vector<std::string> expected_passes(method m, std::size_t lights) {
                            "triangle four_pass_z DPB"});
         break;
       case method::baseline: p.insert(p.end(), {"triangle baseline_add DPB", "triangle baseline_subtract DPB"}); break;
+      case method::three_pass:
+        p.insert(p.end(), {"triangle two_pass_positive DPB", "triangle two_pass_negative DPB",
+                           "triangle three_pass_add_terms DPB"});
+        break;
     }
     p.insert(p.end(), {"sprite post_add_into_red DPB", "sprite ilp_into_lab LAB"});
   }
@@ -277,7 +286,7 @@ TEST_P(FramePackets, TrianglesAreThePreparedScenes) {
   const scene& s = small_scene();
   const prepared_scene ps = prepare(s);
   const frame_packets fp = build_frame_packets(s, ps, GetParam(), render_options{});
-  const std::size_t passes_per_light = GetParam() == method::two_pass ? 2 : 4;
+  const std::size_t passes_per_light = GetParam() == method::two_pass ? 2 : GetParam() == method::three_pass ? 3 : 4;
   EXPECT_EQ(fp.triangles, ps.triangles.size() * (2 + passes_per_light * s.lights.size()));
   std::size_t vertex = 0, mismatches = 0;
   std::uint64_t prim = 0, uv = 0;
@@ -341,6 +350,20 @@ TEST_P(FramePackets, UploadsPutTheScenesTexturesWhereTheTexturesAreRead) {
     t.CLD = gs::u3::from_wrapped(1);
     const gs::clut_buffer clut = gs::mem::load_clut(m, t, {}).buffer;
     EXPECT_EQ(clut, two_pass_palette(s.normals.palette, false));
+  }
+  // The three-pass terms palette at its slot: 128 + Max(−n, 0) − Max(n, 0) from Appendix 2's packing.
+  if (GetParam() == method::three_pass) {
+    gs::tex0_reg t;
+    t.PSM = gs::tex_psm::PSMT8;
+    t.CBP = fixed::uint<14>::from_wrapped(in.cbp[static_cast<std::size_t>(clut_slot::terms)]);
+    t.CLD = gs::u3::from_wrapped(1);
+    const gs::clut_buffer clut = gs::mem::load_clut(m, t, {}).buffer;
+    for (std::size_t i = 0; i < s.normals.palette.size() && i < 256; ++i) {
+      const two_pass_texel p = pack_two_pass(s.normals.palette[i]);  // Max(±n, 0): one side is 0
+      EXPECT_EQ(clut[i].r.value(), 128 - (p.positive.r.value() - p.negative.r.value())) << i;
+      EXPECT_EQ(clut[i].g.value(), 128 - (p.positive.g.value() - p.negative.g.value())) << i;
+      EXPECT_EQ(clut[i].b.value(), 128 - (p.positive.b.value() - p.negative.b.value())) << i;
+    }
   }
 }
 
@@ -416,13 +439,7 @@ TEST(FramePacketsLimits, RefusesWhatItDoesNotWrite) {
   EXPECT_THROW(build_frame_packets(wide, prepare(wide), method::two_pass, render_options{}), std::invalid_argument);
 }
 
-INSTANTIATE_TEST_SUITE_P(Methods, FramePackets,
-                         ::testing::Values(method::two_pass, method::four_pass, method::baseline),
-                         [](const auto& info) {
-                           return std::string(info.param == method::two_pass    ? "TwoPass"
-                                              : info.param == method::four_pass ? "FourPass"
-                                                                                : "Baseline");
-                         });
+INSTANTIATE_TEST_SUITE_P(Methods, FramePackets, ::testing::ValuesIn(gs_methods), method_param_name);
 
 }  // namespace
 }  // namespace gsdot3::pipeline

@@ -11,6 +11,7 @@
 #include "pipeline/default_scene.hpp"
 #include "pipeline/memory_picture.hpp"
 #include "pipeline/render.hpp"
+#include "method_param.hpp"
 
 namespace gsdot3::pipeline {
 namespace {
@@ -91,12 +92,7 @@ TEST_P(MemoryPath, EqualsTheValueLevelFrameOnRandomScenes) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Methods, MemoryPath, ::testing::Values(method::two_pass, method::four_pass, method::baseline),
-                         [](const auto& info) {
-                           return std::string(info.param == method::two_pass    ? "TwoPass"
-                                              : info.param == method::four_pass ? "FourPass"
-                                                                                : "Baseline");
-                         });
+INSTANTIATE_TEST_SUITE_P(Methods, MemoryPath, ::testing::ValuesIn(gs_methods), method_param_name);
 
 }  // namespace
 }  // namespace gsdot3::pipeline

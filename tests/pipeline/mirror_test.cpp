@@ -58,7 +58,7 @@ TEST_P(Mirror, SymmetricSceneGivesSymmetricFrame) {
   EXPECT_LT(mismatched, compared / 40) << name(GetParam()) << ": " << mismatched << " of " << compared << " differ";
 }
 
-INSTANTIATE_TEST_SUITE_P(Methods, Mirror, ::testing::Values(method::two_pass, method::four_pass, method::baseline));
+INSTANTIATE_TEST_SUITE_P(Methods, Mirror, ::testing::ValuesIn(gs_methods));
 
 }  // namespace
 }  // namespace gsdot3::pipeline

@@ -22,6 +22,7 @@
 #include "pipeline/default_scene.hpp"
 #include "pipeline/frame_packets.hpp"
 #include "pipeline/render.hpp"
+#include "method_param.hpp"
 
 namespace gsdot3::pipeline {
 namespace {
@@ -150,12 +151,7 @@ TEST_P(RoundTrip, ReplayedDumpIsTheRenderersFrameOnRandomScenes) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Methods, RoundTrip, ::testing::Values(method::two_pass, method::four_pass, method::baseline),
-                         [](const auto& info) {
-                           return std::string(info.param == method::two_pass    ? "TwoPass"
-                                              : info.param == method::four_pass ? "FourPass"
-                                                                                : "Baseline");
-                         });
+INSTANTIATE_TEST_SUITE_P(Methods, RoundTrip, ::testing::ValuesIn(gs_methods), method_param_name);
 
 }  // namespace
 }  // namespace gsdot3::pipeline

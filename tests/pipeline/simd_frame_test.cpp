@@ -9,6 +9,7 @@
 
 #include "pipeline/default_scene.hpp"
 #include "pipeline/render.hpp"
+#include "method_param.hpp"
 
 namespace gsdot3::pipeline {
 namespace {
@@ -71,12 +72,7 @@ TEST_P(SimdFrame, EqualsTheScalarFrameUnderEveryPathStorageAndOption) {
   EXPECT_GT(covered, 2 * 4 * 16 * 2000L) << "the head should be in view";
 }
 
-INSTANTIATE_TEST_SUITE_P(Methods, SimdFrame, ::testing::Values(method::two_pass, method::four_pass, method::baseline),
-                         [](const auto& info) {
-                           return std::string(info.param == method::two_pass    ? "TwoPass"
-                                              : info.param == method::four_pass ? "FourPass"
-                                                                                : "Baseline");
-                         });
+INSTANTIATE_TEST_SUITE_P(Methods, SimdFrame, ::testing::ValuesIn(gs_methods), method_param_name);
 
 }  // namespace
 }  // namespace gsdot3::pipeline

@@ -24,6 +24,7 @@
 #include "pipeline/gs_inputs.hpp"
 #include "pipeline/normal_map_image.hpp"
 #include "pipeline/render.hpp"
+#include "method_param.hpp"
 
 namespace gsdot3::pipeline {
 namespace {
@@ -130,13 +131,7 @@ TEST_P(TextureStreamMethods, A1024MapBilinearInANarrowWindowEqualsTheValuePath) 
                                "1024², 160x120, nearest");
 }
 
-INSTANTIATE_TEST_SUITE_P(Methods, TextureStreamMethods,
-                         ::testing::Values(method::two_pass, method::four_pass, method::baseline),
-                         [](const auto& info) {
-                           std::string n(name(info.param));
-                           std::replace(n.begin(), n.end(), '-', '_');
-                           return n;
-                         });
+INSTANTIATE_TEST_SUITE_P(Methods, TextureStreamMethods, ::testing::ValuesIn(gs_methods), method_param_name);
 
 // A 2048² PNG normal map (generated here: a pattern of bumps) loaded as a user's file is resampled
 // to 1024² (the GS's TW/TH limit) and streams like the procedural one.

@@ -60,6 +60,10 @@ inline constexpr pass_regs step1_ambient{};  // TME = 0, ABE = 0, COLCLAMP = 1; 
 inline constexpr pass_regs two_pass_positive{true, false, gs::tfx::MODULATE, gs::tcc::RGB, {}, false, 0};
 inline constexpr pass_regs two_pass_negative{true, true, gs::tfx::MODULATE, gs::tcc::RGBA, subtract_source, false, 0};
 inline constexpr pass_regs two_pass_add_alpha{true, true, gs::tfx::DECAL, gs::tcc::RGB, add_source, false, keep_alpha};
+// Section 3.5's three-pass alternative: "adding the terms as a separate additive pass" — the terms
+// palette's 128 + Max(−n, 0) − Max(n, 0) per channel (DECAL), Cs + Cd, COLCLAMP off, alpha kept.
+inline constexpr pass_regs three_pass_add_terms{true,       true,  gs::tfx::DECAL, gs::tcc::RGB,
+                                                add_source, false, keep_alpha};
 inline constexpr pass_regs four_pass_sphere{true, false, gs::tfx::HIGHLIGHT, gs::tcc::RGB, {}, false, keep_alpha};
 inline constexpr pass_regs four_pass_x{true,  true,           gs::tfx::DECAL, gs::tcc::RGBA, signed_multiply,
                                        false, only_channel[0]};

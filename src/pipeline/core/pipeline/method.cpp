@@ -7,8 +7,21 @@ std::string_view name(method m) {
     case method::two_pass: return "two-pass";
     case method::four_pass: return "four-pass";
     case method::baseline: return "baseline";
+    case method::three_pass: return "three-pass";
   }
   return "?";
+}
+
+std::optional<method> find_method(std::string_view n) {
+  for (method m : gs_methods)
+    if (name(m) == n) return m;
+  return std::nullopt;
+}
+
+std::string method_names() {
+  std::string s;
+  for (method m : gs_methods) s += (s.empty() ? "" : ", ") + std::string(name(m));
+  return s;
 }
 
 std::string_view name(dpb_clear_mode m) {

@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -14,8 +15,15 @@
 
 namespace gsdot3::pipeline {
 
-enum class method { two_pass, four_pass, baseline };
+// two_pass, four_pass: sections 3.5, 3.6; three_pass: section 3.5's alternative (its n_a terms in a third,
+// additive pass instead of the DPB alpha); baseline: section 2 (Breugelmans 2002).
+enum class method { two_pass, four_pass, baseline, three_pass };
 std::string_view name(method m);
+// Every GS method, in the order the report lists them.
+inline constexpr method gs_methods[] = {method::two_pass, method::four_pass, method::baseline, method::three_pass};
+// The GS method of that name, or nothing; and every name, comma-separated ("two-pass, four-pass, ...").
+std::optional<method> find_method(std::string_view name);
+std::string method_names();
 
 // reference: every pass rasterises every triangle again with ZTST = GEQUAL, as the GS does.
 // cached: the fragments passing GEQUAL after step 1 are recorded once (in draw order) and every

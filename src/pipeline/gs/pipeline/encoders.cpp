@@ -67,6 +67,18 @@ gs::clut_buffer two_pass_palette(const std::vector<glm::vec3>& normals, bool neg
   return p;
 }
 
+gs::clut_buffer three_pass_terms_palette(const std::vector<glm::vec3>& normals) {
+  gs::clut_buffer p{};
+  p.fill(rgba(128, 128, 128, 0x80));  // the zero normal's terms: the fill of the other two palettes
+  for (std::size_t i = 0; i < normals.size() && i < 256; ++i) {
+    const two_pass_texel t = pack_two_pass(normals[i]);
+    auto term = [](gs::u8 pos, gs::u8 neg) { return 128 + neg.value() - pos.value(); };
+    p[i] = rgba(term(t.positive.r, t.negative.r), term(t.positive.g, t.negative.g), term(t.positive.b, t.negative.b),
+                0x80);
+  }
+  return p;
+}
+
 gs::clut_buffer intensity_palette(double power) {
   gs::clut_buffer p{};
   for (int v = 0; v < 256; ++v) {

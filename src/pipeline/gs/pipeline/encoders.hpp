@@ -46,6 +46,10 @@ gs::clut_buffer reordered_palette(const std::vector<glm::vec3>& normals, int axi
 gs::clut_buffer signed_side_palette(const std::vector<glm::vec3>& normals, bool negative);
 // Two-pass palettes from Appendix 2.
 gs::clut_buffer two_pass_palette(const std::vector<glm::vec3>& normals, bool negative);
+// Section 3.5's three-pass terms: (128 + Max(−n, 0) − Max(n, 0)) per component of Appendix 2's packed
+// normal (its R_neg − R_pos, ...), alpha 0x80; each is in 1..255 since −127 <= iX, iY <= 127 and
+// 0 <= iZ <= 128 (appendix2.packing).
+gs::clut_buffer three_pass_terms_palette(const std::vector<glm::vec3>& normals);
 
 // Section 3.3: the ILP holds 1, 2, ..., 128 in the first 128 entries (dot products 0..127) and 0 in
 // the last 128 (negative dot products); the R+G+B sum arrives offset by 128, so entry v holds

@@ -65,7 +65,8 @@ std::optional<lab_copy> lab_to_output(const buffer_layout& b, const scissor& are
 
 struct gs_inputs {
   const normal_map* nm = nullptr;
-  // alpha_index: the index in every channel (the memory path's step 4 moves a LAB byte into alpha).
+  // alpha_index: the index in every channel (the memory path's step 4 moves a LAB byte into alpha);
+  // axis[0] is the three-pass terms palette (clut_slot::terms).
   gs::clut_buffer pos, neg, axis[3], ilp, grey, alpha_index;
   std::vector<std::uint32_t> sphere;  // 64×64, four-pass only
   const texture32* diffuse = nullptr;
@@ -86,7 +87,9 @@ struct gs_inputs {
 };
 
 // The eight palettes in upload order (clut_slot: the index into palettes() and gs_inputs::cbp).
-enum class clut_slot : std::uint8_t { pos, neg, axis_x, axis_y, axis_z, ilp, grey, alpha_index };
+// terms: the three-pass method's terms palette, in four-pass's X slot (gs_inputs::axis[0]); no method
+// uses both, and the palette page holds eight.
+enum class clut_slot : std::uint8_t { pos, neg, axis_x, axis_y, axis_z, ilp, grey, alpha_index, terms = axis_x };
 std::array<gs::clut_buffer*, 8> palettes(gs_inputs& in);
 std::array<const gs::clut_buffer*, 8> palettes(const gs_inputs& in);
 

@@ -94,7 +94,8 @@ struct light_pass {
 // How the palettes of the normal map's 256 normals are built (gs_inputs.cpp's make_inputs): the
 // two-pass Max(±n, 0) pair (slots pos, neg), the 2002 method's signed sides (pos, neg), or the
 // four-pass per-axis reordered palettes (axis_x .. axis_z).
-enum class palette_kind : std::uint8_t { two_pass, signed_side, reordered_axes };
+// The three-pass method has the two-pass pair and the terms palette (slot terms).
+enum class palette_kind : std::uint8_t { two_pass, signed_side, reordered_axes, three_pass };
 // A method: its palettes and its light passes in draw order. Steps 1, 2.1, 2.4 (R += G, R += B),
 // 2.5/2.6 (the ILP into the LAB), 3 and 4 are the same for every method (section 3.1).
 template <std::size_t N>
@@ -115,6 +116,21 @@ inline constexpr method_passes<3> two_pass_method{method::two_pass,
                                                       {&two_pass_add_alpha, pass_source::dpb_alpha, clut_slot::grey,
                                                        vertex_colour::white, "2.4a + n'a (PSMT8H of the DPB alpha)"},
                                                   }}};
+// Three-pass (section 3.5, "adding the terms as a separate additive pass"): two-pass's passes 1 and 2,
+// then 128 + Max(−n, 0) − Max(n, 0) added per channel from the terms palette, so the post filter is
+// r + g + b alone and n_a is never divided by three. Pass 2 still writes n'_a into the DPB alpha
+// (two_pass_negative's TCC = RGBA), which nothing reads.
+inline constexpr method_passes<3> three_pass_method{
+    method::three_pass,
+    palette_kind::three_pass,
+    {{
+        {&two_pass_positive, pass_source::normal_map, clut_slot::pos, vertex_colour::tolight,
+         "2.3 Max(n,0)·l (MODULATE)"},
+        {&two_pass_negative, pass_source::normal_map, clut_slot::neg, vertex_colour::tolight,
+         "2.3 − Max(−n,0)·l (MODULATE, Cd − Cs)"},
+        {&three_pass_add_terms, pass_source::normal_map, clut_slot::terms, vertex_colour::white,
+         "2.3 + (128 + Max(−n,0) − Max(n,0)) (DECAL, Cs + Cd)"},
+    }}};
 // Four-pass (section 3.6): the sphere map · fade, then (Cs − Cd)·As + Cd per axis into R, G, B.
 inline constexpr method_passes<4> four_pass_method{
     method::four_pass,
@@ -148,6 +164,7 @@ decltype(auto) with_method(method m, F&& f) {
     case method::two_pass: return f.template operator()<two_pass_method>();
     case method::four_pass: return f.template operator()<four_pass_method>();
     case method::baseline: return f.template operator()<baseline_method>();
+    case method::three_pass: return f.template operator()<three_pass_method>();
   }
   throw std::invalid_argument("unknown GS method");
 }

@@ -32,7 +32,7 @@ error_stats compare(const std::vector<std::vector<float>>& x, const std::vector<
 
 struct report_request {
   std::filesystem::path out_dir = "gsdot3-out";
-  std::vector<method> methods{method::two_pass, method::four_pass, method::baseline};
+  std::vector<method> methods{std::begin(gs_methods), std::end(gs_methods)};
   std::vector<const scheme_method*> schemes;  // the other seeds' methods (scheme_method.hpp)
   render_options options{};
   std::string scene_description = "embedded procedural scene";

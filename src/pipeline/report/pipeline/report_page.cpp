@@ -50,6 +50,10 @@ const std::vector<method_claims>& gs_method_claims() {
       // Breugelmans 2002 (section 2): products of the positive parts added and subtracted by the
       // blender, then the same R+G+B post filter and ILP.
       {"baseline", {"eq9.rgb-sum", "ilp.palette-permutation", "ilp.dpb-clear-zero"}},
+      // Section 3.5's alternative: two-pass's passes 1 and 2, then the n_a terms in an additive pass.
+      {"three-pass",
+       {"eq5-eq7.split-multiply", "eq10.split-offset-multiply", "appendix2.packing", "three-pass.error-bound",
+        "eq9.rgb-sum", "ilp.palette-permutation", "ilp.dpb-clear-zero", "clamp-wrap.intermediates"}},
   };
   return rows;
 }

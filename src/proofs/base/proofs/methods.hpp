@@ -89,6 +89,22 @@ constexpr rgba8 two_pass_pass2(rgba8 neg_texel, gs::fragment_colour light, rgba8
   return gs::colclamp(p.wide, p.as, gs_methods::two_pass_negative.CLAMP);
 }
 
+// ---- three-pass (section 3.5's alternative) ------------------------------------------------------
+// Pass 3: the terms palette texel (128 + Max(−n, 0) − Max(n, 0) per channel) through TFX = DECAL,
+// blended Cs + Cd over the DPB after pass 2, COLCLAMP off (gs_methods' three_pass_add_terms). Returns
+// the blend output before COLCLAMP.
+constexpr gs::rgb_wide three_pass_pass3_wide(rgba8 terms_texel, rgba8 dpb, const gs::model_options& o) noexcept {
+  constexpr const gs_methods::pass_regs& p = gs_methods::three_pass_add_terms;
+  const rgba8 cs = gs::texture_function(p.TFX, p.TCC, terms_texel, gs::fragment_colour::flat(grey(0x80, 0x80)), o);
+  return gs::alpha_blend(p.ALPHA, cs, dpb, o);
+}
+// Pass 3 written: COLCLAMP off (wrap), the DPB alpha kept (FBMSK).
+constexpr rgba8 three_pass_pass3(rgba8 terms_texel, rgba8 dpb, const gs::model_options& o) noexcept {
+  constexpr const gs_methods::pass_regs& p = gs_methods::three_pass_add_terms;
+  const rgba8 out = gs::colclamp(three_pass_pass3_wide(terms_texel, dpb, o), dpb.a, p.CLAMP);
+  return gs::frame_read(gs::frame_psm::PSMCT32, gs::frame_write(gs::frame_psm::PSMCT32, out, dpb.to_u32(), p.FBMSK));
+}
+
 // ---- post filters (value level, see the header comment) ---------------------------------------
 // Additive blend Cs + Cd: A = Cs, B = 0, C = FIX = 0x80, D = Cd: the post filter's ALPHA_1 (post_add_into_red).
 inline constexpr gs::alpha_reg add_blend = gs_methods::add_source;
