@@ -88,7 +88,7 @@ std::vector<performance_row> performance_rows(const scene& s, const render_optio
   if (s.lights.empty()) throw std::invalid_argument("performance claims: the scene has no light");
   const pricer price{o, c, progress};
   const cost::frame_cost two = price(s, method::two_pass), four = price(s, method::four_pass),
-                         base = price(s, method::baseline);
+                         base = price(s, method::baseline), three = price(s, method::three_pass);
   std::vector<performance_row> rows;
   rows.push_back(compare(std::string(performance_ids::two_vs_four), "abstract, §5",
                          "a cheap two-pass solution and a more expensive four-pass alternative", method::two_pass,
@@ -100,6 +100,11 @@ std::vector<performance_row> performance_rows(const scene& s, const render_optio
       compare(std::string(performance_ids::four_vs_2002), "§2",
               "the proposed signed multiplication improves the speed compared to [Breugelmanns02]: four-pass",
               method::four_pass, method::baseline, four, base));
+  rows.push_back(compare(std::string(performance_ids::two_vs_three), "§3.5",
+                         "a three-pass solution adding the terms as a separate additive pass avoids the precision "
+                         "loss, \"but it is probably not worth it\": what the third pass costs (its precision: "
+                         "three-pass.error-bound, quality.three-pass-vs-two-pass)",
+                         method::two_pass, method::three_pass, two, three));
 
   // §3.4: the explicit clear of every light after the first, which the Z-buffer trick removes.
   {

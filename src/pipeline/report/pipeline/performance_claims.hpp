@@ -22,9 +22,9 @@ namespace performance_ids {
 inline constexpr std::string_view two_vs_four = "perf.two-vs-four", two_vs_2002 = "perf.two-vs-2002",
                                   four_vs_2002 = "perf.four-vs-2002", free_dpb_clear = "perf.free-dpb-clear",
                                   cost_per_light = "perf.cost-per-light", real_time = "perf.real-time",
-                                  specular = "perf.specular";
+                                  specular = "perf.specular", two_vs_three = "perf.two-vs-three";
 inline constexpr std::string_view all[] = {two_vs_four,    two_vs_2002, four_vs_2002, free_dpb_clear,
-                                           cost_per_light, real_time,   specular};
+                                           cost_per_light, real_time,   specular,     two_vs_three};
 }  // namespace performance_ids
 
 struct performance_row {
