@@ -85,6 +85,26 @@ TEST(Reduction, TwoPassTableEqualsThePixelPipelineAndThePlainFormula) {
     }
 }
 
+// The three-pass variant: the table (terms through pass 3 of the model) against the whole pixel
+// (three passes and r + g + b through the model) and the plain formula.
+TEST(Reduction, ThreePassTableEqualsThePixelPipelineAndThePlainFormula) {
+  const gs::model_options o{};
+  const tp::table t(o, tp::na_term::additive_pass);
+  for (int n = -127; n <= 128; ++n) ASSERT_EQ(t.term(n), 128 - n) << n;
+  const auto normals = every_nth_normal(61);
+  const tp::light_grid g(122);
+  for (const auto& nm : normals) {
+    ASSERT_EQ(t.alpha_error(nm), 0);
+    for (std::size_t j = 0; j < g.lights.size(); j += 97) {
+      const auto& l = g.lights[j];
+      const auto px = tp::pixel(nm, tp::vertex_light(l), o, tp::na_term::additive_pass);
+      ASSERT_EQ(t.value(nm, l), px.value);
+      ASSERT_EQ(px.value, ref::three_pass_value(ref::appendix2(nm.iX, nm.iY), l[0], l[1], l[2]));
+      ASSERT_EQ(px.dot, px.value);
+    }
+  }
+}
+
 namespace {
 // Plain-int brute force: pairs with value >= hi or <= lo, and the first few indices.
 p::tally brute(const std::vector<p::paper::packed_normal>& normals, const tp::light_grid& g, int hi, int lo) {
@@ -147,6 +167,29 @@ TEST(Reduction, ErrorExtremesEqualBruteForceOnSubsampledNormals) {
     }
     EXPECT_GE(lo, -3);  // the argument's bound
     EXPECT_LE(hi, 3);
+    EXPECT_EQ(r.err.min, lo) << "every " << every;
+    EXPECT_EQ(r.err.max, hi) << "every " << every;
+  }
+}
+
+// The same search for the three-pass variant (e = 0, so the ends are ±2) against plain brute force.
+TEST(Reduction, ThreePassErrorExtremesEqualBruteForceOnSubsampledNormals) {
+  const tp::table t(gs::model_options{}, tp::na_term::additive_pass);
+  p::sweep_config cfg;
+  for (std::size_t every : {std::size_t{37}, std::size_t{1000}}) {
+    const auto normals = every_nth_normal(every);
+    const tp::light_grid g(122);
+    const auto r = tp::error_extremes(normals, g, t, cfg);
+    int lo = 100, hi = -100;
+    for (const auto& nm : normals) {
+      const auto n = ref::appendix2(nm.iX, nm.iY);
+      for (const auto& l : g.lights) {
+        const int e = ref::three_pass_value(n, l[0], l[1], l[2]) - ref::floor128(n.x * l[0] + n.y * l[1] + n.z * l[2]);
+        lo = std::min(lo, e), hi = std::max(hi, e);
+      }
+    }
+    EXPECT_GE(lo, -2);  // the argument's bound
+    EXPECT_LE(hi, 2);
     EXPECT_EQ(r.err.min, lo) << "every " << every;
     EXPECT_EQ(r.err.max, hi) << "every " << every;
   }

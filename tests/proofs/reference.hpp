@@ -36,6 +36,13 @@ constexpr int two_pass_value(const normal& n, int lx, int ly, int lz) {
          3 * n.alpha - 384;
 }
 
+// The three-pass value: the same channels, then each channel's term 128 + Max(−n, 0) − Max(n, 0) = 128 − n
+// added instead of 3·alpha.
+constexpr int three_pass_value(const normal& n, int lx, int ly, int lz) {
+  return two_pass_channel(n.x, 128 + lx) + two_pass_channel(n.y, 128 + ly) + two_pass_channel(n.z, 128 + lz) +
+         (128 - n.x) + (128 - n.y) + (128 - n.z) - 384;
+}
+
 // All reachable (iX, iY), in (iX, iY) order.
 inline std::vector<normal> appendix2_normals() {
   std::vector<normal> out;

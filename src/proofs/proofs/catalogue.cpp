@@ -82,6 +82,11 @@ const std::vector<claim>& catalogue() {
        "the two-pass per-pixel dot product (s = 122) against the exact integer dot product floor(n·l/128)",
        "every Appendix 2 normal × every packed light (char)(122·T)", M::reduction,
        depends("tfx_rounding", "blend_shift"), c::two_pass_error_bound},
+      {"three-pass.error-bound", "§3.5",
+       "\"to completely avoid the precision loss, one could also do a three-pass solution by adding the terms as a "
+       "separate additive pass\": its per-pixel dot product (s = 122) against floor(n·l/128)",
+       "every Appendix 2 normal × every packed light (char)(122·T)", M::reduction,
+       depends("tfx_rounding", "blend_shift"), c::three_pass_error_bound},
       {"two-pass.max-s.vertex", "§3.5", "s = 122 avoids wrapping (found by trial and error); the largest safe s",
        "every Appendix 2 normal × every packed light, from s = 126 up to the first s that wraps (s <= 125 by argument)",
        M::reduction, depends("tfx_rounding", "blend_shift"), c::two_pass_max_s_vertex},

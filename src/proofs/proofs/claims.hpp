@@ -26,6 +26,7 @@ GSDOT3_CLAIM(appendix2_packing);
 GSDOT3_CLAIM(two_pass_na_rounding);
 GSDOT3_CLAIM(appendix1_sphere_map);
 GSDOT3_CLAIM(two_pass_error_bound);
+GSDOT3_CLAIM(three_pass_error_bound);
 GSDOT3_CLAIM(two_pass_max_s_vertex);
 GSDOT3_CLAIM(two_pass_max_s_interpolated);
 // section 3.6 - 3.8 (claims_four_pass.cpp, claims_attenuation.cpp)

@@ -1,4 +1,5 @@
-// Section 3.5: the two-pass method's error and its wrap limit s.
+// Section 3.5: the two-pass method's error and its wrap limit s, and the error of its three-pass
+// alternative.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -39,8 +40,9 @@ outcome for_domain(outcome o, const sweep_config& cfg) {
 namespace {
 using two_pass_text::describe_light, two_pass_text::paper_s;
 
-std::string describe_pair(const paper::packed_normal& p, const ivec3& l, const gs::model_options& o) {
-  const auto r = two_pass::pixel(p, two_pass::vertex_light(l), o);
+std::string describe_pair(const paper::packed_normal& p, const ivec3& l, const gs::model_options& o,
+                          two_pass::na_term na = two_pass::na_term::thirds_in_alpha) {
+  const auto r = two_pass::pixel(p, two_pass::vertex_light(l), o, na);
   return "n = (" + std::to_string(p.iX) + ", " + std::to_string(p.iY) + ", " + std::to_string(p.iZ) + ") alpha " +
          hexdec(p.alpha) + ", " + describe_light(l) + " => value " + std::to_string(r.value) + ", DPB dot " +
          hexdec(r.dot) + ", floor(n·l/128) = " + std::to_string(two_pass::exact_dot(p, l));
@@ -79,6 +81,41 @@ outcome two_pass_error_bound(const gs::model_options& o, const sweep_config& cfg
   out.note =
       "per-pixel result − floor(n·l/128) over normals × packed lights (s = 122): the floors of the "
       "split products and the n'_a rounding add up to ±3";
+  return two_pass_text::for_domain(std::move(out), cfg);
+}
+
+outcome three_pass_error_bound(const gs::model_options& o, const sweep_config& cfg) {
+  // The three-pass alternative adds 128 + Max(−n_c, 0) − Max(n_c, 0) to each channel in a third pass
+  // instead of n'_a = (n_a + 1)/3 to all three. The same reduction as two_pass_error_bound, with
+  // e = what pass 3 adds − n_a: the sweep over every Appendix 2 normal below shows e = 0 (the terms
+  // palette entries are bytes 0..255 and Cs + Cd adds them exactly), so error = −floor(Σ r_c) ∈ [−2, 2];
+  // +2 needs n_x, n_y < 0, −2 needs n_x, n_y >= 0, and error_extremes searches those for witnesses.
+  const auto& normals = appendix2_normals();
+  const two_pass::light_grid g(paper_s);
+  const two_pass::table t(o, two_pass::na_term::additive_pass), thirds(o);
+  std::int64_t e_nonzero = 0, two_pass_e_nonzero = 0;
+  for (const auto& p : normals) e_nonzero += t.alpha_error(p) != 0, two_pass_e_nonzero += thirds.alpha_error(p) != 0;
+  const auto r = two_pass::error_extremes(normals, g, t, cfg);
+  const std::uint64_t nl = g.lights.size();
+  outcome out;
+  out.result = verdict::bound;
+  out.domain_size = normals.size() * nl;
+  out.figures = {fig("s", paper_s),
+                 fig("normals", static_cast<std::int64_t>(normals.size())),
+                 fig("normals_na_not_exact", e_nonzero),
+                 fig("two_pass_normals_na_not_exact", two_pass_e_nonzero),
+                 fig("err_min", r.err.min),
+                 fig("err_max", r.err.max),
+                 fig("full_scan", r.full_scan ? 1 : 0)};
+  const auto na = two_pass::na_term::additive_pass;
+  out.witnesses = {"err_min: " + describe_pair(normals[r.err.arg_min / nl], g.lights[r.err.arg_min % nl], o, na),
+                   "err_max: " + describe_pair(normals[r.err.arg_max / nl], g.lights[r.err.arg_max % nl], o, na)};
+  out.note = "the additive pass adds n_a exactly for " +
+             std::string(e_nonzero == 0 ? "every normal" : "all but " + std::to_string(e_nonzero) + " normals") +
+             " (two-pass's n'_a misses it by one for " + std::to_string(two_pass_e_nonzero) +
+             "), so the per-pixel error against floor(n·l/128) narrows from two-pass's ±3 to [" +
+             std::to_string(r.err.min) + ", " + std::to_string(r.err.max) +
+             "]: what is left is the floors of the split products, which the third pass cannot remove";
   return two_pass_text::for_domain(std::move(out), cfg);
 }
 

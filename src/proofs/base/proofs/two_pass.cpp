@@ -12,24 +12,31 @@ namespace m = methods;
 
 palette_pair palettes(const paper::packed_normal& p) noexcept {
   return {{m::byte(p.R_pos), m::byte(p.G_pos), m::byte(p.B_pos), m::byte(0)},
-          {m::byte(p.R_neg), m::byte(p.G_neg), m::byte(p.B_neg), m::byte(p.alpha)}};
+          {m::byte(p.R_neg), m::byte(p.G_neg), m::byte(p.B_neg), m::byte(p.alpha)},
+          {m::byte(128 + p.R_neg - p.R_pos), m::byte(128 + p.G_neg - p.G_pos), m::byte(128 + p.B_neg - p.B_pos),
+           m::byte(0x80)}};
 }
 
 gs::fragment_colour vertex_light(const ivec3& l) noexcept {
   return gs::fragment_colour::flat({m::byte(128 + l[0]), m::byte(128 + l[1]), m::byte(128 + l[2]), m::byte(0x80)});
 }
 
-pixel_result pixel(const paper::packed_normal& p, gs::fragment_colour light, const gs::model_options& o) noexcept {
+pixel_result pixel(const paper::packed_normal& p, gs::fragment_colour light, const gs::model_options& o,
+                   na_term na) noexcept {
   const auto pal = palettes(p);
   const gs::rgba8 dpb1 = m::two_pass_pass1(pal.pos, light, o);
   const auto p2 = m::two_pass_pass2_wide(pal.neg, light, dpb1, o);
   const gs::rgba8 dpb2 = gs::colclamp(p2.wide, p2.as, false);
-  const int value = p2.wide.r.value() + p2.wide.g.value() + p2.wide.b.value() + 3 * p2.as.value() - 384;
-  const int dot = m::as_signed(m::minus_128(m::sum_rgb_plus_3a(dpb2, o), o));
-  return {value, dot};
+  const int products = p2.wide.r.value() + p2.wide.g.value() + p2.wide.b.value();
+  if (na == na_term::thirds_in_alpha)
+    return {products + 3 * p2.as.value() - 384, m::as_signed(m::minus_128(m::sum_rgb_plus_3a(dpb2, o), o))};
+  const gs::rgb_wide p3 = m::three_pass_pass3_wide(pal.terms, dpb2, o);
+  const int added = p3.r.value() - dpb2.r.value() + p3.g.value() - dpb2.g.value() + p3.b.value() - dpb2.b.value();
+  const gs::rgba8 dpb3 = m::three_pass_pass3(pal.terms, dpb2, o);
+  return {products + added - 384, m::as_signed(m::minus_128(m::sum_rgb(dpb3, o), o))};
 }
 
-table::table(const gs::model_options& o) : channel_(256 * 256), alpha_(256) {
+table::table(const gs::model_options& o, na_term mode) : m_(mode), channel_(256 * 256), alpha_(256), term_(256) {
   for (int n = -127; n <= 128; ++n)
     for (int l = -128; l <= 127; ++l) {
       const auto light = gs::fragment_colour::flat(m::grey(128 + l, 0x80));
@@ -42,6 +49,9 @@ table::table(const gs::model_options& o) : channel_(256 * 256), alpha_(256) {
     alpha_[static_cast<std::size_t>(a)] =
         static_cast<std::int16_t>(m::two_pass_pass2_wide(m::grey(0, a), light, m::grey(0, 0), o).as.value());
   }
+  for (int n = -127; n <= 128; ++n)  // over a DPB byte of 0 (the blend adds Cd back unchanged)
+    term_[static_cast<std::size_t>(n + 127)] =
+        static_cast<std::int16_t>(m::three_pass_pass3_wide(m::grey(128 - n, 0x80), m::grey(0, 0), o).r.value());
 }
 
 light_grid::light_grid(int s_) : s(s_), lights(packed_lights(s_)) {
@@ -153,17 +163,20 @@ first_hit find_error(const std::vector<paper::packed_normal>& normals, const lig
 
 error_result error_extremes(const std::vector<paper::packed_normal>& normals, const light_grid& g, const table& t,
                             const sweep_config& cfg) {
+  int e_min = 0, e_max = 0;
+  if (!normals.empty()) e_min = e_max = t.alpha_error(normals.front());
+  for (const auto& p : normals) e_min = std::min(e_min, t.alpha_error(p)), e_max = std::max(e_max, t.alpha_error(p));
   const auto hi = find_error(
-      normals, g, t, 3, [&](const paper::packed_normal& p) { return t.alpha_error(p) == 1 && p.iX < 0 && p.iY < 0; },
-      cfg);
+      normals, g, t, e_max + 2,
+      [&](const paper::packed_normal& p) { return t.alpha_error(p) == e_max && p.iX < 0 && p.iY < 0; }, cfg);
   const auto lo = find_error(
-      normals, g, t, -3,
-      [&](const paper::packed_normal& p) { return t.alpha_error(p) == -1 && p.iX >= 0 && p.iY >= 0; }, cfg);
+      normals, g, t, e_min - 2,
+      [&](const paper::packed_normal& p) { return t.alpha_error(p) == e_min && p.iX >= 0 && p.iY >= 0; }, cfg);
   error_result r;
   r.evaluated = hi.evaluated + lo.evaluated;
   if (hi.index != UINT64_MAX && lo.index != UINT64_MAX) {
-    r.err.add(3, hi.index);
-    r.err.add(-3, lo.index);
+    r.err.add(e_max + 2, hi.index);
+    r.err.add(e_min - 2, lo.index);
     return r;
   }
   struct acc {
