@@ -64,6 +64,7 @@ TEST(Claims, EveryCatalogueRowRunsAndIsTested) {
                                              "two-pass.na-rounding",
                                              "appendix1.sphere-map",
                                              "two-pass.error-bound",
+                                             "three-pass.error-bound",
                                              "two-pass.max-s.vertex",
                                              "two-pass.max-s.interpolated",
                                              "four-pass.channel-exact",
@@ -276,6 +277,25 @@ TEST(Claims, TwoPassErrorBound) {
   EXPECT_EQ(fig(o, "err_min"), -3);
   EXPECT_EQ(fig(o, "err_max"), 3);
   EXPECT_EQ(fig(o, "normals"), static_cast<std::int64_t>(ref::appendix2_normals().size()));
+}
+
+TEST(Claims, ThreePassErrorBound) {
+  // error = −floor(Σ r_c) once pass 3 adds n_a exactly: [−2, 2], both ends reached.
+  const auto& o = base("three-pass.error-bound");
+  EXPECT_EQ(o.result, p::verdict::bound);
+  EXPECT_EQ(fig(o, "err_min"), -2);
+  EXPECT_EQ(fig(o, "err_max"), 2);
+  EXPECT_EQ(fig(o, "normals_na_not_exact"), 0);
+  // Two-pass's n'_a = (n_a + 1)/3 with n_a = 384 − (x + y + z): 3·n'_a != n_a unless 3 divides n_a.
+  std::int64_t inexact = 0;
+  for (const auto& n : ref::appendix2_normals()) inexact += 3 * n.alpha != 384 - (n.x + n.y + n.z);
+  EXPECT_EQ(fig(o, "two_pass_normals_na_not_exact"), inexact);
+  // The err_max witness, re-derived in plain ints.
+  ASSERT_EQ(o.witnesses.size(), 2u);
+  EXPECT_NE(o.witnesses[1].find("n = (-127, -15, 5)"), std::string::npos) << o.witnesses[1];
+  EXPECT_NE(o.witnesses[1].find("l = (-121, -15, 0)"), std::string::npos) << o.witnesses[1];
+  const auto w = ref::appendix2(-127, -15);
+  EXPECT_EQ(ref::three_pass_value(w, -121, -15, 0) - ref::floor128(w.x * -121 + w.y * -15 + w.z * 0), 2);
 }
 
 TEST(Claims, TwoPassMaxSVertex) {

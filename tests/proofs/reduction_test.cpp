@@ -150,8 +150,12 @@ TEST(Reduction, PrunedWrapSearchEqualsBruteForceOnSmallerInstances) {
   }
 }
 
-TEST(Reduction, ErrorExtremesEqualBruteForceOnSubsampledNormals) {
-  const tp::table t(gs::model_options{});
+namespace {
+// error_extremes of one variant (na) against plain-int brute force on subsampled normals: `value` is
+// the variant's formula (reference.hpp), `bound` the argument's |error| bound.
+template <class Value>
+void expect_error_extremes_equal_brute_force(tp::na_term na, Value value, int bound) {
+  const tp::table t(gs::model_options{}, na);
   p::sweep_config cfg;
   for (std::size_t every : {std::size_t{37}, std::size_t{1000}}) {
     const auto normals = every_nth_normal(every);
@@ -161,38 +165,25 @@ TEST(Reduction, ErrorExtremesEqualBruteForceOnSubsampledNormals) {
     for (const auto& nm : normals) {
       const auto n = ref::appendix2(nm.iX, nm.iY);
       for (const auto& l : g.lights) {
-        const int e = ref::two_pass_value(n, l[0], l[1], l[2]) - ref::floor128(n.x * l[0] + n.y * l[1] + n.z * l[2]);
+        const int e = value(n, l[0], l[1], l[2]) - ref::floor128(n.x * l[0] + n.y * l[1] + n.z * l[2]);
         lo = std::min(lo, e), hi = std::max(hi, e);
       }
     }
-    EXPECT_GE(lo, -3);  // the argument's bound
-    EXPECT_LE(hi, 3);
+    EXPECT_GE(lo, -bound);
+    EXPECT_LE(hi, bound);
     EXPECT_EQ(r.err.min, lo) << "every " << every;
     EXPECT_EQ(r.err.max, hi) << "every " << every;
   }
 }
+}  // namespace
 
-// The same search for the three-pass variant (e = 0, so the ends are ±2) against plain brute force.
+TEST(Reduction, ErrorExtremesEqualBruteForceOnSubsampledNormals) {
+  expect_error_extremes_equal_brute_force(tp::na_term::thirds_in_alpha, ref::two_pass_value, 3);
+}
+
+// The three-pass variant: e = 0, so the ends are ±2.
 TEST(Reduction, ThreePassErrorExtremesEqualBruteForceOnSubsampledNormals) {
-  const tp::table t(gs::model_options{}, tp::na_term::additive_pass);
-  p::sweep_config cfg;
-  for (std::size_t every : {std::size_t{37}, std::size_t{1000}}) {
-    const auto normals = every_nth_normal(every);
-    const tp::light_grid g(122);
-    const auto r = tp::error_extremes(normals, g, t, cfg);
-    int lo = 100, hi = -100;
-    for (const auto& nm : normals) {
-      const auto n = ref::appendix2(nm.iX, nm.iY);
-      for (const auto& l : g.lights) {
-        const int e = ref::three_pass_value(n, l[0], l[1], l[2]) - ref::floor128(n.x * l[0] + n.y * l[1] + n.z * l[2]);
-        lo = std::min(lo, e), hi = std::max(hi, e);
-      }
-    }
-    EXPECT_GE(lo, -2);  // the argument's bound
-    EXPECT_LE(hi, 2);
-    EXPECT_EQ(r.err.min, lo) << "every " << every;
-    EXPECT_EQ(r.err.max, hi) << "every " << every;
-  }
+  expect_error_extremes_equal_brute_force(tp::na_term::additive_pass, ref::three_pass_value, 2);
 }
 
 TEST(Reduction, InterpolatedLightsDoNotWrapAtTheArguedS) {
