@@ -4,6 +4,7 @@
 // fragments of step 1 replayed) — give identical frames, bit for bit.
 #include <cstddef>
 #include <cstdint>
+#include <iterator>
 #include <string>
 
 #include <fuzzer/FuzzedDataProvider.h>
@@ -90,7 +91,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     pl::compute_tangents(s.model);  // throws std::runtime_error for a degenerate triangle
     pl::validate(s.model);
   } catch (const std::runtime_error&) { return 0; }
-  const auto m = static_cast<pl::method>(in.ConsumeIntegralInRange<int>(0, 2));
+  const pl::method m = pl::gs_methods[in.ConsumeIntegralInRange<std::size_t>(0, std::size(pl::gs_methods) - 1)];
   pl::render_options o = random_options(in);
   const pl::prepared_scene ps = pl::prepare(s, in.ConsumeFloatingPointInRange<float>(0.0f, 360.0f), o.specular);
   o.path = pl::raster_path::reference;

@@ -31,7 +31,7 @@ def grey_png(path, n):
 def main(gsdot3, out):
     os.makedirs(out, exist_ok=True)
     runs = []  # (file, video, command)
-    for method in ('two-pass', 'four-pass', 'baseline'):
+    for method in ('two-pass', 'four-pass', 'baseline', 'three-pass', 'gouraud'):
         for n in range(1, 5):
             f = os.path.join(out, '%s-%dl.gs' % (method, n))
             runs.append((f, 'ntsc', ['dump', '--method', method] + sum((['--light', l] for l in LIGHTS[:n]), [])))

@@ -123,6 +123,16 @@ TEST(ClosedForm, ThreePass) {
           three_pass_expected(glm::normalize(n), glm::normalize(T), 122));
 }
 
+// Section 4's Gouraud shading: the quad's vertex normal is the tangent-space (0, 0, 1), so every vertex
+// sends 128 + nearest(127·max(T_z, 0)) and the flat quad is that byte (green and blue 0).
+TEST(ClosedForm, Gouraud) {
+  for (auto [n, T] : cases()) {
+    const glm::vec3 t = glm::normalize(T);
+    check(method::gouraud, glm::normalize(n), t, 128 + static_cast<int>(std::lround(std::max(t.z, 0.0f) * 127)));
+  }
+  check(method::gouraud, {0.6f, 0, 0.8f}, {0, 0, -1}, 128);  // facing away: 0, whatever the normal map
+}
+
 TEST(ClosedForm, Baseline) {
   for (auto [n, T] : cases())
     check(method::baseline, glm::normalize(n), glm::normalize(T),

@@ -19,7 +19,7 @@ TEST(Quality, FiguresAgreeWithIndependentComputations) {
   const render_options o;
   const quality_scene q = measure_quality("random-3", s, o);
   const prepared_scene ps = prepare(s);
-  const method order[] = {method::two_pass, method::four_pass, method::baseline, method::three_pass};
+  const auto& order = gs_methods;
   ASSERT_EQ(q.methods.size(), std::size(order));
   std::size_t sign_change_seen = 0;
   for (std::size_t k = 0; k < std::size(order); ++k) {

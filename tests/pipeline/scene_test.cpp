@@ -143,6 +143,17 @@ expectation expected_dot(method m, const scene& s, const prepared_scene& ps, int
       via_proofs = proofs::methods::sum_rgb(proofs::methods::three_pass_pass3(terms, dpb, o), o).value();
       break;
     }
+    case method::gouraud: {
+      // The vertices' 128 + nearest(127·max(T_z·fade, 0)) in red, 0 in green and blue, interpolated.
+      for (std::size_t k = 0; k < 3; ++k) {
+        const light_vertex& l = lv[t.vertex[k]];
+        colour[k] = {gs::u8::from_wrapped(128 + nearest(std::clamp(l.T.z * l.fade, 0.0f, 1.0f) * 127)), gs::u8{},
+                     gs::u8{}, gs::u8::literal(0x80)};
+      }
+      const pixel_inputs in = inputs_at(t, colour, t.uv16, x, y);
+      sum = (in.colour87[0] >> 7) + (in.colour87[1] >> 7) + (in.colour87[2] >> 7);
+      break;
+    }
     case method::baseline: {
       std::array<gs::rgba8, 3> pos{}, neg{};
       for (std::size_t k = 0; k < 3; ++k) {

@@ -64,6 +64,9 @@ inline constexpr pass_regs two_pass_add_alpha{true, true, gs::tfx::DECAL, gs::tc
 // palette's 128 + Max(−n, 0) − Max(n, 0) per channel (DECAL), Cs + Cd, COLCLAMP off, alpha kept.
 inline constexpr pass_regs three_pass_add_terms{true,       true,  gs::tfx::DECAL, gs::tcc::RGB,
                                                 add_source, false, keep_alpha};
+// Traditional Gouraud shading (section 4, figure 6b; step 5 and section 3.8): no texture, no blend,
+// the interpolated vertex colour written into the DPB's RGB, COLCLAMP off.
+inline constexpr pass_regs gouraud_dot{false, false, gs::tfx::MODULATE, gs::tcc::RGB, {}, false, keep_alpha};
 inline constexpr pass_regs four_pass_sphere{true, false, gs::tfx::HIGHLIGHT, gs::tcc::RGB, {}, false, keep_alpha};
 inline constexpr pass_regs four_pass_x{true,  true,           gs::tfx::DECAL, gs::tcc::RGBA, signed_multiply,
                                        false, only_channel[0]};

@@ -8,6 +8,7 @@ std::string_view name(method m) {
     case method::four_pass: return "four-pass";
     case method::baseline: return "baseline";
     case method::three_pass: return "three-pass";
+    case method::gouraud: return "gouraud";
   }
   return "?";
 }

@@ -16,11 +16,13 @@
 namespace gsdot3::pipeline {
 
 // two_pass, four_pass: sections 3.5, 3.6; three_pass: section 3.5's alternative (its n_a terms in a third,
-// additive pass instead of the DPB alpha); baseline: section 2 (Breugelmans 2002).
-enum class method { two_pass, four_pass, baseline, three_pass };
+// additive pass instead of the DPB alpha); baseline: section 2 (Breugelmans 2002); gouraud: traditional
+// per-vertex lighting without the normal map (section 4, figure 6b).
+enum class method { two_pass, four_pass, baseline, three_pass, gouraud };
 std::string_view name(method m);
 // Every GS method, in the order the report lists them.
-inline constexpr method gs_methods[] = {method::two_pass, method::four_pass, method::baseline, method::three_pass};
+inline constexpr method gs_methods[] = {method::two_pass, method::four_pass, method::baseline, method::three_pass,
+                                        method::gouraud};
 // The GS method of that name, or nothing; and every name, comma-separated ("two-pass, four-pass, ...").
 std::optional<method> find_method(std::string_view name);
 std::string method_names();

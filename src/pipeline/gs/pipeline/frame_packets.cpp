@@ -291,6 +291,10 @@ frame_packets build_frame_packets(const scene& s, const prepared_scene& ps, meth
           g.triangles(regs, true, colour,
                       [&](const prepared_triangle& t, int k) { return vertex_uv(p.source, t, k, lv); });
           break;
+        case pass_source::untextured:  // TME = 0: no TEX0, the UV sent is not read
+          g.target(DPB, regs);
+          g.triangles(regs, true, colour, nm_uv);
+          break;
         case pass_source::dpb_alpha: {  // the DPB read as PSMT8H through the palette, 1:1
           g.clip(area);
           g.depth(depth_always, z_masked);

@@ -76,6 +76,7 @@ gs_inputs make_inputs(const scene& s, method m, const render_options& o) {
       in.neg = two_pass_palette(s.normals.palette, true);
       in.axis[0] = three_pass_terms_palette(s.normals.palette);
       break;
+    case passes::palette_kind::none: break;
     case passes::palette_kind::signed_side:
       in.pos = signed_side_palette(s.normals.palette, false);
       in.neg = signed_side_palette(s.normals.palette, true);

@@ -59,6 +59,13 @@ inline gs::rgba8 four_pass_sphere_colour(const light_vertex& l) {
   const int scale = std::clamp(static_cast<int>(std::lround(l.fade * 128.0f)), 0, 128);
   return rgb(scale, scale, scale, 128 - scale);
 }
+// Gouraud (section 4, figure 6b): the VU1's per-vertex diffuse term max(N·T·fade, 0) with the
+// interpolated vertex normal N = (0, 0, 1) in tangent space, i.e. max(T_z·fade, 0), as
+// 128 + nearest(127·max(T_z·fade, 0)) in red and 0 in green and blue, so the post filter's r + g + b
+// is the dot product + 128 like the DOT3 methods' (clamped per vertex, as traditional lighting does).
+inline gs::rgba8 gouraud_colour(const light_vertex& l) {
+  return rgb(128 + nearest(std::clamp(l.T.z * l.fade, 0.0f, 1.0f) * 127), 0, 0, 0x80);
+}
 // Baseline (section 2): TL_pos / TL_neg = nearest(127·max(±T·fade, 0)) per component, alpha 0x80.
 inline gs::rgba8 baseline_colour(const light_vertex& l, bool negative) {
   const glm::vec3 t = l.T * l.fade * (negative ? -1.0f : 1.0f);
@@ -78,11 +85,13 @@ inline std::array<std::int32_t, 2> sphere_uv(const light_vertex& l) {
 
 // ---- The methods as data ----------------------------------------------------------------------
 // What a light pass samples: the normal map through palette `clut`; the 64×64 sphere map of the
-// vertex tolight vectors (four-pass, section 3.6); or the DPB's own alpha byte read as PSMT8H through
-// palette `clut`, one sprite over the sprite area (two-pass step 2.4a, section 3.5).
-enum class pass_source : std::uint8_t { normal_map, sphere_map, dpb_alpha };
+// vertex tolight vectors (four-pass, section 3.6); the DPB's own alpha byte read as PSMT8H through
+// palette `clut`, one sprite over the sprite area (two-pass step 2.4a, section 3.5); or nothing
+// (untextured triangles, TME = 0: Gouraud).
+enum class pass_source : std::uint8_t { normal_map, sphere_map, dpb_alpha, untextured };
 // What a triangle pass sends per vertex as RGBAQ (the functions above).
-enum class vertex_colour : std::uint8_t { tolight, sphere_fade, white, tl_pos, tl_neg };
+enum class vertex_colour : std::uint8_t { tolight, sphere_fade, white, tl_pos, tl_neg, gouraud };
+inline constexpr std::size_t vertex_colour_count = 6;
 // One pass of step 2.3 (or its post pass 2.4a), drawn per light into the DPB.
 struct light_pass {
   const pass_regs* regs;
@@ -94,8 +103,9 @@ struct light_pass {
 // How the palettes of the normal map's 256 normals are built (gs_inputs.cpp's make_inputs): the
 // two-pass Max(±n, 0) pair (slots pos, neg), the 2002 method's signed sides (pos, neg), or the
 // four-pass per-axis reordered palettes (axis_x .. axis_z).
-// The three-pass method has the two-pass pair and the terms palette (slot terms).
-enum class palette_kind : std::uint8_t { two_pass, signed_side, reordered_axes, three_pass };
+// The three-pass method has the two-pass pair and the terms palette (slot terms); Gouraud samples no
+// normal map (none).
+enum class palette_kind : std::uint8_t { two_pass, signed_side, reordered_axes, three_pass, none };
 // A method: its palettes and its light passes in draw order. Steps 1, 2.1, 2.4 (R += G, R += B),
 // 2.5/2.6 (the ILP into the LAB), 3 and 4 are the same for every method (section 3.1).
 template <std::size_t N>
@@ -131,6 +141,15 @@ inline constexpr method_passes<3> three_pass_method{
         {&three_pass_add_terms, pass_source::normal_map, clut_slot::terms, vertex_colour::white,
          "2.3 + (128 + Max(−n,0) − Max(n,0)) (DECAL, Cs + Cd)"},
     }}};
+// Gouraud (section 4, figure 6b; the non-normal-mapped geometry of step 5 and section 3.8): one
+// untextured pass of the per-vertex dot products, then the same post filter and ILP as the others.
+inline constexpr method_passes<1> gouraud_method{
+    method::gouraud,
+    palette_kind::none,
+    {{
+        {&gouraud_dot, pass_source::untextured, clut_slot::pos /* unused */, vertex_colour::gouraud,
+         "2.3 Gouraud: per-vertex max(N·T, 0) (no texture)"},
+    }}};
 // Four-pass (section 3.6): the sphere map · fade, then (Cs − Cd)·As + Cd per axis into R, G, B.
 inline constexpr method_passes<4> four_pass_method{
     method::four_pass,
@@ -165,6 +184,7 @@ decltype(auto) with_method(method m, F&& f) {
     case method::four_pass: return f.template operator()<four_pass_method>();
     case method::baseline: return f.template operator()<baseline_method>();
     case method::three_pass: return f.template operator()<three_pass_method>();
+    case method::gouraud: return f.template operator()<gouraud_method>();
   }
   throw std::invalid_argument("unknown GS method");
 }
@@ -188,6 +208,7 @@ inline gs::rgba8 vertex_rgbaq(vertex_colour c, const light_vertex& l, int s) {
     case vertex_colour::white: return white;
     case vertex_colour::tl_pos: return baseline_colour(l, false);
     case vertex_colour::tl_neg: return baseline_colour(l, true);
+    case vertex_colour::gouraud: return gouraud_colour(l);
   }
   return white;
 }

@@ -120,7 +120,7 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
     // 2.3 (and two-pass's 2.4a): the method's light passes, pass_table.hpp's list in draw order, each
     // instantiated for its register set. Passes with the same vertex colours and texture coordinates
     // share their attribute set-up.
-    std::array<std::vector<tri_attr>, 10> attr;
+    std::array<std::vector<tri_attr>, 2 * vertex_colour_count> attr;
     auto attributes_of = [&](const light_pass& p) -> const std::vector<tri_attr>& {
       std::vector<tri_attr>& a = attr[2 * static_cast<std::size_t>(p.colour) + (p.source == pass_source::sphere_map)];
       if (a.empty() && !ps.triangles.empty())
@@ -135,6 +135,8 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
                             nm_texture(*palettes(in)[static_cast<std::size_t>(p.clut)]), attributes_of(p), fb.dpb);
       } else if constexpr (Source == pass_source::sphere_map) {
         r.draw<Regs>(&sphere, attributes_of(p), fb.dpb);
+      } else if constexpr (Source == pass_source::untextured) {
+        r.draw<Regs>(nullptr, attributes_of(p), fb.dpb);
       } else {
         alpha_into_rgb<Regs>(r, fb, *palettes(in)[static_cast<std::size_t>(p.clut)]);
       }

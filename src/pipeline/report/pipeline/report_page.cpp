@@ -54,6 +54,8 @@ const std::vector<method_claims>& gs_method_claims() {
       {"three-pass",
        {"eq5-eq7.split-multiply", "eq10.split-offset-multiply", "appendix2.packing", "three-pass.error-bound",
         "eq9.rgb-sum", "ilp.palette-permutation", "ilp.dpb-clear-zero", "clamp-wrap.intermediates"}},
+      // Section 4's traditional Gouraud shading: per-vertex dot products, the same post filter and ILP.
+      {"gouraud", {"eq9.rgb-sum", "ilp.palette-permutation", "ilp.dpb-clear-zero"}},
   };
   return rows;
 }
