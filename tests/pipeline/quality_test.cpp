@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "pipeline/quality_claims.hpp"
 #include "pipeline/report.hpp"
@@ -95,9 +96,13 @@ method_errors errors(method m, double renormalised, std::size_t ops) {
 
 TEST(Quality, VerdictIsHoldsRefutedOrMixedWithTheCount) {
   // Scene 1: two-pass 1 < baseline 2; scene 2: two-pass 3 > baseline 2. Pixel ops: 10 < 20 on both.
-  const std::vector<quality_scene> scenes = {
-      {"a", {errors(method::two_pass, 1, 10), errors(method::four_pass, 0.5, 30), errors(method::baseline, 2, 20)}},
-      {"b", {errors(method::two_pass, 3, 10), errors(method::four_pass, 4, 30), errors(method::baseline, 2, 20)}}};
+  // Three-pass 0.9 < two-pass on both.
+  const std::vector<quality_scene> scenes = {{"a",
+                                              {errors(method::two_pass, 1, 10), errors(method::four_pass, 0.5, 30),
+                                               errors(method::baseline, 2, 20), errors(method::three_pass, 0.9, 15)}},
+                                             {"b",
+                                              {errors(method::two_pass, 3, 10), errors(method::four_pass, 4, 30),
+                                               errors(method::baseline, 2, 20), errors(method::three_pass, 0.9, 15)}}};
   const auto rows = quality_rows(scenes);
   auto find = [&](const std::string& claim, const std::string& metric) {
     const auto it = std::find_if(rows.begin(), rows.end(),
@@ -109,6 +114,7 @@ TEST(Quality, VerdictIsHoldsRefutedOrMixedWithTheCount) {
   EXPECT_EQ(find("quality.two-pass-vs-2002", "gs_pixel_ops").verdict, "holds");
   EXPECT_EQ(find("quality.four-pass-vs-2002", "gs_pixel_ops").verdict, "refuted");
   EXPECT_EQ(find("quality.four-pass-vs-2002", "rmse_vs_renormalised").verdict, "mixed (1 of 2)");
+  EXPECT_EQ(find("quality.three-pass-vs-two-pass", "rmse_vs_renormalised").verdict, "holds");
   const quality_row r = find("quality.four-pass-vs-two-pass", "rmse_vs_renormalised");
   EXPECT_EQ(r.verdict, "mixed (1 of 2)");
   ASSERT_EQ(r.per_scene.size(), 2u);
@@ -120,14 +126,21 @@ TEST(Quality, VerdictIsHoldsRefutedOrMixedWithTheCount) {
 }
 
 TEST(Quality, EqualOnEveryScene) {
-  const std::vector<quality_scene> scenes = {
-      {"a", {errors(method::two_pass, 1, 10), errors(method::four_pass, 2, 20), errors(method::baseline, 2, 20)}}};
+  const std::vector<quality_scene> scenes = {{"a",
+                                              {errors(method::two_pass, 1, 10), errors(method::four_pass, 2, 20),
+                                               errors(method::baseline, 2, 20), errors(method::three_pass, 1, 10)}}};
   const auto rows = quality_rows(scenes);
   const auto it = std::find_if(rows.begin(), rows.end(), [](const quality_row& r) {
     return r.claim == "quality.four-pass-vs-2002" && r.metric == "gs_pixel_ops";
   });
   ASSERT_NE(it, rows.end());
   EXPECT_EQ(it->verdict, "refuted (equal on every scene)");
+}
+
+// A scene measured without a method a row compares is the caller's error, said as one.
+TEST(Quality, AMissingMethodIsAnError) {
+  const std::vector<quality_scene> scenes = {{"a", {errors(method::two_pass, 1, 10)}}};
+  EXPECT_THROW(quality_rows(scenes), std::invalid_argument);
 }
 
 TEST(Quality, RandomScenesAreFixedBySeedAndDiffer) {

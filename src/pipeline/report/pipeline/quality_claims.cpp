@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
+#include <string>
 
 #include "pipeline/default_scene.hpp"
 #include "pipeline/prepare.hpp"
@@ -50,7 +52,10 @@ glm::vec3 on_sphere(splitmix& r, double radius, double min_y, double max_y) {
 }
 
 const method_errors& of(const quality_scene& s, method m) {
-  return *std::find_if(s.methods.begin(), s.methods.end(), [m](const method_errors& e) { return e.m == m; });
+  const auto it = std::find_if(s.methods.begin(), s.methods.end(), [m](const method_errors& e) { return e.m == m; });
+  if (it == s.methods.end())
+    throw std::invalid_argument("quality rows: scene '" + s.name + "' has no " + std::string(name(m)) + " render");
+  return *it;
 }
 
 struct claim_def {
