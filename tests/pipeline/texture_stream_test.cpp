@@ -15,6 +15,8 @@
 #include <string>
 
 #include "common/temp_dir.hpp"
+#include "gs_arith/options.hpp"
+#include "gs_arith/profiles.hpp"
 #include "gs_packets/dump.hpp"
 #include "gs_packets/interpreter.hpp"
 #include "pipeline/band_renderer.hpp"
@@ -132,6 +134,80 @@ TEST_P(TextureStreamMethods, A1024MapBilinearInANarrowWindowEqualsTheValuePath) 
 }
 
 INSTANTIATE_TEST_SUITE_P(Methods, TextureStreamMethods, ::testing::ValuesIn(gs_methods), method_param_name);
+
+// PCSX2's row set-up (gouraud_setup pcsx2_rows_4 / _8, the pcsx2-sw profile) starts a row's colour at
+// SCISSOR's left when the triangle's edge is left of it, so a piece cut along x would change the
+// Gouraud colours of the triangles it cuts: the dump of a turned head with a streamed 1024² map and
+// bilinear, replayed under that profile, differed from the render in 40 of 229 376 pixels (two-pass)
+// before the streamer cut only along y under those set-ups, and a row that does not fit by
+// triangles. This frame needs such rows (checked below), and four-pass draws the normal map in passes
+// whose piece order alternates, so the pieces over one row must keep their triangle order.
+render_options pcsx2_rows(const char* setup) {
+  render_options o;
+  o.bilinear = true;
+  EXPECT_FALSE(gs::apply_profile(o.model, "pcsx2-sw").has_value());
+  EXPECT_FALSE(gs::set_option(o.model, "gouraud_setup", setup).has_value());
+  return o;
+}
+scene turned_1024() {
+  scene s = map_1024();
+  s.view.eye = glm::vec3(1.6f, 0.8f, 2.4f);
+  return s;
+}
+
+TEST(TextureStream, PiecesKeepPcsx2RowStarts) {
+  expect_streamed_frames_equal(turned_1024(), method::two_pass, pcsx2_rows("pcsx2_rows_8"), true,
+                               "pcsx2_rows_8, 1024², bilinear, turned, two-pass");
+  expect_streamed_frames_equal(turned_1024(), method::four_pass, pcsx2_rows("pcsx2_rows_4"), true,
+                               "pcsx2_rows_4, 1024², bilinear, turned, four-pass");
+}
+
+// The pieces of two successive passes (the second in reverse order) under pcsx2_rows_8: every piece
+// spans the drawn area's width, some rows are split by triangles, and pieces over one rectangle come
+// in increasing, disjoint triangle ranges in both passes.
+TEST(TextureStream, Pcsx2RowPiecesAreWholeRowsInTriangleOrder) {
+  const scene s = turned_1024();
+  const render_options o = pcsx2_rows("pcsx2_rows_8");
+  const prepared_scene ps = prepare(s, 0.0f, o.specular);
+  gs_inputs in =
+      place_inputs(make_inputs(s, method::two_pass, o), buffer_layout_for(s.width, s.height).first_texture_block());
+  ASSERT_GT(in.window_first, 0u);
+  const scissor area = detail::band_renderer::drawn_area(ps, {0, 0, s.width, s.height});
+  start_stream(in, ps, o, area);
+  for (int pass = 0; pass < 2; ++pass) {
+    const std::vector<stream_piece> pieces = in.stream->next_pass(normal_map_stream(in));
+    int split_rows = 0;
+    for (std::size_t k = 0; k < pieces.size(); ++k) {
+      EXPECT_EQ(pieces[k].area.x0, area.x0);
+      EXPECT_EQ(pieces[k].area.x1, area.x1);
+      if (k == 0 || !(pieces[k].area == pieces[k - 1].area)) continue;
+      ++split_rows;
+      EXPECT_EQ(pieces[k].triangles.first, pieces[k - 1].triangles.end) << "pass " << pass << ", piece " << k;
+    }
+    EXPECT_GT(split_rows, 0) << "pass " << pass << ": no row split by triangles";
+  }
+}
+
+// Where one triangle's row alone needs more pages than the window has (a 512x480 frame leaves 29; in
+// four-pass's diffuse pass a row of the turned head crosses the 1024² diffuse texture's wrap in v
+// under bilinear: 5 cells no page stride places in 29 pages), there is no cut that keeps PCSX2's row
+// starts: a user error that says so, not a frame the dump would not reproduce. (Under the default
+// set-up the same frame streams, cut along x: the test above with these options.)
+TEST(TextureStream, Pcsx2RowThatDoesNotFitIsAUserError) {
+  const scene s = sized(turned_1024(), 512, 480);
+  const render_options o = [] {
+    render_options r = pcsx2_rows("pcsx2_rows_8");
+    r.memory_path = true;
+    return r;
+  }();
+  const prepared_scene ps = prepare(s, 0.0f, o.specular);
+  try {
+    (void)render(s, ps, method::four_pass, o);
+    ADD_FAILURE() << "rendered a row that does not fit";
+  } catch (const texture_does_not_fit& e) {
+    EXPECT_NE(std::string(e.what()).find("pcsx2_rows"), std::string::npos) << e.what();
+  }
+}
 
 // A 2048² PNG normal map (generated here: a pattern of bumps) loaded as a user's file is resampled
 // to 1024² (the GS's TW/TH limit) and streams like the procedural one.

@@ -33,6 +33,7 @@ struct xy124 {
 // The integer pixel rectangle [x0, x1) × [y0, y1) drawing is clipped to (SCISSOR).
 struct scissor {
   int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+  bool operator==(const scissor&) const = default;
 };
 
 // ceil(v / 16) for a 12.4 value (the first pixel centre at or after v).

@@ -124,10 +124,13 @@ class band_renderer {
   // (SCISSOR_1 of a streamed texture's piece, pipeline/texture_stream.hpp).
   template <const pass_regs& Pass, class FB>
   [[gnu::flatten]] void draw(const texture_ref* tex, const std::vector<tri_attr>& attr, const FB& fb,
-                             const scissor* clip = nullptr) {
+                             const stream_piece* piece = nullptr) {
     constexpr gs::gs_registers regs = Pass.registers();
-    // A streamed piece (clip) is drawn by the scalar loop below: the span batches know no SCISSOR_1.
-    if (vectorised() && clip == nullptr) return draw_spans(batch_registers<Pass>, tex, attr, fb);
+    // A streamed piece is drawn by the scalar loop below: the span batches know no SCISSOR_1.
+    if (vectorised() && piece == nullptr) return draw_spans(batch_registers<Pass>, tex, attr, fb);
+    const scissor* clip = piece != nullptr ? &piece->area : nullptr;
+    const triangle_range range =
+        piece != nullptr ? piece->triangles : triangle_range{0, static_cast<std::uint32_t>(ps_.triangles.size())};
     auto shade = [&](std::size_t t, int x, int y) {
       const tri_attr& a = attr[t];
       const gs::fragment_colour cf = a.colour_at(x, y);
@@ -142,7 +145,8 @@ class band_renderer {
         for (const fragment& f : frags_) shade(static_cast<std::size_t>(f.tri), f.x, f.y);
       } else {
         for (const fragment& f : frags_)
-          if (f.x >= clip->x0 && f.x < clip->x1 && f.y >= clip->y0 && f.y < clip->y1)
+          if (f.x >= clip->x0 && f.x < clip->x1 && f.y >= clip->y0 && f.y < clip->y1 &&
+              static_cast<std::uint32_t>(f.tri) >= range.first && static_cast<std::uint32_t>(f.tri) < range.end)
             shade(static_cast<std::size_t>(f.tri), f.x, f.y);
       }
       return;
@@ -150,7 +154,7 @@ class band_renderer {
     const scissor area = clip == nullptr ? band_
                                          : scissor{std::max(band_.x0, clip->x0), std::max(band_.y0, clip->y0),
                                                    std::min(band_.x1, clip->x1), std::min(band_.y1, clip->y1)};
-    for (std::size_t t = 0; t < ps_.triangles.size(); ++t) {
+    for (std::size_t t = range.first; t < range.end; ++t) {
       const prepared_triangle& tri = ps_.triangles[t];
       rasterise_triangle(tri.setup, area, [&](int x, int y) {
         if (passes_later_depth_test(tri, x, y)) shade(t, x, y);
@@ -304,7 +308,7 @@ void draw_textured(band_renderer& r, gs::mem::local_memory* memory, texture_stre
     upload_piece(*memory, streamed, p);
     tex.at = p.at;
     tex.texel_at = &stream->addresses(streamed, p.at);
-    r.draw<Pass>(&tex, attr, target, &p.area);
+    r.draw<Pass>(&tex, attr, target, &p);
   }
 }
 

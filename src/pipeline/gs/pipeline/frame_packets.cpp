@@ -91,10 +91,10 @@ class stream {
   }
   void texflush() { set(address("TEXFLUSH"), 0); }
 
-  // Every prepared triangle, PACKED {RGBAQ, UV, XYZ2} per vertex, PRE = 1; with `only` just those whose
-  // pixels can reach that rectangle (a streamed texture's piece: the others draw nothing in it).
+  // Every prepared triangle, PACKED {RGBAQ, UV, XYZ2} per vertex, PRE = 1; with `only` just those the
+  // streamed texture's piece draws (stream_piece::draws: the others draw nothing in it).
   template <class Colour, class UV>
-  void triangles(const pass_regs& p, bool gouraud, Colour&& colour, UV&& uv, const scissor* only = nullptr) {
+  void triangles(const pass_regs& p, bool gouraud, Colour&& colour, UV&& uv, const stream_piece* only = nullptr) {
     flush();
     const gs::prim_reg prim{gs::prim_type::TRIANGLE, gouraud, p.TME, false, p.ABE, false, true, false, false};
     static constexpr unsigned regs[] = {pk::desc::RGBAQ, pk::desc::UV, pk::desc::XYZ2};
@@ -103,8 +103,9 @@ class stream {
       if (!data.empty()) out.packed(static_cast<std::uint32_t>(gs::encode(prim)), regs, data);
       data.clear();
     };
-    for (const prepared_triangle& t : ps_.triangles) {
-      if (only != nullptr && !may_cover(t, *only)) continue;
+    for (std::uint32_t i = 0; i < ps_.triangles.size(); ++i) {
+      const prepared_triangle& t = ps_.triangles[i];
+      if (only != nullptr && !only->draws(i, t)) continue;
       for (int k = 0; k < 3; ++k) {
         const gs::rgba8 c = colour(t, k);
         const auto [u, v] = uv(t, k);
@@ -260,7 +261,7 @@ frame_packets build_frame_packets(const scene& s, const prepared_scene& ps, meth
       g.clip(piece.area);
       g.texture(p, piece.at, t.width, t.height, cbp, false, linear, nullptr, first);
       first = false;
-      g.triangles(p, true, colour, uv, &piece.area);
+      g.triangles(p, true, colour, uv, &piece);
     }
     g.clip(g.frame());
   };

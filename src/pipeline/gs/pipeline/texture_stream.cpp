@@ -90,7 +90,12 @@ void interpret(gs::mem::local_memory& m, const gs::packets::packet_builder& b) {
 
 texture_streamer::texture_streamer(const prepared_scene& ps, gs::gouraud_setup setup, gs::bilinear_mode filter,
                                    scissor area, std::uint32_t first_page, std::uint32_t end_page)
-    : ps_(ps), filter_(filter), area_(area), first_(first_page), end_(end_page) {
+    : ps_(ps),
+      filter_(filter),
+      rows_only_(setup == gs::gouraud_setup::pcsx2_rows_4 || setup == gs::gouraud_setup::pcsx2_rows_8),
+      area_(area),
+      first_(first_page),
+      end_(end_page) {
   for (const prepared_triangle& t : ps.triangles)
     uv_.push_back(gs::setup_attributes(t.setup, {}, t.uv16, xy_offset_pixels, xy_offset_pixels, setup));
 }
@@ -129,31 +134,45 @@ bool texture_streamer::placeable(const stream_texture& t, const std::vector<std:
 }
 
 // A k-d split of the drawn area: a rectangle whose cells fit the window is a leaf, else its halves
-// along the longer side are tried; a rectangle no triangle pixel is in is dropped.
-void texture_streamer::split(const stream_texture& t, const scissor& a, const std::vector<std::uint32_t>& tris,
-                             std::vector<leaf>& out) {
+// along the longer side are tried; a rectangle no triangle pixel is in is dropped. Under PCSX2's row
+// set-ups (rows_only_, the header's reason 1) the cuts are along y only, and a single row that does
+// not fit is split by triangles instead: two pieces over the same row, the first drawing the lower
+// half of the triangles that reach it, the second the rest, so each pixel still sees its fragments in
+// the pass's triangle order (next_pass keeps such pieces in that order).
+void texture_streamer::split(const stream_texture& t, const scissor& a, triangle_range range,
+                             const std::vector<std::uint32_t>& tris, std::vector<leaf>& out) {
   std::vector<std::uint32_t> in;
   for (std::uint32_t i : tris)
     if (may_cover(ps_.triangles[i], a)) in.push_back(i);
   std::vector<std::array<int, 2>> cells = cells_in(t, a, in);
   if (cells.empty()) return;
   if (placeable(t, cells)) {
-    out.push_back({a, std::move(cells)});
+    out.push_back({a, range, std::move(cells)});
     return;
   }
-  if (a.x1 - a.x0 == 1 && a.y1 - a.y0 == 1)
-    throw texture_does_not_fit("memory path: pixel (" + std::to_string(a.x0) + ", " + std::to_string(a.y0) +
-                               ") fetches the " + std::to_string(t.width) + "x" + std::to_string(t.height) + " " +
-                               t.name + " from " + std::to_string(cells.size()) + " pages, more than the " +
-                               std::to_string(window_pages()) +
-                               " pages free beside the frame buffers: use a smaller --size or a smaller normal map");
+  const bool one_row = a.y1 - a.y0 == 1;
+  if (one_row && (rows_only_ ? in.size() == 1 : a.x1 - a.x0 == 1))
+    throw texture_does_not_fit(
+        "memory path: " +
+        (rows_only_ ? "triangle " + std::to_string(in.front()) + " on row " + std::to_string(a.y0) +
+                          " (pieces are whole rows under gouraud_setup pcsx2_rows)"
+                    : "pixel (" + std::to_string(a.x0) + ", " + std::to_string(a.y0) + ")") +
+        " fetches the " + std::to_string(t.width) + "x" + std::to_string(t.height) + " " + t.name + " from " +
+        std::to_string(cells.size()) + " pages, more than the " + std::to_string(window_pages()) +
+        " pages free beside the frame buffers: use a smaller --size or a smaller normal map");
+  if (rows_only_ && one_row) {
+    const auto mid = in.begin() + static_cast<std::ptrdiff_t>(in.size() / 2);
+    split(t, a, {range.first, *mid}, {in.begin(), mid}, out);
+    split(t, a, {*mid, range.end}, {mid, in.end()}, out);
+    return;
+  }
   scissor lo = a, hi = a;
-  if (a.x1 - a.x0 >= a.y1 - a.y0)
+  if (!rows_only_ && a.x1 - a.x0 >= a.y1 - a.y0)
     lo.x1 = hi.x0 = (a.x0 + a.x1) / 2;
   else
     lo.y1 = hi.y0 = (a.y0 + a.y1) / 2;
-  split(t, lo, in, out);
-  split(t, hi, in, out);
+  split(t, lo, range, in, out);
+  split(t, hi, range, in, out);
 }
 
 const std::vector<texture_streamer::leaf>& texture_streamer::leaves(const stream_texture& t) {
@@ -161,7 +180,8 @@ const std::vector<texture_streamer::leaf>& texture_streamer::leaves(const stream
   std::vector<std::uint32_t> all(ps_.triangles.size());
   for (std::uint32_t i = 0; i < all.size(); ++i) all[i] = i;
   std::vector<leaf>& out = leaves_[t.id];
-  if (area_.x0 < area_.x1 && area_.y0 < area_.y1) split(t, area_, all, out);
+  if (area_.x0 < area_.x1 && area_.y0 < area_.y1)
+    split(t, area_, {0, static_cast<std::uint32_t>(all.size())}, all, out);
   return out;
 }
 
@@ -193,6 +213,7 @@ stream_piece texture_streamer::place(const stream_texture& t, const leaf& l) {
   if (!best) throw std::logic_error("texture_streamer: a leaf that does not fit");  // split() made every leaf fit
   stream_piece piece{
       l.area,
+      l.triangles,
       {fixed::uint<14>::from_wrapped(32 * best->base), fixed::uint<6>::from_wrapped(tbw(t.PSM, best->w)), t.PSM},
       {}};
   for (std::size_t i = 0; i < l.cells.size(); ++i) {
@@ -209,9 +230,17 @@ stream_piece texture_streamer::place(const stream_texture& t, const leaf& l) {
 
 std::vector<stream_piece> texture_streamer::next_pass(const stream_texture& t) {
   const std::vector<leaf>& ls = leaves(t);
-  const bool reverse = passes_[t.id]++ % 2 == 1;  // so the next pass starts where the last one ended
+  // Every other pass in reverse, so that it starts where the last one ended; pieces over the same
+  // rectangle (a row split by triangles) stay in triangle order.
+  const bool reverse = passes_[t.id]++ % 2 == 1;
   std::vector<stream_piece> out;
-  for (std::size_t k = 0; k < ls.size(); ++k) out.push_back(place(t, ls[reverse ? ls.size() - 1 - k : k]));
+  for (std::size_t k = 0; k < ls.size();) {
+    std::size_t run = k + 1;  // leaves [k, run) share one rectangle
+    const std::size_t at = reverse ? ls.size() - 1 - k : k;
+    while (run < ls.size() && ls[reverse ? ls.size() - 1 - run : run].area == ls[at].area) ++run;
+    for (std::size_t j = 0; j < run - k; ++j) out.push_back(place(t, ls[reverse ? ls.size() - run + j : k + j]));
+    k = run;
+  }
   return out;
 }
 

@@ -20,7 +20,13 @@
 //    pass is drawn in exactly one piece, and within a piece in the pass's triangle order; a fragment
 //    only reads and writes its own pixel's frame and Z words, so the order of the pieces changes
 //    nothing and the scissor cuts no fragment's value (the rasteriser and the UV planes are the
-//    unsplit pass's: SCISSOR_1 is a per-pixel test after them);
+//    unsplit pass's: SCISSOR_1 is a per-pixel test after them). Except under gouraud_setup
+//    pcsx2_rows_4 / _8: PCSX2 starts a row's Gouraud colour at max(the triangle's left edge, SCISSOR's
+//    left) (gs_arith/gouraud.hpp gouraud_row_start), so there the pieces are whole rows of the drawn
+//    area, cut along y only: their left is the drawn area's, left of every triangle's edge
+//    (band_renderer::drawn_area: a pixel left of every vertex), so no row start moves. A row too big
+//    for the window is split by triangles instead: pieces over the same row drawing consecutive
+//    ranges of the pass's triangles, in order, so each pixel's fragments keep the pass's order;
 // 2. a piece's cell set holds every cell any of its fragments fetches: it is found by the same UV
 //    planes (gs::setup_attributes), rasteriser and gs::sample footprint (nearest or the 2 × 2 of
 //    bilinear) with REPEAT wrapping, over every triangle pixel in the rectangle (a superset: the
@@ -71,12 +77,21 @@ struct cell_upload {
   std::uint32_t page;  // the window page the cell is transferred into
   int c, r;            // the cell: column and row of pages of the texel grid
 };
-// One piece of a pass: upload `uploads`, then draw the pass's triangles with SCISSOR_1 = area and
-// TEX0 TBP0 / TBW / PSM = at.
+// The pass's triangles [first, end) in its order.
+struct triangle_range {
+  std::uint32_t first = 0, end = 0;
+};
+// One piece of a pass: upload `uploads`, then draw the pass's triangles of `triangles` with
+// SCISSOR_1 = area and TEX0 TBP0 / TBW / PSM = at.
 struct stream_piece {
   scissor area;
+  triangle_range triangles;
   gs::mem::buffer at;
   std::vector<cell_upload> uploads;
+  // Whether triangle i (t) is drawn in this piece: in the range, and its pixels can reach the area.
+  bool draws(std::uint32_t i, const prepared_triangle& t) const {
+    return i >= triangles.first && i < triangles.end && may_cover(t, area);
+  }
 };
 
 class texture_streamer {
@@ -95,10 +110,12 @@ class texture_streamer {
  private:
   struct leaf {
     scissor area;
+    triangle_range triangles;
     std::vector<std::array<int, 2>> cells;  // (c, r), sorted
   };
   const std::vector<leaf>& leaves(const stream_texture& t);
-  void split(const stream_texture& t, const scissor& a, const std::vector<std::uint32_t>& tris, std::vector<leaf>& out);
+  void split(const stream_texture& t, const scissor& a, triangle_range range, const std::vector<std::uint32_t>& tris,
+             std::vector<leaf>& out);
   std::vector<std::array<int, 2>> cells_in(const stream_texture& t, const scissor& a,
                                            const std::vector<std::uint32_t>& tris) const;
   bool placeable(const stream_texture& t, const std::vector<std::array<int, 2>>& cells) const;
@@ -107,6 +124,7 @@ class texture_streamer {
   const prepared_scene& ps_;
   std::vector<gs::triangle_attributes> uv_;
   gs::bilinear_mode filter_;
+  bool rows_only_;  // pieces are whole rows of the drawn area (PCSX2's row set-ups start a row at SCISSOR's left)
   scissor area_;
   std::uint32_t first_, end_;
   std::map<int, std::vector<leaf>> leaves_;  // per texture id
