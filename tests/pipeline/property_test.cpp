@@ -33,8 +33,8 @@ RC_GTEST_PROP(FillRule, SharedEdgeIsDrawnOnce, ()) {
     for (int x = -25; x <= 25; ++x) RC_ASSERT(!(covers(t1, x, y) && covers(t2, x, y)));
 }
 
-// Every texel is mapped to the palette entry nearest to it (largest dot product), and every entry
-// is a unit vector.
+// Every texel is mapped to the palette entry nearest to it (largest dot product; on a tie the first
+// such entry), and every entry is a unit vector.
 RC_GTEST_PROP(Quantiser, AssignsNearestUnitEntries, ()) {
   const int side = 8;
   std::vector<glm::vec3> normals;
@@ -49,7 +49,11 @@ RC_GTEST_PROP(Quantiser, AssignsNearestUnitEntries, ()) {
   for (const glm::vec3& p : m.palette) RC_ASSERT(std::fabs(glm::length(p) - 1.0f) < 1e-4f);
   for (std::size_t i = 0; i < normals.size(); ++i) {
     const float got = glm::dot(normals[i], m.palette[m.index[i]]);
-    for (const glm::vec3& p : m.palette) RC_ASSERT(glm::dot(normals[i], p) <= got);
+    for (std::size_t j = 0; j < m.palette.size(); ++j)
+      if (j < m.index[i])
+        RC_ASSERT(glm::dot(normals[i], m.palette[j]) < got);
+      else
+        RC_ASSERT(glm::dot(normals[i], m.palette[j]) <= got);
   }
 }
 
