@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <iostream>
 #include <sstream>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,7 @@
 #include "gs_arith/profiles.hpp"
 #include "pipeline/mesh_export.hpp"
 #include "pipeline/mesh_import.hpp"
+#include "pipeline/lod.hpp"
 #include "pipeline/report.hpp"
 #include "pipeline/scene_input.hpp"
 #include "pipeline/scheme_method.hpp"
@@ -35,6 +37,7 @@ struct render_args {
   model_args model;
   int s = 122, threads = 2;
   double specular = 0.0;
+  std::optional<double> lod_share;
   bool memory_path = false, scalar = false;
   std::string dpb_clear = "explicit";
   bool cost = false;  // render / report only: --cost and the cost model's options
@@ -202,6 +205,7 @@ scene_setup setup(const render_args& a) {
   try {
     req.in = pipeline::make_scene(sr, progress);
   } catch (const std::runtime_error& e) { throw usage_error(e.what()); }
+  if (a.lod_share) req.in.s.lights = pipeline::split_for_lod(req.in.s.lights, *a.lod_share);
   return req;
 }
 
@@ -292,6 +296,12 @@ void add_options(CLI::App* cmd, render_args& a) {
   cmd->add_option("--filter", a.filter, "normal-map sampling: nearest | bilinear")->capture_default_str();
   cmd->add_option("--specular", a.specular,
                   "specular instead of diffuse (section 3.7): half vectors, and the ILP raised to this power (1..256)");
+  cmd->add_option("--lod-fade", a.lod_share,
+                  "section 3.8's level of detail: every light becomes a co-located pair, the per-pixel light at "
+                  "this share of its colour (nearest per channel) and a Gouraud-shaded light (gouraud's passes) at "
+                  "the rest; 1 = per-pixel only, 0 = Gouraud only, a light at 0 % is left out. An engine sets it "
+                  "from the object's distance. The other seeds' methods draw both halves their own way")
+      ->check(CLI::Range(0.0, 1.0));
   cmd->add_option("--path", a.path, "rasteriser path: cached (fast) | reference (re-rasterise every pass)")
       ->capture_default_str();
   cmd->add_option("--threads", a.threads, "frame bands rendered in parallel")->capture_default_str();

@@ -10,6 +10,7 @@
 #include "gs_arith/gouraud.hpp"
 #include "pipeline/default_scene.hpp"
 #include "pipeline/encoders.hpp"
+#include "pipeline/lod.hpp"
 #include "pipeline/reference.hpp"
 #include "pipeline/render.hpp"
 #include "method_param.hpp"
@@ -67,9 +68,10 @@ struct expectation {
   int formula = 0, proofs = -1;
 };
 
-expectation expected_dot(method m, const scene& s, const prepared_scene& ps, int tri, int x, int y) {
+expectation expected_dot(method m, const scene& s, const prepared_scene& ps, int tri, int x, int y,
+                         std::size_t light = 0) {
   const prepared_triangle& t = ps.triangles[static_cast<std::size_t>(tri)];
-  const auto& lv = ps.lights[0];
+  const auto& lv = ps.lights[light];
   std::array<gs::rgba8, 3> colour{};
   const pixel_inputs nm_in = inputs_at(t, colour, t.uv16, x, y);
   const int size = s.normals.width;
@@ -197,6 +199,43 @@ TEST_P(EveryMethod, RandomPixelsMatchThePerPixelFormula) {
       ASSERT_EQ(f.dot[0][i], e.proofs) << name(GetParam()) << " pixel " << x << "," << y << " got 0x" << std::hex
                                        << int{f.dot[0][i]} << " proofs::methods gives 0x" << e.proofs;
     }
+  }
+}
+
+// Section 3.8's level of detail (lod.hpp): at share 0.7 every light is a per-pixel light and a Gouraud
+// light at the same place. Each light's post-filter byte is its own method's per-pixel formula (the
+// frame's method for the per-pixel half, gouraud's for the other) and the unsplit frames' byte for
+// that position (a dot product does not depend on the light's colour); share 1 gives the method's
+// frame and share 0 Gouraud's, bit for bit.
+TEST_P(EveryMethod, LevelOfDetailPairsFollowTheirMethods) {
+  const scene& s = shared_scene();
+  const frame plain = render(s, prepare(s), GetParam(), {}), gouraud = render(s, prepare(s), method::gouraud, {});
+  scene lod = s;
+  lod.lights = split_for_lod(s.lights, 0.7);
+  ASSERT_EQ(lod.lights.size(), 2 * s.lights.size());
+  const prepared_scene ps = prepare(lod);
+  const frame f = render(lod, ps, GetParam(), {});
+  for (std::size_t j = 0; j < lod.lights.size(); ++j) {
+    EXPECT_EQ(lod.lights[j].gouraud, j % 2 == 1);
+    EXPECT_EQ(f.dot[j], (lod.lights[j].gouraud ? gouraud : plain).dot[j / 2]) << "light " << j;
+  }
+  std::mt19937 rng(29);
+  int seen = 0;
+  for (int k = 0; k < 100000 && seen < 500; ++k) {
+    const auto i = static_cast<std::size_t>(rng() % f.visible_triangle.size());
+    if (f.visible_triangle[i] < 0) continue;
+    ++seen;
+    const int x = static_cast<int>(i) % s.width, y = static_cast<int>(i) / s.width;
+    for (std::size_t j = 0; j < lod.lights.size(); ++j)
+      ASSERT_EQ(f.dot[j][i],
+                expected_dot(light_method(GetParam(), lod.lights[j]), lod, ps, f.visible_triangle[i], x, y, j).formula)
+          << "light " << j << " pixel " << x << "," << y;
+  }
+  EXPECT_EQ(seen, 500);
+  for (const auto& [share, expected] : {std::pair{1.0, &plain}, std::pair{0.0, &gouraud}}) {
+    scene one = s;
+    one.lights = split_for_lod(s.lights, share);
+    EXPECT_EQ(render(one, prepare(one), GetParam(), {}).colour, expected->colour) << "share " << share;
   }
 }
 

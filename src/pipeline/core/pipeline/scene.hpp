@@ -49,6 +49,7 @@ struct scene_light {
   glm::vec3 position{};                  // point: world position; directional: direction towards the light
   std::array<std::uint8_t, 3> colour{};  // GS colour units: 0x80 = 1.0
   light_kind kind = light_kind::point;
+  bool gouraud = false;  // section 3.8: drawn with Gouraud shading, a co-located pair's cheap half (lod.hpp)
 };
 
 struct camera {

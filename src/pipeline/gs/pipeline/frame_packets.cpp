@@ -17,6 +17,7 @@
 #include "gs_packets/register_values.hpp"
 #include "gs_packets/video_mode.hpp"
 #include "pipeline/band_renderer.hpp"
+#include "pipeline/lod.hpp"
 #include "pipeline/pass_table.hpp"
 
 namespace gsdot3::pipeline {
@@ -279,8 +280,9 @@ frame_packets build_frame_packets(const scene& s, const prepared_scene& ps, meth
     g.area_sprite(step1_ambient, gs::rgba8::from_u32(clear_dpb));
     g.clip(g.frame());
     g.depth(depth_gequal, z_masked);
-    // 2.3 (and two-pass's 2.4a): the method's light passes, pass_table.hpp's list in draw order.
-    for (const light_pass& p : describe(m).light) {
+    // 2.3 (and two-pass's 2.4a): the method's light passes (Gouraud's for a Gouraud light, lod.hpp),
+    // pass_table.hpp's list in draw order.
+    for (const light_pass& p : describe(light_method(m, s.lights[l])).light) {
       const pass_regs& regs = *p.regs;
       const std::uint32_t cbp = in.cbp[static_cast<std::size_t>(p.clut)];
       auto colour = [&](const prepared_triangle& t, int k) { return vertex_rgbaq(p.colour, at(t, k), o.s); };

@@ -48,6 +48,7 @@
 #include "pipeline/channel_pass.hpp"
 #include "pipeline/encoders.hpp"
 #include "pipeline/gs_inputs.hpp"
+#include "pipeline/lod.hpp"
 #include "pipeline/gs_pass.hpp"
 #include "pipeline/pass_table.hpp"
 
@@ -117,9 +118,9 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
     }
     const int li = static_cast<int>(l);
     note("2.1 clear 0x00808080", li, "DPB", fb.dpb);
-    // 2.3 (and two-pass's 2.4a): the method's light passes, pass_table.hpp's list in draw order, each
-    // instantiated for its register set. Passes with the same vertex colours and texture coordinates
-    // share their attribute set-up.
+    // 2.3 (and two-pass's 2.4a): the method's light passes (Gouraud's for a Gouraud light, lod.hpp),
+    // pass_table.hpp's list in draw order, each instantiated for its register set. Passes with the
+    // same vertex colours and texture coordinates share their attribute set-up.
     std::array<std::vector<tri_attr>, 2 * vertex_colour_count> attr;
     auto attributes_of = [&](const light_pass& p) -> const std::vector<tri_attr>& {
       std::vector<tri_attr>& a = attr[2 * static_cast<std::size_t>(p.colour) + (p.source == pass_source::sphere_map)];
@@ -143,7 +144,7 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
       note(p.label, li, "DPB", fb.dpb);
     };
     with_method(
-        m, [&]<const auto & D>() {
+        light_method(m, s.lights[l]), [&]<const auto & D>() {
           [&]<std::size_t... I>(std::index_sequence<I...>) {
             (draw_pass.template operator()<*D.light[I].regs, D.light[I].source>(D.light[I]), ...);
           }

@@ -1,0 +1,71 @@
+// split_for_lod (pipeline/lod.hpp, section 3.8): each light's colour split into a per-pixel share and
+// a Gouraud rest that add up to it exactly, the share rounded to nearest (halves away from zero),
+// checked against exact integer arithmetic for shares that are exact binary fractions; a light at 0
+// is left out; a share outside [0, 1] is an error.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <stdexcept>
+
+#include "pipeline/lod.hpp"
+
+namespace gsdot3::pipeline {
+namespace {
+
+scene_light light(std::uint8_t r, std::uint8_t g, std::uint8_t b) {
+  return {{1.0f, 2.0f, 3.0f}, {r, g, b}, light_kind::directional};
+}
+
+TEST(LevelOfDetail, SharesOfEveryColourAgainstIntegerRounding) {
+  for (const auto& [p, q] : {std::pair{1, 4}, std::pair{1, 2}, std::pair{3, 4}, std::pair{3, 8}, std::pair{5, 8}})
+    for (int c = 1; c < 256; ++c) {
+      const auto u = static_cast<std::uint8_t>(c);
+      const std::vector<scene_light> out = split_for_lod({light(u, u, 0)}, static_cast<double>(p) / q);
+      const int dot3 = (2 * p * c + q) / (2 * q);  // floor(c·p/q + 1/2)
+      const std::size_t pairs = (dot3 != 0) + (c - dot3 != 0);
+      ASSERT_EQ(out.size(), pairs) << p << "/" << q << " of " << c;
+      if (dot3 != 0) {
+        EXPECT_FALSE(out[0].gouraud);
+        EXPECT_EQ(out[0].colour[0], dot3) << p << "/" << q << " of " << c;
+        EXPECT_EQ(out[0].colour[2], 0);
+        EXPECT_EQ(out[0].kind, light_kind::directional);
+        EXPECT_EQ(out[0].position, glm::vec3(1.0f, 2.0f, 3.0f));
+      }
+      if (c - dot3 != 0) {
+        EXPECT_TRUE(out.back().gouraud);
+        EXPECT_EQ(out.back().colour[1], c - dot3) << p << "/" << q << " of " << c;
+        EXPECT_EQ(out.back().position, glm::vec3(1.0f, 2.0f, 3.0f));
+      }
+    }
+}
+
+TEST(LevelOfDetail, PairsAddUpAndEndsKeepOneHalf) {
+  const std::vector<scene_light> lights{light(0x10, 0x98, 0x20), light(0x10, 0x38, 0xB0)};
+  const std::vector<scene_light> seventy = split_for_lod(lights, 0.7);
+  ASSERT_EQ(seventy.size(), 4u);
+  for (std::size_t l = 0; l < 2; ++l)
+    for (std::size_t c = 0; c < 3; ++c) {
+      EXPECT_EQ(seventy[2 * l].colour[c] + seventy[2 * l + 1].colour[c], lights[l].colour[c]);
+      EXPECT_LE(std::fabs(seventy[2 * l].colour[c] - 0.7 * lights[l].colour[c]), 0.5);
+    }
+  const std::vector<scene_light> all = split_for_lod(lights, 1.0), none = split_for_lod(lights, 0.0);
+  ASSERT_EQ(all.size(), 2u);
+  ASSERT_EQ(none.size(), 2u);
+  for (std::size_t l = 0; l < 2; ++l) {
+    EXPECT_FALSE(all[l].gouraud);
+    EXPECT_EQ(all[l].colour, lights[l].colour);
+    EXPECT_TRUE(none[l].gouraud);
+    EXPECT_EQ(none[l].colour, lights[l].colour);
+  }
+  EXPECT_TRUE(split_for_lod({light(0, 0, 0)}, 0.5).empty());
+  EXPECT_EQ(light_method(method::four_pass, seventy[0]), method::four_pass);
+  EXPECT_EQ(light_method(method::four_pass, seventy[1]), method::gouraud);
+}
+
+TEST(LevelOfDetail, ShareOutsideTheUnitIntervalIsAnError) {
+  for (double bad : {-0.1, 1.5, std::nan("")})
+    EXPECT_THROW((void)split_for_lod({light(1, 2, 3)}, bad), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace gsdot3::pipeline
