@@ -19,6 +19,7 @@
 #include "pipeline/mesh_export.hpp"
 #include "pipeline/mesh_import.hpp"
 #include "pipeline/lod.hpp"
+#include "pipeline/normal_map.hpp"
 #include "pipeline/report.hpp"
 #include "pipeline/scene_input.hpp"
 #include "pipeline/scheme_method.hpp"
@@ -38,6 +39,7 @@ struct render_args {
   int s = 122, threads = 2;
   double specular = 0.0;
   std::optional<double> lod_share;
+  int normal_map_bits = 8;
   bool memory_path = false, scalar = false;
   std::string dpb_clear = "explicit";
   bool cost = false;  // render / report only: --cost and the cost model's options
@@ -206,6 +208,10 @@ scene_setup setup(const render_args& a) {
     req.in = pipeline::make_scene(sr, progress);
   } catch (const std::runtime_error& e) { throw usage_error(e.what()); }
   if (a.lod_share) req.in.s.lights = pipeline::split_for_lod(req.in.s.lights, *a.lod_share);
+  if (a.normal_map_bits != req.in.s.normals.bits) {
+    req.in.s.normals = pipeline::with_index_bits(req.in.s.normals, a.normal_map_bits);
+    req.in.description += "; 4-bit normal map (PSMT4, 16 palette entries quantised from the 8-bit map)";
+  }
   return req;
 }
 
@@ -302,6 +308,12 @@ void add_options(CLI::App* cmd, render_args& a) {
                   "the rest; 1 = per-pixel only, 0 = Gouraud only, a light at 0 % is left out. An engine sets it "
                   "from the object's distance. The other seeds' methods draw both halves their own way")
       ->check(CLI::Range(0.0, 1.0));
+  cmd->add_option(
+         "--normal-map-bits", a.normal_map_bits,
+         "bits per normal-map index (section 3.8's 4/8-bit maps): 8 = PSMT8 with 256 palette entries, 4 = "
+         "PSMT4 with 16, quantised from the 8-bit map (the report's float reference reads the same 16 normals)")
+      ->check(CLI::IsMember({4, 8}))
+      ->capture_default_str();
   cmd->add_option("--path", a.path, "rasteriser path: cached (fast) | reference (re-rasterise every pass)")
       ->capture_default_str();
   cmd->add_option("--threads", a.threads, "frame bands rendered in parallel")->capture_default_str();

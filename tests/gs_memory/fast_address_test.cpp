@@ -72,10 +72,12 @@ TEST(FastAddress, TexelTablesAreLocateAndReadPixelForEveryTexel) {
     psm p;
     std::uint32_t bw, w, h;
   };
-  // The channel fetch's PSMT8 page (TBW = 2·FBW), a 256² normal map, its PSMT8H view, the sphere map
-  // and a diffuse texture (PSMCT32), a PSMZ32 view.
-  const texture textures[] = {{psm::PSMT8, 16, 128, 64}, {psm::PSMT8, 4, 256, 256},   {psm::PSMT8H, 8, 512, 64},
-                              {psm::PSMCT32, 1, 64, 64}, {psm::PSMCT32, 4, 256, 128}, {psm::PSMZ32, 8, 512, 64}};
+  // The channel fetch's PSMT8 page (TBW = 2·FBW), a 256² normal map, its PSMT8H view, a 4-bit 256²
+  // normal map and a 128×256 one at TBW 6 (PSMT4), the sphere map and a diffuse texture (PSMCT32), a
+  // PSMZ32 view.
+  const texture textures[] = {{psm::PSMT8, 16, 128, 64},   {psm::PSMT8, 4, 256, 256}, {psm::PSMT8H, 8, 512, 64},
+                              {psm::PSMT4, 4, 256, 256},   {psm::PSMT4, 6, 128, 256}, {psm::PSMCT32, 1, 64, 64},
+                              {psm::PSMCT32, 4, 256, 128}, {psm::PSMZ32, 8, 512, 64}};
   std::uint64_t checked = 0;
   for (const texture& t : textures) {
     const texel_addresses a(t.p, t.bw, t.w, t.h);
@@ -91,7 +93,7 @@ TEST(FastAddress, TexelTablesAreLocateAndReadPixelForEveryTexel) {
         }
     }
   }
-  EXPECT_THROW(texel_addresses(psm::PSMT4, 2, 128, 128), std::invalid_argument);
+  EXPECT_THROW(texel_addresses(psm::PSMT4HL, 2, 128, 128), std::invalid_argument);
   EXPECT_THROW(texel_addresses(psm::PSMCT16, 1, 64, 64), std::invalid_argument);
   std::printf("checked %llu (texture, BP, u, v) texels\n", static_cast<unsigned long long>(checked));
 }

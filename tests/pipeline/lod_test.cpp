@@ -1,13 +1,19 @@
 // split_for_lod (pipeline/lod.hpp, section 3.8): each light's colour split into a per-pixel share and
 // a Gouraud rest that add up to it exactly, the share rounded to nearest (halves away from zero),
 // checked against exact integer arithmetic for shares that are exact binary fractions; a light at 0
-// is left out; a share outside [0, 1] is an error.
+// is left out; a share outside [0, 1] is an error. with_index_bits (pipeline/normal_map.hpp, section
+// 3.8's 4-bit maps): 16 unit entries, every texel on a nearest one (brute force over glm::dot).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
+#include <glm/geometric.hpp>
+
+#include "pipeline/default_scene.hpp"
 #include "pipeline/lod.hpp"
+#include "pipeline/normal_map.hpp"
 
 namespace gsdot3::pipeline {
 namespace {
@@ -65,6 +71,35 @@ TEST(LevelOfDetail, PairsAddUpAndEndsKeepOneHalf) {
 TEST(LevelOfDetail, ShareOutsideTheUnitIntervalIsAnError) {
   for (double bad : {-0.1, 1.5, std::nan("")})
     EXPECT_THROW((void)split_for_lod({light(1, 2, 3)}, bad), std::invalid_argument);
+}
+
+// The far level of detail's 4-bit map from the embedded 8-bit one: 16 unit entries, and each texel's
+// entry is one nearest (largest dot product, brute force) to its 8-bit normal; widening keeps the
+// indices; other widths are errors.
+TEST(NormalMapBits, FourBitsAreTheNearestOf16EntriesToTheEightBitNormals) {
+  const normal_map eight = procedural_normal_map(64);
+  ASSERT_EQ(eight.bits, 8);
+  const normal_map four = with_index_bits(eight, 4);
+  EXPECT_EQ(four.bits, 4);
+  ASSERT_EQ(four.palette.size(), 16u);
+  ASSERT_EQ(four.index.size(), eight.index.size());
+  for (const glm::vec3& n : four.palette) EXPECT_NEAR(glm::length(n), 1.0f, 1e-5f);
+  std::vector<int> used(16);
+  for (std::size_t i = 0; i < four.index.size(); ++i) {
+    ASSERT_LT(four.index[i], 16);
+    ++used[four.index[i]];
+    const glm::vec3 n = eight.palette[eight.index[i]];
+    float best = -2.0f;
+    for (const glm::vec3& c : four.palette) best = std::max(best, glm::dot(n, c));
+    ASSERT_GE(glm::dot(n, four.palette[four.index[i]]), best - 1e-6f) << "texel " << i;
+  }
+  for (int k = 0; k < 16; ++k) EXPECT_GT(used[static_cast<std::size_t>(k)], 0) << "entry " << k << " unused";
+  const normal_map wide = with_index_bits(four, 8);
+  EXPECT_EQ(wide.bits, 8);
+  EXPECT_EQ(wide.index, four.index);
+  EXPECT_EQ(with_index_bits(eight, 8).index, eight.index);
+  EXPECT_THROW(with_index_bits(eight, 16), std::invalid_argument);
+  EXPECT_THROW(with_index_bits(eight, 0), std::invalid_argument);
 }
 
 }  // namespace

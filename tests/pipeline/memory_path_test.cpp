@@ -9,7 +9,9 @@
 #include <random>
 
 #include "pipeline/default_scene.hpp"
+#include "pipeline/gs_inputs.hpp"
 #include "pipeline/memory_picture.hpp"
+#include "pipeline/normal_map.hpp"
 #include "pipeline/render.hpp"
 #include "method_param.hpp"
 
@@ -49,6 +51,35 @@ TEST_P(MemoryPath, EqualsTheValueLevelFrameOnTheEmbeddedScene) {
       expect_same(s, ps, GetParam(), o,
                   std::string("bilinear ") + (bilinear ? "on" : "off") + ", specular " + (specular ? "on" : "off"));
     }
+}
+
+// Section 3.8's 4-bit map: stored as PSMT4 (the nibbles through the PSMT4 swizzle, its palettes loaded
+// by TEX0 with PSM = PSMT4: 16 entries at CSA 0), the memory path gives the value path's frame, and the
+// frame of the same indices stored as PSMT8 (an 8-bit map of 16 entries, the storage the tests above
+// check); and not the 8-bit map's frame (the 16 normals are drawn).
+TEST_P(MemoryPath, AFourBitMapEqualsTheValueLevelFrameAndItsPsmt8Storage) {
+  static const scene eight = default_scene();
+  scene four = eight;
+  four.normals = with_index_bits(eight.normals, 4);
+  scene as_psmt8 = four;
+  as_psmt8.normals.bits = 8;
+  const method m = GetParam();
+  ASSERT_EQ(place_inputs(make_inputs(four, m, {}), buffer_layout_for(four.width, four.height).first_texture_block())
+                .nm_at.PSM,
+            gs::mem::psm::PSMT4);
+  const prepared_scene ps = prepare(four);
+  for (bool bilinear : {false, true}) {
+    render_options o;
+    o.bilinear = bilinear;
+    const std::string what = std::string("4-bit map, bilinear ") + (bilinear ? "on" : "off");
+    EXPECT_GT(expect_same(four, ps, m, o, what), 1000);
+    o.memory_path = true;
+    const frame f = render(four, ps, m, o);
+    EXPECT_EQ(f.colour, render(as_psmt8, ps, m, o).colour) << what << ": PSMT4 vs PSMT8 storage";
+    if (m != method::gouraud) {
+      EXPECT_NE(f.colour, render(eight, ps, m, o).colour) << what << ": the 8-bit map's frame";
+    }
+  }
 }
 
 TEST_P(MemoryPath, EqualsTheValueLevelFrameOnRandomScenes) {

@@ -21,6 +21,7 @@
 #include "gs_packets/interpreter.hpp"
 #include "pipeline/default_scene.hpp"
 #include "pipeline/frame_packets.hpp"
+#include "pipeline/normal_map.hpp"
 #include "pipeline/render.hpp"
 #include "method_param.hpp"
 
@@ -122,6 +123,15 @@ class RoundTrip : public ::testing::TestWithParam<method> {};
 TEST_P(RoundTrip, ReplayedDumpIsTheRenderersFrameOnTheEmbeddedScene) {
   static const scene s = default_scene();
   expect_round_trip(s, prepare(s), GetParam(), render_options{}, "embedded scene");
+}
+
+// Section 3.8's 4-bit map: the dump uploads it as PSMT4 and its passes load 16-entry palettes.
+TEST_P(RoundTrip, ReplayedDumpIsTheRenderersFrameWithAFourBitMap) {
+  scene s = default_scene();
+  s.normals = with_index_bits(s.normals, 4);
+  render_options o;
+  o.bilinear = true;
+  expect_round_trip(s, prepare(s), GetParam(), o, "4-bit map, bilinear");
 }
 
 TEST_P(RoundTrip, ReplayedDumpIsTheRenderersFrameOnRandomScenes) {

@@ -24,6 +24,7 @@
 #include "pipeline/files.hpp"
 #include "pipeline/frame_packets.hpp"
 #include "pipeline/gs_inputs.hpp"
+#include "pipeline/normal_map.hpp"
 #include "pipeline/normal_map_image.hpp"
 #include "pipeline/render.hpp"
 #include "method_param.hpp"
@@ -116,6 +117,23 @@ const scene& map_1024() {
 TEST(TextureStream, A1024MapAtTheDefaultFrameEqualsTheValuePath) {
   expect_streamed_frames_equal(map_1024(), method::two_pass, render_options{}, true,
                                "1024², 512x448, two-pass, nearest");
+}
+
+// A 1024² 4-bit map (PSMT4: pages of 128 × 128 texels, two to a byte in the transfers), patched as
+// map_1024's tiles with the embedded map's 16-entry indices offset per tile, streamed beside the
+// 1024² diffuse texture.
+TEST(TextureStream, A1024FourBitMapEqualsTheValuePath) {
+  scene s = map_1024();
+  const normal_map small = with_index_bits(default_scene(256).normals, 4);
+  s.normals.palette = small.palette;
+  s.normals.bits = 4;
+  for (int y = 0; y < 1024; ++y)
+    for (int x = 0; x < 1024; ++x)
+      s.normals.index[static_cast<std::size_t>(y * 1024 + x)] = static_cast<std::uint8_t>(
+          (small.index[static_cast<std::size_t>((y % 256) * 256 + x % 256)] + 5 * (x / 256) + 11 * (y / 256)) & 15);
+  render_options o;
+  o.bilinear = true;
+  expect_streamed_frames_equal(s, method::four_pass, o, false, "1024² 4-bit, 512x448, four-pass, bilinear");
 }
 
 class TextureStreamMethods : public ::testing::TestWithParam<method> {};

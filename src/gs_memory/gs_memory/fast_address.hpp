@@ -13,8 +13,9 @@
 // the wrap at 16384 blocks is the modulo of the sum. PSMT8/PSMT4 are not sums (the byte's
 // "x ^ 4·s" depends on y), and the test shows it.
 //
-// texel_addresses: the byte address of each texel of a w × h region of a buffer at BP = 0; at base
-// BP the address is that + 256·BP mod 4 MiB (BP enters unit_address only as the added block count).
+// texel_addresses: the byte address of each texel of a w × h region of a buffer at BP = 0 (PSMT4: and
+// which nibble); at base BP the address is that + 256·BP mod 4 MiB (BP enters unit_address only as the
+// added block count).
 #pragma once
 
 #include <cstdint>
@@ -47,29 +48,34 @@ class row_column_address {
 
 class texel_addresses {
  public:
-  // Texels [0, w) × [0, h) of a texture of format p (PSMT8, PSMT8H: one byte; PSMCT32, PSMZ32: one
-  // word) and TBW bw.
-  texel_addresses(psm p, std::uint32_t bw, std::uint32_t w, std::uint32_t h)
-      : bytes_(value_bits(p) == 8), w_(w), byte_(w * h) {
-    if (value_bits(p) != 8 && value_bits(p) != 32)
-      throw std::invalid_argument("texel_addresses: 8- and 32-bit texels only");
+  // Texels [0, w) × [0, h) of a texture of format p (PSMT4: one nibble; PSMT8, PSMT8H: one byte;
+  // PSMCT32, PSMZ32: one word) and TBW bw.
+  texel_addresses(psm p, std::uint32_t bw, std::uint32_t w, std::uint32_t h) : bits_(value_bits(p)), w_(w), at_(w * h) {
+    if (bits_ != 4 && bits_ != 8 && bits_ != 32)
+      throw std::invalid_argument("texel_addresses: 4-, 8- and 32-bit texels only");
+    if (bits_ == 4 && upper_shift(p) != 0) throw std::invalid_argument("texel_addresses: PSMT4HL/HH are not tabulated");
     const buffer at0{{}, fixed::uint<6>::from_wrapped(bw), p};
     for (std::uint32_t v = 0; v < h; ++v)
-      for (std::uint32_t u = 0; u < w; ++u) byte_[v * w + u] = locate(at0, u, v).byte;
+      for (std::uint32_t u = 0; u < w; ++u) {
+        const location at = locate(at0, u, v);
+        at_[v * w + u] = bits_ == 4 ? 2 * at.byte + at.bit / 4 : at.byte;  // PSMT4: the nibble's address
+      }
   }
   std::uint32_t byte(std::uint32_t u, std::uint32_t v, std::uint32_t bp) const noexcept {
-    return (byte_[v * w_ + u] + bp * block_bytes) % memory_bytes;
+    const std::uint32_t a = bits_ == 4 ? at_[v * w_ + u] / 2 : at_[v * w_ + u];
+    return (a + bp * block_bytes) % memory_bytes;
   }
   // local_memory::read_pixel of texel (u, v) of the texture at bp.
   std::uint32_t read(const local_memory& m, std::uint32_t u, std::uint32_t v, std::uint32_t bp) const noexcept {
     const std::uint32_t a = byte(u, v, bp);
-    return bytes_ ? m.byte(a) : m.words()[a / 4];
+    if (bits_ == 4) return (m.byte(a) >> (4 * (at_[v * w_ + u] & 1u))) & 0xFu;  // even texel: low nibble
+    return bits_ == 8 ? m.byte(a) : m.words()[a / 4];
   }
 
  private:
-  bool bytes_;  // 8-bit texels, else 32-bit
+  unsigned bits_;  // 4, 8 or 32
   std::uint32_t w_;
-  std::vector<std::uint32_t> byte_;
+  std::vector<std::uint32_t> at_;  // byte address at BP 0 (PSMT4: 2·byte + the high-nibble bit)
 };
 
 }  // namespace gs::mem

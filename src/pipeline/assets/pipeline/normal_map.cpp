@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <map>
 #include <stdexcept>
+#include <string>
 #include <tuple>
 
 #include <glm/geometric.hpp>
@@ -127,6 +128,21 @@ normal_map quantise(const std::vector<glm::vec3>& normals, int width, int height
   centre_set set(centres);
   for (std::size_t i = 0; i < normals.size(); ++i) m.index[i] = static_cast<std::uint8_t>(set.nearest(normals[i]));
   return m;
+}
+
+normal_map with_index_bits(const normal_map& m, int bits) {
+  if (bits != 4 && bits != 8) throw std::invalid_argument("normal map index bits: 4 or 8, not " + std::to_string(bits));
+  if (m.bits == bits) return m;
+  if (bits == 8) {
+    normal_map wide = m;
+    wide.bits = 8;
+    return wide;
+  }
+  std::vector<glm::vec3> normals(m.index.size());
+  for (std::size_t i = 0; i < normals.size(); ++i) normals[i] = m.palette[m.index[i]];
+  normal_map narrow = quantise(normals, m.width, m.height, 16);
+  narrow.bits = 4;
+  return narrow;
 }
 
 }  // namespace gsdot3::pipeline

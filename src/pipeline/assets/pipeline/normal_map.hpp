@@ -1,5 +1,5 @@
 // pipeline/normal_map.hpp — making 8-bit palettised normal maps: from a height field, and from
-// unit normals by vector quantisation (spherical k-means) to a 256-entry palette.
+// unit normals by vector quantisation (spherical k-means) to a 256-entry palette; 4-bit ones from those.
 #pragma once
 
 #include <vector>
@@ -18,5 +18,11 @@ std::vector<glm::vec3> normals_from_height(const std::vector<float>& height, int
 // largest dot product, centroids renormalised means), deterministic: seeds are chosen by farthest-point
 // sampling from the first normal, iterations stop when no assignment changes (or after 30).
 normal_map quantise(const std::vector<glm::vec3>& normals, int width, int height, int entries = 256);
+
+// The map with `bits` per index, 4 (PSMT4, 16 entries) or 8 (PSMT8, 256): the same map when it has
+// them; an 8-bit map to 4 bits by quantising its texels' normals (palette[index]) to 16 entries as
+// above, the far level of detail made from the near one (section 3.8); a 4-bit map's indices are
+// valid 8-bit ones. Throws std::invalid_argument for any other bits.
+normal_map with_index_bits(const normal_map& m, int bits);
 
 }  // namespace gsdot3::pipeline

@@ -26,12 +26,14 @@ struct mesh {
   std::vector<std::array<std::uint32_t, 3>> triangles;  // counter-clockwise seen from outside
 };
 
-// An 8-bit palettised normal map: `index` is width·height palette indices, `palette` holds up to
-// 256 unit tangent-space normals (z towards the viewer of the surface).
+// A palettised normal map: `index` is width·height palette indices, `palette` holds up to 2^bits
+// unit tangent-space normals (z towards the viewer of the surface). bits 8: a PSMT8 texture with a
+// 256-entry CLUT; 4: PSMT4 with 16 entries (section 3.8's "4/8 bit normal maps"; one index a byte here).
 struct normal_map {
   int width = 0, height = 0;
   std::vector<std::uint8_t> index;
   std::vector<glm::vec3> palette;
+  int bits = 8;
 };
 
 // An RGB texture (A8B8G8R8 words, alpha 0x80) for the unlit diffuse pass.

@@ -59,6 +59,8 @@ std::array<const gs::clut_buffer*, 8> palettes(const gs_inputs& in) {
   return {&in.pos, &in.neg, &in.axis[0], &in.axis[1], &in.axis[2], &in.ilp, &in.grey, &in.alpha_index};
 }
 
+gs::mem::psm index_psm(const normal_map& nm) { return nm.bits == 4 ? gs::mem::psm::PSMT4 : gs::mem::psm::PSMT8; }
+
 gs_inputs make_inputs(const scene& s, method m, const render_options& o) {
   gs_inputs in;
   in.nm = &s.normals;
@@ -107,7 +109,7 @@ gs_inputs place_inputs(const gs_inputs& direct, std::uint32_t first) {
     for (std::size_t k = 0; k < in.cbp.size(); ++k)
       in.cbp[k] = static_cast<std::uint32_t>(page.BP.value()) + 4 * static_cast<std::uint32_t>(k);
   };
-  in.nm_at = place(direct.nm->width, direct.nm->height, gs::mem::psm::PSMT8);
+  in.nm_at = place(direct.nm->width, direct.nm->height, index_psm(*direct.nm));
   if (!direct.sphere.empty()) in.sphere_at = place(64, 64, gs::mem::psm::PSMCT32);
   in.diffuse_at = place(direct.diffuse->width, direct.diffuse->height, gs::mem::psm::PSMCT32);
   palettes_page();
@@ -133,7 +135,7 @@ void start_stream(gs_inputs& in, const prepared_scene& ps, const render_options&
       std::make_shared<texture_streamer>(ps, o.model.setup, filter, area, in.window_first, gs::mem::memory_blocks / 32);
 }
 stream_texture normal_map_stream(const gs_inputs& in) {
-  return {1, "normal map", gs::mem::psm::PSMT8, in.nm->width, in.nm->height, in.nm->index};
+  return {1, "normal map", index_psm(*in.nm), in.nm->width, in.nm->height, in.nm->index};
 }
 stream_texture diffuse_stream(const gs_inputs& in) {
   return {2, "diffuse texture", gs::mem::psm::PSMCT32, in.diffuse->width, in.diffuse->height, in.diffuse_bytes};
@@ -141,7 +143,7 @@ stream_texture diffuse_stream(const gs_inputs& in) {
 
 void add_uploads(gs::packets::packet_builder& b, const gs_inputs& in) {
   const bool resident = in.window_first == 0;
-  if (resident) host_transfer(b, in.nm_at, in.nm->width, in.nm->height, in.nm->index);
+  if (resident) host_transfer(b, in.nm_at, in.nm->width, in.nm->height, as_sent(in.nm_at.PSM, in.nm->index));
   if (!in.sphere.empty()) host_transfer(b, in.sphere_at, 64, 64, bytes_of(in.sphere));
   if (resident) host_transfer(b, in.diffuse_at, in.diffuse->width, in.diffuse->height, bytes_of(in.diffuse->texels));
   const auto all = palettes(in);
@@ -177,8 +179,8 @@ gs_inputs upload_inputs(gs::mem::local_memory& m, const gs_inputs& direct, std::
   in.memory = &m;
   const auto all = palettes(in);
   for (std::size_t k = 0; k < all.size(); ++k) {
-    gs::tex0_reg t;
-    t.PSM = gs::tex_psm::PSMT8;
+    gs::tex0_reg t;  // the normal map's palettes as its passes load them (16 entries for PSMT4), the rest PSMT8
+    t.PSM = k < normal_map_palettes ? static_cast<gs::tex_psm>(index_psm(*in.nm)) : gs::tex_psm::PSMT8;
     t.CBP = fixed::uint<14>::from_wrapped(in.cbp[k]);
     t.CLD = gs::u3::from_wrapped(1);
     *all[k] = gs::mem::load_clut(m, t, {}).buffer;

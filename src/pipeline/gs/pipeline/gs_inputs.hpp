@@ -90,11 +90,16 @@ struct gs_inputs {
 // terms: the three-pass method's terms palette, in four-pass's X slot (gs_inputs::axis[0]); no method
 // uses both, and the palette page holds eight.
 enum class clut_slot : std::uint8_t { pos, neg, axis_x, axis_y, axis_z, ilp, grey, alpha_index, terms = axis_x };
+// Slots pos .. axis_z are the normal map's palettes (the passes that sample it load them with its
+// PSM); ilp, grey and alpha_index are read with the DPB / LAB as PSMT8 or PSMT8H.
+inline constexpr std::size_t normal_map_palettes = 5;
+// The normal map's texture format: PSMT4 for a 4-bit map, PSMT8 for an 8-bit one.
+gs::mem::psm index_psm(const normal_map& nm);
 std::array<gs::clut_buffer*, 8> palettes(gs_inputs& in);
 std::array<const gs::clut_buffer*, 8> palettes(const gs_inputs& in);
 
 gs_inputs make_inputs(const scene& s, method m, const render_options& o);
-// Places the textures from block `first` on: the normal map (PSMT8, an even TBW), the sphere map
+// Places the textures from block `first` on: the normal map (index_psm, an even TBW), the sphere map
 // and the diffuse texture (PSMCT32), then one PSMCT32 page holding the eight palettes as 16×16 CSM1
 // images of 4 blocks each. When that passes the end of the 4 MiB: the sphere map and the palettes
 // only, and the normal map and the diffuse texture streamed through the pages after them (the

@@ -1,6 +1,7 @@
 // pipeline/gs_pass.hpp — one GS drawing pass: the register state, the texture it samples, and the
 // per-pixel chain, all through the gs_arith model (register level):
-//   texture:  gs::sample (TEX1 nearest / bilinear lerp16_4) of gs::clut_t8 look-ups (PSMT8, PSMT8H)
+//   texture:  gs::sample (TEX1 nearest / bilinear lerp16_4) of gs::clut_t8 / clut_t4 look-ups (PSMT8,
+//             PSMT8H, PSMT4)
 //             or of 32-bit texels (PSMCT32/24)
 //   colour:   gs::gouraud_at (PRIM.IIP = 1, 8.7)  or  gs::fragment_colour::flat (sprites, RGBAQ)
 //   pixel:    gs::pixel_pipeline (TFX/TCC, alpha test, blend, dither, COLCLAMP, FBA, FBMSK write)
@@ -34,11 +35,12 @@ using gs_methods::pass_regs;  // gs_methods/pass_registers.hpp
   return gs::pixel_pipeline(r, {cf, texel, old, static_cast<unsigned>(x), static_cast<unsigned>(y)}, o).out;
 }
 
-// A texture as TEX0/TEX1/CLAMP_1 describe it: PSMT8 indices through a CLUT, or 32-bit texels;
+// A texture as TEX0/TEX1/CLAMP_1 describe it: PSMT8 or PSMT4 indices through a CLUT (CSA = 0, so a
+// 4-bit index i is entry i as the 8-bit index i is), or 32-bit texels;
 // power-of-two sizes; CLAMP_1.WMS/WMT = REPEAT or CLAMP; TEX1.MMAG = NEAREST or LINEAR.
 struct texture_ref {
   int width = 0, height = 0;
-  const std::uint8_t* index = nullptr;  // PSMT8 (with clut)
+  const std::uint8_t* index = nullptr;  // PSMT8 / PSMT4 indices, one a byte (with clut)
   const gs::clut_buffer* clut = nullptr;
   const std::uint32_t* texels = nullptr;  // PSMCT32 / PSMCT24 (alpha as stored)
   bool clamp = false;
@@ -61,7 +63,9 @@ struct texture_ref {
     if (memory != nullptr) {
       const std::uint32_t t =
           texel_at->read(*memory, static_cast<std::uint32_t>(u), static_cast<std::uint32_t>(v), at.BP.value());
-      return clut != nullptr ? gs::clut_t8(*clut, gs::u8::from_wrapped(t)) : gs::rgba8::from_u32(t);
+      if (clut == nullptr) return gs::rgba8::from_u32(t);
+      return at.PSM == gs::mem::psm::PSMT4 ? gs::clut_t4(*clut, gs::u4::from_wrapped(t), {})
+                                           : gs::clut_t8(*clut, gs::u8::from_wrapped(t));
     }
     const std::size_t i = static_cast<std::size_t>(v) * static_cast<std::size_t>(width) + static_cast<std::size_t>(u);
     if (index != nullptr) return gs::clut_t8(*clut, gs::u8::from_wrapped(index[i]));

@@ -16,7 +16,8 @@ namespace {
 constexpr std::uint32_t memory_pages = gs::mem::memory_blocks / 32;  // 512
 
 gs::mem::extent page_of(gs::mem::psm p) { return gs::mem::page_size(gs::mem::layout_of(p)); }
-int bytes_per_texel(gs::mem::psm p) { return gs::mem::value_bits(p) / 8; }
+// Bytes a texel takes in stream_texture::texels: one for the 4- and 8-bit indices, four for PSMCT32.
+int bytes_per_texel(gs::mem::psm p) { return std::max(1u, gs::mem::value_bits(p) / 8); }
 
 // The pages cell (c, r) takes at page stride w, relative to the page of TBP0, and the shortest run of
 // pages (cyclic, the memory wraps) holding all of them: its first position and its length. Nothing
@@ -78,6 +79,15 @@ void host_transfer(gs::packets::packet_builder& out, const gs::mem::buffer& b, i
                                                            {reg::TRXDIR, gs::mem::encode(gs::mem::trxdir_reg{})}};
   out.ad(writes);
   out.image(data);
+}
+
+std::vector<std::uint8_t> as_sent(gs::mem::psm p, std::span<const std::uint8_t> texels) {
+  if (gs::mem::value_bits(p) != 4) return {texels.begin(), texels.end()};
+  if (texels.size() % 2 != 0) throw std::invalid_argument("as_sent: an odd number of 4-bit texels");
+  std::vector<std::uint8_t> packed(texels.size() / 2);
+  for (std::size_t i = 0; i < packed.size(); ++i)
+    packed[i] = static_cast<std::uint8_t>((texels[2 * i] & 0xFu) | (texels[2 * i + 1] & 0xFu) << 4);
+  return packed;
 }
 
 void interpret(gs::mem::local_memory& m, const gs::packets::packet_builder& b) {
@@ -270,7 +280,7 @@ void add_piece_uploads(gs::packets::packet_builder& b, const stream_texture& t, 
     }
     const gs::mem::buffer page{fixed::uint<14>::from_wrapped(32 * u.page), fixed::uint<6>::from_wrapped(tbw(t.PSM, 1)),
                                t.PSM};
-    host_transfer(b, page, w, h, image);
+    host_transfer(b, page, w, h, as_sent(t.PSM, image));
   }
 }
 

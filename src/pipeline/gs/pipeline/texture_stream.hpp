@@ -63,8 +63,8 @@ struct texture_does_not_fit : std::runtime_error {
 // Whether a triangle's pixels (within a pixel of its vertices' bounding box) can be in rectangle r.
 bool may_cover(const prepared_triangle& t, const scissor& r);
 
-// A streamed texture: its texels packed as the transfer sends them (PSMT8 one byte, PSMCT32 four,
-// row-major), and an id that tells textures apart in the window.
+// A streamed texture: its texels row-major, one byte each for PSMT4 and PSMT8 indices, four for
+// PSMCT32 (as_sent packs them for a transfer), and an id that tells textures apart in the window.
 struct stream_texture {
   int id = 0;
   const char* name = "";  // for messages: "normal map", "diffuse texture"
@@ -141,6 +141,9 @@ class texture_streamer {
 // DPSM), TRXPOS = 0, TRXREG (RRW, RRH), TRXDIR = 0 as A+D writes, then the pixels as IMAGE data.
 void host_transfer(gs::packets::packet_builder& out, const gs::mem::buffer& b, int w, int h,
                    std::span<const std::uint8_t> data);
+// The bytes a transfer sends for texels given as stream_texture holds them: PSMT4's two to a byte,
+// the first in the low nibble (gs_memory/transfer.hpp; an even count), the others as they are.
+std::vector<std::uint8_t> as_sent(gs::mem::psm p, std::span<const std::uint8_t> texels);
 // Packets run into local memory through gs_packets' interpreter (std::logic_error on what it does not model).
 void interpret(gs::mem::local_memory& m, const gs::packets::packet_builder& b);
 
