@@ -109,7 +109,8 @@ class band_renderer {
     }
     if (o_.path == raster_path::cached) {
       frags_.clear();
-      for (std::size_t t = 0; t < ps_.triangles.size(); ++t) {
+      tri_frags_.assign(1, 0);
+      for (std::size_t t = 0; t < ps_.triangles.size(); ++t, tri_frags_.push_back(frags_.size())) {
         const prepared_triangle& tri = ps_.triangles[t];
         rasterise_triangle(tri.setup, band_, [&](int x, int y) {
           if (passes_later_depth_test(tri, x, y))
@@ -143,11 +144,14 @@ class band_renderer {
     if (o_.path == raster_path::cached) {
       if (clip == nullptr) {
         for (const fragment& f : frags_) shade(static_cast<std::size_t>(f.tri), f.x, f.y);
-      } else {
-        for (const fragment& f : frags_)
-          if (f.x >= clip->x0 && f.x < clip->x1 && f.y >= clip->y0 && f.y < clip->y1 &&
-              static_cast<std::uint32_t>(f.tri) >= range.first && static_cast<std::uint32_t>(f.tri) < range.end)
-            shade(static_cast<std::size_t>(f.tri), f.x, f.y);
+      } else {  // the piece's triangles' fragments (rows in order within each) from the clip's first row
+        for (std::uint32_t t = range.first; t < range.end; ++t) {
+          const auto end = frags_.begin() + static_cast<std::ptrdiff_t>(tri_frags_[t + 1]);
+          auto f = std::lower_bound(frags_.begin() + static_cast<std::ptrdiff_t>(tri_frags_[t]), end, clip->y0,
+                                    [](const fragment& g, int y) { return g.y < y; });
+          for (; f != end && f->y < clip->y1; ++f)
+            if (f->x >= clip->x0 && f->x < clip->x1) shade(t, f->x, f->y);
+        }
       }
       return;
     }
@@ -293,6 +297,7 @@ class band_renderer {
   z_view z_;
   std::vector<std::int32_t>& visible_;
   std::vector<fragment> frags_;
+  std::vector<std::size_t> tri_frags_;  // triangle t's fragments: frags_[tri_frags_[t], tri_frags_[t + 1])
   std::size_t ops_ = 0;
 };
 
