@@ -83,6 +83,15 @@ RC_GTEST_PROP(AttributeWalk, EqualsTheReferenceOnLargeAndThinTriangles, ()) {
   for (gs::gouraud_setup s : setups) expect_walk_equal(k, s, skip);
 }
 
+// Equal vertex colours (the methods' white passes): the walker keeps the colour it computed where it
+// started (attribute_walk.hpp); the reference evaluates the plane at every pixel.
+RC_GTEST_PROP(AttributeWalk, EqualsTheReferenceWithEqualVertexColours, ()) {
+  walk_case k = *triangle_gen(300);
+  k.c[1] = k.c[2] = k.c[0];
+  const int skip = *rc::gen::element(1, 1, 3);
+  for (gs::gouraud_setup s : setups) expect_walk_equal(k, s, skip);
+}
+
 // The pixel distance crosses clamp_distance's bound (±2^16) inside a row: the walker starts again
 // there, as the reference's clamp stops the plane. A 4000-pixel triangle whose red rises by four levels
 // (0.128 units per pixel) stays unsaturated 65 536 pixels out, so the clamp shows in the colour.

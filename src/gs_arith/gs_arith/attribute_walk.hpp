@@ -8,6 +8,9 @@
 // set-up (tests/gs_arith/attribute_walk_test.cpp) and on whole frames (pipeline_simd_frame: the SIMD
 // path walks, --scalar does not).
 // gouraud_setup::pcsx2_rows_4 / _8 (row-start dependent, not a plane) are evaluated at every pixel.
+// A colour plane that does not change (every channel's x and y gradient numerators 0, as for equal
+// vertex colours: the methods' white passes) is the same at every pixel: n = 0 under per_pixel and
+// per_pixel_level, base alone under plane_steps; it is computed where the walk starts and kept.
 #pragma once
 
 #include <array>
@@ -40,7 +43,7 @@ class attribute_walker {
     fragment_colour cf;
     std::int32_t u, v;
   };
-  explicit constexpr attribute_walker(const triangle_attributes& a) noexcept : a_(a) {}
+  explicit constexpr attribute_walker(const triangle_attributes& a) noexcept : a_(a), flat_(flat_colour(a)) {}
 
   // The attributes at window pixel (x, y): colour_at(x, y), u.at(x, y), v.at(x, y).
   constexpr values at(int x, int y) noexcept {
@@ -48,13 +51,23 @@ class attribute_walker {
       step();
     } else {
       start(x, y);
+      if (flat_ && !started_) cf_ = colour(x, y);
       started_ = true;
     }
     x_ = x, y_ = y;
-    return {colour(x, y), clamped(a_.u, u_), clamped(a_.v, v_)};
+    return {flat_ ? cf_ : colour(x, y), clamped(a_.u, u_), clamped(a_.v, v_)};
   }
 
  private:
+  // Whether the colour is one value over the whole plane (the header's reason).
+  static constexpr bool flat_colour(const triangle_attributes& a) noexcept {
+    if (a.setup == gouraud_setup::pcsx2_rows_4 || a.setup == gouraud_setup::pcsx2_rows_8) return false;
+    for (std::size_t i = 0; i < 4; ++i)
+      if (a.setup == gouraud_setup::plane_steps ? a.colour.dx[i].value() != 0 || a.colour.dy[i].value() != 0
+                                                : a.colour.exact.nx[i] != 0 || a.colour.exact.ny[i] != 0)
+        return false;
+    return true;
+  }
   // clamp_distance(k + 1) = clamp_distance(k) + 1 for the plane's pixel distance k (gouraud.hpp).
   constexpr bool steppable(int x) const noexcept {
     const std::int64_t k = a_.setup == gouraud_setup::plane_steps ? std::int64_t{x} + a_.offset_x - a_.colour.x_ref
@@ -89,6 +102,7 @@ class attribute_walker {
   }
   constexpr void step() noexcept {
     u_ += a_.u.dx, v_ += a_.v.dx;
+    if (flat_) return;
     for (std::size_t i = 0; i < 4; ++i) {
       if (a_.setup == gouraud_setup::plane_steps) {
         units_[i] += a_.colour.dx[i].value();
@@ -119,6 +133,8 @@ class attribute_walker {
   }
 
   const triangle_attributes& a_;
+  bool flat_;
+  fragment_colour cf_{};  // the colour of a flat plane
   int x_ = 0, y_ = 0;
   bool started_ = false;
   std::int64_t u_ = 0, v_ = 0;
