@@ -54,12 +54,25 @@ class texel_addresses {
     if (bits_ != 4 && bits_ != 8 && bits_ != 32)
       throw std::invalid_argument("texel_addresses: 4-, 8- and 32-bit texels only");
     if (bits_ == 4 && upper_shift(p) != 0) throw std::invalid_argument("texel_addresses: PSMT4HL/HH are not tabulated");
+    // locate at BP 0 is (page · 32 + block in page) mod 16384 blocks, page = u / pw + (v / ph) · pages
+    // per row, and the block and the unit in it depend on (u mod pw, v mod ph) alone (swizzle_tables.hpp
+    // unit_address_of): one page's offsets, then the page term added.
+    const extent pg = page_size(layout_of(p));
     const buffer at0{{}, fixed::uint<6>::from_wrapped(bw), p};
-    for (std::uint32_t v = 0; v < h; ++v)
-      for (std::uint32_t u = 0; u < w; ++u) {
+    std::vector<std::uint32_t> in_page(pg.w * pg.h);
+    for (std::uint32_t v = 0; v < pg.h; ++v)
+      for (std::uint32_t u = 0; u < pg.w; ++u) {
         const location at = locate(at0, u, v);
-        at_[v * w + u] = bits_ == 4 ? 2 * at.byte + at.bit / 4 : at.byte;  // PSMT4: the nibble's address
+        in_page[v * pg.w + u] = bits_ == 4 ? 2 * at.byte + at.bit / 4 : at.byte;  // PSMT4: the nibble's address
       }
+    const std::uint32_t per_row = pages_per_row(layout_of(p), bw),
+                        page_units = bits_ == 4 ? 2 * page_bytes : page_bytes;
+    constexpr std::uint32_t pages = memory_bytes / page_bytes;  // 512: the page term wraps here
+    for (std::uint32_t v = 0; v < h; ++v) {
+      const std::uint32_t* row = &in_page[v % pg.h * pg.w];
+      for (std::uint32_t u = 0; u < w; ++u)
+        at_[v * w + u] = (u / pg.w + v / pg.h * per_row) % pages * page_units + row[u % pg.w];
+    }
   }
   std::uint32_t byte(std::uint32_t u, std::uint32_t v, std::uint32_t bp) const noexcept {
     const std::uint32_t a = bits_ == 4 ? at_[v * w_ + u] / 2 : at_[v * w_ + u];
