@@ -15,7 +15,7 @@
 
 namespace gsdot3::pipeline {
 
-// Error of a method's dot products against a float reference over covered pixels and all lights, in
+// Error of a method's dot products against a float reference over covered pixels and lights, in
 // 1/128 units: e = dot_value(byte) − reference. PSNR uses the 8-bit peak 255. A wrap error is a
 // pixel with |e| > 128: only a modulo-256 wrap of the sum can put the value that far away.
 struct error_stats {
@@ -23,8 +23,10 @@ struct error_stats {
   double max_abs = 0, mean = 0, mean_abs = 0, rmse = 0, psnr = 0, within_1 = 0;
   std::size_t wraps = 0;
 };
-error_stats compare(const std::vector<std::vector<std::uint8_t>>& dot,
-                    const std::vector<std::vector<float>>& reference);
+// `counted`: the lights whose samples count (empty: every light); the report counts those a method
+// draws itself (lod.hpp's light_method), leaving --lod-fade's Gouraud halves to gouraud's figures.
+error_stats compare(const std::vector<std::vector<std::uint8_t>>& dot, const std::vector<std::vector<float>>& reference,
+                    const std::vector<bool>& counted = {});
 // The same statistics for float values x (a scheme's dot products, or the reference itself) minus the
 // reference; `clamp_reference_at_zero` compares with max(reference, 0) instead.
 error_stats compare(const std::vector<std::vector<float>>& x, const std::vector<std::vector<float>>& reference,
