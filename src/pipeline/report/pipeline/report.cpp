@@ -187,16 +187,19 @@ report_summary write_report(const scene& s, const report_request& r) {
 
   say("writing images to " + r.out_dir.string());
   nlohmann::json j;
-  j["scene"] = {
-      {"description", r.scene_description},
-      {"width", w},
-      {"height", h},
-      {"triangles", s.model.triangles.size()},
-      {"drawn_triangles", front.triangles.size()},
-      {"culled_back_facing", front.culled_back},
-      {"dropped_outside_guard_band", front.dropped_outside},
-      {"normal_map", {{"width", s.normals.width}, {"height", s.normals.height}, {"palette", s.normals.palette.size()}}},
-      {"lights", s.lights.size()}};
+  j["scene"] = {{"description", r.scene_description},
+                {"width", w},
+                {"height", h},
+                {"triangles", s.model.triangles.size()},
+                {"drawn_triangles", front.triangles.size()},
+                {"culled_back_facing", front.culled_back},
+                {"dropped_outside_guard_band", front.dropped_outside},
+                {"normal_map",
+                 {{"width", s.normals.width},
+                  {"height", s.normals.height},
+                  {"palette", s.normals.palette.size()},
+                  {"index_bits", s.normals.bits}}},
+                {"lights", s.lights.size()}};
   j["options"] = {{"s", r.options.s},
                   {"filter", r.options.bilinear ? "bilinear" : "nearest"},
                   {"specular", r.options.specular},
