@@ -6,8 +6,8 @@
 // (frame_packets.cpp writes the same transfers, TEX0 and SCISSOR_1), so the dump replays bit for bit.
 //
 // A cell is one page of the texel grid: texels [pw·c, pw·c + pw) × [ph·r, ph·r + ph) of a PSM with
-// pages pw × ph (PSMT8 128 × 64, PSMCT32 64 × 32). With TEX0 TBP0 = B and TBW, texel (u, v) is
-// at page (B/32 + u/pw + (v/ph)·w) mod 512, w = TBW·64/pw pages per row of pages, at the offset
+// pages pw × ph (PSMT4 128 × 128, PSMT8 128 × 64, PSMCT32 64 × 32). With TEX0 TBP0 = B and TBW, texel
+// (u, v) is at page (B/32 + u/pw + (v/ph)·w) mod 512, w = TBW·64/pw pages per row of pages, at the offset
 // inside the page that (u mod pw, v mod ph) gives (gs_memory's locate: the page term is linear, the
 // swizzle is within the page; the memory wraps at 4 MiB, gs_memory/fast_address.hpp). So a cell can be
 // put in any page by a page-sized host -> local transfer there, and TBW may be chosen per piece
