@@ -208,8 +208,8 @@ scene_setup setup(const render_args& a) {
     req.in = pipeline::make_scene(sr, progress);
   } catch (const std::runtime_error& e) { throw usage_error(e.what()); }
   if (a.lod_share) req.in.s.lights = pipeline::split_for_lod(req.in.s.lights, *a.lod_share);
-  if (a.normal_map_bits != req.in.s.normals.bits) {
-    req.in.s.normals = pipeline::with_index_bits(req.in.s.normals, a.normal_map_bits);
+  if (a.normal_map_bits == 4) {  // the maps read are 8-bit
+    req.in.s.normals = pipeline::with_index_bits(req.in.s.normals, 4);
     req.in.description += "; 4-bit normal map (PSMT4, 16 palette entries quantised from the 8-bit map)";
   }
   return req;

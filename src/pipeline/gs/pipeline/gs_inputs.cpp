@@ -143,7 +143,7 @@ stream_texture diffuse_stream(const gs_inputs& in) {
 
 void add_uploads(gs::packets::packet_builder& b, const gs_inputs& in) {
   const bool resident = in.window_first == 0;
-  if (resident) host_transfer(b, in.nm_at, in.nm->width, in.nm->height, as_sent(in.nm_at.PSM, in.nm->index));
+  if (resident) host_transfer(b, in.nm_at, in.nm->width, in.nm->height, in.nm->index);
   if (!in.sphere.empty()) host_transfer(b, in.sphere_at, 64, 64, bytes_of(in.sphere));
   if (resident) host_transfer(b, in.diffuse_at, in.diffuse->width, in.diffuse->height, bytes_of(in.diffuse->texels));
   const auto all = palettes(in);

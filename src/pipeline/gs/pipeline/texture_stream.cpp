@@ -78,16 +78,15 @@ void host_transfer(gs::packets::packet_builder& out, const gs::mem::buffer& b, i
                                                            {reg::TRXREG, gs::mem::encode(size)},
                                                            {reg::TRXDIR, gs::mem::encode(gs::mem::trxdir_reg{})}};
   out.ad(writes);
-  out.image(data);
-}
-
-std::vector<std::uint8_t> as_sent(gs::mem::psm p, std::span<const std::uint8_t> texels) {
-  if (gs::mem::value_bits(p) != 4) return {texels.begin(), texels.end()};
-  if (texels.size() % 2 != 0) throw std::invalid_argument("as_sent: an odd number of 4-bit texels");
-  std::vector<std::uint8_t> packed(texels.size() / 2);
+  if (gs::mem::value_bits(b.PSM) != 4) {
+    out.image(data);
+    return;
+  }
+  if (data.size() % 2 != 0) throw std::invalid_argument("host_transfer: an odd number of 4-bit texels");
+  std::vector<std::uint8_t> packed(data.size() / 2);
   for (std::size_t i = 0; i < packed.size(); ++i)
-    packed[i] = static_cast<std::uint8_t>((texels[2 * i] & 0xFu) | (texels[2 * i + 1] & 0xFu) << 4);
-  return packed;
+    packed[i] = static_cast<std::uint8_t>((data[2 * i] & 0xFu) | (data[2 * i + 1] & 0xFu) << 4);
+  out.image(packed);
 }
 
 void interpret(gs::mem::local_memory& m, const gs::packets::packet_builder& b) {
@@ -280,7 +279,7 @@ void add_piece_uploads(gs::packets::packet_builder& b, const stream_texture& t, 
     }
     const gs::mem::buffer page{fixed::uint<14>::from_wrapped(32 * u.page), fixed::uint<6>::from_wrapped(tbw(t.PSM, 1)),
                                t.PSM};
-    host_transfer(b, page, w, h, as_sent(t.PSM, image));
+    host_transfer(b, page, w, h, image);
   }
 }
 

@@ -64,7 +64,7 @@ struct texture_does_not_fit : std::runtime_error {
 bool may_cover(const prepared_triangle& t, const scissor& r);
 
 // A streamed texture: its texels row-major, one byte each for PSMT4 and PSMT8 indices, four for
-// PSMCT32 (as_sent packs them for a transfer), and an id that tells textures apart in the window.
+// PSMCT32 (host_transfer packs PSMT4's), and an id that tells textures apart in the window.
 struct stream_texture {
   int id = 0;
   const char* name = "";  // for messages: "normal map", "diffuse texture"
@@ -137,13 +137,12 @@ class texture_streamer {
   std::map<std::array<std::uint32_t, 3>, std::unique_ptr<const gs::mem::texel_addresses>> tables_;
 };
 
-// A host -> local transfer of a w × h image packed as `data` into buffer b: BITBLTBUF (DBP, DBW,
-// DPSM), TRXPOS = 0, TRXREG (RRW, RRH), TRXDIR = 0 as A+D writes, then the pixels as IMAGE data.
+// A host -> local transfer of a w × h image into buffer b: BITBLTBUF (DBP, DBW, DPSM), TRXPOS = 0,
+// TRXREG (RRW, RRH), TRXDIR = 0 as A+D writes, then the pixels as IMAGE data. `data` holds them as
+// stream_texture does (one byte a PSMT4 or PSMT8 index, four a PSMCT32 texel); a PSMT4 image is
+// sent two texels to a byte, the first in the low nibble (gs_memory/transfer.hpp; an even count).
 void host_transfer(gs::packets::packet_builder& out, const gs::mem::buffer& b, int w, int h,
                    std::span<const std::uint8_t> data);
-// The bytes a transfer sends for texels given as stream_texture holds them: PSMT4's two to a byte,
-// the first in the low nibble (gs_memory/transfer.hpp; an even count), the others as they are.
-std::vector<std::uint8_t> as_sent(gs::mem::psm p, std::span<const std::uint8_t> texels);
 // Packets run into local memory through gs_packets' interpreter (std::logic_error on what it does not model).
 void interpret(gs::mem::local_memory& m, const gs::packets::packet_builder& b);
 
