@@ -2,7 +2,9 @@
 // four-pass level-of-detail switch.
 #include <algorithm>
 #include <array>
+#include <climits>
 #include <cmath>
+#include <stdexcept>
 #include <string>
 
 #include "proofs/claim_util.hpp"
@@ -117,32 +119,46 @@ outcome lod_two_vs_four(const gs::model_options& o, const sweep_config& cfg) {
     extremes diff, visible;  // visible: the difference after the ILP's clamp of negative dots to 0
     void merge(const acc& l) { diff.merge(l.diff), visible.merge(l.visible); }
   };
-  // Outer loop over normals: the normal's three two-pass rows and three four-pass columns stay in L1
-  // while the lights run; the light components are kept as separate arrays. A normal whose extremes
-  // improve the running ones is walked again for the first index.
-  std::vector<int> lx, ly, lz, ax, ay, az;
-  for (const auto& L : lights) {
-    lx.push_back(L.l[0]), ly.push_back(L.l[1]), lz.push_back(L.l[2]);
-    ax.push_back(L.a[0]), ay.push_back(L.a[1]), az.push_back(L.a[2]);
-  }
+  // Per light and channel c the pair (l_c, a_c) is one of few (the texel's float component gives
+  // both), so both dot products come from one 32-bit look-up per channel: a normal's table holds, per
+  // pair, (two-pass channel(n_c, l_c) + bias) << 16 | (four-pass product(a_c, b_c) + bias), and the
+  // three channels' words add without a carry between the halves (each term + bias is in
+  // [0, 2·bias), checked when the table is filled, and 3·2·bias < 2^16). Outer loop over normals, so a
+  // normal's tables stay in L1 while the lights run; a normal whose extremes improve the running ones
+  // is walked again for the first index.
+  constexpr int bias = 4096;
+  std::array<std::vector<std::array<int, 2>>, 3> pairs;  // per channel: the distinct (l_c, a_c)
+  std::array<std::vector<std::uint16_t>, 3> pair_of;     // per channel and light: its pair's index
+  for (std::size_t c = 0; c < 3; ++c)
+    for (const auto& L : lights) {
+      const std::array<int, 2> key{L.l[c], L.a[c]};
+      auto it = std::find(pairs[c].begin(), pairs[c].end(), key);
+      if (it == pairs[c].end()) it = pairs[c].insert(pairs[c].end(), key);
+      pair_of[c].push_back(static_cast<std::uint16_t>(it - pairs[c].begin()));
+    }
   const auto r = sweep<acc>(nn, cfg, [&](acc& s, std::uint64_t lo, std::uint64_t hi) {
-    std::array<std::array<int, 256>, 3> column{};  // four-pass product(a, b_c) by a + 127
+    std::array<std::vector<std::uint32_t>, 3> word;
     std::vector<int> diffs(nl), visible(nl);
     for (auto j = lo; j < hi; ++j) {
       const auto& p = packed[j];
       const auto& b = normals[j];
-      for (int c = 0; c < 3; ++c)
-        for (int a = -127; a <= 128; ++a)
-          column[static_cast<std::size_t>(c)][static_cast<std::size_t>(a + 127)] =
-              t4.product(a, b[static_cast<std::size_t>(c)]);
-      const std::int16_t *rx = t2.row(p.iX), *ry = t2.row(p.iY), *rz = t2.row(p.iZ);
-      const int* cx = column[0].data() + 127;
-      const int* cy = column[1].data() + 127;
-      const int* cz = column[2].data() + 127;
-      const int base = 3 * t2.alpha(p.alpha) - 384;
-      int vmin = s.visible.min, vmax = s.visible.max, dmin = s.diff.min, dmax = s.diff.max;
+      const std::array<int, 3> n{p.iX, p.iY, p.iZ};
+      for (std::size_t c = 0; c < 3; ++c) {
+        word[c].resize(pairs[c].size());
+        for (std::size_t k = 0; k < pairs[c].size(); ++k) {
+          const int two = t2.channel(n[c], pairs[c][k][0]) + bias, four = t4.product(pairs[c][k][1], b[c]) + bias;
+          if (two < 0 || two >= 2 * bias || four < 0 || four >= 2 * bias)
+            throw std::logic_error("lod.two-vs-four: a channel's dot term outside the packed word's range");
+          word[c][k] = static_cast<std::uint32_t>(two) << 16 | static_cast<std::uint32_t>(four);
+        }
+      }
+      const std::uint32_t *wx = word[0].data(), *wy = word[1].data(), *wz = word[2].data();
+      const std::uint16_t *kx = pair_of[0].data(), *ky = pair_of[1].data(), *kz = pair_of[2].data();
+      const int base = 3 * t2.alpha(p.alpha) - 384 - 3 * bias;
+      int vmin = INT_MAX, vmax = INT_MIN, dmin = INT_MAX, dmax = INT_MIN;
       for (std::size_t i = 0; i < nl; ++i) {
-        const int two = rx[lx[i]] + ry[ly[i]] + rz[lz[i]] + base, four = cx[ax[i]] + cy[ay[i]] + cz[az[i]];
+        const std::uint32_t w = wx[kx[i]] + wy[ky[i]] + wz[kz[i]];
+        const int two = static_cast<int>(w >> 16) + base, four = static_cast<int>(w & 0xFFFFu) - 3 * bias;
         diffs[i] = two - four;
         visible[i] = std::max(two, 0) - std::max(four, 0);
         dmin = std::min(dmin, diffs[i]), dmax = std::max(dmax, diffs[i]);
