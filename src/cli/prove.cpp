@@ -10,8 +10,10 @@
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <mutex>
 #include <sstream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "commands.hpp"
@@ -56,23 +58,53 @@ std::string ledger_as(const std::vector<proofs::claim_result>& results, const pr
   return proofs::ledger_text(results);
 }
 
-// Progress on stderr, only once a claim has run for more than a second.
-struct progress_printer {
-  std::string label;
-  std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
-  std::chrono::steady_clock::time_point last{};
-  bool printed = false;
+// Progress on stderr once the run has taken more than a second: claims done and the ones running
+// (run() runs several at once), with the sweep's fraction when one claim runs alone. Called from the
+// worker threads.
+class progress_printer {
+ public:
+  explicit progress_printer(std::size_t claims) : total_(claims) {}
+  void started(std::string_view id) {
+    const std::lock_guard lock(m_);
+    running_.emplace_back(id);
+    fraction_ = -1;
+  }
+  void finished(std::string_view id) {
+    const std::lock_guard lock(m_);
+    running_.erase(std::find(running_.begin(), running_.end(), id));
+    ++done_;
+    fraction_ = -1;
+    show();
+  }
   void update(double fraction) {
-    const auto now = std::chrono::steady_clock::now();
-    if (now - start < std::chrono::seconds(1) || now - last < std::chrono::milliseconds(500)) return;
-    last = now;
-    printed = true;
-    std::fprintf(stderr, "\rgsdot3 prove: %s %3.0f%%", label.c_str(), fraction * 100.0);
-    std::fflush(stderr);
+    const std::lock_guard lock(m_);
+    fraction_ = fraction;
+    show();
   }
   void finish() {
-    if (printed) std::fprintf(stderr, "\rgsdot3 prove: %s done      \n", label.c_str());
+    const std::lock_guard lock(m_);
+    if (printed_) std::fprintf(stderr, "\r\033[Kgsdot3 prove: %zu of %zu claims done\n", done_, total_);
   }
+
+ private:
+  void show() {
+    const auto now = std::chrono::steady_clock::now();
+    if (now - start_ < std::chrono::seconds(1) || now - last_ < std::chrono::milliseconds(500)) return;
+    last_ = now, printed_ = true;
+    std::string running;
+    for (const auto& id : running_) running += (running.empty() ? "" : ", ") + id;
+    std::string line = std::to_string(done_) + " of " + std::to_string(total_) + " claims done";
+    if (!running.empty()) line += "; running " + running;
+    if (running_.size() == 1 && fraction_ >= 0) line += " " + std::to_string(static_cast<int>(fraction_ * 100)) + "%";
+    std::fprintf(stderr, "\r\033[Kgsdot3 prove: %s", line.c_str());
+    std::fflush(stderr);
+  }
+  std::mutex m_;
+  std::size_t total_, done_ = 0;
+  std::vector<std::string> running_;
+  double fraction_ = -1;
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now(), last_{};
+  bool printed_ = false;
 };
 
 // Whether a reference of the coverage table names something this program has: a quality or
@@ -129,16 +161,14 @@ void run_prove(const prove_args& a, const CLI::App& app, context& ctx) {
       selected.push_back(c);
     }
   }
-  auto printer = std::make_shared<progress_printer>();
+  auto printer = std::make_shared<progress_printer>(selected.size());
   proofs::run_config cfg;
   if (a.threads > 0) cfg.sweep.threads = a.threads;
   cfg.variants = !a.no_variants;
   cfg.sweep.brute_force = a.brute_force;
   cfg.sweep.progress = [printer](double f) { printer->update(f); };
-  cfg.starting = [printer](const proofs::claim& c) {
-    printer->finish();
-    *printer = progress_printer{std::string(c.id)};
-  };
+  cfg.starting = [printer](const proofs::claim& c) { printer->started(c.id); };
+  cfg.finished = [printer](const proofs::claim& c) { printer->finished(c.id); };
   if (!a.shard.empty()) {
     const auto shard = proofs::parse_shard(a.shard);
     if (!shard) throw usage_error("--shard: expected K/N with 0 <= K < N, got '" + a.shard + "'");
@@ -146,6 +176,7 @@ void run_prove(const prove_args& a, const CLI::App& app, context& ctx) {
     if (!a.json) throw usage_error("--shard writes a partial ledger: add --json");
     cfg.starting(*selected[0]);
     const auto text = proofs::run_shard(*selected[0], opts, cfg, *shard);
+    cfg.finished(*selected[0]);
     printer->finish();
     emit(text, a.output);
     ctx.exit_code = 0;

@@ -1,6 +1,7 @@
 // Unit tests of the proof framework: accumulators, the sweep engine, the runner and the ledger.
 #include <gtest/gtest.h>
 
+#include <mutex>
 #include <set>
 #include <string>
 
@@ -124,6 +125,36 @@ TEST(Runner, SameOutcomeWithOneAndTwoThreads) {
     EXPECT_EQ(a.counterexamples, b.counterexamples) << id;
     EXPECT_EQ(a.figures, b.figures) << id;
     EXPECT_EQ(a.witnesses, b.witnesses) << id;
+  }
+}
+
+TEST(Runner, ClaimsSideBySideGiveTheSequentialLedgerInOrder) {
+  // run() runs up to sweep.threads claims at once; each result must land in its claim's place and
+  // equal the claim run alone, and starting / finished must pair up for every claim.
+  std::vector<const p::claim*> claims;
+  for (auto id : {"eq9.rgb-sum", "eq4.signed-multiply", "appendix2.packing", "highlight.attenuation"})
+    claims.push_back(p::find_claim(id));
+  p::run_config one, three;
+  one.sweep.threads = 1, three.sweep.threads = 3;
+  std::mutex m;
+  std::multiset<std::string_view> started, finished;
+  three.starting = [&](const p::claim& c) {
+    const std::lock_guard l(m);
+    started.insert(c.id);
+  };
+  three.finished = [&](const p::claim& c) {
+    const std::lock_guard l(m);
+    finished.insert(c.id);
+  };
+  const auto seq = p::run(claims, {}, one), par = p::run(claims, {}, three);
+  ASSERT_EQ(par.size(), claims.size());
+  for (std::size_t i = 0; i < claims.size(); ++i) {
+    EXPECT_EQ(par[i].row, claims[i]);
+    EXPECT_EQ(par[i].result.figures, seq[i].result.figures) << claims[i]->id;
+    EXPECT_EQ(par[i].result.witnesses, seq[i].result.witnesses) << claims[i]->id;
+    EXPECT_EQ(par[i].variants.size(), seq[i].variants.size()) << claims[i]->id;
+    EXPECT_EQ(started.count(claims[i]->id), 1u);
+    EXPECT_EQ(finished.count(claims[i]->id), 1u);
   }
 }
 

@@ -1,7 +1,9 @@
 #include "proofs/runner.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
+#include <thread>
 
 namespace gsdot3::proofs {
 
@@ -54,10 +56,26 @@ claim_result run_claim(const claim& c, const gs::model_options& base, const run_
 
 std::vector<claim_result> run(const std::vector<const claim*>& claims, const gs::model_options& base,
                               const run_config& cfg) {
-  std::vector<claim_result> out;
-  for (const claim* c : claims) {
-    if (cfg.starting) cfg.starting(*c);
-    out.push_back(run_claim(*c, base, cfg));
+  // Claims are independent, so up to sweep.threads of them run at once, each sweeping with the same
+  // number of threads: the serial parts of one claim (tables built through the model, merges, the
+  // ledger's text) overlap another's sweeps. Results come back in the catalogue's order and are the
+  // same for any number of threads (sweep.hpp). A shard log counts evaluations in order, so a run
+  // with one is sequential.
+  std::vector<claim_result> out(claims.size());
+  std::atomic<std::size_t> next{0};
+  auto work = [&] {
+    for (std::size_t i = next++; i < claims.size(); i = next++) {
+      if (cfg.starting) cfg.starting(*claims[i]);
+      out[i] = run_claim(*claims[i], base, cfg);
+      if (cfg.finished) cfg.finished(*claims[i]);
+    }
+  };
+  const std::size_t workers =
+      cfg.sweep.shard ? 1 : std::min<std::size_t>(std::max(1U, cfg.sweep.threads), claims.size());
+  {
+    std::vector<std::jthread> pool;
+    for (std::size_t t = 1; t < workers; ++t) pool.emplace_back(work);
+    work();
   }
   return out;
 }

@@ -2,6 +2,7 @@
 // of each option the claim depends on, timing each, and notes where the verdict changes.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -22,7 +23,7 @@ struct claim_result {
   gs::model_options options;  // the base options
   outcome result;
   std::vector<option_variant> variants;
-  double seconds = 0;  // base run plus variants, wall clock
+  double seconds = 0;  // base run plus variants, wall clock (shared with the claims running beside it)
 };
 
 struct run_config {
@@ -30,8 +31,9 @@ struct run_config {
   // Also evaluate under the other values of each option the claim depends on (not when the base
   // outcome is option_free: every variant would repeat it).
   bool variants = true;
-  // Called before each claim (may be empty): the CLI uses it to label progress lines.
-  std::function<void(const claim&)> starting;
+  // Called before and after each claim (may be empty; from the worker threads, as claims run
+  // concurrently: run()): the CLI reports progress with them.
+  std::function<void(const claim&)> starting, finished;
 };
 
 claim_result run_claim(const claim& c, const gs::model_options& base, const run_config& cfg);
