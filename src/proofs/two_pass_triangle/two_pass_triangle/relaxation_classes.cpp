@@ -1,12 +1,14 @@
 #include "two_pass_triangle/relaxation_classes.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cstdlib>
 #include <map>
 #include <set>
 #include <tuple>
 
 #include "proofs/domains.hpp"
+#include "proofs/sweep.hpp"
 #include "two_pass_triangle/triangle_certify.hpp"
 #include "two_pass_triangle/triangle_relaxation.hpp"
 #include "proofs/two_pass.hpp"
@@ -54,18 +56,34 @@ bool closes(const open_class& c, int s) {
   constexpr std::int64_t min_cell = coord_one >> -survey_min_cell_log2;
   return certify_class({c.w, s, c.threshold128}, survey_box, min_cell, survey_max_cells, 1).open_count == 0;
 }
+// The indices of the classes that do not close at s, ascending, the classes certified on every core
+// (sweep.hpp: chunks merged in order); with `first_only` the classes after the first that does not
+// close may be skipped (relaxation_certified needs only whether there is one).
+struct still_open {
+  std::vector<std::size_t> index;
+  void merge(const still_open& later) { index.insert(index.end(), later.index.begin(), later.index.end()); }
+};
+std::vector<std::size_t> not_closing(const std::vector<open_class>& classes, int s, bool first_only) {
+  std::atomic<bool> found{false};
+  return sweep<still_open>(
+             classes.size(), sweep_config{},
+             [&](still_open& acc, std::uint64_t lo, std::uint64_t hi) {
+               for (auto i = lo; i < hi && !(first_only && found); ++i)
+                 if (!closes(classes[i], s)) acc.index.push_back(i), found = true;
+             },
+             classes.size())
+      .index;
+}
 }  // namespace
 
 bool relaxation_certified(int s, const gs::model_options& o) {
-  for (const auto& c : open_classes(s, o))
-    if (!closes(c, s)) return false;
-  return true;
+  return not_closing(open_classes(s, o), s, true).empty();
 }
 
 std::vector<open_class> uncertified_classes(int s, const gs::model_options& o) {
+  const auto classes = open_classes(s, o);
   std::vector<open_class> out;
-  for (const auto& c : open_classes(s, o))
-    if (!closes(c, s)) out.push_back(c);
+  for (const std::size_t i : not_closing(classes, s, false)) out.push_back(classes[i]);
   return out;
 }
 

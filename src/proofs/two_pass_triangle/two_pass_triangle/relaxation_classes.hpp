@@ -33,8 +33,8 @@ std::vector<open_class> open_classes(int s, const gs::model_options& o);
 // and its scaling (λ, μ >= 1) stops at 2047. 2048 leaves one class open at s = 82 under truncate_to_8.
 inline constexpr std::int64_t survey_box = 2047, survey_max_cells = 2000000;
 inline constexpr int survey_min_cell_log2 = -4;
-// Whether certify_class closes every open class at s with those settings; stops at the first class
-// that does not close.
+// Whether certify_class closes every open class at s with those settings (the classes certified on
+// every core; the rest are skipped once one does not close).
 bool relaxation_certified(int s, const gs::model_options& o);
 
 // The s the claim takes as certified, per gouraud_fraction (plane_steps; 0 under per_pixel, whose bound
