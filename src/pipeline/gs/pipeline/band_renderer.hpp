@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <optional>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "gs_arith/attribute_setup.hpp"
@@ -74,6 +75,12 @@ struct fragment {
   std::int32_t tri;
   std::int16_t x, y;
 };
+// Fragments (x0 + k, y), k < n, of one triangle: the cached fragments' runs along a row.
+struct run {
+  std::int32_t tri;
+  std::int16_t x0, y;
+  std::int32_t n;
+};
 
 // One band of the frame and its buffers (rows [band.y0, band.y1) of the frame-sized buffers).
 class band_renderer {
@@ -110,12 +117,17 @@ class band_renderer {
     if (o_.path == raster_path::cached) {
       frags_.clear();
       tri_frags_.assign(1, 0);
+      runs_.clear();
       for (std::size_t t = 0; t < ps_.triangles.size(); ++t, tri_frags_.push_back(frags_.size())) {
         const prepared_triangle& tri = ps_.triangles[t];
         rasterise_triangle(tri.setup, band_, [&](int x, int y) {
-          if (passes_later_depth_test(tri, x, y))
-            frags_.push_back(
-                {static_cast<std::int32_t>(t), static_cast<std::int16_t>(x), static_cast<std::int16_t>(y)});
+          if (!passes_later_depth_test(tri, x, y)) return;
+          frags_.push_back({static_cast<std::int32_t>(t), static_cast<std::int16_t>(x), static_cast<std::int16_t>(y)});
+          if (!runs_.empty() && runs_.back().tri == frags_.back().tri && runs_.back().y == y &&
+              runs_.back().x0 + runs_.back().n == x)
+            ++runs_.back().n;
+          else
+            runs_.push_back({frags_.back().tri, static_cast<std::int16_t>(x), static_cast<std::int16_t>(y), 1});
         });
       }
     }
@@ -186,6 +198,12 @@ class band_renderer {
     if (r.x0 >= r.x1 || r.y0 >= r.y1) return;
     if (vectorised() && !scalar_sprites) {
       span_batch batch(batch_registers<Pass>, o_.model);
+      if constexpr (std::is_same_v<FB, row_view>) {  // rows of adjacent words: the pixels rasterise_sprite visits
+        for (int y = r.y0; y < r.y1; ++y)
+          batch.add_row(&fb(r.x0, y), r.x0, y, r.x1 - r.x0, [&](int k) { return std::pair{texel(r.x0 + k, y), cf}; });
+        ops_ += static_cast<std::size_t>(r.x1 - r.x0) * static_cast<std::size_t>(r.y1 - r.y0);
+        return;
+      }
       rasterise_sprite({r.x0 * 16, r.y0 * 16}, {r.x1 * 16, r.y1 * 16}, r, [&](int x, int y) {
         batch.add(fb(x, y), texel(x, y), cf, x, y);
         ++ops_;
@@ -266,6 +284,19 @@ class band_renderer {
       batch.add(fb(x, y), texel, a.cf, x, y);
       ++ops_;
     };
+    if (o_.path == raster_path::cached && std::is_same_v<FB, row_view>) {  // a run's words are adjacent
+      std::int32_t last = -1;
+      std::optional<gs::attribute_walker> w;
+      for (const run& r : runs_) {
+        if (r.tri != last) batch.flush(), last = r.tri, w.emplace(attr[static_cast<std::size_t>(r.tri)]);
+        batch.add_row(&fb(r.x0, r.y), r.x0, r.y, r.n, [&](int k) {
+          const gs::attribute_walker::values a = w->at(r.x0 + k, r.y);
+          return std::pair{tex != nullptr ? tex->sample(a.u, a.v) : gs::rgba8{}, a.cf};
+        });
+        ops_ += static_cast<std::size_t>(r.n);
+      }
+      return;
+    }
     if (o_.path == raster_path::cached) {
       std::int32_t last = -1;
       std::optional<gs::attribute_walker> w;
@@ -297,6 +328,7 @@ class band_renderer {
   z_view z_;
   std::vector<std::int32_t>& visible_;
   std::vector<fragment> frags_;
+  std::vector<run> runs_;               // frags_ as runs, in the same order
   std::vector<std::size_t> tri_frags_;  // triangle t's fragments: frags_[tri_frags_[t], tri_frags_[t + 1])
   std::size_t ops_ = 0;
 };

@@ -4,8 +4,11 @@
 // triangle and every sprite (the rasteriser visits a pixel of one primitive once), so no pixel of a
 // batch reads a word another pixel of the same batch writes. The old word is read when the pixel is
 // added and the new one written when the batch is flushed, in the order the pixels were added.
+// Pixels come one at a time (add: any frame-buffer layout) or as a run of adjacent pixels of one row
+// whose words are adjacent too (add_row: the value path's row-major buffers).
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 
 #include "gs_simd/pixel_span.hpp"
@@ -21,12 +24,21 @@ class span_batch {
 
   void add(std::uint32_t& word, gs::rgba8 texel, const gs::fragment_colour& cf, int x, int y) {
     const std::size_t i = b_.n++;
-    word_[i] = &word;
-    b_.texel[i] = texel.to_u32();
-    b_.cf[0][i] = cf.r.value(), b_.cf[1][i] = cf.g.value(), b_.cf[2][i] = cf.b.value(), b_.cf[3][i] = cf.a.value();
-    b_.dst[i] = word;
-    b_.x[i] = static_cast<std::uint32_t>(x), b_.y[i] = static_cast<std::uint32_t>(y);
+    set(i, word, texel, cf, x, y);
     if (b_.n == simd::pixel_batch::capacity) flush();
+  }
+  // Pixels (x0 + k, y) for k < n, whose words are words[0 .. n): shade(k) gives pixel k's texel and
+  // colour (a pair). Taken in pieces that fit the batch.
+  template <class Shade>
+  void add_row(std::uint32_t* words, int x0, int y, int n, Shade&& shade) {
+    for (int k = 0; k < n;) {
+      const int end = std::min(n, k + static_cast<int>(simd::pixel_batch::capacity - b_.n));
+      for (; k < end; ++k) {
+        const auto [texel, cf] = shade(k);
+        set(b_.n++, words[k], texel, cf, x0 + k, y);
+      }
+      if (b_.n == simd::pixel_batch::capacity) flush();
+    }
   }
   void flush() {
     if (b_.n == 0) return;
@@ -36,6 +48,13 @@ class span_batch {
   }
 
  private:
+  void set(std::size_t i, std::uint32_t& word, gs::rgba8 texel, const gs::fragment_colour& cf, int x, int y) {
+    word_[i] = &word;
+    b_.texel[i] = texel.to_u32();
+    b_.cf[0][i] = cf.r.value(), b_.cf[1][i] = cf.g.value(), b_.cf[2][i] = cf.b.value(), b_.cf[3][i] = cf.a.value();
+    b_.dst[i] = word;
+    b_.x[i] = static_cast<std::uint32_t>(x), b_.y[i] = static_cast<std::uint32_t>(y);
+  }
   const gs::gs_registers& regs_;
   const gs::model_options& o_;
   simd::pixel_batch b_;
