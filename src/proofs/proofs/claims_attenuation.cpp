@@ -6,6 +6,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "proofs/claim_util.hpp"
 #include "proofs/claims.hpp"
@@ -44,6 +45,70 @@ outcome highlight_attenuation(const gs::model_options& o, const sweep_config&) {
   out.note =
       "HIGHLIGHT floors sph·k/128, so the attenuated texel is up to 127/128 below the exact value "
       "(the signed vector up to 127/128 longer); the clamp never bites";
+  return out;
+}
+
+outcome spot_attenuation_blend(const gs::model_options& o, const sweep_config&) {
+  // Section 3.6: a spot light's intensity texel a = 128·scale attenuates a DPB channel d by the blend
+  // (Cd − Cs)·As + Cs (methods::spot_attenuate), "in the same way as" HIGHLIGHT attenuates the sphere
+  // map in pass 1 (vertex RGB = a, vertex alpha = 128 − a). (1) Every d × a: the blend's channel
+  // against HIGHLIGHT's (a counterexample where they differ) and against the exact 128 − (128 − d)·a/128.
+  // (2) The two placements per channel, against the unattenuated four-pass product p = product(s, b)
+  // (four_pass::table: sphere component s, normal component b) scaled exactly, a·p/128: after pass 1 the
+  // DPB byte 128 − s is attenuated before the signed multiply; after the four passes the channel
+  // 128 + p is. Errors in 1/128 of a DPB step.
+  const four_pass::table t4(o);
+  auto blended = [&](int d, int a) {
+    return static_cast<int>(m::spot_attenuate(m::grey(d, 0).to_u32(), m::byte(a), o) & 0xFF);
+  };
+  extremes exact, after1, after4;
+  std::uint64_t differ = 0, index = 0;
+  std::vector<std::string> witnesses;
+  for (int d = 0; d < 256; ++d)
+    for (int a = 0; a <= 128; ++a, ++index) {
+      const int blend = blended(d, a);
+      const auto colour = gs::fragment_colour::flat({m::byte(a), m::byte(a), m::byte(a), m::byte(128 - a)});
+      const int highlight = gs::texture_function(gs::tfx::HIGHLIGHT, gs::tcc::RGB, m::grey(d, 0), colour, o).r.value();
+      exact.add(128 * blend - (128 * 128 - (128 - d) * a), index);
+      if (blend != highlight && ++differ <= 4)
+        witnesses.push_back("DPB channel " + hexdec(d) + ", As " + hexdec(a) + " => blend " + hexdec(blend) +
+                            ", HIGHLIGHT " + hexdec(highlight));
+    }
+  const std::uint64_t first = index;
+  for (int sph = -127; sph <= 128; ++sph)
+    for (int b = -128; b <= 127; ++b)
+      for (int a = 0; a <= 128; ++a, ++index) {
+        const int p = t4.product(sph, b);
+        const int p1 = t4.product(128 - blended(128 - sph, a), b), p4 = blended(128 + p, a) - 128;
+        after1.add(128 * p1 - a * p, index), after4.add(128 * p4 - a * p, index);
+      }
+  auto at = [&](std::uint64_t i) {
+    if (i < first)
+      return "DPB channel " + hexdec(static_cast<int>(i / 129)) + ", As " + hexdec(static_cast<int>(i % 129));
+    const std::uint64_t k = i - first;
+    const int sph = static_cast<int>(k / (256 * 129)) - 127, b = static_cast<int>(k / 129 % 256) - 128;
+    return "sphere s = " + std::to_string(sph) + " (DPB " + hexdec(128 - sph) + "), normal b = " + std::to_string(b) +
+           " (alpha " + hexdec(b + 128) + "), As " + hexdec(static_cast<int>(k % 129));
+  };
+  outcome out;
+  out.result = differ == 0 ? verdict::proven : verdict::refuted;
+  out.counterexamples = differ;
+  out.domain_size = index;
+  out.figures = {fig("err_min_128ths", exact.min),
+                 fig("err_max_128ths", exact.max),
+                 fig("after_pass1_err_min_128ths", after1.min),
+                 fig("after_pass1_err_max_128ths", after1.max),
+                 fig("after_pass4_err_min_128ths", after4.min),
+                 fig("after_pass4_err_max_128ths", after4.max)};
+  witnesses.insert(witnesses.end(),
+                   {"err_min at " + at(exact.arg_min), "err_max at " + at(exact.arg_max),
+                    "after_pass1_err_min at " + at(after1.arg_min), "after_pass1_err_max at " + at(after1.arg_max),
+                    "after_pass4_err_min at " + at(after4.arg_min), "after_pass4_err_max at " + at(after4.arg_max)});
+  out.witnesses = std::move(witnesses);
+  out.note =
+      "the blend (Cd − Cs)·As + Cs with Cs = 128 gives HIGHLIGHT's channel wherever the blend's >> 7 floors as "
+      "HIGHLIGHT's product does; per channel, attenuating after pass 1 passes the rounding through the signed "
+      "multiply, after the four passes it rounds the product once (a dot sums three channels)";
   return out;
 }
 
@@ -123,51 +188,64 @@ outcome lod_two_vs_four(const gs::model_options& o, const sweep_config& cfg) {
   // both), so both dot products come from one 32-bit look-up per channel: a normal's table holds, per
   // pair, (two-pass channel(n_c, l_c) + bias) << 16 | (four-pass product(a_c, b_c) + bias), and the
   // three channels' words add without a carry between the halves (each term + bias is in
-  // [0, 2·bias), checked when the table is filled, and 3·2·bias < 2^16). Outer loop over normals, so a
-  // normal's tables stay in L1 while the lights run; a normal whose extremes improve the running ones
-  // is walked again for the first index.
+  // [0, 2·bias), checked when the halves are tabulated, and 3·2·bias < 2^16). The halves are
+  // tabulated per component value (n_c ∈ [−127, 128], b_c ∈ [−128, 127]), so a normal's table is one
+  // addition per pair. Outer loop over normals, so a normal's tables stay in L1 while the lights run;
+  // a normal whose extremes improve the running ones is walked again for the first index.
   constexpr int bias = 4096;
   std::array<std::vector<std::array<int, 2>>, 3> pairs;  // per channel: the distinct (l_c, a_c)
   std::array<std::vector<std::uint16_t>, 3> pair_of;     // per channel and light: its pair's index
-  for (std::size_t c = 0; c < 3; ++c)
+  std::array<std::vector<std::uint32_t>, 3> high, low;   // per channel: [n_c + 127][pair], [b_c + 128][pair]
+  auto half = [](int term) {
+    if (term + bias < 0 || term + bias >= 2 * bias)
+      throw std::logic_error("lod.two-vs-four: a channel's dot term outside the packed word's range");
+    return static_cast<std::uint32_t>(term + bias);
+  };
+  for (std::size_t c = 0; c < 3; ++c) {
     for (const auto& L : lights) {
       const std::array<int, 2> key{L.l[c], L.a[c]};
       auto it = std::find(pairs[c].begin(), pairs[c].end(), key);
       if (it == pairs[c].end()) it = pairs[c].insert(pairs[c].end(), key);
       pair_of[c].push_back(static_cast<std::uint16_t>(it - pairs[c].begin()));
     }
+    for (int v = 0; v < 256; ++v)
+      for (const auto& [l, a] : pairs[c]) {
+        high[c].push_back(half(t2.channel(v - 127, l)) << 16);
+        low[c].push_back(half(t4.product(a, v - 128)));
+      }
+  }
   const auto r = sweep<acc>(nn, cfg, [&](acc& s, std::uint64_t lo, std::uint64_t hi) {
     std::array<std::vector<std::uint32_t>, 3> word;
-    std::vector<int> diffs(nl), visible(nl);
     for (auto j = lo; j < hi; ++j) {
       const auto& p = packed[j];
       const auto& b = normals[j];
       const std::array<int, 3> n{p.iX, p.iY, p.iZ};
       for (std::size_t c = 0; c < 3; ++c) {
-        word[c].resize(pairs[c].size());
-        for (std::size_t k = 0; k < pairs[c].size(); ++k) {
-          const int two = t2.channel(n[c], pairs[c][k][0]) + bias, four = t4.product(pairs[c][k][1], b[c]) + bias;
-          if (two < 0 || two >= 2 * bias || four < 0 || four >= 2 * bias)
-            throw std::logic_error("lod.two-vs-four: a channel's dot term outside the packed word's range");
-          word[c][k] = static_cast<std::uint32_t>(two) << 16 | static_cast<std::uint32_t>(four);
-        }
+        const std::size_t k = pairs[c].size();
+        const std::uint32_t* h = &high[c][static_cast<std::size_t>(n[c] + 127) * k];
+        const std::uint32_t* f = &low[c][static_cast<std::size_t>(b[c] + 128) * k];
+        word[c].resize(k);
+        for (std::size_t i = 0; i < k; ++i) word[c][i] = h[i] + f[i];
       }
       const std::uint32_t *wx = word[0].data(), *wy = word[1].data(), *wz = word[2].data();
       const std::uint16_t *kx = pair_of[0].data(), *ky = pair_of[1].data(), *kz = pair_of[2].data();
       const int base = 3 * t2.alpha(p.alpha) - 384 - 3 * bias;
-      int vmin = INT_MAX, vmax = INT_MIN, dmin = INT_MAX, dmax = INT_MIN;
-      for (std::size_t i = 0; i < nl; ++i) {
+      auto light = [&](std::size_t i) {  // {two − four, visible difference}
         const std::uint32_t w = wx[kx[i]] + wy[ky[i]] + wz[kz[i]];
         const int two = static_cast<int>(w >> 16) + base, four = static_cast<int>(w & 0xFFFFu) - 3 * bias;
-        diffs[i] = two - four;
-        visible[i] = std::max(two, 0) - std::max(four, 0);
-        dmin = std::min(dmin, diffs[i]), dmax = std::max(dmax, diffs[i]);
-        vmin = std::min(vmin, visible[i]), vmax = std::max(vmax, visible[i]);
+        return std::array<int, 2>{two - four, std::max(two, 0) - std::max(four, 0)};
+      };
+      int vmin = INT_MAX, vmax = INT_MIN, dmin = INT_MAX, dmax = INT_MIN;
+      for (std::size_t i = 0; i < nl; ++i) {
+        const auto [diff, visible] = light(i);
+        dmin = std::min(dmin, diff), dmax = std::max(dmax, diff);
+        vmin = std::min(vmin, visible), vmax = std::max(vmax, visible);
       }
-      if (dmin < s.diff.min || dmax > s.diff.max)
-        for (std::size_t i = 0; i < nl; ++i) s.diff.add(diffs[i], j * nl + i);
-      if (vmin < s.visible.min || vmax > s.visible.max)
-        for (std::size_t i = 0; i < nl; ++i) s.visible.add(visible[i], j * nl + i);
+      if (dmin < s.diff.min || dmax > s.diff.max || vmin < s.visible.min || vmax > s.visible.max)
+        for (std::size_t i = 0; i < nl; ++i) {
+          const auto [diff, visible] = light(i);
+          s.diff.add(diff, j * nl + i), s.visible.add(visible, j * nl + i);
+        }
     }
   });
   auto at = [&](std::uint64_t i) {
