@@ -72,6 +72,7 @@ TEST(Claims, EveryCatalogueRowRunsAndIsTested) {
                                              "clamp-wrap.intermediates",
                                              "highlight.attenuation",
                                              "lod.two-vs-four",
+                                             "spot.attenuation-blend",  // spot_attenuation_test.cpp
                                              "specular.attenuation-compensation",
                                              "dpb-clear.value",
                                              "dpb-clear.read-before-write",

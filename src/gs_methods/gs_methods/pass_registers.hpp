@@ -49,6 +49,12 @@ inline constexpr gs::alpha_reg subtract_source{blend_colour::Cd, blend_colour::C
                                                gs::u8::literal(0x80)};  // Cd − Cs
 inline constexpr gs::alpha_reg signed_multiply{blend_colour::Cs, blend_colour::Cd, blend_alpha::As, blend_colour::Cd,
                                                gs::u8{}};  // (Cs − Cd)·As + Cd, section 3.6
+// (Cd − Cs)·As + Cs with Cs = 128 and As = 128·scale: 128 − (128 − Cd)·scale, section 3.6's spot-light
+// attenuation of the DPB "by using the GS blend mode ... in the same way as when using the HIGHLIGHT
+// texture function" (seed 000, section 3.6; the paper names no selectors: these are the ones that
+// give HIGHLIGHT's form, sph·scale + (1 − scale)·128).
+inline constexpr gs::alpha_reg attenuate_about_source{blend_colour::Cd, blend_colour::Cs, blend_alpha::As,
+                                                      blend_colour::Cs, gs::u8{}};
 inline constexpr gs::alpha_reg multiply_by_ad{blend_colour::Cs, blend_colour::zero, blend_alpha::Ad, blend_colour::zero,
                                               gs::u8{}};  // Cs·Ad, step 4
 
@@ -74,6 +80,11 @@ inline constexpr pass_regs four_pass_y{true,  true,           gs::tfx::DECAL, gs
                                        false, only_channel[1]};
 inline constexpr pass_regs four_pass_z{true,  true,           gs::tfx::DECAL, gs::tcc::RGBA, signed_multiply,
                                        false, only_channel[2]};
+// Section 3.6's spot light: a projective texture of intensities, texel (128, 128, 128, 128·scale),
+// drawn over the DPB after the sphere-map pass (or after all four passes), DECAL / RGBA, the
+// attenuating blend, COLCLAMP off as every DPB pass of step 2, alpha kept.
+inline constexpr pass_regs spot_attenuation{true,  true,      gs::tfx::DECAL, gs::tcc::RGBA, attenuate_about_source,
+                                            false, keep_alpha};
 inline constexpr pass_regs baseline_add{true, true, gs::tfx::MODULATE, gs::tcc::RGB, add_source, false, keep_alpha};
 inline constexpr pass_regs baseline_subtract{true,  true,      gs::tfx::MODULATE, gs::tcc::RGB, subtract_source,
                                              false, keep_alpha};

@@ -113,6 +113,11 @@ const std::vector<claim>& catalogue() {
       {"highlight.attenuation", "§3.6",
        "128 − (128 − sph)·scale = sph·scale + (1 − scale)·128 by a HIGHLIGHT texture function",
        "every texel × every scale 0..128", M::exhaustive, depends("tfx_rounding"), c::highlight_attenuation},
+      {"spot.attenuation-blend", "§3.6",
+       "a spot light's projective intensity texture attenuates the DPB per pixel by the GS blend in the same way as "
+       "HIGHLIGHT, after the first pass or after all four",
+       "every DPB channel × As 0..128, and every sphere component × normal component × As 0..128 for each placement",
+       M::exhaustive, depends("tfx_rounding", "blend_shift"), c::spot_attenuation_blend},
       {"specular.attenuation-compensation", "§3.7", "(att^(1/n)·dot)^n through the ILP approximates att·dot^n",
        "n = 2..64 × att 0..128 × dot index 0..127", M::exhaustive, depends("tfx_rounding"),
        c::specular_attenuation_compensation},

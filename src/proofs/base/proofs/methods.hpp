@@ -56,6 +56,18 @@ constexpr std::uint32_t four_pass_channel(std::uint32_t dpb, int channel, u8 b2,
   return gs::frame_write(gs::frame_psm::PSMCT32, out, dpb, p.FBMSK);
 }
 
+// Section 3.6's spot-light attenuation of a DPB word: the intensity texel (0x80, 0x80, 0x80, a)
+// through TFX = DECAL, TCC = RGBA, blended (Cd − Cs)·As + Cs over the word with COLCLAMP off, RGB
+// written, alpha kept (gs_methods' spot_attenuation). a = 128·scale.
+constexpr std::uint32_t spot_attenuate(std::uint32_t dpb, u8 a, const gs::model_options& o) noexcept {
+  constexpr const gs_methods::pass_regs& p = gs_methods::spot_attenuation;
+  const rgba8 texel{byte(0x80), byte(0x80), byte(0x80), a};
+  const rgba8 cs = gs::texture_function(p.TFX, p.TCC, texel, gs::fragment_colour::flat(grey(0x80, 0x80)), o);
+  const rgba8 cd = gs::frame_read(gs::frame_psm::PSMCT32, dpb);
+  const rgba8 out = gs::colclamp(gs::alpha_blend(p.ALPHA, cs, cd, o), cs.a, p.CLAMP);
+  return gs::frame_write(gs::frame_psm::PSMCT32, out, dpb, p.FBMSK);
+}
+
 // ---- two-pass (section 3.5) ----------------------------------------------------------------------
 // Pass 1: positive palette texel, TFX = MODULATE with the Gouraud/flat light colour, blending off,
 // COLCLAMP off (gs_methods' two_pass_positive). Returns the DPB colour.
