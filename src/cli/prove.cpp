@@ -83,7 +83,7 @@ class progress_printer {
   }
   void finish() {
     const std::lock_guard lock(m_);
-    if (printed_) std::fprintf(stderr, "\r\033[Kgsdot3 prove: %zu of %zu claims done\n", done_, total_);
+    if (printed_) print(std::to_string(done_) + " of " + std::to_string(total_) + " claims done\n");
   }
 
  private:
@@ -96,8 +96,14 @@ class progress_printer {
     std::string line = std::to_string(done_) + " of " + std::to_string(total_) + " claims done";
     if (!running.empty()) line += "; running " + running;
     if (running_.size() == 1 && fraction_ >= 0) line += " " + std::to_string(static_cast<int>(fraction_ * 100)) + "%";
-    std::fprintf(stderr, "\r\033[Kgsdot3 prove: %s", line.c_str());
+    print(line);
+  }
+  // Over the last line (\r, then spaces where the last line was longer): no terminal escapes in logs.
+  void print(const std::string& line) {
+    std::fprintf(stderr, "\rgsdot3 prove: %s%*s", line.c_str(),
+                 static_cast<int>(last_length_ > line.size() ? last_length_ - line.size() : 0), "");
     std::fflush(stderr);
+    last_length_ = line.size();
   }
   std::mutex m_;
   std::size_t total_, done_ = 0;
@@ -105,6 +111,7 @@ class progress_printer {
   double fraction_ = -1;
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now(), last_{};
   bool printed_ = false;
+  std::size_t last_length_ = 0;
 };
 
 // Whether a reference of the coverage table names something this program has: a quality or

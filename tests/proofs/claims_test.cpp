@@ -73,6 +73,7 @@ TEST(Claims, EveryCatalogueRowRunsAndIsTested) {
                                              "highlight.attenuation",
                                              "lod.two-vs-four",
                                              "spot.attenuation-blend",  // spot_attenuation_test.cpp
+                                             "zprefill.single-light",   // z_prefill_test.cpp
                                              "specular.attenuation-compensation",
                                              "dpb-clear.value",
                                              "dpb-clear.read-before-write",

@@ -42,6 +42,18 @@ inline constexpr std::uint32_t clear_dpb = 0x00808080u;                         
 inline constexpr std::uint32_t keep_alpha = 0xFF000000u;                                   // FBMSK: write RGB only
 inline constexpr std::uint32_t only_channel[3] = {0xFFFFFF00u, 0xFFFF00FFu, 0xFF00FFFFu};  // FBMSK: R, G, B only
 
+// The depth test of the methods (section 3.1): TEST_1.ZTE = 1, ZTST = GEQUAL (larger Z is nearer);
+// ZBUF_1.PSM = PSMZ24 (the prepared Z planes are 24-bit, 0..0xFFFFFF, so Z24 holds them exactly and
+// the clamp never acts; the layout is PSMZ32's), ZMSK = 0 in step 1 (Z written), 1 in every later pass.
+// The Z clear before step 1 is a sprite with Z = 0 and ZTST = ALWAYS. pipeline/frame_packets.cpp writes
+// these as TEST_1 and ZBUF_1.
+inline constexpr gs::test_reg depth_gequal{false, gs::atst::NEVER, {},   gs::afail::KEEP,
+                                           false, false,           true, gs::ztst::GEQUAL};
+inline constexpr gs::test_reg depth_always{false, gs::atst::NEVER, {},   gs::afail::KEEP,
+                                           false, false,           true, gs::ztst::ALWAYS};
+inline constexpr gs::zbuf_reg z_written{{}, gs::zbuf_psm::PSMZ24, false};
+inline constexpr gs::zbuf_reg z_masked{{}, gs::zbuf_psm::PSMZ24, true};
+
 // ALPHA_1 settings used by the methods.
 inline constexpr gs::alpha_reg add_source{blend_colour::Cs, blend_colour::zero, blend_alpha::FIX, blend_colour::Cd,
                                           gs::u8::literal(0x80)};  // Cs + Cd

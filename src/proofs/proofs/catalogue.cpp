@@ -110,6 +110,11 @@ const std::vector<claim>& catalogue() {
        "bites",
        "each pass's unit over its whole input range", M::exhaustive,
        depends("tfx_rounding", "gouraud_fraction", "blend_shift"), c::clamp_wrap_intermediates},
+      {"zprefill.single-light", "§3.1",
+       "for a single light source, pre-filling the Z buffer (step 1) is not necessary: the light's first pass "
+       "testing GEQUAL and writing Z leaves the DPB and Z as step 1 then the pass does",
+       "every Z order of 1..6 fragments at a pixel (Z in 0..k-1) × each method's first light pass", M::exhaustive,
+       depends("tfx_rounding", "gouraud_fraction", "blend_shift"), c::z_prefill_single_light},
       {"highlight.attenuation", "§3.6",
        "128 − (128 − sph)·scale = sph·scale + (1 − scale)·128 by a HIGHLIGHT texture function",
        "every texel × every scale 0..128", M::exhaustive, depends("tfx_rounding"), c::highlight_attenuation},

@@ -34,18 +34,6 @@ using namespace ::gsdot3::gs_methods;
 using gs::blend_alpha;
 using gs::blend_colour;
 
-// The depth test of the methods (section 3.1): TEST_1.ZTE = 1, ZTST = GEQUAL (larger Z is nearer);
-// ZBUF_1.PSM = PSMZ24 (the prepared Z planes are 24-bit, 0..0xFFFFFF, so Z24 holds them exactly and
-// the clamp never acts; the layout is PSMZ32's), ZMSK = 0 in step 1 (Z written), 1 in every later pass.
-// The Z clear before step 1 is a sprite with Z = 0 and ZTST = ALWAYS. frame_packets.cpp writes
-// these as TEST_1 and ZBUF_1.
-inline constexpr gs::test_reg depth_gequal{false, gs::atst::NEVER, {},   gs::afail::KEEP,
-                                           false, false,           true, gs::ztst::GEQUAL};
-inline constexpr gs::test_reg depth_always{false, gs::atst::NEVER, {},   gs::afail::KEEP,
-                                           false, false,           true, gs::ztst::ALWAYS};
-inline constexpr gs::zbuf_reg z_written{{}, gs::zbuf_psm::PSMZ24, false};
-inline constexpr gs::zbuf_reg z_masked{{}, gs::zbuf_psm::PSMZ24, true};
-
 inline gs::rgba8 rgb(int r, int g, int b, int a) {
   return {gs::u8::from_wrapped(r), gs::u8::from_wrapped(g), gs::u8::from_wrapped(b), gs::u8::from_wrapped(a)};
 }
