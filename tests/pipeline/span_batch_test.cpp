@@ -34,7 +34,8 @@ TEST(SpanBatch, RowsAndSinglePixelsEqualThePixelPipelineWithTheirOwnXAndY) {
     regs.ALPHA_1 = gs::decode_alpha(selector() | selector() << 2 | selector() << 4 | selector() << 6 | bits(8) << 32);
     regs.FRAME_1 = gs::decode_frame(std::uint64_t{bits(1) != 0 ? 0x02u : 0x00u} << 24);
     regs.DTHE = gs::decode_dthe(1);
-    regs.DIMX = gs::decode_dimx((static_cast<std::uint64_t>(rng()) << 32 | rng()) & 0x7777777777777777u);  // 3-bit entries
+    regs.DIMX =
+        gs::decode_dimx((static_cast<std::uint64_t>(rng()) << 32 | rng()) & 0x7777777777777777u);  // 3-bit entries
     std::vector<std::uint32_t> words(400);
     for (auto& w : words) w = static_cast<std::uint32_t>(rng());
     std::vector<std::uint32_t> want = words;
