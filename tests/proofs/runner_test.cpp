@@ -3,6 +3,7 @@
 
 #include <mutex>
 #include <set>
+#include <stdexcept>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -156,6 +157,19 @@ TEST(Runner, ClaimsSideBySideGiveTheSequentialLedgerInOrder) {
     EXPECT_EQ(started.count(claims[i]->id), 1u);
     EXPECT_EQ(finished.count(claims[i]->id), 1u);
   }
+}
+
+p::outcome throwing_eval(const gs::model_options&, const p::sweep_config&) {
+  throw std::logic_error("test.throws: out of range");
+}
+
+TEST(Runner, AClaimThatThrowsSideBySideReachesTheCaller) {
+  // Run beside another claim on two threads, its exception must come out of run() (a worker thread
+  // that let it escape would end the program).
+  const p::claim throws{"test.throws", "-", "-", "-", p::method::exhaustive, {}, throwing_eval};
+  p::run_config two;
+  two.sweep.threads = 2;
+  EXPECT_THROW((void)p::run({p::find_claim("eq9.rgb-sum"), &throws}, {}, two), std::logic_error);
 }
 
 TEST(Runner, VariantsCoverEveryOtherValueAndFlagChanges) {

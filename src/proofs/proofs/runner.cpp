@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <exception>
 #include <thread>
 
 namespace gsdot3::proofs {
@@ -61,13 +62,21 @@ std::vector<claim_result> run(const std::vector<const claim*>& claims, const gs:
   // ledger's text) overlap another's sweeps. Results come back in the catalogue's order and are the
   // same for any number of threads (sweep.hpp). A shard log counts evaluations in order, so a run
   // with one is sequential.
+  // A claim that throws stops the others from starting, and its exception is rethrown here, as in a
+  // sequential run (not std::terminate from a worker thread).
   std::vector<claim_result> out(claims.size());
   std::atomic<std::size_t> next{0};
+  std::vector<std::exception_ptr> failed(claims.size());
   auto work = [&] {
     for (std::size_t i = next++; i < claims.size(); i = next++) {
-      if (cfg.starting) cfg.starting(*claims[i]);
-      out[i] = run_claim(*claims[i], base, cfg);
-      if (cfg.finished) cfg.finished(*claims[i]);
+      try {
+        if (cfg.starting) cfg.starting(*claims[i]);
+        out[i] = run_claim(*claims[i], base, cfg);
+        if (cfg.finished) cfg.finished(*claims[i]);
+      } catch (...) {
+        failed[i] = std::current_exception();
+        next = claims.size();
+      }
     }
   };
   const std::size_t workers =
@@ -77,6 +86,8 @@ std::vector<claim_result> run(const std::vector<const claim*>& claims, const gs:
     for (std::size_t t = 1; t < workers; ++t) pool.emplace_back(work);
     work();
   }
+  for (const auto& e : failed)
+    if (e) std::rethrow_exception(e);
   return out;
 }
 

@@ -40,32 +40,33 @@ constexpr fixed::s11 offset_multiply(u8 a2, u8 b2, const gs::model_options& o) n
   return gs::alpha_blend(offset_multiply_blend, cs, cd, o).r;
 }
 
-// One four-pass signed-multiplication pass (section 3.6, passes 2-4): the reordered palette texel
-// (0x80, 0x80, 0x80, b2) through TFX = DECAL, TCC = RGBA, blended over the DPB word with COLCLAMP
-// off (step 2.2), written with FBMSK keeping every channel but `channel` (0 = R, 1 = G, 2 = B)
-// and the alpha byte. Returns the new PSMCT32 DPB word.
-// The registers are gs_methods' four_pass_x, _y and _z.
-constexpr std::uint32_t four_pass_channel(std::uint32_t dpb, int channel, u8 b2, const gs::model_options& o) noexcept {
-  constexpr const gs_methods::pass_regs* axis[3] = {&gs_methods::four_pass_x, &gs_methods::four_pass_y,
-                                                    &gs_methods::four_pass_z};
-  const gs_methods::pass_regs& p = *axis[channel];
-  const rgba8 texel{byte(0x80), byte(0x80), byte(0x80), b2};
+// A DPB pass drawing the texel (0x80, 0x80, 0x80, a) through pass p's registers (TFX = DECAL, TCC =
+// RGBA: Cs is the texel) over the PSMCT32 DPB word, COLCLAMP as p says, written with p's FBMSK.
+// Returns the new DPB word.
+constexpr std::uint32_t grey_alpha_pass(const gs_methods::pass_regs& p, std::uint32_t dpb, u8 a,
+                                        const gs::model_options& o) noexcept {
+  const rgba8 texel{byte(0x80), byte(0x80), byte(0x80), a};
   const rgba8 cs = gs::texture_function(p.TFX, p.TCC, texel, gs::fragment_colour::flat(grey(0x80, 0x80)), o);
   const rgba8 cd = gs::frame_read(gs::frame_psm::PSMCT32, dpb);
   const rgba8 out = gs::colclamp(gs::alpha_blend(p.ALPHA, cs, cd, o), cs.a, p.CLAMP);
   return gs::frame_write(gs::frame_psm::PSMCT32, out, dpb, p.FBMSK);
 }
 
-// Section 3.6's spot-light attenuation of a DPB word: the intensity texel (0x80, 0x80, 0x80, a)
-// through TFX = DECAL, TCC = RGBA, blended (Cd − Cs)·As + Cs over the word with COLCLAMP off, RGB
-// written, alpha kept (gs_methods' spot_attenuation). a = 128·scale.
+// One four-pass signed-multiplication pass (section 3.6, passes 2-4): the reordered palette texel
+// (0x80, 0x80, 0x80, b2) blended over the DPB word with COLCLAMP off (step 2.2), written with FBMSK
+// keeping every channel but `channel` (0 = R, 1 = G, 2 = B) and the alpha byte. The registers are
+// gs_methods' four_pass_x, _y and _z.
+constexpr std::uint32_t four_pass_channel(std::uint32_t dpb, int channel, u8 b2, const gs::model_options& o) noexcept {
+  constexpr const gs_methods::pass_regs* axis[3] = {&gs_methods::four_pass_x, &gs_methods::four_pass_y,
+                                                    &gs_methods::four_pass_z};
+  return grey_alpha_pass(*axis[channel], dpb, b2, o);
+}
+
+// Section 3.6's spot-light attenuation of a DPB word: the intensity texel (0x80, 0x80, 0x80, a),
+// blended (Cd − Cs)·As + Cs with COLCLAMP off, RGB written, alpha kept (gs_methods' spot_attenuation).
+// a = 128·scale.
 constexpr std::uint32_t spot_attenuate(std::uint32_t dpb, u8 a, const gs::model_options& o) noexcept {
-  constexpr const gs_methods::pass_regs& p = gs_methods::spot_attenuation;
-  const rgba8 texel{byte(0x80), byte(0x80), byte(0x80), a};
-  const rgba8 cs = gs::texture_function(p.TFX, p.TCC, texel, gs::fragment_colour::flat(grey(0x80, 0x80)), o);
-  const rgba8 cd = gs::frame_read(gs::frame_psm::PSMCT32, dpb);
-  const rgba8 out = gs::colclamp(gs::alpha_blend(p.ALPHA, cs, cd, o), cs.a, p.CLAMP);
-  return gs::frame_write(gs::frame_psm::PSMCT32, out, dpb, p.FBMSK);
+  return grey_alpha_pass(gs_methods::spot_attenuation, dpb, a, o);
 }
 
 // ---- two-pass (section 3.5) ----------------------------------------------------------------------
