@@ -284,25 +284,20 @@ class band_renderer {
       batch.add(fb(x, y), texel, a.cf, x, y);
       ++ops_;
     };
-    if (o_.path == raster_path::cached && std::is_same_v<FB, row_view>) {  // a run's words are adjacent
+    if (o_.path == raster_path::cached) {
       std::int32_t last = -1;
       std::optional<gs::attribute_walker> w;
       for (const run& r : runs_) {
         if (r.tri != last) batch.flush(), last = r.tri, w.emplace(attr[static_cast<std::size_t>(r.tri)]);
-        batch.add_row(&fb(r.x0, r.y), r.x0, r.y, r.n, [&](int k) {
-          const gs::attribute_walker::values a = w->at(r.x0 + k, r.y);
-          return std::pair{tex != nullptr ? tex->sample(a.u, a.v) : gs::rgba8{}, a.cf};
-        });
-        ops_ += static_cast<std::size_t>(r.n);
-      }
-      return;
-    }
-    if (o_.path == raster_path::cached) {
-      std::int32_t last = -1;
-      std::optional<gs::attribute_walker> w;
-      for (const fragment& f : frags_) {
-        if (f.tri != last) batch.flush(), last = f.tri, w.emplace(attr[static_cast<std::size_t>(f.tri)]);
-        add(*w, f.x, f.y);
+        if constexpr (std::is_same_v<FB, row_view>) {  // a run's words are adjacent
+          batch.add_row(&fb(r.x0, r.y), r.x0, r.y, r.n, [&](int k) {
+            const gs::attribute_walker::values a = w->at(r.x0 + k, r.y);
+            return std::pair{tex != nullptr ? tex->sample(a.u, a.v) : gs::rgba8{}, a.cf};
+          });
+          ops_ += static_cast<std::size_t>(r.n);
+        } else {
+          for (int k = 0; k < r.n; ++k) add(*w, r.x0 + k, r.y);
+        }
       }
       return;
     }
