@@ -26,14 +26,14 @@ struct args {
 nlohmann::json to_json(const pipeline::quality_scene& q) {
   nlohmann::json j;
   for (const auto& e : q.methods)
-    j[std::string(pipeline::name(e.m))] = {{"rmse_vs_renormalised", e.vs_renormalised},
-                                           {"rmse_vs_unnormalised", e.vs_unnormalised},
-                                           {"rmse_after_gain", e.after_gain},
-                                           {"gain", e.gain},
-                                           {"rmse_sign_change_triangles", e.sign_change},
-                                           {"samples", e.samples},
-                                           {"sign_change_samples", e.sign_change_samples},
-                                           {"gs_pixel_ops", e.pixel_ops}};
+    j[pipeline::label(e.m, e.map)] = {{"rmse_vs_renormalised", e.vs_renormalised},
+                                      {"rmse_vs_unnormalised", e.vs_unnormalised},
+                                      {"rmse_after_gain", e.after_gain},
+                                      {"gain", e.gain},
+                                      {"rmse_sign_change_triangles", e.sign_change},
+                                      {"samples", e.samples},
+                                      {"sign_change_samples", e.sign_change_samples},
+                                      {"gs_pixel_ops", e.pixel_ops}};
   return j;
 }
 
@@ -65,8 +65,8 @@ void run(const args& a, context& ctx) {
       j["rows"].push_back({{"claim", r.claim},
                            {"paper", r.paper},
                            {"metric", r.metric},
-                           {"better", std::string(pipeline::name(r.better))},
-                           {"other", std::string(pipeline::name(r.other))},
+                           {"better", r.better},
+                           {"other", r.other},
                            {"verdict", r.verdict},
                            {"holds_on", r.holds_on},
                            {"per_scene_better_other", pairs}});
@@ -86,8 +86,7 @@ void run(const args& a, context& ctx) {
   for (const auto& r : rows) {
     if (r.claim != claim) {
       claim = r.claim;
-      std::printf("\n%s: %s vs %s\n  %s\n", r.claim.c_str(), std::string(pipeline::name(r.better)).c_str(),
-                  std::string(pipeline::name(r.other)).c_str(), r.paper.c_str());
+      std::printf("\n%s: %s vs %s\n  %s\n", r.claim.c_str(), r.better.c_str(), r.other.c_str(), r.paper.c_str());
     }
     double lo = 1e300, hi = 0;
     for (std::size_t k = 1; k < r.per_scene.size(); ++k) {

@@ -208,10 +208,15 @@ scene_setup setup(const render_args& a) {
     req.in = pipeline::make_scene(sr, progress);
   } catch (const std::runtime_error& e) { throw usage_error(e.what()); }
   if (a.lod_share) req.in.s.lights = pipeline::split_for_lod(req.in.s.lights, *a.lod_share);
-  if (a.normal_map_bits == 4) {  // the maps read are 8-bit
-    req.in.s.normals = pipeline::with_index_bits(req.in.s.normals, 4);
+  if (a.normal_map_bits != 8)  // the maps read are 8-bit
+    req.in.s.normals = pipeline::with_index_bits(req.in.s.normals, a.normal_map_bits);
+  if (a.normal_map_bits == 4)
     req.in.description += "; 4-bit normal map (PSMT4, 16 palette entries quantised from the 8-bit map)";
-  }
+  if (a.normal_map_bits == 24)
+    req.in.description +=
+        "; 24-bit normal map: four-pass samples three 8-bit component maps (section 3.6), the float reference the "
+        "unquantised normals; two-pass, three-pass, the 2002 method and the other seeds' methods read the 8-bit "
+        "palettised map";
   return req;
 }
 
@@ -311,8 +316,11 @@ void add_options(CLI::App* cmd, render_args& a) {
   cmd->add_option(
          "--normal-map-bits", a.normal_map_bits,
          "bits per normal-map index (section 3.8's 4/8-bit maps): 8 = PSMT8 with 256 palette entries, 4 = "
-         "PSMT4 with 16, quantised from the 8-bit map (the report's float reference reads the same 16 normals)")
-      ->check(CLI::IsMember({4, 8}))
+         "PSMT4 with 16, quantised from the 8-bit map (the report's float reference reads the same 16 normals); "
+         "24 = the map before quantisation, read by four-pass as three 8-bit maps, 128 + nearest(127·n) per axis "
+         "(section 3.6), and by the float reference; the methods that read a texel's three components in one "
+         "pass (two-pass, three-pass, 2002, the other seeds') read the 8-bit map")
+      ->check(CLI::IsMember({4, 8, 24}))
       ->capture_default_str();
   cmd->add_option("--path", a.path, "rasteriser path: cached (fast) | reference (re-rasterise every pass)")
       ->capture_default_str();

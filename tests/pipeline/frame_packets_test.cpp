@@ -334,7 +334,7 @@ TEST_P(FramePackets, UploadsPutTheScenesTexturesWhereTheTexturesAreRead) {
   const gs_inputs in = place_inputs(make_inputs(s, GetParam(), render_options{}), fp.buffers.first_texture_block());
   // Gouraud draws no texture in its light pass: its normal map is uploaded (one input set for every
   // method) but no TEX0 names it.
-  const auto nm = textures.find(static_cast<std::uint64_t>(in.nm_at.BP.value()));
+  const auto nm = textures.find(static_cast<std::uint64_t>(in.nm_at[0].BP.value()));
   if (GetParam() == method::gouraud) {
     EXPECT_EQ(nm, textures.end());
   } else {
@@ -345,7 +345,7 @@ TEST_P(FramePackets, UploadsPutTheScenesTexturesWhereTheTexturesAreRead) {
   long wrong = 0;
   for (int y = 0; y < s.normals.height; ++y)
     for (int x = 0; x < s.normals.width; ++x)
-      wrong += m.read_pixel(in.nm_at, static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y)) !=
+      wrong += m.read_pixel(in.nm_at[0], static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y)) !=
                s.normals.index[static_cast<std::size_t>(y * s.normals.width + x)];
   for (int y = 0; y < s.diffuse.height; ++y)
     for (int x = 0; x < s.diffuse.width; ++x)

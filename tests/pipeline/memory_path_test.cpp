@@ -65,7 +65,8 @@ TEST_P(MemoryPath, AFourBitMapEqualsTheValueLevelFrameAndItsPsmt8Storage) {
   as_psmt8.normals.bits = 8;
   const method m = GetParam();
   ASSERT_EQ(place_inputs(make_inputs(four, m, {}), buffer_layout_for(four.width, four.height).first_texture_block())
-                .nm_at.PSM,
+                .nm_at[0]
+                .PSM,
             gs::mem::psm::PSMT4);
   const prepared_scene ps = prepare(four);
   for (bool bilinear : {false, true}) {
@@ -78,6 +79,44 @@ TEST_P(MemoryPath, AFourBitMapEqualsTheValueLevelFrameAndItsPsmt8Storage) {
     EXPECT_EQ(f.colour, render(as_psmt8, ps, m, o).colour) << what << ": PSMT4 vs PSMT8 storage";
     if (m != method::gouraud) {
       EXPECT_NE(f.colour, render(eight, ps, m, o).colour) << what << ": the 8-bit map's frame";
+    }
+  }
+}
+
+// Section 3.6's "three 8 bit normal maps" (a 24-bit map): four-pass places three PSMT8 component maps
+// and the memory path gives the value path's frame. Against an independent route: when every texel's
+// normal is exactly its palette entry (unquantised = palette[index]), the component maps (the byte
+// 128 + nearest(127·n_axis) per texel, read through the ramp CLUT) must give the frame of the reordered
+// palettes (the same byte in the CLUT entry, read through the index map); with the real unquantised
+// normals they must not. The other methods read the 8-bit map: their frames do not change.
+TEST_P(MemoryPath, ATwentyFourBitMapIsThreeComponentMapsForFourPass) {
+  static const scene eight = default_scene();
+  scene wide = eight;
+  wide.normals = with_index_bits(eight.normals, 24);
+  scene exact = wide;
+  for (std::size_t i = 0; i < exact.normals.index.size(); ++i)
+    exact.normals.unquantised[i] = exact.normals.palette[exact.normals.index[i]];
+  const method m = GetParam();
+  const gs_inputs placed =
+      place_inputs(make_inputs(wide, m, {}), buffer_layout_for(wide.width, wide.height).first_texture_block());
+  ASSERT_EQ(normal_map_count(placed), m == method::four_pass ? 3u : 1u);
+  if (m == method::four_pass) {
+    EXPECT_NE(placed.nm_at[1].BP.value(), placed.nm_at[0].BP.value());
+    EXPECT_NE(placed.nm_at[2].BP.value(), placed.nm_at[1].BP.value());
+  }
+  const prepared_scene ps = prepare(wide);
+  for (bool bilinear : {false, true}) {
+    render_options o;
+    o.bilinear = bilinear;
+    const std::string what = std::string("24-bit map, bilinear ") + (bilinear ? "on" : "off");
+    EXPECT_GT(expect_same(wide, ps, m, o, what), 1000);
+    o.memory_path = true;
+    const frame f = render(wide, ps, m, o), palettised = render(eight, ps, m, o);
+    EXPECT_EQ(render(exact, ps, m, o).colour, palettised.colour) << what << ": exact palette normals";
+    if (m == method::four_pass) {
+      EXPECT_NE(f.colour, palettised.colour) << what << ": the 8-bit map's frame";
+    } else {
+      EXPECT_EQ(f.colour, palettised.colour) << what << ": the 8-bit map is what this method reads";
     }
   }
 }

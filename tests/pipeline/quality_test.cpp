@@ -21,13 +21,14 @@ TEST(Quality, FiguresAgreeWithIndependentComputations) {
   const quality_scene q = measure_quality("random-3", s, o);
   const prepared_scene ps = prepare(s);
   const auto& order = gs_methods;
-  ASSERT_EQ(q.methods.size(), std::size(order));
+  ASSERT_EQ(q.methods.size(), std::size(order) + 2);
   std::size_t sign_change_seen = 0;
   for (std::size_t k = 0; k < std::size(order); ++k) {
     const frame f = render(s, ps, order[k], o);
     const reference_frame ref = render_reference(s, ps, f.visible_triangle, o.bilinear, o.specular_power);
     const method_errors& e = q.methods[k];
     EXPECT_EQ(e.m, order[k]);
+    EXPECT_EQ(e.map, map_read::own_map);
     const error_stats rn = compare(f.dot, ref.renormalised), un = compare(f.dot, ref.unnormalised);
     ASSERT_GT(rn.samples, 100u);
     EXPECT_EQ(e.samples, rn.samples);
@@ -85,10 +86,22 @@ TEST(Quality, FiguresAgreeWithIndependentComputations) {
     sign_change_seen += n;
   }
   EXPECT_GT(sign_change_seen, 0u) << "the scene has no triangle where the per-vertex clamping acts";
+  // Section 3.6's pair: four-pass's frames of the 8-bit map and of the three component maps, against
+  // the reference of the unquantised normals (the 24-bit map read in float).
+  scene wide = s;
+  wide.normals.bits = 24;
+  const frame eight = render(s, ps, method::four_pass, o), three = render(wide, ps, method::four_pass, o);
+  const reference_frame unquantised = render_reference(wide, ps, eight.visible_triangle, o.bilinear, o.specular_power);
+  const method_errors &p = q.methods[std::size(order)], &t = q.methods[std::size(order) + 1];
+  EXPECT_EQ(p.map, map_read::palettised);
+  EXPECT_EQ(t.map, map_read::three_maps);
+  EXPECT_NEAR(p.vs_renormalised, compare(eight.dot, unquantised.renormalised).rmse, 1e-9);
+  EXPECT_NEAR(t.vs_renormalised, compare(three.dot, unquantised.renormalised).rmse, 1e-9);
+  EXPECT_NE(p.vs_renormalised, t.vs_renormalised);
 }
 
-method_errors errors(method m, double renormalised, std::size_t ops) {
-  method_errors e{m};
+method_errors errors(method m, double renormalised, std::size_t ops, map_read map = map_read::own_map) {
+  method_errors e{m, map};
   e.vs_renormalised = renormalised;
   e.pixel_ops = ops;
   return e;
@@ -97,12 +110,15 @@ method_errors errors(method m, double renormalised, std::size_t ops) {
 TEST(Quality, VerdictIsHoldsRefutedOrMixedWithTheCount) {
   // Scene 1: two-pass 1 < baseline 2; scene 2: two-pass 3 > baseline 2. Pixel ops: 10 < 20 on both.
   // Three-pass 0.9 < two-pass on both.
-  const std::vector<quality_scene> scenes = {{"a",
-                                              {errors(method::two_pass, 1, 10), errors(method::four_pass, 0.5, 30),
-                                               errors(method::baseline, 2, 20), errors(method::three_pass, 0.9, 15)}},
-                                             {"b",
-                                              {errors(method::two_pass, 3, 10), errors(method::four_pass, 4, 30),
-                                               errors(method::baseline, 2, 20), errors(method::three_pass, 0.9, 15)}}};
+  const std::vector<quality_scene> scenes = {
+      {"a",
+       {errors(method::two_pass, 1, 10), errors(method::four_pass, 0.5, 30), errors(method::baseline, 2, 20),
+        errors(method::three_pass, 0.9, 15), errors(method::four_pass, 0.7, 30, map_read::palettised),
+        errors(method::four_pass, 0.6, 30, map_read::three_maps)}},
+      {"b",
+       {errors(method::two_pass, 3, 10), errors(method::four_pass, 4, 30), errors(method::baseline, 2, 20),
+        errors(method::three_pass, 0.9, 15), errors(method::four_pass, 5, 30, map_read::palettised),
+        errors(method::four_pass, 4.5, 30, map_read::three_maps)}}};
   const auto rows = quality_rows(scenes);
   auto find = [&](const std::string& claim, const std::string& metric) {
     const auto it = std::find_if(rows.begin(), rows.end(),
@@ -115,6 +131,14 @@ TEST(Quality, VerdictIsHoldsRefutedOrMixedWithTheCount) {
   EXPECT_EQ(find("quality.four-pass-vs-2002", "gs_pixel_ops").verdict, "refuted");
   EXPECT_EQ(find("quality.four-pass-vs-2002", "rmse_vs_renormalised").verdict, "mixed (1 of 2)");
   EXPECT_EQ(find("quality.three-pass-vs-two-pass", "rmse_vs_renormalised").verdict, "holds");
+  // The three component maps (0.6, 4.5) against the 8-bit map (0.7, 5), not four-pass's own figures.
+  const quality_row maps = find("quality.three-maps-vs-palettised", "rmse_vs_renormalised");
+  EXPECT_EQ(maps.verdict, "holds");
+  EXPECT_EQ(maps.per_scene.at(1), (std::pair<double, double>{4.5, 5}));
+  EXPECT_EQ(maps.better, "four-pass, three 8-bit maps vs unquantised");
+  EXPECT_EQ(std::count_if(rows.begin(), rows.end(),
+                          [](const quality_row& x) { return x.claim == "quality.three-maps-vs-palettised"; }),
+            1);
   const quality_row r = find("quality.four-pass-vs-two-pass", "rmse_vs_renormalised");
   EXPECT_EQ(r.verdict, "mixed (1 of 2)");
   ASSERT_EQ(r.per_scene.size(), 2u);
@@ -137,10 +161,20 @@ TEST(Quality, EqualOnEveryScene) {
   EXPECT_EQ(it->verdict, "refuted (equal on every scene)");
 }
 
-// A scene measured without a method a row compares is the caller's error, said as one.
-TEST(Quality, AMissingMethodIsAnError) {
-  const std::vector<quality_scene> scenes = {{"a", {errors(method::two_pass, 1, 10)}}};
-  EXPECT_THROW(quality_rows(scenes), std::invalid_argument);
+// A claim whose entries the first scene lacks has no rows (a report of some methods); a later scene
+// without a method the first one has is the caller's error, said as one.
+TEST(Quality, AMissingMethodSkipsTheClaimOrIsAnError) {
+  const std::vector<quality_scene> one = {
+      {"a", {errors(method::two_pass, 1, 10), errors(method::four_pass, 2, 20), errors(method::baseline, 2, 20)}}};
+  const auto rows = quality_rows(one);
+  EXPECT_FALSE(rows.empty());
+  for (const quality_row& r : rows) {
+    EXPECT_NE(r.claim, "quality.three-pass-vs-two-pass");
+    EXPECT_NE(r.claim, "quality.three-maps-vs-palettised");
+  }
+  std::vector<quality_scene> two = one;
+  two.push_back({"b", {errors(method::two_pass, 1, 10)}});
+  EXPECT_THROW(quality_rows(two), std::invalid_argument);
 }
 
 TEST(Quality, RandomScenesAreFixedBySeedAndDiffer) {

@@ -39,7 +39,7 @@ std::array<std::size_t, 2> first_pass_uploads(const scene& s, const prepared_sce
   if (in.window_first == 0) return {0, 0};
   start_stream(in, ps, o, detail::band_renderer::drawn_area(ps, {0, 0, s.width, s.height}));
   std::size_t pages = 0;
-  for (const stream_piece& p : in.stream->next_pass(normal_map_stream(in))) pages += p.uploads.size();
+  for (const stream_piece& p : in.stream->next_pass(normal_map_stream(in, 0))) pages += p.uploads.size();
   return {pages, in.stream->window_pages()};
 }
 
@@ -102,7 +102,7 @@ scene sized(scene s, int w, int h) {
 const scene& map_1024() {
   static const scene s = [] {
     scene t = default_scene(256);
-    normal_map big{1024, 1024, std::vector<std::uint8_t>(1024u * 1024u), t.normals.palette};
+    normal_map big{1024, 1024, std::vector<std::uint8_t>(1024u * 1024u), t.normals.palette, {}, 8};
     for (int y = 0; y < 1024; ++y)
       for (int x = 0; x < 1024; ++x)
         big.index[static_cast<std::size_t>(y * 1024 + x)] = static_cast<std::uint8_t>(
@@ -134,6 +134,19 @@ TEST(TextureStream, A1024FourBitMapEqualsTheValuePath) {
   render_options o;
   o.bilinear = true;
   expect_streamed_frames_equal(s, method::four_pass, o, false, "1024² 4-bit, 512x448, four-pass, bilinear");
+}
+
+// A 1024² 24-bit map read by four-pass: three PSMT8 component maps (section 3.6), each streamed as a
+// texture of its own (stream ids 3..5) between the sphere map and the 1024² diffuse texture; the
+// texels' normals are map_1024's palette entries, so the three maps differ from each other per tile.
+TEST(TextureStream, A1024TwentyFourBitMapEqualsTheValuePath) {
+  scene s = map_1024();
+  s.normals.unquantised.resize(s.normals.index.size());
+  for (std::size_t i = 0; i < s.normals.index.size(); ++i)
+    s.normals.unquantised[i] = s.normals.palette[s.normals.index[i]];
+  s.normals.bits = 24;
+  expect_streamed_frames_equal(s, method::four_pass, render_options{}, true,
+                               "1024² 24-bit, 512x448, four-pass, nearest");
 }
 
 class TextureStreamMethods : public ::testing::TestWithParam<method> {};
@@ -193,7 +206,7 @@ TEST(TextureStream, Pcsx2RowPiecesAreWholeRowsInTriangleOrder) {
   const scissor area = detail::band_renderer::drawn_area(ps, {0, 0, s.width, s.height});
   start_stream(in, ps, o, area);
   for (int pass = 0; pass < 2; ++pass) {
-    const std::vector<stream_piece> pieces = in.stream->next_pass(normal_map_stream(in));
+    const std::vector<stream_piece> pieces = in.stream->next_pass(normal_map_stream(in, 0));
     int split_rows = 0;
     for (std::size_t k = 0; k < pieces.size(); ++k) {
       EXPECT_EQ(pieces[k].area.x0, area.x0);

@@ -127,20 +127,25 @@ normal_map quantise(const std::vector<glm::vec3>& normals, int width, int height
   m.index.resize(normals.size());
   centre_set set(centres);
   for (std::size_t i = 0; i < normals.size(); ++i) m.index[i] = static_cast<std::uint8_t>(set.nearest(normals[i]));
+  m.unquantised = normals;
   return m;
 }
 
 normal_map with_index_bits(const normal_map& m, int bits) {
-  if (bits != 4 && bits != 8) throw std::invalid_argument("normal map index bits: 4 or 8, not " + std::to_string(bits));
+  if (bits != 4 && bits != 8 && bits != 24)
+    throw std::invalid_argument("normal map bits: 4, 8 or 24, not " + std::to_string(bits));
   if (m.bits == bits) return m;
-  if (bits == 8) {
+  if (bits == 24 && m.bits != 8)
+    throw std::invalid_argument("normal map bits: a 24-bit map is made beside the 8-bit one");
+  if (bits != 4) {
     normal_map wide = m;
-    wide.bits = 8;
+    wide.bits = bits;
     return wide;
   }
   std::vector<glm::vec3> normals(m.index.size());
   for (std::size_t i = 0; i < normals.size(); ++i) normals[i] = m.palette[m.index[i]];
   normal_map narrow = quantise(normals, m.width, m.height, 16);
+  narrow.unquantised = m.unquantised;  // what the 8-bit map was quantised from
   narrow.bits = 4;
   return narrow;
 }

@@ -16,13 +16,15 @@ std::vector<glm::vec3> normals_from_height(const std::vector<float>& height, int
 
 // Quantises unit normals to at most `entries` palette entries by spherical k-means (assignment by
 // largest dot product, centroids renormalised means), deterministic: seeds are chosen by farthest-point
-// sampling from the first normal, iterations stop when no assignment changes (or after 30).
+// sampling from the first normal, iterations stop when no assignment changes (or after 30). The map
+// keeps the normals as `unquantised`.
 normal_map quantise(const std::vector<glm::vec3>& normals, int width, int height, int entries = 256);
 
-// The map with `bits` per index, 4 (PSMT4, 16 entries) or 8 (PSMT8, 256): the same map when it has
-// them; an 8-bit map to 4 bits by quantising its texels' normals (palette[index]) to 16 entries as
-// above, the far level of detail made from the near one (section 3.8); a 4-bit map's indices are
-// valid 8-bit ones. Throws std::invalid_argument for any other bits.
+// The map with `bits` per index, 4 (PSMT4, 16 entries) or 8 (PSMT8, 256), or read as 24 (its
+// unquantised normals, scene.hpp): the same map when it has them; an 8-bit map to 4 bits by quantising
+// its texels' normals (palette[index]) to 16 entries as above, the far level of detail made from the
+// near one (section 3.8); a 4-bit map's indices are valid 8-bit ones; 24 from an 8-bit map only.
+// Throws std::invalid_argument for any other bits.
 normal_map with_index_bits(const normal_map& m, int bits);
 
 }  // namespace gsdot3::pipeline

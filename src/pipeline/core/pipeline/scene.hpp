@@ -29,12 +29,22 @@ struct mesh {
 // A palettised normal map: `index` is width·height palette indices, `palette` holds up to 2^bits
 // unit tangent-space normals (z towards the viewer of the surface). bits 8: a PSMT8 texture with a
 // 256-entry CLUT; 4: PSMT4 with 16 entries (section 3.8's "4/8 bit normal maps"; one index a byte here).
+// `unquantised` holds the unit normals the palette was quantised from, one a texel. bits 24: those are
+// read at 8 bits per component, section 3.6's "three 8 bit normal maps" (the four-pass method samples
+// one map per axis pass, gs_inputs.hpp), and the float reference reads them (texel_normal); the methods
+// that sample a texel's three components in one pass read the 8-bit map.
 struct normal_map {
   int width = 0, height = 0;
   std::vector<std::uint8_t> index;
   std::vector<glm::vec3> palette;
+  std::vector<glm::vec3> unquantised;
   int bits = 8;
 };
+
+// The unit normal the map holds at texel i (row-major): palette[index[i]], for a 24-bit map unquantised[i].
+inline glm::vec3 texel_normal(const normal_map& m, std::size_t i) {
+  return m.bits == 24 ? m.unquantised[i] : m.palette[m.index[i]];
+}
 
 // An RGB texture (A8B8G8R8 words, alpha 0x80) for the unlit diffuse pass.
 struct texture32 {

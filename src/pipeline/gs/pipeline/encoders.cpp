@@ -45,6 +45,19 @@ gs::clut_buffer reordered_palette(const std::vector<glm::vec3>& normals, int axi
   return p;
 }
 
+std::vector<std::uint8_t> component_map(const std::vector<glm::vec3>& normals, int axis) {
+  std::vector<std::uint8_t> m(normals.size());
+  for (std::size_t i = 0; i < normals.size(); ++i)
+    m[i] = static_cast<std::uint8_t>(128 + nearest(normals[i][axis] * 127));
+  return m;
+}
+
+gs::clut_buffer component_ramp_palette() {
+  gs::clut_buffer p{};
+  for (int i = 0; i < 256; ++i) p[static_cast<std::size_t>(i)] = rgba(128, 128, 128, i);
+  return p;
+}
+
 gs::clut_buffer signed_side_palette(const std::vector<glm::vec3>& normals, bool negative) {
   gs::clut_buffer p{};
   p.fill(rgba(0, 0, 0, 0x80));

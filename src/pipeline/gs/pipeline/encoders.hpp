@@ -42,6 +42,12 @@ st sphere_coordinates(glm::vec3 t);
 // Figure 3(b): for axis 0/1/2 (X/Y/Z), entries (128, 128, 128, 128 + nearest(127·n_axis)).
 gs::clut_buffer reordered_palette(const std::vector<glm::vec3>& normals, int axis);
 
+// Section 3.6's "three 8 bit normal maps" instead of the reordered palettes: axis `axis`'s map holds
+// per texel 128 + nearest(127·n_axis), the byte figure 3(b) puts in alpha, and every axis pass reads
+// its map through one ramp palette (128, 128, 128, i), so entry i carries the byte i into alpha.
+std::vector<std::uint8_t> component_map(const std::vector<glm::vec3>& normals, int axis);
+gs::clut_buffer component_ramp_palette();
+
 // Section 2 (Breugelmans 2002): entries nearest(127·max(±n, 0)) per component, alpha 0x80.
 gs::clut_buffer signed_side_palette(const std::vector<glm::vec3>& normals, bool negative);
 // Two-pass palettes from Appendix 2.

@@ -240,7 +240,7 @@ frame_packets build_frame_packets(const scene& s, const prepared_scene& ps, meth
       step1_ambient, false, [&](const prepared_triangle&, int) { return ambient; }, nm_uv);
 
   const bool linear = o.bilinear;
-  const stream_texture nm_stream = normal_map_stream(in), diffuse_texels = diffuse_stream(in);
+  const stream_texture diffuse_texels = diffuse_stream(in);
   // A pass drawing the normal map (through palette cbp) or the diffuse texture into fbp: its
   // TEX0_1, TEX1_1, CLAMP_1, FRAME_1 ... and triangles; with the texture streamed, per piece its
   // uploads and TEXFLUSH, SCISSOR_1 = the piece, TEX0_1 with the piece's TBP0 / TBW (the CLUT loaded
@@ -287,7 +287,11 @@ frame_packets build_frame_packets(const scene& s, const prepared_scene& ps, meth
       const std::uint32_t cbp = in.cbp[static_cast<std::size_t>(p.clut)];
       auto colour = [&](const prepared_triangle& t, int k) { return vertex_rgbaq(p.colour, at(t, k), o.s); };
       switch (p.source) {
-        case pass_source::normal_map: textured(regs, DPB, cbp, nm_stream, in.nm_at, colour, nm_uv); break;
+        case pass_source::normal_map: {
+          const std::size_t k = normal_map_of(in, p.clut);
+          textured(regs, DPB, cbp, normal_map_stream(in, k), in.nm_at[k], colour, nm_uv);
+          break;
+        }
         case pass_source::sphere_map:
           g.texture(regs, in.sphere_at, 64, 64, std::nullopt, true, false);
           g.target(DPB, regs);

@@ -61,6 +61,21 @@ std::array<const gs::clut_buffer*, 8> palettes(const gs_inputs& in) {
 
 gs::mem::psm index_psm(const normal_map& nm) { return nm.bits == 4 ? gs::mem::psm::PSMT4 : gs::mem::psm::PSMT8; }
 
+std::size_t normal_map_count(const gs_inputs& in) { return in.component_maps[0].empty() ? 1 : 3; }
+std::size_t normal_map_of(const gs_inputs& in, clut_slot c) {
+  if (normal_map_count(in) == 1) return 0;
+  switch (c) {
+    case clut_slot::axis_x: return 0;
+    case clut_slot::axis_y: return 1;
+    case clut_slot::axis_z: return 2;
+    default: throw std::logic_error("a 24-bit map's component maps are read through the axis palettes only");
+  }
+}
+std::span<const std::uint8_t> normal_map_texels(const gs_inputs& in, std::size_t k) {
+  if (normal_map_count(in) == 1) return in.nm->index;
+  return in.component_maps.at(k);
+}
+
 gs_inputs make_inputs(const scene& s, method m, const render_options& o) {
   gs_inputs in;
   in.nm = &s.normals;
@@ -84,7 +99,13 @@ gs_inputs make_inputs(const scene& s, method m, const render_options& o) {
       in.neg = signed_side_palette(s.normals.palette, true);
       break;
     case passes::palette_kind::reordered_axes:
-      for (int a = 0; a < 3; ++a) in.axis[a] = reordered_palette(s.normals.palette, a);
+      for (int a = 0; a < 3; ++a)
+        if (s.normals.bits == 24) {
+          in.component_maps[static_cast<std::size_t>(a)] = component_map(s.normals.unquantised, a);
+          in.axis[a] = component_ramp_palette();
+        } else {
+          in.axis[a] = reordered_palette(s.normals.palette, a);
+        }
       break;
   }
   for (const passes::light_pass& p : passes::describe(m).light)
@@ -109,7 +130,8 @@ gs_inputs place_inputs(const gs_inputs& direct, std::uint32_t first) {
     for (std::size_t k = 0; k < in.cbp.size(); ++k)
       in.cbp[k] = static_cast<std::uint32_t>(page.BP.value()) + 4 * static_cast<std::uint32_t>(k);
   };
-  in.nm_at = place(direct.nm->width, direct.nm->height, index_psm(*direct.nm));
+  for (std::size_t k = 0; k < normal_map_count(direct); ++k)
+    in.nm_at[k] = place(direct.nm->width, direct.nm->height, index_psm(*direct.nm));
   if (!direct.sphere.empty()) in.sphere_at = place(64, 64, gs::mem::psm::PSMCT32);
   in.diffuse_at = place(direct.diffuse->width, direct.diffuse->height, gs::mem::psm::PSMCT32);
   palettes_page();
@@ -134,8 +156,15 @@ void start_stream(gs_inputs& in, const prepared_scene& ps, const render_options&
   in.stream =
       std::make_shared<texture_streamer>(ps, o.model.setup, filter, area, in.window_first, gs::mem::memory_blocks / 32);
 }
-stream_texture normal_map_stream(const gs_inputs& in) {
-  return {1, "normal map", index_psm(*in.nm), in.nm->width, in.nm->height, in.nm->index};
+stream_texture normal_map_stream(const gs_inputs& in, std::size_t k) {
+  static constexpr std::array<const char*, 3> component{"x component map", "y component map", "z component map"};
+  const bool one = normal_map_count(in) == 1;  // ids: 1 the index map, 2 the diffuse texture, 3.. the components
+  return {one ? 1 : 3 + static_cast<int>(k),
+          one ? "normal map" : component.at(k),
+          index_psm(*in.nm),
+          in.nm->width,
+          in.nm->height,
+          normal_map_texels(in, k)};
 }
 stream_texture diffuse_stream(const gs_inputs& in) {
   return {2, "diffuse texture", gs::mem::psm::PSMCT32, in.diffuse->width, in.diffuse->height, in.diffuse_bytes};
@@ -143,7 +172,9 @@ stream_texture diffuse_stream(const gs_inputs& in) {
 
 void add_uploads(gs::packets::packet_builder& b, const gs_inputs& in) {
   const bool resident = in.window_first == 0;
-  if (resident) host_transfer(b, in.nm_at, in.nm->width, in.nm->height, in.nm->index);
+  if (resident)
+    for (std::size_t k = 0; k < normal_map_count(in); ++k)
+      host_transfer(b, in.nm_at[k], in.nm->width, in.nm->height, normal_map_texels(in, k));
   if (!in.sphere.empty()) host_transfer(b, in.sphere_at, 64, 64, bytes_of(in.sphere));
   if (resident) host_transfer(b, in.diffuse_at, in.diffuse->width, in.diffuse->height, bytes_of(in.diffuse->texels));
   const auto all = palettes(in);
@@ -163,7 +194,9 @@ gs_inputs upload_inputs(gs::mem::local_memory& m, const gs_inputs& direct, std::
       return std::make_shared<const gs::mem::texel_addresses>(b.PSM, b.BW.value(), static_cast<std::uint32_t>(w),
                                                               static_cast<std::uint32_t>(h));
     };
-    if (in.window_first == 0) in.nm_texels = addresses(in.nm_at, direct.nm->width, direct.nm->height);
+    if (in.window_first == 0)
+      for (std::size_t k = 0; k < normal_map_count(direct); ++k)
+        in.nm_texels[k] = addresses(in.nm_at[k], direct.nm->width, direct.nm->height);
     if (!direct.sphere.empty()) in.sphere_texels = addresses(in.sphere_at, 64, 64);
     if (in.window_first == 0)
       in.diffuse_texels = addresses(in.diffuse_at, direct.diffuse->width, direct.diffuse->height);

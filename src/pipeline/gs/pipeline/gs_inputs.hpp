@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "gs_arith/clut.hpp"
@@ -69,15 +70,22 @@ struct gs_inputs {
   // axis[0] is the three-pass terms palette (clut_slot::terms).
   gs::clut_buffer pos, neg, axis[3], ilp, grey, alpha_index;
   std::vector<std::uint32_t> sphere;  // 64×64, four-pass only
+  // A 24-bit map read by four-pass (section 3.6's "three 8 bit normal maps", encoders.hpp's
+  // component_map): axis a's pass samples component_maps[a] through the ramp palette in axis[a].
+  // Empty otherwise: every pass samples nm's index map (normal_map_count, normal_map_of).
+  std::array<std::vector<std::uint8_t>, 3> component_maps;
   const texture32* diffuse = nullptr;
-  // Placed (place_inputs): the textures' TBP0 / TBW / PSM and each palette's CBP (palettes() order).
-  gs::mem::buffer nm_at, sphere_at, diffuse_at;
+  // Placed (place_inputs): the textures' TBP0 / TBW / PSM (nm_at: one per normal-map texture) and
+  // each palette's CBP (palettes() order).
+  std::array<gs::mem::buffer, 3> nm_at{};
+  gs::mem::buffer sphere_at, diffuse_at;
   std::array<std::uint32_t, 8> cbp{};
   // Uploaded (upload_inputs): the memory the texels are read from; the CLUTs above are then the
   // ones TEX0.CLD = 1 loaded back from it.
   const gs::mem::local_memory* memory = nullptr;
-  // and the byte address of every texel of the three textures (gs_memory/fast_address.hpp).
-  std::shared_ptr<const gs::mem::texel_addresses> nm_texels, sphere_texels, diffuse_texels;
+  // and the byte address of every texel of the textures (gs_memory/fast_address.hpp).
+  std::array<std::shared_ptr<const gs::mem::texel_addresses>, 3> nm_texels;
+  std::shared_ptr<const gs::mem::texel_addresses> sphere_texels, diffuse_texels;
   // Streamed (the normal map and the diffuse texture do not fit beside the frame buffers with the
   // rest, texture_stream.hpp): the window's first page (0: every texture placed above), the diffuse
   // texels as the transfers send them, and the streamer (start_stream) the passes take pieces from.
@@ -93,23 +101,29 @@ enum class clut_slot : std::uint8_t { pos, neg, axis_x, axis_y, axis_z, ilp, gre
 // Slots pos .. axis_z are the normal map's palettes (the passes that sample it load them with its
 // PSM); ilp, grey and alpha_index are read with the DPB / LAB as PSMT8 or PSMT8H.
 inline constexpr std::size_t normal_map_palettes = 5;
-// The normal map's texture format: PSMT4 for a 4-bit map, PSMT8 for an 8-bit one.
+// The normal map's texture format: PSMT4 for a 4-bit map, PSMT8 for an 8-bit one and for a 24-bit
+// map's index map and component maps.
 gs::mem::psm index_psm(const normal_map& nm);
+// The normal-map textures of an input set (1, or 3 component maps), which of them a pass through
+// palette slot c samples (component map a for slot axis_x + a), and texture k's texels (one byte each).
+std::size_t normal_map_count(const gs_inputs& in);
+std::size_t normal_map_of(const gs_inputs& in, clut_slot c);
+std::span<const std::uint8_t> normal_map_texels(const gs_inputs& in, std::size_t k);
 std::array<gs::clut_buffer*, 8> palettes(gs_inputs& in);
 std::array<const gs::clut_buffer*, 8> palettes(const gs_inputs& in);
 
 gs_inputs make_inputs(const scene& s, method m, const render_options& o);
-// Places the textures from block `first` on: the normal map (index_psm, an even TBW), the sphere map
+// Places the textures from block `first` on: the normal map(s) (index_psm, an even TBW), the sphere map
 // and the diffuse texture (PSMCT32), then one PSMCT32 page holding the eight palettes as 16×16 CSM1
 // images of 4 blocks each. When that passes the end of the 4 MiB: the sphere map and the palettes
-// only, and the normal map and the diffuse texture streamed through the pages after them (the
+// only, and the normal map(s) and the diffuse texture streamed through the pages after them (the
 // window, window_first); texture_does_not_fit when fewer than 4 pages are left for it (one bilinear
 // pixel fetches up to 4).
 gs_inputs place_inputs(const gs_inputs& direct, std::uint32_t first);
 // The streamer of a streamed input set (nothing otherwise): the triangles of ps over the drawn
 // `area`, sampled as o says; the normal map and the diffuse texture as streamed textures.
 void start_stream(gs_inputs& in, const prepared_scene& ps, const render_options& o, const scissor& area);
-stream_texture normal_map_stream(const gs_inputs& in);
+stream_texture normal_map_stream(const gs_inputs& in, std::size_t k);
 stream_texture diffuse_stream(const gs_inputs& in);
 // The transfers of a placed input set (host_transfer each, the streamed textures left to their
 // passes); palette entry i at gs::csm1_position(i) of its image.

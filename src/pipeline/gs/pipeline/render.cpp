@@ -89,12 +89,22 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
   note("1 Z and ambient", -1, "LAB", fb.lab);
 
   const gs::bilinear_mode filter = o.bilinear ? o.model.bilinear : gs::bilinear_mode::nearest;
-  auto nm_texture = [&](const gs::clut_buffer& clut) {
-    return texture_ref{in.nm->width, in.nm->height, in.nm->index.data(), &clut,    nullptr,
-                       false,        filter,        in.memory,           in.nm_at, in.nm_texels.get()};
+  // The normal-map texture a pass through palette slot c samples, and its stream.
+  auto nm_texture = [&](clut_slot c) {
+    const std::size_t k = normal_map_of(in, c);
+    return texture_ref{in.nm->width,
+                       in.nm->height,
+                       normal_map_texels(in, k).data(),
+                       palettes(in)[static_cast<std::size_t>(c)],
+                       nullptr,
+                       false,
+                       filter,
+                       in.memory,
+                       in.nm_at[k],
+                       in.nm_texels[k].get()};
   };
   auto flat_white = [&](std::uint32_t) { return white; };
-  const stream_texture nm_stream = normal_map_stream(in), diffuse_texels = diffuse_stream(in);
+  const stream_texture diffuse_texels = diffuse_stream(in);
   const texture_ref sphere{64,
                            64,
                            nullptr,
@@ -132,8 +142,8 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
     };
     auto draw_pass = [&]<const pass_regs & Regs, pass_source Source>(const light_pass& p) {
       if constexpr (Source == pass_source::normal_map) {
-        draw_textured<Regs>(r, fb.memory, in.stream.get(), nm_stream,
-                            nm_texture(*palettes(in)[static_cast<std::size_t>(p.clut)]), attributes_of(p), fb.dpb);
+        draw_textured<Regs>(r, fb.memory, in.stream.get(), normal_map_stream(in, normal_map_of(in, p.clut)),
+                            nm_texture(p.clut), attributes_of(p), fb.dpb);
       } else if constexpr (Source == pass_source::sphere_map) {
         r.draw<Regs>(&sphere, attributes_of(p), fb.dpb);
       } else if constexpr (Source == pass_source::untextured) {

@@ -23,7 +23,7 @@ reference_frame render_reference(const scene& s, const prepared_scene& ps, const
 
   const normal_map& nm = s.normals;
   auto normal_texel = [&](std::int32_t u, std::int32_t v) {
-    return glm::dvec3(nm.palette[nm.index[wrapped_texel(nm.width, nm.height, u, v)]]);
+    return glm::dvec3(texel_normal(nm, wrapped_texel(nm.width, nm.height, u, v)));
   };
   for_each_covered_pixel(ps, visible, [&](const pixel_sample& p) {
     const glm::dvec3 N = glm::normalize(filtered(normal_texel, p.u16, p.v16, bilinear));

@@ -3,11 +3,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <numbers>
 #include <stdexcept>
 #include <string>
 
 #include "pipeline/default_scene.hpp"
+#include "pipeline/normal_map.hpp"
 #include "pipeline/prepare.hpp"
 #include "pipeline/render.hpp"
 
@@ -51,11 +53,14 @@ glm::vec3 on_sphere(splitmix& r, double radius, double min_y, double max_y) {
           static_cast<float>(radius * c * std::cos(phi))};
 }
 
-const method_errors& of(const quality_scene& s, method m) {
-  const auto it = std::find_if(s.methods.begin(), s.methods.end(), [m](const method_errors& e) { return e.m == m; });
-  if (it == s.methods.end())
-    throw std::invalid_argument("quality rows: scene '" + s.name + "' has no " + std::string(name(m)) + " render");
-  return *it;
+const method_errors* find(const quality_scene& s, method m, map_read map) {
+  const auto it = std::find_if(s.methods.begin(), s.methods.end(),
+                               [&](const method_errors& e) { return e.m == m && e.map == map; });
+  return it == s.methods.end() ? nullptr : &*it;
+}
+const method_errors& of(const quality_scene& s, method m, map_read map) {
+  if (const method_errors* e = find(s, m, map)) return *e;
+  throw std::invalid_argument("quality rows: scene '" + s.name + "' has no " + label(m, map) + " render");
 }
 
 struct claim_def {
@@ -64,6 +69,7 @@ struct claim_def {
   method better, other;
   bool dot_product_metrics;  // the unnormalised-product metrics apply (both methods skip normalisation)
   bool speed;                // the sentence claims speed too
+  map_read better_map = map_read::own_map, other_map = map_read::own_map;
 };
 const claim_def claims[] = {
     {"quality.two-pass-vs-2002",
@@ -80,6 +86,11 @@ const claim_def claims[] = {
      "seed 000 §3.5: \"to completely avoid the precision loss [of n'_a = (n_a + 1)/3], one could also do a three-pass "
      "solution by adding the terms as a separate additive pass, but it is probably not worth it\"",
      method::three_pass, method::two_pass, true, false},
+    {"quality.three-maps-vs-palettised",
+     "seed 000 §3.6: \"A quantized 8 bit normal map can be used with three palettes or alternatively three 8 bit "
+     "normal maps, which will give the same quality as using a standard 24 bit normal map\" (both four-pass against "
+     "the float reference of the unquantised normals)",
+     method::four_pass, method::four_pass, false, false, map_read::three_maps, map_read::palettised},
 };
 
 }  // namespace
@@ -90,8 +101,18 @@ std::vector<std::string> quality_claim_ids() {
   return ids;
 }
 
-method_errors measure_errors(method m, const frame& f, const reference_frame& ref, const prepared_scene& ps) {
-  method_errors e{m};
+std::string label(method m, map_read map) {
+  switch (map) {
+    case map_read::own_map: return std::string(name(m));
+    case map_read::palettised: return std::string(name(m)) + ", 8-bit map vs unquantised";
+    case map_read::three_maps: return std::string(name(m)) + ", three 8-bit maps vs unquantised";
+  }
+  throw std::invalid_argument("unknown map_read");
+}
+
+method_errors measure_errors(method m, const frame& f, const reference_frame& ref, const prepared_scene& ps,
+                             map_read map) {
+  method_errors e{m, map};
   e.pixel_ops = f.pixel_ops;
   double sr = 0, su = 0, sdr = 0, srr = 0, sdd = 0, ss = 0;
   for (std::size_t l = 0; l < ref.unnormalised.size(); ++l)
@@ -130,6 +151,17 @@ quality_scene measure_quality(const std::string& name, const scene& s, const ren
   const reference_frame ref = render_reference(s, ps, frames.front().visible_triangle, o.bilinear, o.specular_power);
   for (std::size_t k = 0; k < frames.size(); ++k)
     q.methods.push_back(measure_errors(gs_methods[k], frames[k], ref, ps));
+  // Section 3.6: four-pass's 8-bit palettised frame and its three 8-bit component maps' frame, both
+  // against the reference of the normals the palette was quantised from.
+  scene wide = s;
+  wide.normals = with_index_bits(s.normals, 24);
+  const reference_frame unquantised =
+      render_reference(wide, ps, frames.front().visible_triangle, o.bilinear, o.specular_power);
+  const auto four = static_cast<std::size_t>(
+      std::find(std::begin(gs_methods), std::end(gs_methods), method::four_pass) - std::begin(gs_methods));
+  q.methods.push_back(measure_errors(method::four_pass, frames.at(four), unquantised, ps, map_read::palettised));
+  q.methods.push_back(
+      measure_errors(method::four_pass, render(wide, ps, method::four_pass, o), unquantised, ps, map_read::three_maps));
   return q;
 }
 
@@ -164,9 +196,12 @@ std::vector<quality_row> quality_rows(const std::vector<quality_scene>& scenes) 
   for (const claim_def& c : claims)
     for (const metric_def& m : metrics) {
       if ((m.dot_product && !c.dot_product_metrics) || (m.speed && !c.speed)) continue;
-      quality_row row{c.id, c.paper, m.name, c.better, c.other, {}, 0, {}};
+      if (scenes.empty() || !find(scenes.front(), c.better, c.better_map) ||
+          !find(scenes.front(), c.other, c.other_map))
+        continue;
+      quality_row row{c.id, c.paper, m.name, label(c.better, c.better_map), label(c.other, c.other_map), {}, 0, {}};
       for (const quality_scene& s : scenes) {
-        const method_errors &b = of(s, c.better), &o = of(s, c.other);
+        const method_errors &b = of(s, c.better, c.better_map), &o = of(s, c.other, c.other_map);
         const double vb = m.field ? b.*m.field : static_cast<double>(b.pixel_ops);
         const double vo = m.field ? o.*m.field : static_cast<double>(o.pixel_ops);
         row.per_scene.emplace_back(vb, vo);

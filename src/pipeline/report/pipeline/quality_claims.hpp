@@ -24,8 +24,13 @@ namespace gsdot3::pipeline {
 //   sign_change:      RMSE against unnormalised over the samples whose triangle has a vertex tolight
 //                     component of each sign: where section 2's per-vertex clamping acts (figure 1)
 //   pixel_ops:        pixels sent through the GS pixel pipeline for the frame (a count, not a timing)
+// What an entry measures: the frame of the scene's map against the reference of that map (own_map), or,
+// against the reference of the unquantised normals (the 24-bit map, scene.hpp), the frame of the 8-bit
+// palettised map (palettised) or of four-pass's three 8-bit component maps (three_maps, section 3.6).
+enum class map_read : std::uint8_t { own_map, palettised, three_maps };
 struct method_errors {
   method m{};
+  map_read map = map_read::own_map;
   double vs_renormalised = 0, vs_unnormalised = 0, after_gain = 0, gain = 0, sign_change = 0;
   std::size_t samples = 0, sign_change_samples = 0, pixel_ops = 0;
 };
@@ -36,7 +41,7 @@ struct method_errors {
 // "mixed" with the count; the per-scene pairs (better, other) are the figures.
 struct quality_row {
   std::string claim, paper, metric;
-  method better{}, other{};
+  std::string better, other;  // label(): the method and the map it read
   std::vector<std::pair<double, double>> per_scene;
   std::size_t holds_on = 0;
   std::string verdict;
@@ -47,9 +52,13 @@ struct quality_scene {
   std::vector<method_errors> methods;
 };
 
+// "four-pass", "four-pass, 8-bit map vs unquantised", "four-pass, three 8-bit maps vs unquantised".
+std::string label(method m, map_read map);
 // The errors of one method's frame against the reference of the same prepared scene.
-method_errors measure_errors(method m, const frame& f, const reference_frame& ref, const prepared_scene& ps);
-// The errors of every method on one scene (renders two_pass, four_pass and baseline).
+method_errors measure_errors(method m, const frame& f, const reference_frame& ref, const prepared_scene& ps,
+                             map_read map = map_read::own_map);
+// The errors of every GS method on one scene, and four-pass's palettised and three-map frames against
+// the unquantised normals.
 quality_scene measure_quality(const std::string& name, const scene& s, const render_options& o);
 // The scene of the random set with this seed: the embedded head at a random tessellation, 1 to 3 point
 // lights and a camera at random positions (a SplitMix64 stream, the same on every platform), w × h.
@@ -57,7 +66,8 @@ scene random_quality_scene(std::uint64_t seed, int width = 256, int height = 224
 // The ids of the claims the rows test ("quality.two-pass-vs-2002", ...; the coverage table cites them).
 std::vector<std::string> quality_claim_ids();
 
-// The rows of every claim × metric over the given scenes (each scene must hold all three methods).
+// The rows of every claim × metric over the given scenes; a claim whose entries the first scene lacks
+// (a report of some methods only) has no rows.
 std::vector<quality_row> quality_rows(const std::vector<quality_scene>& scenes);
 
 }  // namespace gsdot3::pipeline

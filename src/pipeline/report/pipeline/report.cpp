@@ -252,8 +252,8 @@ report_summary write_report(const scene& s, const report_request& r) {
       j["quality_claims"].push_back({{"claim", row.claim},
                                      {"paper", row.paper},
                                      {"metric", row.metric},
-                                     {"better", std::string(name(row.better))},
-                                     {"other", std::string(name(row.other))},
+                                     {"better", row.better},
+                                     {"other", row.other},
                                      {"value_better", row.per_scene.front().first},
                                      {"value_other", row.per_scene.front().second},
                                      {"verdict", row.verdict}});
