@@ -1,12 +1,15 @@
 // gs_arith_attribute_walk — gs::attribute_walker (the stepped fast path) against the readable
 // formulas it replaces: triangle_attributes::colour_at and plane::at at every pixel a triangle
-// covers, under every gouraud_setup; floor_division_walk against C++'s own division.
+// covers, under every gouraud_setup, pixel by pixel (at) and as runs of a row (row);
+// floor_division_walk against C++'s own division.
 #include <gtest/gtest.h>
 #include <rapidcheck.h>
 #include <rapidcheck/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
+#include <vector>
 
 #include "gs_arith/attribute_walk.hpp"
 #include "gs_arith/rasteriser.hpp"
@@ -62,6 +65,53 @@ void expect_walk_equal(const walk_case& k, gs::gouraud_setup s, int skip) {
   });
 }
 
+// row(): the covered pixels as runs of a row (rasterise_triangle visits rows top down, x rising), or
+// with `box` every row of the vertices' bounding box widened by 8 pixels each side (outside the
+// triangle the planes leave [lo, hi] and clamp), each run cut at lengths up to `longest`, through
+// attribute_walker::row, against the reference.
+void expect_rows_equal(const walk_case& k, gs::gouraud_setup s, int longest, bool box) {
+  const gs::triangle_setup t = gs::setup_triangle(k.v);
+  if (t.area2 == 0) return;
+  const gs::triangle_attributes a = gs::setup_attributes(t, k.c, k.uv, k.offset, k.offset, s);
+  struct run {
+    int x0, y, n;
+  };
+  std::vector<run> runs;
+  auto add = [&](int x, int y) {
+    if (!runs.empty() && runs.back().y == y && runs.back().x0 + runs.back().n == x && runs.back().n < longest)
+      ++runs.back().n;
+    else
+      runs.push_back({x, y, 1});
+  };
+  if (box) {
+    int x0 = 1 << 20, x1 = 0, y0 = 1 << 20, y1 = 0;
+    for (const gs::xy124& p : k.v)
+      x0 = std::min(x0, p.x / 16), x1 = std::max(x1, p.x / 16), y0 = std::min(y0, p.y / 16),
+      y1 = std::max(y1, p.y / 16);
+    for (int y = y0; y <= y1; ++y)
+      for (int x = x0 - 8; x <= x1 + 8; ++x) add(x, y);
+  } else {
+    gs::rasterise_triangle(t, {0, 0, 1024, 1024}, add);
+  }
+  gs::attribute_walker w(a);
+  std::size_t pixels = 0;
+  for (const run& r : runs) {
+    int next = 0;
+    w.row(r.x0, r.y, r.n, [&](int i, const gs::attribute_walker::values& got) {
+      RC_ASSERT(i == next++);
+      const int x = r.x0 + i;
+      RC_ASSERT(static_cast<bool>(got.cf == a.colour_at(x, r.y)));
+      RC_ASSERT(got.u == a.u.at(x, r.y));
+      RC_ASSERT(got.v == a.v.at(x, r.y));
+      ++pixels;
+    });
+    RC_ASSERT(next == r.n);
+  }
+  std::size_t covered = 0;
+  for (const run& r : runs) covered += static_cast<std::size_t>(r.n);
+  RC_ASSERT(pixels == covered);
+}
+
 rc::Gen<walk_case> triangle_gen(int span) {
   auto xy = rc::gen::construct<gs::xy124>(rc::gen::inRange(0, span * 16), rc::gen::inRange(0, span * 16));
   auto colour =
@@ -83,6 +133,19 @@ RC_GTEST_PROP(AttributeWalk, EqualsTheReferenceOnLargeAndThinTriangles, ()) {
   for (gs::gouraud_setup s : setups) expect_walk_equal(k, s, skip);
 }
 
+RC_GTEST_PROP(AttributeWalk, RowsEqualTheReference, ()) {
+  walk_case k = *triangle_gen(*rc::gen::element(48, 700));
+  if (*rc::gen::arbitrary<bool>()) k.c[1] = k.c[2] = k.c[0];
+  const int longest = *rc::gen::element(1, 2, 7, 64, 4096);
+  for (gs::gouraud_setup s : setups) expect_rows_equal(k, s, longest, false);
+}
+
+RC_GTEST_PROP(AttributeWalk, RowsOverTheBoundingBoxEqualTheReference, ()) {
+  const walk_case k = *triangle_gen(48);
+  const int longest = *rc::gen::element(2, 7, 64, 4096);
+  for (gs::gouraud_setup s : setups) expect_rows_equal(k, s, longest, true);
+}
+
 // Equal vertex colours (the methods' white passes): the walker keeps the colour it computed where it
 // started (attribute_walk.hpp); the reference evaluates the plane at every pixel.
 RC_GTEST_PROP(AttributeWalk, EqualsTheReferenceWithEqualVertexColours, ()) {
@@ -102,7 +165,10 @@ TEST(AttributeWalk, RowsAcrossTheDistanceClamp) {
   for (gs::gouraud_setup s : setups) {
     gs::triangle_attributes a = gs::setup_attributes(t, c, {}, 0, 0, s);
     a.offset_x = 65536 - 30;  // pixels 0..59 of a row are at distances 65506 .. 65565
-    gs::attribute_walker w(a);
+    gs::attribute_walker w(a), rows(a);
+    rows.row(0, 1, 60, [&](int x, const gs::attribute_walker::values& got) {
+      ASSERT_TRUE(got.cf == a.colour_at(x, 1)) << "row, x " << x;
+    });
     std::array<int, 2> red_changes{};  // before and after the bound
     for (int x = 0; x < 60; ++x) {
       ASSERT_TRUE(w.at(x, 1).cf == a.colour_at(x, 1)) << "x " << x;

@@ -56,9 +56,8 @@ TEST(SpanBatch, RowsAndSinglePixelsEqualThePixelPipelineWithTheirOwnXAndY) {
                   .out;
         }
         if (bits(1) != 0) {
-          batch.add_row(&words[at], x0, y, n, [&](int k) {
-            const pixel& p = px[static_cast<std::size_t>(k)];
-            return std::pair{p.texel, p.cf};
+          batch.add_row(&words[at], x0, y, [&](auto&& put) {
+            for (const pixel& p : px) put(p.texel.to_u32(), p.cf);
           });
         } else {
           for (int k = 0; k < n; ++k)

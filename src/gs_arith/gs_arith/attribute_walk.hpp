@@ -58,6 +58,28 @@ class attribute_walker {
     return {flat_ ? cf_ : colour(x, y), clamped(a_.u, u_), clamped(a_.v, v_)};
   }
 
+  // at(x0 + k, y) for k = 0 .. n − 1, in that order, as f(k, values): at()'s fast path for a run of a
+  // row. Whether the run steps is decided once from its ends (the pixel distance steppable() bounds is
+  // monotone in x, so its range holds between two pixels that satisfy it), and u, v skip their clamp
+  // when both ends of the run are inside the plane's [lo, hi] (acc >> 16 is monotone in k too).
+  template <class F>
+  constexpr void row(int x0, int y, int n, F&& f) noexcept(noexcept(f(0, values{}))) {
+    if (n <= 0) return;
+    f(0, at(x0, y));
+    if (n > 1 && !(steppable(x0 + 1) && steppable(x0 + n - 1))) {
+      for (int k = 1; k < n; ++k) f(k, at(x0 + k, y));
+      return;
+    }
+    const bool inside = unclamped(a_.u, u_, n - 1) && unclamped(a_.v, v_, n - 1);
+    for (int k = 1; k < n; ++k) {
+      step();
+      const std::int32_t u = inside ? static_cast<std::int32_t>(u_ >> 16) : clamped(a_.u, u_);
+      const std::int32_t v = inside ? static_cast<std::int32_t>(v_ >> 16) : clamped(a_.v, v_);
+      f(k, values{flat_ ? cf_ : colour(x0 + k, y), u, v});
+    }
+    x_ = x0 + n - 1;
+  }
+
  private:
   // Whether the colour is one value over the whole plane (the header's reason).
   static constexpr bool flat_colour(const triangle_attributes& a) noexcept {
@@ -130,6 +152,11 @@ class attribute_walker {
   static constexpr std::int32_t clamped(const plane& p, std::int64_t acc) noexcept {
     const std::int64_t v = acc >> 16;
     return static_cast<std::int32_t>(v < p.lo ? p.lo : v > p.hi ? p.hi : v);
+  }
+  // Whether acc >> 16 and (acc + steps·dx) >> 16 both lie in [lo, hi] (then every step between does).
+  static constexpr bool unclamped(const plane& p, std::int64_t acc, int steps) noexcept {
+    const std::int64_t first = acc >> 16, last = (acc + p.dx * steps) >> 16;
+    return first >= p.lo && first <= p.hi && last >= p.lo && last <= p.hi;
   }
 
   const triangle_attributes& a_;

@@ -200,7 +200,9 @@ class band_renderer {
       span_batch batch(batch_registers<Pass>, o_.model);
       if constexpr (std::is_same_v<FB, row_view>) {  // rows of adjacent words: the pixels rasterise_sprite visits
         for (int y = r.y0; y < r.y1; ++y)
-          batch.add_row(&fb(r.x0, y), r.x0, y, r.x1 - r.x0, [&](int k) { return std::pair{texel(r.x0 + k, y), cf}; });
+          batch.add_row(&fb(r.x0, y), r.x0, y, [&](auto&& put) {
+            for (int x = r.x0; x < r.x1; ++x) put(texel(x, y).to_u32(), cf);
+          });
         ops_ += static_cast<std::size_t>(r.x1 - r.x0) * static_cast<std::size_t>(r.y1 - r.y0);
         return;
       }
@@ -285,19 +287,29 @@ class band_renderer {
       ++ops_;
     };
     if (o_.path == raster_path::cached) {
-      std::int32_t last = -1;
-      std::optional<gs::attribute_walker> w;
-      for (const run& r : runs_) {
-        if (r.tri != last) batch.flush(), last = r.tri, w.emplace(attr[static_cast<std::size_t>(r.tri)]);
-        if constexpr (std::is_same_v<FB, row_view>) {  // a run's words are adjacent
-          batch.add_row(&fb(r.x0, r.y), r.x0, r.y, r.n, [&](int k) {
-            const gs::attribute_walker::values a = w->at(r.x0 + k, r.y);
-            return std::pair{tex != nullptr ? tex->sample(a.u, a.v) : gs::rgba8{}, a.cf};
-          });
-          ops_ += static_cast<std::size_t>(r.n);
-        } else {
-          for (int k = 0; k < r.n; ++k) add(*w, r.x0 + k, r.y);
+      // The runs with texel(u16, v16) as the fetch, instantiated per kind of fetch (no test per pixel).
+      auto runs = [&](auto&& texel) {
+        std::int32_t last = -1;
+        std::optional<gs::attribute_walker> w;
+        for (const run& r : runs_) {
+          if (r.tri != last) batch.flush(), last = r.tri, w.emplace(attr[static_cast<std::size_t>(r.tri)]);
+          if constexpr (std::is_same_v<FB, row_view>) {  // a run's words are adjacent
+            batch.add_row(&fb(r.x0, r.y), r.x0, r.y, [&](auto&& put) {
+              w->row(r.x0, r.y, r.n, [&](int, const gs::attribute_walker::values& a) { put(texel(a.u, a.v), a.cf); });
+            });
+            ops_ += static_cast<std::size_t>(r.n);
+          } else {
+            for (int k = 0; k < r.n; ++k) add(*w, r.x0 + k, r.y);
+          }
         }
+      };
+      if (tex == nullptr) {
+        runs([](std::int32_t, std::int32_t) { return 0u; });
+      } else if (nearest_host_fetch::applies(*tex)) {
+        const nearest_host_fetch fetch(*tex);
+        runs([&](std::int32_t u, std::int32_t v) { return fetch.texel(u, v); });
+      } else {
+        runs([&](std::int32_t u, std::int32_t v) { return tex->sample(u, v).to_u32(); });
       }
       return;
     }

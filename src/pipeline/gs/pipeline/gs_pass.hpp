@@ -10,6 +10,8 @@
 // through gs::depth_test).
 #pragma once
 
+#include <array>
+#include <bit>
 #include <cstdint>
 #include <vector>
 
@@ -75,6 +77,48 @@ struct texture_ref {
   gs::rgba8 sample(std::int32_t u16, std::int32_t v16) const noexcept {
     return gs::sample([this](std::int32_t u, std::int32_t v) { return fetch(u, v); }, u16, v16, filter);
   }
+};
+
+// The value path's fetch resolved once per draw: TEX1 nearest, from the host arrays (no local
+// memory), REPEAT or CLAMP, CLUT indices (the CLUT's entries converted to 32-bit words here) or 32-bit
+// texels. texel(u16, v16) is texture_ref::sample(u16, v16).to_u32() for every u16, v16 (its fast
+// path: nearest's footprint is floor(u16 / 16), an arithmetic shift; REPEAT masks a power-of-two side;
+// clut_t8 with CSA = 0 is entry `index`), checked against sample over whole coordinate ranges
+// (tests/pipeline/resolved_fetch_test.cpp).
+class nearest_host_fetch {
+ public:
+  static bool applies(const texture_ref& t) noexcept {
+    return t.memory == nullptr && t.filter == gs::bilinear_mode::nearest;
+  }
+  explicit nearest_host_fetch(const texture_ref& t) noexcept
+      : index_(t.index),
+        texels_(t.texels),
+        wmask_(t.width - 1),
+        hmask_(t.height - 1),
+        shift_(std::countr_zero(static_cast<unsigned>(t.width))),
+        clamp_(t.clamp) {
+    if (index_ != nullptr)
+      for (std::size_t i = 0; i < words_.size(); ++i) words_[i] = (*t.clut)[i].to_u32();
+  }
+  std::uint32_t texel(std::int32_t u16, std::int32_t v16) const noexcept {
+    std::int32_t u = u16 >> 4, v = v16 >> 4;
+    if (clamp_) {
+      u = u < 0 ? 0 : u > wmask_ ? wmask_ : u;
+      v = v < 0 ? 0 : v > hmask_ ? hmask_ : v;
+    } else {
+      u &= wmask_, v &= hmask_;
+    }
+    const std::size_t i = static_cast<std::size_t>(v) << shift_ | static_cast<std::size_t>(u);
+    return index_ != nullptr ? words_[index_[i]] : texels_[i];
+  }
+
+ private:
+  const std::uint8_t* index_;
+  const std::uint32_t* texels_;
+  std::int32_t wmask_, hmask_;
+  int shift_;
+  bool clamp_;
+  std::array<std::uint32_t, 256> words_{};
 };
 
 }  // namespace gsdot3::pipeline

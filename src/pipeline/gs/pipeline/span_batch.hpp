@@ -24,21 +24,22 @@ class span_batch {
 
   void add(std::uint32_t& word, gs::rgba8 texel, const gs::fragment_colour& cf, int x, int y) {
     const std::size_t i = b_.n++;
-    set(i, word, texel, cf, x, y);
+    set(i, word, texel.to_u32(), cf, x, y);
     if (b_.n == simd::pixel_batch::capacity) flush();
   }
-  // Pixels (x0 + k, y) for k < n, whose words are words[0 .. n): shade(k) gives pixel k's texel and
-  // colour (a pair). Taken in pieces that fit the batch.
-  template <class Shade>
-  void add_row(std::uint32_t* words, int x0, int y, int n, Shade&& shade) {
-    for (int k = 0; k < n;) {
-      const int end = std::min(n, k + static_cast<int>(simd::pixel_batch::capacity - b_.n));
-      for (; k < end; ++k) {
-        const auto [texel, cf] = shade(k);
-        set(b_.n++, words[k], texel, cf, x0 + k, y);
-      }
-      if (b_.n == simd::pixel_batch::capacity) flush();
-    }
+  // Pixels (x0 + k, y) for k = 0, 1, ..., whose words are words[k]: produce(put) calls put(texel, cf)
+  // once per pixel in that order, the texel as its 32-bit word (rgba8::to_u32); the batch is flushed
+  // whenever it fills.
+  template <class Produce>
+  void add_row(std::uint32_t* words, int x0, int y, Produce&& produce) {
+    int k = 0;
+    std::size_t n = b_.n;  // the batch's count kept local between flushes
+    produce([&](std::uint32_t texel, const gs::fragment_colour& cf) {
+      set(n, words[k], texel, cf, x0 + k, y);
+      ++k;
+      if (++n == simd::pixel_batch::capacity) b_.n = n, flush(), n = 0;
+    });
+    b_.n = n;
   }
   void flush() {
     if (b_.n == 0) return;
@@ -48,9 +49,9 @@ class span_batch {
   }
 
  private:
-  void set(std::size_t i, std::uint32_t& word, gs::rgba8 texel, const gs::fragment_colour& cf, int x, int y) {
+  void set(std::size_t i, std::uint32_t& word, std::uint32_t texel, const gs::fragment_colour& cf, int x, int y) {
     word_[i] = &word;
-    b_.texel[i] = texel.to_u32();
+    b_.texel[i] = texel;
     b_.cf[0][i] = cf.r.value(), b_.cf[1][i] = cf.g.value(), b_.cf[2][i] = cf.b.value(), b_.cf[3][i] = cf.a.value();
     b_.dst[i] = word;
     b_.x[i] = static_cast<std::uint32_t>(x), b_.y[i] = static_cast<std::uint32_t>(y);
