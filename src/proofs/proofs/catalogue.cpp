@@ -115,6 +115,12 @@ const std::vector<claim>& catalogue() {
        "testing GEQUAL and writing Z leaves the DPB and Z as step 1 then the pass does",
        "every Z order of 1..6 fragments at a pixel (Z in 0..k-1) × each method's first light pass", M::exhaustive,
        depends("tfx_rounding", "gouraud_fraction", "blend_shift"), c::z_prefill_single_light},
+      {"alpha-layer.round-trip", "§3.1",
+       "without VRAM for two draw buffers, a light's dot-product layer (or a LAB channel) kept in a free alpha: the "
+       "byte moved into a destination's alpha (DECAL / RGBA, FBMSK keeping R, G, B) reads back as PSMT8H unchanged and "
+       "leaves R, G, B as they were, so steps 2.6 and 4 read what the two-buffer method gives them",
+       "every moved byte × destination alpha × destination grey (v, v, v)", M::exhaustive, depends(),
+       c::alpha_layer_round_trip},
       {"highlight.attenuation", "§3.6",
        "128 − (128 − sph)·scale = sph·scale + (1 − scale)·128 by a HIGHLIGHT texture function",
        "every texel × every scale 0..128", M::exhaustive, depends("tfx_rounding"), c::highlight_attenuation},

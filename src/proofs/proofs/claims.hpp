@@ -37,6 +37,7 @@ GSDOT3_CLAIM(highlight_attenuation);
 GSDOT3_CLAIM(lod_two_vs_four);
 GSDOT3_CLAIM(spot_attenuation_blend);
 GSDOT3_CLAIM(z_prefill_single_light);
+GSDOT3_CLAIM(alpha_layer_round_trip);
 GSDOT3_CLAIM(specular_attenuation_compensation);
 // section 3.4: the Z-buffer clear of the DPB (claims_memory.cpp)
 GSDOT3_CLAIM(dpb_clear_value);
