@@ -100,6 +100,21 @@ TEST(NormalMapBits, FourBitsAreTheNearestOf16EntriesToTheEightBitNormals) {
   EXPECT_EQ(with_index_bits(eight, 8).index, eight.index);
   EXPECT_THROW(with_index_bits(eight, 16), std::invalid_argument);
   EXPECT_THROW(with_index_bits(eight, 0), std::invalid_argument);
+  // 24 bits: the unquantised normals quantise kept, read per texel (texel_normal); not from the 4-bit
+  // map, nor from a map without them.
+  ASSERT_EQ(eight.unquantised.size(), eight.index.size());
+  const normal_map full = with_index_bits(eight, 24);
+  EXPECT_EQ(full.bits, 24);
+  EXPECT_EQ(full.index, eight.index);
+  EXPECT_EQ(four.unquantised, eight.unquantised);
+  for (std::size_t i = 0; i < full.index.size(); i += 97) {
+    EXPECT_EQ(texel_normal(full, i), eight.unquantised[i]);
+    EXPECT_EQ(texel_normal(eight, i), eight.palette[eight.index[i]]);
+  }
+  EXPECT_THROW(with_index_bits(four, 24), std::invalid_argument);
+  normal_map bare = eight;
+  bare.unquantised.clear();
+  EXPECT_THROW(with_index_bits(bare, 24), std::invalid_argument);
 }
 
 }  // namespace

@@ -135,8 +135,9 @@ normal_map with_index_bits(const normal_map& m, int bits) {
   if (bits != 4 && bits != 8 && bits != 24)
     throw std::invalid_argument("normal map bits: 4, 8 or 24, not " + std::to_string(bits));
   if (m.bits == bits) return m;
-  if (bits == 24 && m.bits != 8)
-    throw std::invalid_argument("normal map bits: a 24-bit map is made beside the 8-bit one");
+  if (bits == 24 && (m.bits != 8 || m.unquantised.size() != m.index.size()))
+    throw std::invalid_argument(
+        "normal map bits: 24 needs an 8-bit map with its unquantised normals (quantise keeps them)");
   if (bits != 4) {
     normal_map wide = m;
     wide.bits = bits;
