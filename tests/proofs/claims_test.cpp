@@ -74,6 +74,7 @@ TEST(Claims, EveryCatalogueRowRunsAndIsTested) {
                                              "lod.two-vs-four",
                                              "spot.attenuation-blend",  // spot_attenuation_test.cpp
                                              "zprefill.single-light",   // z_prefill_test.cpp
+                                             "alpha-layer.round-trip",  // alpha_layer_test.cpp
                                              "specular.attenuation-compensation",
                                              "dpb-clear.value",
                                              "dpb-clear.read-before-write",

@@ -2,7 +2,10 @@
 // whose results are worked out by hand.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <thread>
 
 #include "valve/encode.hpp"
 #include "valve/height2ssbump.hpp"
@@ -54,6 +57,35 @@ TEST(ValveHeight2Ssbump, FlatUnoccludedIs147) {
     EXPECT_FLOAT_EQ(v.z, 0.57735025882720947f);
     EXPECT_EQ(ssbump_texel(v), (texel{147, 147, 147}));
   }
+}
+
+// Progress: fractions in (0, 1], calls one at a time, and 1.0 exactly once, last, on
+// every run with two and four workers (the CLI's "100%" line comes from it; a last row finished while
+// another worker was reporting once left it out: checked to fail that way).
+TEST(ValveHeight2Ssbump, ProgressEndsWithOneExactlyOnce) {
+  const std::vector<float> height(16 * 16, 0.5f);
+  for (unsigned threads : {2u, 4u})
+    for (int run = 0; run < 5; ++run) {
+      height2ssbump_options o;
+      o.bump_scale = 1.0f;
+      o.rays = 8;
+      o.threads = threads;
+      std::vector<double> seen;
+      // Called one at a time, so no lock. The first call is slow (a slow terminal): the other workers
+      // finish every row while it holds the report, the case that lost the 1.0.
+      o.progress = [&](double f) {
+        seen.push_back(f);
+        if (seen.size() == 1) std::this_thread::sleep_for(std::chrono::milliseconds(30));
+      };
+      height2ssbump(height, 16, 16, o);
+      ASSERT_FALSE(seen.empty());
+      EXPECT_EQ(seen.back(), 1.0);
+      EXPECT_EQ(std::count(seen.begin(), seen.end(), 1.0), 1);
+      for (double f : seen) {
+        EXPECT_GT(f, 0.0);
+        EXPECT_LE(f, 1.0);
+      }
+    }
 }
 
 // A pit: one texel 0, the rest at 1 with a large bump scale. The pit's normal is still (0, 0, 1)

@@ -34,7 +34,9 @@ float halton(int k, int base) noexcept {
   return ret;
 }
 
-// Runs f(y) for every row y on `threads` workers; progress after each row.
+// Runs f(y) for every row y on `threads` workers; progress after each row that no other worker is
+// reporting, and 1.0 once when every row is done (after the workers have joined: the last row's
+// worker may find another one reporting, so completion is never left to the rows).
 template <class F>
 void for_rows(int h, unsigned threads, const std::function<void(double)>& progress, F&& f) {
   std::atomic<int> next{0}, done{0};
@@ -43,7 +45,7 @@ void for_rows(int h, unsigned threads, const std::function<void(double)>& progre
     for (int y = next++; y < h; y = next++) {
       f(y);
       const int d = ++done;
-      if (progress && !reporting.test_and_set()) {
+      if (progress && d < h && !reporting.test_and_set()) {
         progress(static_cast<double>(d) / h);
         reporting.clear();
       }
@@ -54,6 +56,8 @@ void for_rows(int h, unsigned threads, const std::function<void(double)>& progre
   std::vector<std::jthread> pool;
   for (unsigned t = 1; t < n; ++t) pool.emplace_back(work);
   work();
+  pool.clear();  // joins
+  if (progress) progress(1.0);
 }
 
 // Möller–Trumbore, both faces: does the segment o + t·d, t ∈ (0, 1], cross triangle (a, b, c)?

@@ -31,7 +31,7 @@ struct height2ssbump_options {
   int filter_radius = 10;     // -f (0 = no filter)
   float filter_threshold = 2.0f / 255.0f;
   unsigned threads = 0;                  // 0: hardware concurrency
-  std::function<void(double)> progress;  // fraction done, from worker threads one at a time
+  std::function<void(double)> progress;  // fraction done, one call at a time; 1.0 exactly once, last
 };
 
 // Heights in [0, 1] (8-bit value / 255), row-major w×h.
