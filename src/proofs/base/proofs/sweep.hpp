@@ -111,7 +111,8 @@ Acc sweep(std::uint64_t n, const sweep_config& cfg, Body&& body, std::uint64_t m
       const std::uint64_t begin = c * chunk;
       body(parts[c], begin, std::min(n, begin + chunk));
       const auto d = ++done;
-      if (cfg.progress && !reporting.test_and_set()) {
+      // A chunk's report is skipped while another worker reports; 1.0 comes once, after the join.
+      if (cfg.progress && d < to_run.size() && !reporting.test_and_set()) {
         cfg.progress(static_cast<double>(d) / static_cast<double>(to_run.size()));
         reporting.clear();
       }
@@ -122,6 +123,7 @@ Acc sweep(std::uint64_t n, const sweep_config& cfg, Body&& body, std::uint64_t m
   for (unsigned t = 1; t < workers; ++t) pool.emplace_back(work);
   work();
   pool.clear();  // joins
+  if (cfg.progress && !to_run.empty()) cfg.progress(1.0);
   if constexpr (std::is_trivially_copyable_v<Acc>) {
     if (log != nullptr && log->m == shard_log::mode::record) {
       for (auto c : to_run)
