@@ -287,29 +287,33 @@ class band_renderer {
       ++ops_;
     };
     if (o_.path == raster_path::cached) {
-      // The runs with texel(u16, v16) as the fetch, instantiated per kind of fetch (no test per pixel).
-      auto runs = [&](auto&& texel) {
-        std::int32_t last = -1;
-        std::optional<gs::attribute_walker> w;
+      std::int32_t last = -1;
+      std::optional<gs::attribute_walker> w;
+      if constexpr (!std::is_same_v<FB, row_view>) {  // the memory path: pixel by pixel
         for (const run& r : runs_) {
           if (r.tri != last) batch.flush(), last = r.tri, w.emplace(attr[static_cast<std::size_t>(r.tri)]);
-          if constexpr (std::is_same_v<FB, row_view>) {  // a run's words are adjacent
+          for (int k = 0; k < r.n; ++k) add(*w, r.x0 + k, r.y);
+        }
+      } else {
+        // The runs with texel(u16, v16) as the fetch, instantiated per kind of fetch (no test per
+        // pixel); a run's words are adjacent.
+        auto runs = [&](auto&& texel) {
+          for (const run& r : runs_) {
+            if (r.tri != last) batch.flush(), last = r.tri, w.emplace(attr[static_cast<std::size_t>(r.tri)]);
             batch.add_row(&fb(r.x0, r.y), r.x0, r.y, [&](auto&& put) {
               w->row(r.x0, r.y, r.n, [&](int, const gs::attribute_walker::values& a) { put(texel(a.u, a.v), a.cf); });
             });
             ops_ += static_cast<std::size_t>(r.n);
-          } else {
-            for (int k = 0; k < r.n; ++k) add(*w, r.x0 + k, r.y);
           }
+        };
+        if (tex == nullptr) {
+          runs([](std::int32_t, std::int32_t) { return 0u; });
+        } else if (nearest_host_fetch::applies(*tex)) {
+          const nearest_host_fetch fetch(*tex);
+          runs([&](std::int32_t u, std::int32_t v) { return fetch.texel(u, v); });
+        } else {
+          runs([&](std::int32_t u, std::int32_t v) { return tex->sample(u, v).to_u32(); });
         }
-      };
-      if (tex == nullptr) {
-        runs([](std::int32_t, std::int32_t) { return 0u; });
-      } else if (nearest_host_fetch::applies(*tex)) {
-        const nearest_host_fetch fetch(*tex);
-        runs([&](std::int32_t u, std::int32_t v) { return fetch.texel(u, v); });
-      } else {
-        runs([&](std::int32_t u, std::int32_t v) { return tex->sample(u, v).to_u32(); });
       }
       return;
     }
