@@ -42,6 +42,7 @@ struct render_args {
   int normal_map_bits = 8;
   bool memory_path = false, scalar = false;
   std::string dpb_clear = "explicit";
+  int draw_buffers = 2;
   bool cost = false;  // render / report only: --cost and the cost model's options
   cost_args cost_model;
 };
@@ -173,6 +174,7 @@ scene_setup setup(const render_args& a) {
     req.options.dpb_clear = pipeline::dpb_clear_mode::z_trick_psmz32;
   else if (a.dpb_clear != "explicit")
     throw usage_error("--dpb-clear: expected explicit, z-trick or z-trick-psmz32, got '" + a.dpb_clear + "'");
+  req.options.buffers = a.draw_buffers == 1 ? pipeline::draw_buffers::one : pipeline::draw_buffers::two;
   if ((a.memory_path || a.dpb_clear != "explicit") && 4 * ((w + 63) / 64) * ((h + 31) / 32) > 512)
     throw usage_error("--memory-path: four " + a.size + " PSMCT32 buffers do not fit in the GS's 4 MiB (512 pages)");
   std::vector<pipeline::scene_light> lights;
@@ -208,6 +210,10 @@ scene_setup setup(const render_args& a) {
     req.in = pipeline::make_scene(sr, progress);
   } catch (const std::runtime_error& e) { throw usage_error(e.what()); }
   if (a.lod_share) req.in.s.lights = pipeline::split_for_lod(req.in.s.lights, *a.lod_share);
+  if (req.options.buffers == pipeline::draw_buffers::one && req.in.s.lights.size() > pipeline::max_free_alpha_lights)
+    throw usage_error("--draw-buffers 1: " + std::to_string(req.in.s.lights.size()) +
+                      " lights, but the one-buffer variant keeps at most 3 dot layers in free alphas (section 3.1)" +
+                      (a.lod_share ? "; --lod-fade makes each light a pair" : ""));
   if (a.normal_map_bits != 8)  // the maps read are 8-bit
     req.in.s.normals = pipeline::with_index_bits(req.in.s.normals, a.normal_map_bits);
   if (a.normal_map_bits == 4)
@@ -333,6 +339,13 @@ void add_options(CLI::App* cmd, render_args& a) {
   cmd->add_option("--dpb-clear", a.dpb_clear,
                   "step 2.1's DPB clear (section 3.4): explicit | z-trick | z-trick-psmz32 (Z-buffer clear during the "
                   "ILP pass; implies --memory-path, one thread; see --model-option texture_buffer=...)")
+      ->capture_default_str();
+  cmd->add_option("--draw-buffers", a.draw_buffers,
+                  "section 3.1's draw buffers besides the output: 2 = the DPB and the LAB; 1 = the variant for too "
+                  "little VRAM, at most 3 lights: the output is each light's DPB, then the LAB, each light's dot "
+                  "layer and then the LAB's R, G, B kept in free alphas (the other display buffer's, the Z buffer's "
+                  "top byte, the output's); same frames, other passes (gsdot3 dump writes them)")
+      ->check(CLI::IsMember({1, 2}))
       ->capture_default_str();
   a.model.add_to(cmd);
 }

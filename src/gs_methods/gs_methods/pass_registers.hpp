@@ -69,6 +69,10 @@ inline constexpr gs::alpha_reg attenuate_about_source{blend_colour::Cd, blend_co
                                                       blend_colour::Cs, gs::u8{}};
 inline constexpr gs::alpha_reg multiply_by_ad{blend_colour::Cs, blend_colour::zero, blend_alpha::Ad, blend_colour::zero,
                                               gs::u8{}};  // Cs·Ad, step 4
+// Cd·As: step 4 of section 3.1's one-buffer variant, the diffuse layer already in the frame buffer and
+// the LAB channel read from a free alpha as the texel's alpha (the same blend product as Cs·Ad).
+inline constexpr gs::alpha_reg multiply_destination_by_as{blend_colour::Cd, blend_colour::zero, blend_alpha::As,
+                                                          blend_colour::zero, gs::u8{}};
 
 // The register sets of the passes. Each is a constant the pass loops are instantiated with, so the
 // compiler folds gs::pixel_pipeline for it (the same model function, specialised, not a copy).
@@ -110,7 +114,18 @@ inline constexpr pass_regs multiply_green{true,           true, gs::tfx::DECAL, 
                                           multiply_by_ad, true, only_channel[1]};
 inline constexpr pass_regs multiply_blue{true,           true, gs::tfx::DECAL, gs::tcc::RGB,
                                          multiply_by_ad, true, only_channel[2]};
+// Section 3.1's one-buffer variant (pipeline draw_buffers::one): the output buffer's R, G, B written
+// while its alpha keeps a dot layer or a LAB channel — flat fills (the LAB's ambient, step 3's clear),
+// the diffuse layer, and step 4's multiply by a free alpha read as the texel's.
+inline constexpr pass_regs flat_rgb{false, false, gs::tfx::MODULATE, gs::tcc::RGB, {}, true, keep_alpha};
+inline constexpr pass_regs diffuse_layer_rgb{true, false, gs::tfx::DECAL, gs::tcc::RGB, {}, true, keep_alpha};
+inline constexpr pass_regs multiply_red_by_as{
+    true, true, gs::tfx::DECAL, gs::tcc::RGBA, multiply_destination_by_as, true, only_channel[0]};
+inline constexpr pass_regs multiply_green_by_as{
+    true, true, gs::tfx::DECAL, gs::tcc::RGBA, multiply_destination_by_as, true, only_channel[1]};
+inline constexpr pass_regs multiply_blue_by_as{
+    true, true, gs::tfx::DECAL, gs::tcc::RGBA, multiply_destination_by_as, true, only_channel[2]};
 inline constexpr pass_regs move_into_alpha{true, false, gs::tfx::DECAL, gs::tcc::RGBA,
-                                           {},   true,  0x00FFFFFFu};  // memory path, step 4
+                                           {},   true,  0x00FFFFFFu};  // memory path, step 4; one buffer
 
 }  // namespace gsdot3::gs_methods

@@ -51,6 +51,15 @@ struct pass_record {
 // thread (the texture page buffer model, gs::texture_buffer, follows the draw order).
 enum class dpb_clear_mode { explicit_clear, z_trick, z_trick_psmz32 };
 std::string_view name(dpb_clear_mode m);
+// Section 3.1's draw buffers. two: the DPB and the LAB beside the output (steps 1-4). one: the
+// variant "if there is not enough VRAM for two draw buffers": at most 3 lights, the output buffer is
+// each light's DPB, then the LAB, then the diffuse layer; each light's dot layer waits in a free alpha
+// (render.cpp's alpha planes: the other display buffer's, the Z buffer's unused top byte, the output's
+// own), then the LAB's R, G and B wait there while the diffuse layer is drawn, and step 4 multiplies
+// by them. The frame equals the two-buffer frame bit for bit (tests/pipeline; alpha-layer.round-trip
+// settles the moves).
+enum class draw_buffers { two, one };
+inline constexpr std::size_t max_free_alpha_lights = 3;
 
 struct render_options {
   int s = 122;                  // two-pass tolight scale (section 3.5), 1..127
@@ -64,6 +73,7 @@ struct render_options {
   bool memory_path = false;                   // frame buffers in the modelled GS local memory (render.cpp)
   dpb_clear_mode dpb_clear = dpb_clear_mode::explicit_clear;
   bool simd = true;  // the SIMD pixel pipeline (gs_simd); false: gs::pixel_pipeline per pixel
+  draw_buffers buffers = draw_buffers::two;
 };
 
 struct frame {

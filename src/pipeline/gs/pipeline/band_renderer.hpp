@@ -221,16 +221,22 @@ class band_renderer {
     });
   }
 
-  // Fills the band (`whole`) or only the sprite area (where any pass can write) with v: on the value
-  // path directly, on the memory path as the GS clears, a flat sprite (TME = 0, ABE = 0, RGBAQ = v).
-  template <class FB>
+  // Fills the band (`whole`) or only the sprite area (where any pass can write) with v, the bits
+  // Pass's FBMSK masks kept: on the value path directly, on the memory path as the GS clears, a flat
+  // sprite (TME = 0, ABE = 0, RGBAQ = v; step1_ambient writes the whole word, flat_rgb keeps alpha).
+  template <const pass_regs& Pass = passes::step1_ambient, class FB>
   void fill(const FB& fb, std::uint32_t v, bool whole = true) {
+    static_assert(!Pass.TME && !Pass.ABE && Pass.CLAMP);
     const scissor& a = whole ? band_ : sprite_area_;
     if constexpr (std::is_same_v<FB, row_view>) {
       for (int y = a.y0; y < a.y1; ++y)
-        if (a.x0 < a.x1) std::fill(&fb(a.x0, y), &fb(a.x0, y) + (a.x1 - a.x0), v);
+        if constexpr (Pass.FBMSK == 0) {
+          if (a.x0 < a.x1) std::fill(&fb(a.x0, y), &fb(a.x0, y) + (a.x1 - a.x0), v);
+        } else {
+          for (int x = a.x0; x < a.x1; ++x) fb(x, y) = (fb(x, y) & Pass.FBMSK) | (v & ~Pass.FBMSK);
+        }
     } else {
-      sprite_rect<passes::step1_ambient>(
+      sprite_rect<Pass>(
           gs::rgba8::from_u32(v), a, [](int, int) { return gs::rgba8{}; }, fb, &a);
     }
   }

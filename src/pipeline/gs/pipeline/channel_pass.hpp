@@ -31,6 +31,12 @@ struct frame_buffers {
   std::vector<std::uint32_t> z;  // the value path's Z buffer storage (zb's rows)
   z_view zb;
   FB lab, dpb, diff, out;
+  // draw_buffers::one: the free alphas (method.hpp) that hold light k's dot layer, then the LAB's
+  // channel k. Value path: the alphas of the DPB, LAB and output vectors (none of them drawn as such
+  // in that mode but the output). Memory path: the buffer at FBP 0 (the display's other buffer: the
+  // output at 2P is the displayed one), the Z buffer's words at ZBP as PSMCT32 (PSMZ24 leaves their
+  // top byte unused, so writing it never changes a Z) and the output's own.
+  FB alpha_plane[3];
   gs::mem::local_memory* memory = nullptr;               // the memory path's local memory, else null
   buffer_layout layout;                                  // the memory path's buffers (gs_inputs.hpp)
   const gs::mem::texel_addresses* page_as_t8 = nullptr;  // the memory path: a page of the DPB / LAB as PSMT8 (BP 0)
@@ -132,26 +138,28 @@ inline void channel_pass(band_renderer& r, const frame_buffers<memory_view>& fb,
   r.scalar_sprites = false;
 }
 
-// Two-pass step 2.4a: n'_a into R, G and B — the DPB read as PSMT8H (its own alpha byte at the same
-// pixel: gs::t8h_index on the value path; on the memory path the PSMT8H read of the DPB's page, in
+// Two-pass step 2.4a: n'_a into R, G and B — the DPB `dpb` read as PSMT8H (its own alpha byte at the
+// same pixel: gs::t8h_index on the value path; on the memory path the PSMT8H read of the DPB's page, in
 // the Z layout at the word of logical (x, y)) through `clut`, one sprite over the sprite area.
 template <const pass_regs& Pass>
-void alpha_into_rgb(band_renderer& r, const frame_buffers<row_view>& fb, const gs::clut_buffer& clut) {
+void alpha_into_rgb(band_renderer& r, const frame_buffers<row_view>&, const row_view& dpb,
+                    const gs::clut_buffer& clut) {
   r.sprite<Pass>(
-      passes::white, [&](int x, int y) { return gs::clut_t8(clut, gs::t8h_index(fb.dpb(x, y))); }, fb.dpb);
+      passes::white, [&](int x, int y) { return gs::clut_t8(clut, gs::t8h_index(dpb(x, y))); }, dpb);
 }
 template <const pass_regs& Pass>
-void alpha_into_rgb(band_renderer& r, const frame_buffers<memory_view>& fb, const gs::clut_buffer& clut) {
-  const gs::mem::buffer t8h{fixed::uint<14>::from_wrapped(fb.dpb.bp), fixed::uint<6>::from_wrapped(fb.dpb.bw),
+void alpha_into_rgb(band_renderer& r, const frame_buffers<memory_view>& fb, const memory_view& dpb,
+                    const gs::clut_buffer& clut) {
+  const gs::mem::buffer t8h{fixed::uint<14>::from_wrapped(dpb.bp), fixed::uint<6>::from_wrapped(dpb.bw),
                             gs::mem::psm::PSMT8H};
   r.sprite<Pass>(
       passes::white,
       [&](int x, int y) {
-        const auto [tx, ty] = fb.dpb.z ? zsigma(x, y) : std::array<int, 2>{x, y};
+        const auto [tx, ty] = dpb.z ? zsigma(x, y) : std::array<int, 2>{x, y};
         return gs::clut_t8(
             clut, byte(fb.memory->read_pixel(t8h, static_cast<std::uint32_t>(tx), static_cast<std::uint32_t>(ty))));
       },
-      fb.dpb);
+      dpb);
 }
 
 // The memory path's copy of the LAB into the output over `area` (before step 4): gs_inputs.hpp's

@@ -189,6 +189,18 @@ class stream {
   std::vector<std::pair<std::uint8_t, std::uint64_t>> pending_;
 };
 
+// The stream's bytes and counts, the output buffer displayed.
+void finish(frame_packets& fp, stream& g, const prepared_scene& ps, std::uint32_t out, const buffer_layout& b) {
+  g.flush();
+  fp.gif = g.out.bytes();
+  fp.triangles = g.triangles_written;
+  fp.sprites = g.sprites_written;
+  fp.PMODE = pk::pmode_circuit1();
+  fp.DISPFB1 = pk::dispfb_value(out, b.fbw);
+  fp.width = ps.width;
+  fp.height = ps.height;
+}
+
 }  // namespace
 
 frame_packets build_frame_packets(const scene& s, const prepared_scene& ps, method m, const render_options& o) {
@@ -208,7 +220,12 @@ frame_packets build_frame_packets(const scene& s, const prepared_scene& ps, meth
   const scissor area = detail::band_renderer::drawn_area(ps, {0, 0, ps.width, ps.height});
   start_stream(in, ps, o, area);
   stream g(ps, b, area);
-  const std::uint32_t DPB = b.dpb(), LAB = b.lab(), OUT = b.output();
+  // draw_buffers::one (render.cpp's one_buffer_steps): the output is every light's DPB, then the
+  // LAB; the free alphas are those of the buffer at FBP 0, of the Z buffer's words (as PSMCT32) and
+  // of the output.
+  const bool one = o.buffers == draw_buffers::one;
+  const std::uint32_t DPB = one ? b.output() : b.dpb(), LAB = one ? b.output() : b.lab(), OUT = b.output();
+  const std::uint32_t plane[3] = {b.dpb(), b.z(), b.output()};
 
   // 1. Environment.
   g.set(address("PRMODECONT"), 1);
@@ -223,9 +240,9 @@ frame_packets build_frame_packets(const scene& s, const prepared_scene& ps, meth
   g.texflush();
   // 3. Clears over the frame; the output and the Z buffer by one sprite (colour 0, Z 0).
   g.depth(depth_always, z_masked);
-  g.target(DPB, step1_ambient);
+  g.target(b.dpb(), step1_ambient);
   g.frame_sprite(step1_ambient, gs::rgba8::from_u32(clear_dpb));
-  g.target(LAB, step1_ambient);
+  g.target(b.lab(), step1_ambient);
   g.frame_sprite(step1_ambient, gs::rgba8{});
   g.depth(depth_always, z_written);
   g.target(OUT, step1_ambient);
@@ -323,10 +340,48 @@ frame_packets build_frame_packets(const scene& s, const prepared_scene& ps, meth
       g.texflush();
       g.channel_pass(post_add_into_red, white, cbp(clut_slot::grey), c, DPB);
     }
-    const auto& lc = s.lights[l].colour;
     g.texflush();
+    if (one) {  // the dot layer into free alpha l
+      g.target(plane[l], move_into_alpha);
+      g.channel_pass(move_into_alpha, white, cbp(clut_slot::alpha_index), 0, DPB);
+      continue;
+    }
+    const auto& lc = s.lights[l].colour;
     g.target(LAB, ilp_into_lab);
     g.channel_pass(ilp_into_lab, rgb(lc[0], lc[1], lc[2], 0x80), cbp(clut_slot::ilp), 0, DPB);
+  }
+
+  if (one) {  // render.cpp's one_buffer_steps: 2.6 from the free alphas, their LAB channels, 3, 4
+    g.clip(area);
+    g.depth(depth_always, z_masked);
+    g.target(OUT, flat_rgb);
+    g.area_sprite(flat_rgb, rgb(s.ambient[0], s.ambient[1], s.ambient[2], 0x80));
+    for (std::size_t l = 0; l < s.lights.size(); ++l) {
+      const auto& lc = s.lights[l].colour;
+      g.texflush();
+      g.target(OUT, ilp_into_lab);
+      g.channel_pass(ilp_into_lab, rgb(lc[0], lc[1], lc[2], 0x80), cbp(clut_slot::ilp), 3, plane[l]);
+    }
+    for (unsigned c = 0; c < 3; ++c) {
+      g.texflush();
+      g.target(plane[c], move_into_alpha);
+      g.channel_pass(move_into_alpha, white, cbp(clut_slot::alpha_index), c, OUT);
+    }
+    g.target(OUT, flat_rgb);
+    g.area_sprite(flat_rgb, gs::rgba8{});
+    g.clip(g.frame());
+    g.depth(depth_gequal, z_masked);
+    textured(diffuse_layer_rgb, OUT, std::nullopt, diffuse_texels, in.diffuse_at, white_vertex, nm_uv);
+    g.depth(depth_always, z_masked);
+    g.clip(area);
+    const pass_regs* multiply[3] = {&multiply_red_by_as, &multiply_green_by_as, &multiply_blue_by_as};
+    for (unsigned c = 0; c < 3; ++c) {
+      g.texflush();
+      g.target(OUT, *multiply[c]);
+      g.channel_pass(*multiply[c], white, cbp(clut_slot::alpha_index), 3, plane[c]);
+    }
+    finish(fp, g, ps, OUT, b);
+    return fp;
   }
 
   // Step 3: the DPB cleared to zero over the sprite area and the diffuse layer drawn into it.
@@ -353,15 +408,7 @@ frame_packets build_frame_packets(const scene& s, const prepared_scene& ps, meth
     g.target(OUT, *multiply[c]);
     g.area_sprite(*multiply[c], white);
   }
-  g.flush();
-
-  fp.gif = g.out.bytes();
-  fp.triangles = g.triangles_written;
-  fp.sprites = g.sprites_written;
-  fp.PMODE = pk::pmode_circuit1();
-  fp.DISPFB1 = pk::dispfb_value(OUT, b.fbw);
-  fp.width = ps.width;
-  fp.height = ps.height;
+  finish(fp, g, ps, OUT, b);
   return fp;
 }
 

@@ -27,7 +27,9 @@
 //    TRXPOS, TRXREG, then TRXDIR = 2, as A+D writes).
 // Memory: gs_inputs.hpp's buffer_layout, the renderer's memory path's: the DPB (and in step 3 the
 // diffuse layer) at FBP 0, the LAB at P, the output at 2P, the Z buffer (PSMZ24) at ZBP = 3P, the
-// textures after them.
+// textures after them. With draw_buffers::one the output is each light's DPB and then the LAB, and
+// the free alphas are those of the buffer at FBP 0, of the Z buffer's words and of the output
+// (render.cpp's one_buffer_steps; docs/dumps.md).
 // Not written: the z-trick DPB clears (render_options::dpb_clear other than explicit); frames wider
 // or taller than 1023 pixels (a sprite's UV is 10.4: at most 1023.9375).
 #pragma once

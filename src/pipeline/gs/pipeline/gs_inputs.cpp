@@ -77,6 +77,17 @@ std::span<const std::uint8_t> normal_map_texels(const gs_inputs& in, std::size_t
 }
 
 gs_inputs make_inputs(const scene& s, method m, const render_options& o) {
+  if (o.buffers == draw_buffers::one) {
+    if (s.lights.size() > max_free_alpha_lights)
+      throw std::invalid_argument("--draw-buffers 1: " + std::to_string(s.lights.size()) +
+                                  " lights, but the one-buffer variant keeps at most " +
+                                  std::to_string(max_free_alpha_lights) +
+                                  " dot layers in free alphas (section 3.1; --lod-fade counts each light twice)");
+    if (o.dpb_clear != dpb_clear_mode::explicit_clear)
+      throw std::invalid_argument(
+          "--draw-buffers 1 needs --dpb-clear explicit (the z-trick clears use the Z "
+          "buffer's top byte, which this variant keeps a free alpha in)");
+  }
   gs_inputs in;
   in.nm = &s.normals;
   in.diffuse = &s.diffuse;

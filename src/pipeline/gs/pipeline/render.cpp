@@ -28,6 +28,10 @@
 //   map and diffuse texture too big for the memory beside the buffers stream per pass in pieces
 //   (texture_stream.hpp, draw_textured; the memory path then draws on one thread). Both paths
 //   run the depth test through gs::depth_test.
+// render_options::buffers = draw_buffers::one (section 3.1's variant for too little VRAM): the output
+// is each light's DPB, the dot layers wait in free alphas (frame_buffers::alpha_plane), and
+// one_buffer_steps makes the output the LAB, parks its channels in those alphas and multiplies the
+// diffuse layer by them.
 // The register sets and vertex values of the passes are pass_table.hpp's, which frame_packets.cpp
 // writes as the GIF packet stream of the same frame.
 #include "pipeline/render.hpp"
@@ -59,6 +63,28 @@ namespace {
 using namespace detail;
 using namespace passes;
 
+// Steps 2.6, 3 and 4 of draw_buffers::one, after every light's dot layer is in its free alpha: the
+// output becomes the LAB (its R, G, B filled with the ambient, the alphas kept; each light's ILP read
+// from its alpha), the LAB's R, G, B move into the free alphas, the diffuse layer (draw_diffuse) is
+// drawn into the output's R, G, B, and each channel is multiplied by its alpha read as the texel's:
+// Cd·As, the product step 4's Cs·Ad forms in the two-buffer method.
+template <class FB, class DrawDiffuse>
+void one_buffer_steps(band_renderer& r, const scene& s, const gs_inputs& in, frame_buffers<FB>& fb,
+                      DrawDiffuse&& draw_diffuse) {
+  r.fill<flat_rgb>(fb.out, rgb(s.ambient[0], s.ambient[1], s.ambient[2], 0x80).to_u32(), false);
+  for (std::size_t l = 0; l < s.lights.size(); ++l) {
+    const auto& lc = s.lights[l].colour;
+    channel_pass<ilp_into_lab>(r, fb, rgb(lc[0], lc[1], lc[2], 0x80), in.ilp, 3, fb.alpha_plane[l], fb.out);
+  }
+  for (unsigned c = 0; c < 3; ++c)
+    channel_pass<move_into_alpha>(r, fb, white, in.alpha_index, c, fb.out, fb.alpha_plane[c]);
+  r.fill<flat_rgb>(fb.out, 0, false);
+  draw_diffuse();
+  channel_pass<multiply_red_by_as>(r, fb, white, in.alpha_index, 3, fb.alpha_plane[0], fb.out);
+  channel_pass<multiply_green_by_as>(r, fb, white, in.alpha_index, 3, fb.alpha_plane[1], fb.out);
+  channel_pass<multiply_blue_by_as>(r, fb, white, in.alpha_index, 3, fb.alpha_plane[2], fb.out);
+}
+
 template <class FB>
 std::size_t render_band(const scene& s, const prepared_scene& ps, method m, const render_options& o,
                         const gs_inputs& in, scissor band, frame_buffers<FB>& fb, frame& result) {
@@ -85,8 +111,15 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
     open_pass();
   };
   if (o.trace != nullptr) open_pass(), r.pending = &pending;
-  r.depth_and_ambient(fb.lab, rgb(s.ambient[0], s.ambient[1], s.ambient[2], 0x80));
-  note("1 Z and ambient", -1, "LAB", fb.lab);
+  // draw_buffers::one (section 3.1's variant, method.hpp): the output buffer is every light's DPB,
+  // then the LAB; step 1's ambient, drawn there too, is cleared by the first 2.1 (the LAB's ambient
+  // is filled in after the lights).
+  const bool one = o.buffers == draw_buffers::one;
+  const FB& dpb = one ? fb.out : fb.dpb;
+  const FB& lab = one ? fb.out : fb.lab;
+  const gs::rgba8 ambient = rgb(s.ambient[0], s.ambient[1], s.ambient[2], 0x80);
+  r.depth_and_ambient(lab, ambient);
+  note("1 Z and ambient", -1, "LAB", lab);
 
   const gs::bilinear_mode filter = o.bilinear ? o.model.bilinear : gs::bilinear_mode::nearest;
   // The normal-map texture a pass through palette slot c samples, and its stream.
@@ -121,13 +154,12 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
     // 2.1 (the DPB starts cleared; nothing is drawn outside the sprite area); 2.2 COLCLAMP = 0 in
     // every pass of 2.3 and 2.4.
     if constexpr (in_memory(FB{})) {
-      if (l == 0 || fb.clear == dpb_clear_mode::explicit_clear)
-        r.fill(fb.dpb, clear_dpb, false);  // else: 2.6's Z clear
+      if (l == 0 || fb.clear == dpb_clear_mode::explicit_clear) r.fill(dpb, clear_dpb, false);  // else: 2.6's Z clear
     } else {
-      r.fill(fb.dpb, clear_dpb, false);
+      r.fill(dpb, clear_dpb, false);
     }
     const int li = static_cast<int>(l);
-    note("2.1 clear 0x00808080", li, "DPB", fb.dpb);
+    note("2.1 clear 0x00808080", li, "DPB", dpb);
     // 2.3 (and two-pass's 2.4a): the method's light passes (Gouraud's for a Gouraud light, lod.hpp),
     // pass_table.hpp's list in draw order, each instantiated for its register set. Passes with the
     // same vertex colours and texture coordinates share their attribute set-up.
@@ -143,15 +175,15 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
     auto draw_pass = [&]<const pass_regs & Regs, pass_source Source>(const light_pass& p) {
       if constexpr (Source == pass_source::normal_map) {
         draw_textured<Regs>(r, fb.memory, in.stream.get(), normal_map_stream(in, normal_map_of(in, p.clut)),
-                            nm_texture(p.clut), attributes_of(p), fb.dpb);
+                            nm_texture(p.clut), attributes_of(p), dpb);
       } else if constexpr (Source == pass_source::sphere_map) {
-        r.draw<Regs>(&sphere, attributes_of(p), fb.dpb);
+        r.draw<Regs>(&sphere, attributes_of(p), dpb);
       } else if constexpr (Source == pass_source::untextured) {
-        r.draw<Regs>(nullptr, attributes_of(p), fb.dpb);
+        r.draw<Regs>(nullptr, attributes_of(p), dpb);
       } else {
-        alpha_into_rgb<Regs>(r, fb, *palettes(in)[static_cast<std::size_t>(p.clut)]);
+        alpha_into_rgb<Regs>(r, fb, dpb, *palettes(in)[static_cast<std::size_t>(p.clut)]);
       }
-      note(p.label, li, "DPB", fb.dpb);
+      note(p.label, li, "DPB", dpb);
     };
     with_method(
         light_method(m, s.lights[l]), [&]<const auto & D>() {
@@ -161,13 +193,23 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
           (std::make_index_sequence<D.light.size()>{});
         });
     // 2.4: R += G, R += B (mod 256): additive sprites writing red only.
-    channel_pass<post_add_into_red>(r, fb, white, in.grey, 1, fb.dpb, fb.dpb);
-    note("2.4 R += G", li, "DPB", fb.dpb);
-    channel_pass<post_add_into_red>(r, fb, white, in.grey, 2, fb.dpb, fb.dpb);
-    note("2.4 R += B (the post-filter sum)", li, "DPB", fb.dpb);
+    channel_pass<post_add_into_red>(r, fb, white, in.grey, 1, dpb, dpb);
+    note("2.4 R += G", li, "DPB", dpb);
+    channel_pass<post_add_into_red>(r, fb, white, in.grey, 2, dpb, dpb);
+    note("2.4 R += B (the post-filter sum)", li, "DPB", dpb);
+    // Outside the sprite area no pass draws: 0x80 (dot 0), the two-buffer DPB's clear (with one
+    // buffer the output there keeps its 0).
+    const scissor& drawn = r.sprite_area();
     for (int y = band.y0; y < band.y1; ++y)
-      for (int x = band.x0; x < band.x1; ++x)
-        result.dot[l][r.index(x, y)] = static_cast<std::uint8_t>(fb.dpb(x, y) & 0xFF);
+      for (int x = band.x0; x < band.x1; ++x) {
+        const bool inside = x >= drawn.x0 && x < drawn.x1 && y >= drawn.y0 && y < drawn.y1;
+        result.dot[l][r.index(x, y)] = inside ? static_cast<std::uint8_t>(dpb(x, y) & 0xFF) : 0x80;
+      }
+    if (one) {  // the dot layer into free alpha l; 2.6 waits until the output is the LAB
+      channel_pass<move_into_alpha>(r, fb, white, in.alpha_index, 0, dpb, fb.alpha_plane[l]);
+      note("2.6' dot layer into a free alpha", li, "alpha plane", fb.alpha_plane[l]);
+      continue;
+    }
     // 2.5, 2.6: COLCLAMP = 1; ILP[sum] × light colour (MODULATE) added into the LAB.
     const auto& lc = s.lights[l].colour;
     if constexpr (in_memory(FB{})) {
@@ -179,11 +221,23 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
     note("2.6 LAB += ILP[sum] × light colour", li, "LAB", fb.lab);
   }
 
-  // Step 3: the unlit diffuse layer.
-  r.fill(fb.diff, 0, false);
   const texture_ref diffuse{
       in.diffuse->width, in.diffuse->height,     nullptr, nullptr, in.diffuse->texels.data(), false, filter, in.memory,
       in.diffuse_at,     in.diffuse_texels.get()};
+  if (one) {
+    one_buffer_steps(r, s, in, fb, [&] {
+      draw_textured<diffuse_layer_rgb>(r, fb.memory, in.stream.get(), diffuse_texels, diffuse,
+                                       attributes(ps, o.model.setup, flat_white, normal_map_uv), fb.out);
+    });
+    note("2.6, 3, 4 in one buffer (LAB, its channels into the free alphas, diffuse, × the alphas)", -1, "frame",
+         fb.out);
+    for (int y = band.y0; y < band.y1; ++y)
+      for (int x = band.x0; x < band.x1; ++x) { result.colour[r.index(x, y)] = fb.out(x, y) | 0xFF000000u; }
+    return r.pixel_ops();
+  }
+
+  // Step 3: the unlit diffuse layer.
+  r.fill(fb.diff, 0, false);
   draw_textured<diffuse_layer>(r, fb.memory, in.stream.get(), diffuse_texels, diffuse,
                                attributes(ps, o.model.setup, flat_white, normal_map_uv), fb.diff);
   note("3 diffuse layer", -1, "diffuse", fb.diff);
@@ -281,13 +335,19 @@ frame render(const scene& s, const prepared_scene& ps, method m, const render_op
     // The inner loops' addresses tabulated over whole pages (gs_memory/fast_address.hpp).
     const gs::mem::texel_addresses page_as_t8(gs::mem::psm::PSMT8, 2 * fbw, 128, 64);  // channel_pass's TBW
     fb.page_as_t8 = &page_as_t8;
+    fb.alpha_plane[0] = fb.dpb;
+    fb.alpha_plane[1] = memory_view{memory.words(), 32 * layout.z(), fbw, false};
+    fb.alpha_plane[2] = fb.out;
     std::vector<gs::mem::row_column_address> addresses;
-    addresses.reserve(5);
-    for (memory_view* v : {&fb.dpb, &fb.lab, &fb.diff, &fb.out, &fb.zb.memory})
+    addresses.reserve(8);
+    for (memory_view* v : {&fb.dpb, &fb.lab, &fb.diff, &fb.out, &fb.zb.memory, &fb.alpha_plane[0], &fb.alpha_plane[1],
+                           &fb.alpha_plane[2]})
       v->address = &addresses.emplace_back(v->layout(), v->bp, v->bw, 64 * fbw,
                                            32 * static_cast<std::uint32_t>((ps.height + 31) / 32));
     render_options one = o;
-    if (o.dpb_clear != dpb_clear_mode::explicit_clear) one.threads = 1;  // draw order is the model's
+    // Draw order is the model's: the z-trick clears; the one-buffer variant's alpha plane in the Z
+    // buffer's words, whose pixels are not the Z buffer's (another band's depth tests read them).
+    if (o.dpb_clear != dpb_clear_mode::explicit_clear || o.buffers == draw_buffers::one) one.threads = 1;
     gs_inputs uploaded = upload_inputs(memory, in, layout.first_texture_block(), one.threads > 1);
     if (uploaded.window_first != 0) one.threads = 1;  // the pieces' uploads share the window
     start_stream(uploaded, ps, o, band_renderer::drawn_area(ps, {0, 0, ps.width, ps.height}));
@@ -297,6 +357,7 @@ frame render(const scene& s, const prepared_scene& ps, method m, const render_op
     frame_buffers<row_view> fb;
     row_view* views[4] = {&fb.dpb, &fb.lab, &fb.diff, &fb.out};
     for (std::size_t k = 0; k < 4; ++k) *views[k] = row_view{rows.data() + k * n, ps.width};
+    fb.alpha_plane[0] = fb.dpb, fb.alpha_plane[1] = fb.lab, fb.alpha_plane[2] = fb.out;
     render_bands(s, ps, m, o, in, fb, result);
   }
   return result;
