@@ -52,12 +52,23 @@ void BM_PixelPipeline(benchmark::State& state) {
 }
 BENCHMARK(BM_PixelPipeline)->Arg(0)->Arg(1)->Arg(2)->ArgName("scenario");
 
-// gsdot3::simd::pixel_pipeline on full batches (64 pixels) of four-pass's x pass (DECAL, the signed
-// multiply blend, FBMSK; arg 0) or two-pass's first pass (MODULATE, no blend; arg 1), texels, colours
-// and old words varied per batch: the SIMD units with nothing around them.
+// gsdot3::simd::pixel_pipeline on full batches (64 pixels) of every register set a four-pass frame
+// draws (arg: the index into frame_passes), texels, colours and old words varied per batch: the SIMD
+// units with nothing around them, the part of a pixel-op no fetch, walk or frame buffer adds to.
+namespace gm = gsdot3::gs_methods;
+constexpr const gm::pass_regs* frame_passes[] = {&gm::four_pass_x,      &gm::two_pass_positive, &gm::step1_ambient,
+                                                 &gm::four_pass_sphere, &gm::post_add_into_red, &gm::ilp_into_lab,
+                                                 &gm::diffuse_layer,    &gm::multiply_red};
+constexpr const char* frame_pass_names[] = {"four-pass x, y, z (DECAL, signed multiply, FBMSK)",
+                                            "two-pass pass 1 (MODULATE, no blend)",
+                                            "step 1 (flat, untextured)",
+                                            "four-pass sphere (HIGHLIGHT)",
+                                            "2.4 post filter (DECAL, Cs + Cd, red only)",
+                                            "2.6 ILP (MODULATE, Cs + Cd, COLCLAMP)",
+                                            "3 diffuse layer (DECAL)",
+                                            "4 multiply (DECAL, Cs·Ad, one channel)"};
 void BM_SimdBatch(benchmark::State& state) {
-  const gs::gs_registers regs = state.range(0) == 0 ? gsdot3::gs_methods::four_pass_x.registers()
-                                                    : gsdot3::gs_methods::two_pass_positive.registers();
+  const gs::gs_registers regs = frame_passes[state.range(0)]->registers();
   const gs::model_options o;
   gsdot3::simd::pixel_batch b;
   std::uint32_t seed = 0x2545F491u + static_cast<std::uint32_t>(state.thread_index());
@@ -74,8 +85,9 @@ void BM_SimdBatch(benchmark::State& state) {
     benchmark::DoNotOptimize(b.out);
   }
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(b.n));
+  state.SetLabel(frame_pass_names[state.range(0)]);
 }
-BENCHMARK(BM_SimdBatch)->Arg(0)->Arg(1)->ArgName("pass")->Threads(1)->Threads(2)->UseRealTime();
+BENCHMARK(BM_SimdBatch)->DenseRange(0, 7)->ArgName("pass")->Threads(1)->Threads(2)->UseRealTime();
 
 void BM_BlendChannel(benchmark::State& state) {
   int a = 0;
