@@ -285,6 +285,17 @@ frame_packets build_frame_packets(const scene& s, const prepared_scene& ps, meth
   };
   auto white_vertex = [](const prepared_triangle&, int) { return white; };
   auto cbp = [&](clut_slot c) { return in.cbp[static_cast<std::size_t>(c)]; };
+  // Step 3: buffer fbp cleared to zero over the sprite area (clear's FBMSK kept) and the diffuse layer
+  // drawn into it.
+  auto diffuse_step = [&](std::uint32_t fbp, const pass_regs& clear, const pass_regs& layer) {
+    g.clip(area);
+    g.depth(depth_always, z_masked);
+    g.target(fbp, clear);
+    g.area_sprite(clear, gs::rgba8{});
+    g.clip(g.frame());
+    g.depth(depth_gequal, z_masked);
+    textured(layer, fbp, std::nullopt, diffuse_texels, in.diffuse_at, white_vertex, nm_uv);
+  };
   for (std::size_t l = 0; l < s.lights.size(); ++l) {
     const std::vector<light_vertex>& lv = ps.lights[l];
     auto at = [&](const prepared_triangle& t, int k) -> const light_vertex& {
@@ -367,11 +378,7 @@ frame_packets build_frame_packets(const scene& s, const prepared_scene& ps, meth
       g.target(plane[c], move_into_alpha);
       g.channel_pass(move_into_alpha, white, cbp(clut_slot::alpha_index), c, OUT);
     }
-    g.target(OUT, flat_rgb);
-    g.area_sprite(flat_rgb, gs::rgba8{});
-    g.clip(g.frame());
-    g.depth(depth_gequal, z_masked);
-    textured(diffuse_layer_rgb, OUT, std::nullopt, diffuse_texels, in.diffuse_at, white_vertex, nm_uv);
+    diffuse_step(OUT, flat_rgb, diffuse_layer_rgb);
     g.depth(depth_always, z_masked);
     g.clip(area);
     const pass_regs* multiply[3] = {&multiply_red_by_as, &multiply_green_by_as, &multiply_blue_by_as};
@@ -385,13 +392,7 @@ frame_packets build_frame_packets(const scene& s, const prepared_scene& ps, meth
   }
 
   // Step 3: the DPB cleared to zero over the sprite area and the diffuse layer drawn into it.
-  g.clip(area);
-  g.depth(depth_always, z_masked);
-  g.target(DPB, step1_ambient);
-  g.area_sprite(step1_ambient, gs::rgba8{});
-  g.clip(g.frame());
-  g.depth(depth_gequal, z_masked);
-  textured(diffuse_layer, DPB, std::nullopt, diffuse_texels, in.diffuse_at, white_vertex, nm_uv);
+  diffuse_step(DPB, step1_ambient, diffuse_layer);
 
   // Step 4: the LAB copied into the output by the renderer's transfer; per channel the LAB byte
   // moved into the output's alpha, then diffuse (the DPB) × alpha into that channel.
