@@ -69,9 +69,9 @@ using namespace passes;
 // drawn into the output's R, G, B, and each channel is multiplied by its alpha read as the texel's:
 // Cd·As, the product step 4's Cs·Ad forms in the two-buffer method.
 template <class FB, class DrawDiffuse>
-void one_buffer_steps(band_renderer& r, const scene& s, const gs_inputs& in, frame_buffers<FB>& fb,
+void one_buffer_steps(band_renderer& r, const scene& s, const gs_inputs& in, gs::rgba8 ambient, frame_buffers<FB>& fb,
                       DrawDiffuse&& draw_diffuse) {
-  r.fill<flat_rgb>(fb.out, rgb(s.ambient[0], s.ambient[1], s.ambient[2], 0x80).to_u32(), false);
+  r.fill<flat_rgb>(fb.out, ambient.to_u32(), false);
   for (std::size_t l = 0; l < s.lights.size(); ++l) {
     const auto& lc = s.lights[l].colour;
     channel_pass<ilp_into_lab>(r, fb, rgb(lc[0], lc[1], lc[2], 0x80), in.ilp, 3, fb.alpha_plane[l], fb.out);
@@ -200,11 +200,12 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
     // Outside the sprite area no pass draws: 0x80 (dot 0), the two-buffer DPB's clear (with one
     // buffer the output there keeps its 0).
     const scissor& drawn = r.sprite_area();
-    for (int y = band.y0; y < band.y1; ++y)
-      for (int x = band.x0; x < band.x1; ++x) {
-        const bool inside = x >= drawn.x0 && x < drawn.x1 && y >= drawn.y0 && y < drawn.y1;
-        result.dot[l][r.index(x, y)] = inside ? static_cast<std::uint8_t>(dpb(x, y) & 0xFF) : 0x80;
-      }
+    for (int y = band.y0; y < band.y1; ++y) {
+      std::uint8_t* row = &result.dot[l][r.index(band.x0, y)];
+      std::fill(row, row + (band.x1 - band.x0), std::uint8_t{0x80});
+      if (y >= drawn.y0 && y < drawn.y1)
+        for (int x = drawn.x0; x < drawn.x1; ++x) row[x - band.x0] = static_cast<std::uint8_t>(dpb(x, y) & 0xFF);
+    }
     if (one) {  // the dot layer into free alpha l; 2.6 waits until the output is the LAB
       channel_pass<move_into_alpha>(r, fb, white, in.alpha_index, 0, dpb, fb.alpha_plane[l]);
       note("2.6' dot layer into a free alpha", li, "alpha plane", fb.alpha_plane[l]);
@@ -224,16 +225,20 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
   const texture_ref diffuse{
       in.diffuse->width, in.diffuse->height,     nullptr, nullptr, in.diffuse->texels.data(), false, filter, in.memory,
       in.diffuse_at,     in.diffuse_texels.get()};
+  // The lit frame, from the output.
+  auto write_frame = [&] {
+    for (int y = band.y0; y < band.y1; ++y)
+      for (int x = band.x0; x < band.x1; ++x) result.colour[r.index(x, y)] = fb.out(x, y) | 0xFF000000u;
+    return r.pixel_ops();
+  };
   if (one) {
-    one_buffer_steps(r, s, in, fb, [&] {
+    one_buffer_steps(r, s, in, ambient, fb, [&] {
       draw_textured<diffuse_layer_rgb>(r, fb.memory, in.stream.get(), diffuse_texels, diffuse,
                                        attributes(ps, o.model.setup, flat_white, normal_map_uv), fb.out);
     });
     note("2.6, 3, 4 in one buffer (LAB, its channels into the free alphas, diffuse, × the alphas)", -1, "frame",
          fb.out);
-    for (int y = band.y0; y < band.y1; ++y)
-      for (int x = band.x0; x < band.x1; ++x) { result.colour[r.index(x, y)] = fb.out(x, y) | 0xFF000000u; }
-    return r.pixel_ops();
+    return write_frame();
   }
 
   // Step 3: the unlit diffuse layer.
@@ -270,9 +275,7 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
   multiply(1, [&](auto&&... a) { r.sprite<multiply_green>(a...); });
   multiply(2, [&](auto&&... a) { r.sprite<multiply_blue>(a...); });
   note("4 diffuse × LAB (R, G, B)", -1, "frame", fb.out);
-  for (int y = band.y0; y < band.y1; ++y)
-    for (int x = band.x0; x < band.x1; ++x) { result.colour[r.index(x, y)] = fb.out(x, y) | 0xFF000000u; }
-  return r.pixel_ops();
+  return write_frame();
 }
 
 template <class FB>
@@ -335,15 +338,13 @@ frame render(const scene& s, const prepared_scene& ps, method m, const render_op
     // The inner loops' addresses tabulated over whole pages (gs_memory/fast_address.hpp).
     const gs::mem::texel_addresses page_as_t8(gs::mem::psm::PSMT8, 2 * fbw, 128, 64);  // channel_pass's TBW
     fb.page_as_t8 = &page_as_t8;
-    fb.alpha_plane[0] = fb.dpb;
     fb.alpha_plane[1] = memory_view{memory.words(), 32 * layout.z(), fbw, false};
-    fb.alpha_plane[2] = fb.out;
     std::vector<gs::mem::row_column_address> addresses;
-    addresses.reserve(8);
-    for (memory_view* v : {&fb.dpb, &fb.lab, &fb.diff, &fb.out, &fb.zb.memory, &fb.alpha_plane[0], &fb.alpha_plane[1],
-                           &fb.alpha_plane[2]})
+    addresses.reserve(6);
+    for (memory_view* v : {&fb.dpb, &fb.lab, &fb.diff, &fb.out, &fb.zb.memory, &fb.alpha_plane[1]})
       v->address = &addresses.emplace_back(v->layout(), v->bp, v->bw, 64 * fbw,
                                            32 * static_cast<std::uint32_t>((ps.height + 31) / 32));
+    fb.alpha_plane[0] = fb.dpb, fb.alpha_plane[2] = fb.out;  // with their address tables
     render_options one = o;
     // Draw order is the model's: the z-trick clears; the one-buffer variant's alpha plane in the Z
     // buffer's words, whose pixels are not the Z buffer's (another band's depth tests read them).
