@@ -27,7 +27,13 @@ tex0 = 1024 | 1 << 14 | 0x13 << 20 | 3 << 26 | 3 << 30 | 1 << 35 | 2048 << 37 | 
 textured = env + [(0x06, tex0), (0x14, 1 << 5), (0x08, 1 | 1 << 2), (0, 6 | 1 << 4 | 1 << 8 | 1 << 6), (0x42, 1 << 2 | 1 << 6),
                   (3, 8 | 8 << 16), (5, xyz(0, 0)), (3, 136 | 136 << 16), (5, xyz(128, 64))]
 fog = env + [(0, 6 | 1 << 5), (5, xyz(0, 0)), (5, xyz(32, 32))]
-for name, w in [('draw_sprite', sprite), ('draw_strip_xyz3', tri), ('draw_textured_clut', textured), ('draw_fog_skipped', fog)]:
+# Perspective texturing (PRIM.FST = 0, Q = 1, 1/2, 1/4 at the three vertices; gs_arith/perspective.hpp).
+f32 = lambda x: struct.unpack('<I', struct.pack('<f', x))[0]
+stq = lambda s, t, q: [(1, 0x80808080 | f32(q) << 32), (2, f32(s * q) | f32(t * q) << 32)]
+perspective = env + [(0x06, tex0), (0x14, 1 << 9), (0x08, 1 | 1 << 2), (0, 3 | 1 << 4)] + \
+    stq(0.1, 0.1, 1.0) + [(5, xyz(0, 0))] + stq(0.9, 0.2, 0.5) + [(5, xyz(900, 40))] + stq(0.3, 0.9, 0.25) + [(5, xyz(60, 900))]
+for name, w in [('draw_sprite', sprite), ('draw_strip_xyz3', tri), ('draw_textured_clut', textured), ('draw_fog_skipped', fog),
+                ('draw_perspective', perspective)]:
     open('fuzz/corpus/dump_reader/' + name + '.gs', 'wb').write(dump(ad(w)))
 # The reader's PCSX2 leniencies (issue 29), one seed each from the draw_sprite dump: the last packet
 # (the vsync) cut, a transfer path byte 4, a screenshot size that is not w x h x 4, an A+D write to 0x7F.

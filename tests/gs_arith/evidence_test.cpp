@@ -144,11 +144,13 @@ TEST(Profiles, Pcsx2SwDiffersFromTheDefaultsWhereTheSourcesOutnumberItAndUnknown
   gs::model_options o;
   ASSERT_FALSE(gs::apply_profile(o, "pcsx2-sw").has_value());
   // The defaults are the best-evidenced values (docs/evidence.md): PCSX2 SW is outvoted on the bilinear
-  // sum and the triangle set-up, and section 3.4's buffer keeps the paper's reading.
+  // sum, the triangle set-up and the S/Q conversion, and section 3.4's buffer keeps the paper's reading.
   gs::model_options expected;
   expected.tex_buffer = gs::texture_buffer::draw_snapshot;
   expected.bilinear = gs::bilinear_mode::lerp16_4;
   expected.setup = gs::gouraud_setup::pcsx2_rows_8;
+  expected.stq_range = gs::stq_range_mode::x86_int32;  // a tie kept for the value with a hardware report
+  expected.stq_convert = gs::stq_convert_mode::trunc_16_16;
   EXPECT_EQ(o, expected);
   const auto err = gs::apply_profile(o, "mame");
   ASSERT_TRUE(err.has_value());

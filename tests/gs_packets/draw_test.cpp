@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <bit>
+#include <cmath>
 #include <cstdlib>
 #include <cstdint>
 #include <utility>
@@ -352,6 +354,69 @@ TEST(Draw, TexturedSpriteReadsPsmt8ThroughTheClutLoadedOnTex0) {
   EXPECT_EQ(f.count_nonzero(), 256);
 }
 
+// Perspective texturing (FST = 0, Q = 1/w differing per vertex) against the projective map written
+// another way: at a pixel the texel is floor(64 · Σλ_i·S_i / Σλ_i·Q_i), the barycentrics λ_i in double
+// from the pixel's position. The 64×64 PSMCT32 texture holds (u, v) in each texel, read with DECAL and
+// nearest; pixels within 1/1000 of a texel of a boundary are left to the float rounding the model
+// chooses (perspective.hpp) and counted.
+TEST(Draw, PerspectiveTriangleReadsTheTexelOfTheProjectiveMap) {
+  fixture f;
+  packet_builder pb;
+  const writes upload{{0x50, std::uint64_t{2048} << 32 | std::uint64_t{1} << 48},  // BITBLTBUF: DBP 2048, DBW 1
+                      {0x51, 0},
+                      {0x52, 64 | std::uint64_t{64} << 32},
+                      {0x53, 0}};
+  pb.ad(upload);
+  std::vector<std::uint8_t> words;
+  for (unsigned v = 0; v < 64; ++v)
+    for (unsigned u = 0; u < 64; ++u)
+      for (const unsigned b : {u, v, 0u, 0x80u}) words.push_back(static_cast<std::uint8_t>(b));
+  pb.image(words);
+  // TEX0: TBP0 2048, TBW 1, PSMCT32, TW = TH = 6, TCC = RGBA, TFX = DECAL; TEX1 = LCM 1, K 0: magnified,
+  // nearest; CLAMP_1 = 0: REPEAT.
+  const std::uint64_t tex0 = 2048 | 1 << 14 | std::uint64_t{6} << 26 | std::uint64_t{6} << 30 | std::uint64_t{1} << 34 |
+                             std::uint64_t{1} << 35;
+  struct corner {
+    double x, y, w, s, t;
+  };
+  const corner c[3] = {{2.0, 2.0, 1.0, 0.05, 0.10}, {61.0, 6.5, 2.5, 0.95, 0.20}, {9.25, 60.0, 4.0, 0.30, 0.90}};
+  auto bits = [](double v) { return std::bit_cast<std::uint32_t>(static_cast<float>(v)); };
+  writes draw{{TEX0_1, tex0}, {TEX1_1, 1}, {PRIM, TRIANGLE | TME}};
+  for (const corner& k : c) {
+    draw.push_back({RGBAQ, 0x80808080 | std::uint64_t{bits(1.0 / k.w)} << 32});
+    draw.push_back({0x02, bits(k.s / k.w) | std::uint64_t{bits(k.t / k.w)} << 32});  // ST
+    draw.push_back({XYZ2, xyz(static_cast<std::uint64_t>(k.x * 16), static_cast<std::uint64_t>(k.y * 16))});
+  }
+  pb.ad(draw, true);
+  const auto bytes = pb.bytes();
+  for (const gif_event& e : decode_gif(bytes)) f.it.apply(e, 16u * e.offset);
+  ASSERT_TRUE(f.it.unmodelled_features().empty());
+  const double area = (c[1].x - c[0].x) * (c[2].y - c[0].y) - (c[1].y - c[0].y) * (c[2].x - c[0].x);
+  int checked = 0, near_boundary = 0;
+  for (int y = 0; y < 64; ++y)
+    for (int x = 0; x < 64; ++x) {
+      const std::uint32_t got = f.px(x, y);
+      double l[3];
+      for (int i = 0; i < 3; ++i) {
+        const corner &a = c[(i + 1) % 3], &b = c[(i + 2) % 3];
+        l[i] = ((b.x - a.x) * (y - a.y) - (b.y - a.y) * (x - a.x)) / area;
+      }
+      if (got == 0) continue;  // not covered (the fill rule is tested above)
+      double S = 0, T = 0, Q = 0;
+      for (int i = 0; i < 3; ++i) S += l[i] * c[i].s / c[i].w, T += l[i] * c[i].t / c[i].w, Q += l[i] / c[i].w;
+      const double u = 64.0 * S / Q, v = 64.0 * T / Q;
+      if (std::fabs(u - std::round(u)) < 1e-3 || std::fabs(v - std::round(v)) < 1e-3) {
+        ++near_boundary;
+        continue;
+      }
+      const auto eu = static_cast<std::uint32_t>(std::floor(u)), ev = static_cast<std::uint32_t>(std::floor(v));
+      ASSERT_EQ(got, 0x80000000u | ev << 8 | eu) << x << "," << y << " u " << u << " v " << v;
+      ++checked;
+    }
+  EXPECT_GT(checked, 1300);  // of the triangle's ~1 400 pixels
+  EXPECT_LT(near_boundary, checked / 100);
+}
+
 TEST(Draw, Psmt8ThroughASixteenBitClutIsWidenedWithTexa) {
   fixture f;
   packet_builder pb;
@@ -476,6 +541,25 @@ TEST(Draw, UnmodelledFeaturesAreNamedAndSkipped) {
         {XYZ2, xyz(0, 0)},
         {XYZ2, xyz(32, 32)}},
        "SPRITE: PRIM.FST = 0 with S/Q or T/Q not a finite number (Q = 0, or a NaN / infinite S, T or Q)"},
+      // Q = 1 and Q = -1 on one triangle: Q is 0 between them, and the sources treat negative Q apart.
+      {{{TEX0_1, std::uint64_t{4} << 26 | std::uint64_t{4} << 30},
+        {TEX1_1, 1},
+        {PRIM, TRIANGLE | TME},
+        {RGBAQ, 0x80808080 | std::uint64_t{0x3F800000} << 32},
+        {XYZ2, xyz(0, 0)},
+        {XYZ2, xyz(32, 0)},
+        {RGBAQ, 0x80808080 | std::uint64_t{0xBF800000} << 32},
+        {XYZ2, xyz(0, 32)}},
+       "TRIANGLE: PRIM.FST = 0 with Q of both signs"},
+      // A sprite's two Q differ: which one the GS takes is not known (PCSX2 takes the second's).
+      {{{TEX0_1, std::uint64_t{4} << 26 | std::uint64_t{4} << 30},
+        {TEX1_1, 1},
+        {PRIM, SPRITE | TME},
+        {RGBAQ, 0x80808080 | std::uint64_t{0x3F800000} << 32},
+        {XYZ2, xyz(0, 0)},
+        {RGBAQ, 0x80808080 | std::uint64_t{0x40000000} << 32},
+        {XYZ2, xyz(32, 32)}},
+       "SPRITE: PRIM.FST = 0 on a SPRITE with differing Q"},
   };
   for (const named& c : cases) {
     mem::local_memory m;

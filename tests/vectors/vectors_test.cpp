@@ -78,6 +78,20 @@ TEST(Vectors, HandWrittenLinesFromTheRecordingsAndTheDigest) {
   EXPECT_EQ(clamp.result.passed, 2u);
   EXPECT_EQ(clamp.result.failed, 0u) << clamp.report;
   EXPECT_EQ(clamp.report, "2 passed, 0 failed\n");
+  // stq: 1.0 / 1.0 on a 16-texel texture is 16 texels = 0x100 sixteenths; 1.5 / 0.5 with TW = 0 is 3 texels
+  // (0x30); -2^-8 / 1 (3b800000 negated) truncates to 0 under the default, floors to -1 under
+  // floor_1_64; 3000 saturates at 2047 texels (0x7ff0) unless stq_range = x86_int32 (0xbb80).
+  const auto stq = ver(header("stq") + "3f800000 3f800000 4 => 00000100\n3fc00000 3f000000 0 => 00000030\n" +
+                       "bb800000 3f800000 0 => 00000000\n453b8000 3f800000 0 => 00007ff0\n");
+  EXPECT_EQ(stq.result.failed, 0u) << stq.report;
+  EXPECT_EQ(stq.result.passed, 4u);
+  gs::model_options other;
+  other.stq_convert = gs::stq_convert_mode::floor_1_64;
+  other.stq_range = gs::stq_range_mode::x86_int32;
+  const auto stq_other = ver(v::header_line(*v::find_unit("stq"), other) + "\nbb800000 3f800000 0 => ffffffff\n" +
+                             "453b8000 3f800000 0 => 0000bb80\n");
+  EXPECT_EQ(stq_other.result.failed, 0u) << stq_other.report;
+  EXPECT_EQ(stq_other.result.passed, 2u);
 }
 
 TEST(Vectors, EveryUnitRoundTripsAtLevels1And2) {

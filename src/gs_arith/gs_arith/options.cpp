@@ -40,6 +40,14 @@ const std::vector<option_info>& option_catalogue() {
        "per_pixel: DobieStation 3a23544b render_triangle2, Play! (float) (2 sources); plane_steps: a fixed-point DDA "
        "with 8.7 steps, no source; pcsx2_rows_4/8: PCSX2 SW DrawTriangleSection + SetupPrim (1); per_pixel_level: "
        "parallel-gs ubershader.comp (1). No recording here."},
+      {"stq_range",
+       {"saturate_2047", "x86_int32"},
+       "saturate_2047: parallel-gs sample_texture, PCSX2 PR #12201 (reported HW tests) (2 sources); x86_int32: PCSX2 "
+       "SW cvttps2dq, DobieStation (int) cast (2, inference from their code). No recording here."},
+      {"stq_convert",
+       {"truncate", "floor_1_64", "trunc_16_16"},
+       "truncate: DobieStation render_half_triangle, PCSX2 PR #14078 HW tests with Q = 1 (2 sources); floor_1_64: "
+       "parallel-gs (1); trunc_16_16: PCSX2 SW SampleTexture (1). No recording here with Q other than 1."},
   };
   return rows;
 }
@@ -96,6 +104,12 @@ std::optional<std::string> set_option(model_options& o, std::string_view name, s
     ok = pick(o.tex_buffer, value, "quarter_page", texture_buffer::quarter_page, "per_fragment",
               texture_buffer::per_fragment) ||
          pick(o.tex_buffer, value, "page", texture_buffer::page, "draw_snapshot", texture_buffer::draw_snapshot);
+  else if (name == "stq_range")
+    ok = pick(o.stq_range, value, "saturate_2047", stq_range_mode::saturate_2047, "x86_int32",
+              stq_range_mode::x86_int32);
+  else if (name == "stq_convert")
+    ok = pick(o.stq_convert, value, "truncate", stq_convert_mode::truncate, "floor_1_64", stq_convert_mode::floor_1_64,
+              "trunc_16_16", stq_convert_mode::trunc_16_16);
   else if (name == "gouraud_setup") {
     for (int k = 0; k < static_cast<int>(std::size(setup_names)); ++k)
       if (value == setup_names[k]) o.setup = static_cast<gouraud_setup>(k), ok = true;
@@ -134,6 +148,11 @@ std::string_view option_value(const model_options& o, std::string_view name) {
     return names[static_cast<int>(o.tex_buffer)];
   }
   if (name == "gouraud_setup") return setup_names[static_cast<int>(o.setup)];
+  if (name == "stq_range") return o.stq_range == stq_range_mode::saturate_2047 ? "saturate_2047" : "x86_int32";
+  if (name == "stq_convert") {
+    constexpr std::string_view names[] = {"truncate", "floor_1_64", "trunc_16_16"};
+    return names[static_cast<int>(o.stq_convert)];
+  }
   return {};
 }
 

@@ -81,6 +81,19 @@ enum class rgb_only_targets { thirty_two_bit_only, all_formats };
 //   `GSRendererSW::SharedData::UpdateSource` converts the source texture before drawing).
 enum class texture_buffer { quarter_page, per_fragment, page, draw_snapshot };
 
+// Perspective texturing (PRIM.FST = 0, gs_arith/perspective.hpp; docs/evidence.md R10, R11 and
+// docs/stq-evidence.md). No recording here has a Q other than 1.
+// stq_range: S/Q (and T/Q) before scaling to texels. saturate_2047: clamped to ±2047 (default:
+// parallel-gs ubershader.comp sample_texture; PCSX2 PR #12201's report of hardware tests: 2 sources).
+// x86_int32: not clamped; a coordinate outside int32 at the conversion's scale becomes 0x80000000
+// (PCSX2 SW cvttps2dq at 16.16; DobieStation's (int) cast on x86).
+enum class stq_range_mode { saturate_2047, x86_int32 };
+// stq_convert: texels to 12.4. truncate: toward zero at 1/16 texel (default: DobieStation gsthread.cpp
+// render_half_triangle; PCSX2 PR #14078's hardware tests, Q = 1 only: 2 sources). floor_1_64:
+// floor(texels·16 + 1/64) (parallel-gs sample_texture). trunc_16_16: toward zero at 1/65536 texel,
+// then floored to 1/16 (PCSX2 SW SampleTexture: cvttps2dq, then the texel and 4-bit weight by shifts).
+enum class stq_convert_mode { truncate, floor_1_64, trunc_16_16 };
+
 struct model_options {
   tfx_rounding tfx = tfx_rounding::floor;
   gouraud_fraction gouraud = gouraud_fraction::keep_fraction;
@@ -91,6 +104,8 @@ struct model_options {
   bilinear_mode bilinear = bilinear_mode::weighted_sum_4;
   rgb_only_targets rgb_only = rgb_only_targets::thirty_two_bit_only;
   texture_buffer tex_buffer = texture_buffer::quarter_page;
+  stq_range_mode stq_range = stq_range_mode::saturate_2047;
+  stq_convert_mode stq_convert = stq_convert_mode::truncate;
 
   friend constexpr bool operator==(const model_options&, const model_options&) = default;
 };

@@ -16,7 +16,9 @@ const std::vector<profile>& profiles() {
         {"bilinear", "lerp16_4"},
         {"rgb_only_targets", "thirty_two_bit_only"},
         {"texture_buffer", "draw_snapshot"},
-        {"gouraud_setup", "pcsx2_rows_8"}}},
+        {"gouraud_setup", "pcsx2_rows_8"},
+        {"stq_range", "x86_int32"},
+        {"stq_convert", "trunc_16_16"}}},
       {"dobiestation",
        "DobieStation src/core/gsthread.cpp (interpreter: tex_lookup, draw_pixel)",
        {{"tfx_rounding", "floor"},
@@ -27,7 +29,9 @@ const std::vector<profile>& profiles() {
         {"bilinear", "weighted_sum_4"},
         {"rgb_only_targets", "all_formats"},
         {"texture_buffer", "per_fragment"},
-        {"gouraud_setup", "per_pixel"}}},
+        {"gouraud_setup", "per_pixel"},
+        {"stq_range", "x86_int32"},
+        {"stq_convert", "truncate"}}},
       {"play",
        "Play! Source/gs/GSH_Vulkan (GSH_VulkanDrawDesktop.cpp fragment shader, GSH_VulkanDrawUtils.cpp)",
        {{"tfx_rounding", "truncate"},
@@ -38,7 +42,9 @@ const std::vector<profile>& profiles() {
         {"bilinear", "weighted_sum_4"},
         {"rgb_only_targets", "all_formats"},
         {"texture_buffer", "quarter_page"},
-        {"gouraud_setup", "per_pixel"}}},
+        {"gouraud_setup", "per_pixel"},
+        {"stq_range", "saturate_2047"},
+        {"stq_convert", "truncate"}}},
       {"parallel-gs",
        "parallel-gs gs/shaders/ubershader.comp (compute_combined_color, alpha_blend, shade_resolve), "
        "triangle_setup.comp; rows not read keep the model default",
@@ -50,7 +56,9 @@ const std::vector<profile>& profiles() {
         {"bilinear", "weighted_sum_4"},
         {"rgb_only_targets", "thirty_two_bit_only"},
         {"texture_buffer", "quarter_page"},
-        {"gouraud_setup", "per_pixel_level"}}},
+        {"gouraud_setup", "per_pixel_level"},
+        {"stq_range", "saturate_2047"},
+        {"stq_convert", "floor_1_64"}}},
   };
   return rows;
 }

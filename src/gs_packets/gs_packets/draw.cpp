@@ -21,6 +21,7 @@
 #include "gs_arith/bilinear.hpp"
 #include "gs_arith/clut.hpp"
 #include "gs_arith/depth_test.hpp"
+#include "gs_arith/perspective.hpp"
 #include "gs_arith/pixel_pipeline.hpp"
 #include "gs_arith/rasteriser.hpp"
 #include "gs_arith/registers.hpp"
@@ -53,8 +54,9 @@ struct decoded {
 
 float as_float(std::uint32_t b) noexcept { return std::bit_cast<float>(b); }
 
-// The TEX1 filter of the primitive (one LOD for the whole primitive: LCM = 1, or Q = 1 with FST = 1,
-// or one Q for every vertex), or what is not modelled.
+// The TEX1 filter of the primitive, or what is not modelled. The LOD is K with LCM = 1 or FST = 1, else
+// K + log2(1/|Q|)·2^L (ps2tek TEX1), evaluated at every vertex: Q over a triangle lies between its
+// vertices' values, so one filter for the vertices is the filter of every pixel.
 std::string texture_filter(const draw_registers& r, const decoded& d, std::span<const vertex> v, bool& linear) {
   const std::uint64_t t = r.TEX1;
   namespace T = R::TEX1;
@@ -64,17 +66,23 @@ std::string texture_filter(const draw_registers& r, const decoded& d, std::span<
   const int k_sign = 32 - T::K.width;
   const auto k16 = static_cast<std::int32_t>(R::decode_as(T::K, t) << k_sign) >> k_sign;  // signed 7.4
   if (mmin > 5) return "TEX1.MMIN = " + std::to_string(mmin) + " (reserved)";
-  double lod = k16 / 16.0;
-  if (!lcm && !d.regs.PRIM.FST) {
-    const float q = as_float(v[0].Q);
-    if (!(std::fabs(q) > 0.0f)) return "TEX1.LCM = 0 with Q = 0 (LOD undefined)";
-    lod += std::log2(1.0 / std::fabs(static_cast<double>(q))) * static_cast<double>(1u << l);
+  std::optional<bool> first;
+  for (const vertex& x : v) {
+    double lod = k16 / 16.0;
+    if (!lcm && !d.regs.PRIM.FST) {
+      const float q = as_float(x.Q);
+      if (!(std::fabs(q) > 0.0f)) return "TEX1.LCM = 0 with Q = 0 (LOD undefined)";
+      lod += std::log2(1.0 / std::fabs(static_cast<double>(q))) * static_cast<double>(1u << l);
+    }
+    const bool magnify = lod <= 0.0;
+    const unsigned f = magnify ? mmag : mmin;
+    if (!magnify && mmin >= 2 && mxl > 0)
+      return "mip-mapping (TEX1.MMIN = " + std::to_string(mmin) + ", MXL = " + std::to_string(mxl) + ")";
+    linear = f == 1 || f == 4 || f == 5;  // LINEAR, LINEAR_MIPMAP_NEAREST / _LINEAR at the base level
+    if (first && *first != linear)
+      return "TEX1.LCM = 0 with Q whose LOD changes the filter (MMAG / MMIN) within the primitive";
+    first = linear;
   }
-  const bool magnify = lod <= 0.0;
-  const unsigned f = magnify ? mmag : mmin;
-  if (!magnify && mmin >= 2 && mxl > 0)
-    return "mip-mapping (TEX1.MMIN = " + std::to_string(mmin) + ", MXL = " + std::to_string(mxl) + ")";
-  linear = f == 1 || f == 4 || f == 5;  // LINEAR, LINEAR_MIPMAP_NEAREST / _LINEAR at the base level
   return {};
 }
 
@@ -133,12 +141,16 @@ std::string decode(const draw_registers& r, std::span<const vertex> v, decoded& 
   if (!p.TME) return {};
   if (!p.FST)
     for (const vertex& x : v) {
-      if (x.Q != v[0].Q) return "PRIM.FST = 0 with differing Q (perspective-correct ST/Q texturing)";
+      // A sprite's Q: PCSX2 takes the second vertex's (GSRendererSW ConvertVertexBuffer), unconfirmed.
+      if (p.PRIM == prim_type::SPRITE && x.Q != v[0].Q) return "PRIM.FST = 0 on a SPRITE with differing Q";
       // S/Q and T/Q must be numbers: the GS's own float unit has no NaN or infinity (a NaN, an
       // infinite S, T or Q, or Q = 0 would need that unit's rules, which the model lacks).
       const double q = as_float(x.Q), s = as_float(x.S), t = as_float(x.T);
       if (!std::isfinite(s / q) || !std::isfinite(t / q))
         return "PRIM.FST = 0 with S/Q or T/Q not a finite number (Q = 0, or a NaN / infinite S, T or Q)";
+      // Q of both signs: zero somewhere inside, and the sources disagree on negative Q (stq-evidence.md).
+      if (std::signbit(q) != std::signbit(static_cast<double>(as_float(v[0].Q))))
+        return "PRIM.FST = 0 with Q of both signs";
     }
   if (const auto e = texture_filter(r, d, v, d.linear); !e.empty()) return ctx + e;
   return {};
@@ -173,22 +185,33 @@ rgba8 texel_colour(const decoded& d, const clut_buffer& clut, std::uint32_t t) {
   }
 }
 
-// 12.4 texel coordinates of a vertex: UV with FST = 1, else S/Q·2^TW and T/Q·2^TH (one Q per primitive,
-// so this is exact affine texturing; the conversion floors, a model choice).
-std::array<std::int32_t, 2> texel_position(const decoded& d, const vertex& x) {
+// The vertex's S, T, Q as floats.
+gs::stq stq_of(const vertex& x) { return {as_float(x.S), as_float(x.T), as_float(x.Q)}; }
+
+// Whether the primitive is drawn with S/Q, T/Q per pixel: FST = 0 and Q differing between vertices.
+bool perspective(const decoded& d, std::span<const vertex> v) {
+  return d.regs.PRIM.TME && !d.regs.PRIM.FST &&
+         std::any_of(v.begin(), v.end(), [&](const vertex& x) { return x.Q != v[0].Q; });
+}
+
+// 12.4 texel coordinates of a vertex: UV with FST = 1, else S/Q·2^TW and T/Q·2^TH converted as every
+// perspective pixel is (gs::stq_texel: stq_range, stq_convert). With one Q for the primitive the
+// coordinates are divided per vertex and interpolated as UV are (PCSX2 SW ConvertVertexBuffer's
+// `q_div` path; parallel-gs triangle_setup.comp with a fixed LOD: 2 sources, a model choice).
+std::array<std::int32_t, 2> texel_position(const decoded& d, const vertex& x, const model_options& o) {
   if (!d.regs.PRIM.TME) return {0, 0};  // no texture: the coordinates are not used (nor checked)
   if (d.regs.PRIM.FST) {
     constexpr auto u_max = static_cast<std::int32_t>(R::max_value(R::UV::U));
     constexpr auto v_max = static_cast<std::int32_t>(R::max_value(R::UV::V));
     return {x.U & u_max, x.V & v_max};
   }
-  const double q = as_float(x.Q);
-  auto fix = [&](std::uint32_t st, unsigned size_log2) {
-    const double u = static_cast<double>(as_float(st)) / q * 16.0 * static_cast<double>(1u << size_log2);
-    return static_cast<std::int32_t>(std::clamp(std::floor(u), -1048576.0, 1048576.0));
+  // Clamped to the UV planes' range (MODEL-PLANE-16, rasteriser.hpp), as FST = 1's 14-bit UV always are.
+  const gs::stq c = stq_of(x);
+  auto fix = [&](float st, unsigned size_log2) {
+    return std::clamp(gs::stq_texel(st, c.Q, size_log2, o), -(1 << 20), 1 << 20);
   };
-  return {fix(x.S, static_cast<unsigned>(d.regs.TEX0_1.TW.value())),
-          fix(x.T, static_cast<unsigned>(d.regs.TEX0_1.TH.value()))};
+  return {fix(c.S, static_cast<unsigned>(d.regs.TEX0_1.TW.value())),
+          fix(c.T, static_cast<unsigned>(d.regs.TEX0_1.TH.value()))};
 }
 
 }  // namespace
@@ -242,7 +265,7 @@ std::uint64_t draw_primitive(mem::local_memory& m, const draw_registers& r, cons
   auto window = [&](const vertex& x) { return xy124{x.X - d.ofx, x.Y - d.ofy}; };
   if (p.PRIM == prim_type::SPRITE) {
     const xy124 a = window(v[0]), b = window(v[1]);
-    const auto ta = texel_position(d, v[0]), tb2 = texel_position(d, v[1]);
+    const auto ta = texel_position(d, v[0], o), tb2 = texel_position(d, v[1], o);
     const fragment_colour cf = fragment_colour::flat(v[1].colour);  // a sprite takes its second vertex's colour
     const xy124 lo{std::min(a.x, b.x), std::min(a.y, b.y)}, hi{std::max(a.x, b.x), std::max(a.y, b.y)};
     if (lo.x == hi.x || lo.y == hi.y) return 0;
@@ -255,9 +278,12 @@ std::uint64_t draw_primitive(mem::local_memory& m, const draw_registers& r, cons
   }
   const triangle_setup t = setup_triangle({window(v[0]), window(v[1]), window(v[2])});
   if (t.area2 == 0) return 0;
+  const bool per_pixel_stq = perspective(d, v);
   std::array<std::array<std::int32_t, 2>, 3> uv{};
-  if (p.TME)
-    for (std::size_t k = 0; k < 3; ++k) uv[k] = texel_position(d, v[k]);
+  if (p.TME && !per_pixel_stq)
+    for (std::size_t k = 0; k < 3; ++k) uv[k] = texel_position(d, v[k], o);
+  const gs::stq_triangle stq{t.v, t.area2, {stq_of(v[0]), stq_of(v[1]), stq_of(v[2])}};
+  const auto TW = static_cast<unsigned>(tex.TW.value()), TH = static_cast<unsigned>(tex.TH.value());
   const triangle_attributes a =
       setup_attributes(t, {v[0].colour, v[1].colour, v[2].colour}, uv, d.ofx >> 4, d.ofy >> 4, o.setup, d.clip.x0);
   // Z as a plane (MODEL-PLANE-16, rasteriser.hpp); Z above 24 bits through Z / 256 (the plane's
@@ -270,8 +296,9 @@ std::uint64_t draw_primitive(mem::local_memory& m, const draw_registers& r, cons
                               0, 0xFFFFFF);
   const fragment_colour flat = flat_shading(v[2].colour);  // IIP = 0: the last vertex's colour
   rasterise_triangle(t, d.clip, [&](int x, int y) {
-    shade(x, y, p.IIP ? a.colour_at(x, y) : flat, a.u.at(x, y), a.v.at(x, y),
-          static_cast<std::uint32_t>(pz.at(x, y)) << zs);
+    const auto uv16 =
+        per_pixel_stq ? gs::perspective_texel(stq, x, y, TW, TH, o) : std::array{a.u.at(x, y), a.v.at(x, y)};
+    shade(x, y, p.IIP ? a.colour_at(x, y) : flat, uv16[0], uv16[1], static_cast<std::uint32_t>(pz.at(x, y)) << zs);
   });
   return pixels;
 }

@@ -3,8 +3,11 @@
 #include "vectors/units.hpp"
 
 #include <algorithm>
+#include <bit>
+#include <cmath>
 #include <string>
 
+#include "gs_arith/perspective.hpp"
 #include "vectors/fields.hpp"
 
 namespace gsdot3::vectors {
@@ -145,6 +148,43 @@ void colclamp_random(random& rng, const case_sink& emit) {
 void colclamp_all(const case_sink& emit) {
   for (std::uint64_t clamp = 0; clamp < 2; ++clamp)
     for (std::uint64_t v = 0; v < 0x800; ++v) emit({clamp, v, (v + 683) & 0x7FF, (v + 1366) & 0x7FF});
+}
+
+// ---- stq -------------------------------------------------------------------------------------------
+// S and Q as float32 bit patterns, TW the texture's log2 width; out: the 12.4 texel coordinate
+// (gs::stq_texel: S/Q in float32, stq_range, stq_convert) as a 32-bit two's-complement word.
+float f32_field(std::uint64_t v, std::string_view name) {
+  check_max(v, 0xFFFFFFFF, name);
+  return std::bit_cast<float>(static_cast<std::uint32_t>(v));
+}
+values stq_eval(const values& in, const gs::model_options& o) {
+  const float s = f32_field(in[0], "S"), q = f32_field(in[1], "Q");
+  check_max(in[2], 10, "TW");
+  if (!std::isfinite(static_cast<double>(s) / static_cast<double>(q)))
+    throw domain_error("S/Q is not a finite number (Q = 0, or a NaN / infinite S or Q): not modelled");
+  return {static_cast<std::uint32_t>(gs::stq_texel(s, q, static_cast<unsigned>(in[2]), o))};
+}
+std::uint64_t f32_bits(float f) { return std::bit_cast<std::uint32_t>(f); }
+void stq_level1(const case_sink& emit) {
+  // S/Q a few ulps either side of every sixteenth of a texel in -4..4 texels, Q = 1, 1/2, 3, -1; and S/Q
+  // about the ±2047 limit.
+  for (std::uint64_t tw : {0u, 4u, 10u})
+    for (int sixteenth = -64; sixteenth <= 64; sixteenth += 7)
+      for (const float q : {1.0f, 0.5f, 3.0f, -1.0f}) {
+        float x = std::ldexp(static_cast<float>(sixteenth), -4 - static_cast<int>(tw));
+        x = std::nextafter(std::nextafter(x, -1e9f), -1e9f);
+        for (int k = 0; k < 5; ++k, x = std::nextafter(x, 1e9f)) emit({f32_bits(x * q), f32_bits(q), tw});
+      }
+  for (const float x : {2046.9f, 2047.0f, 2047.5f, 40000.0f, -2047.5f, -1.0e9f})
+    for (std::uint64_t tw : {0u, 10u}) emit({f32_bits(x), f32_bits(1.0f), tw});
+}
+void stq_random(random& rng, const case_sink& emit) {
+  // S of any sign and magnitude 2^-20..2^20, Q of either sign 2^-8..2^8.
+  auto magnitude = [&](int lo, int hi) {
+    const float m = 1.0f + static_cast<float>(rng.below(1u << 23)) / 8388608.0f;
+    return std::ldexp(rng.coin() ? m : -m, lo + static_cast<int>(rng.below(static_cast<std::uint64_t>(hi - lo + 1))));
+  };
+  emit({f32_bits(magnitude(-20, 20)), f32_bits(magnitude(-8, 8)), rng.below(11)});
 }
 
 // ---- frame -----------------------------------------------------------------------------------------
@@ -298,6 +338,15 @@ const std::vector<unit>& units() {
        frame_random,
        nullptr,
        "8 formats x FBA x FBMSK x C x old (2^100 cases) is not practical; level 2 samples it"},
+      {"stq",
+       "perspective texturing: S, Q (float32 bits) and TW -> the 12.4 texel coordinate of S/Q (stq_range, stq_convert)",
+       {{"S", 8}, {"Q", 8}, {"TW", 1}},
+       {{"U", 8}},
+       stq_eval,
+       stq_level1,
+       stq_random,
+       nullptr,
+       "S x Q x TW (2^64 x 11 cases) is not practical; level 2 samples it"},
       {"pixel",
        "one pixel through the whole pipeline (gs::pixel_pipeline): registers, Cf (8.7), texel, dst, X, Y -> new word",
        pixel_inputs(),
