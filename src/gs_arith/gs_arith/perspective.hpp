@@ -57,4 +57,22 @@ inline std::array<std::int32_t, 2> perspective_texel(const stq_triangle& t, int 
   return {stq_texel(p.S, p.Q, TW, o), stq_texel(p.T, p.Q, TH, o)};
 }
 
+// The 12.4 texel coordinates a triangle drawn with FST = 0 samples, the one rule for the packet
+// interpreter (gs_packets/draw.cpp) and the renderer (pipeline): per pixel (perspective_texel) when Q
+// differs between the vertices; with one Q, S/Q and T/Q converted per vertex (stq_texel, clamped to the
+// UV planes' ±2^20, MODEL-PLANE-16) and interpolated as UV are (make_plane): PCSX2 SW
+// ConvertVertexBuffer's `q_div` path and parallel-gs triangle_setup.comp with a fixed LOD (2 sources),
+// a model choice.
+struct stq_sampler {
+  stq_triangle t;
+  unsigned TW = 0, TH = 0;
+  bool per_pixel = false;
+  plane u, v;
+  std::array<std::int32_t, 2> at(int x, int y, const model_options& o) const {
+    return per_pixel ? perspective_texel(t, x, y, TW, TH, o) : std::array{u.at(x, y), v.at(x, y)};
+  }
+};
+// `t.area2` must be nonzero.
+stq_sampler make_stq_sampler(const stq_triangle& t, unsigned TW, unsigned TH, const model_options& o);
+
 }  // namespace gs

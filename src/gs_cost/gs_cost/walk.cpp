@@ -5,9 +5,11 @@
 #include <array>
 #include <bit>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
+#include "gs_arith/perspective.hpp"
 #include "gs_arith/rasteriser.hpp"
 #include "gs_memory/address.hpp"
 #include "gs_memory/memory_registers.hpp"
@@ -26,18 +28,19 @@ mem::psm known_psm(std::uint32_t p) noexcept {
   return mem::name_of(q) == "?" ? mem::psm::PSMCT32 : q;
 }
 
-// A texel coordinate in 12.4 for a vertex (UV with FST = 1, else S/Q · 2^TW, as draw.cpp does).
+// A texel coordinate in 12.4 for a vertex: UV with FST = 1, else S/Q · 2^TW converted as the packet
+// interpreter does (gs::stq_texel under the default model options, clamped to the UV planes' range).
 std::array<std::int32_t, 2> texel_124(const packets::vertex& x, bool fst, std::uint32_t tw, std::uint32_t th) {
   if (fst) {
     constexpr auto u_max = static_cast<std::int32_t>(R::max_value(R::UV::U));
     constexpr auto v_max = static_cast<std::int32_t>(R::max_value(R::UV::V));
     return {x.U & u_max, x.V & v_max};
   }
-  const double q = std::bit_cast<float>(x.Q);
+  const float q = std::bit_cast<float>(x.Q);
   auto fix = [&](std::uint32_t st, std::uint32_t size_log2) {
-    const double u =
-        static_cast<double>(std::bit_cast<float>(st)) / q * 16.0 * std::ldexp(1.0, static_cast<int>(size_log2));
-    return std::isfinite(u) ? static_cast<std::int32_t>(std::clamp(std::floor(u), -1048576.0, 1048576.0)) : 0;
+    const float s = std::bit_cast<float>(st);
+    if (!std::isfinite(static_cast<double>(s) / static_cast<double>(q))) return 0;
+    return std::clamp(gs::stq_texel(s, q, size_log2, {}), -(1 << 20), 1 << 20);
   };
   return {fix(x.S, tw), fix(x.T, th)};
 }
@@ -96,6 +99,7 @@ walk_counts walk_primitive(const packets::draw_registers& r, std::span<const pac
   };
   // Texel planes (12.4) for textured primitives.
   plane pu{}, pv{};
+  std::optional<gs::stq_sampler> stq_at;
   const std::uint32_t tw = R::decode_as(R::TEX0::TW, r.TEX0), th = R::decode_as(R::TEX0::TH, r.TEX0);
   if (sprite) {
     const xy124 a = window(v[0]), b = window(v[1]);
@@ -122,7 +126,12 @@ walk_counts walk_primitive(const packets::draw_registers& r, std::span<const pac
     if (end <= base) return c;
     rows.assign(static_cast<std::size_t>(end - base), span{0, 0});
     rasterise_triangle(t, clip, cover);
-    if (m.textured) {
+    if (m.textured && !m.fst) {  // ST/Q: the interpreter's sampler (gs_arith/perspective.hpp)
+      auto stq = [](const packets::vertex& x) {
+        return gs::stq{std::bit_cast<float>(x.S), std::bit_cast<float>(x.T), std::bit_cast<float>(x.Q)};
+      };
+      stq_at = gs::make_stq_sampler({t.v, t.area2, {stq(v[0]), stq(v[1]), stq(v[2])}}, tw, th, {});
+    } else if (m.textured) {
       std::array<std::int32_t, 3> us{}, vs{};
       for (std::size_t k = 0; k < 3; ++k) {
         const auto tx = texel_124(v[k], m.fst, tw, th);
@@ -177,8 +186,10 @@ walk_counts walk_primitive(const packets::draw_registers& r, std::span<const pac
         const span s = row(yy);
         for (int px = std::max(bx, s.x0); px < std::min(bx + bw, s.x1); ++px) {
           const std::int32_t off = m.bilinear ? 8 : 0;
+          const auto uv = stq_at ? stq_at->at(px, yy, {}) : std::array{pu.at(px, yy), pv.at(px, yy)};
           const mem::texel_coord tc = mem::wrap(clamp, fixed::u4::from_wrapped(tw), fixed::u4::from_wrapped(th),
-                                                (pu.at(px, yy) - off) >> 4, (pv.at(px, yy) - off) >> 4);
+                                                static_cast<std::int32_t>((std::int64_t{uv[0]} - off) >> 4),
+                                                static_cast<std::int32_t>((std::int64_t{uv[1]} - off) >> 4));
           const std::uint32_t t = mem::locate(tex, tc.u % 2048, tc.v % 2048).byte / unit_bytes;
           if (pages.texture != t) ++c.texture_misses, pages.texture = t;
         }

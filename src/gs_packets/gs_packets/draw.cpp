@@ -188,16 +188,8 @@ rgba8 texel_colour(const decoded& d, const clut_buffer& clut, std::uint32_t t) {
 // The vertex's S, T, Q as floats.
 gs::stq stq_of(const vertex& x) { return {as_float(x.S), as_float(x.T), as_float(x.Q)}; }
 
-// Whether the primitive is drawn with S/Q, T/Q per pixel: FST = 0 and Q differing between vertices.
-bool perspective(const decoded& d, std::span<const vertex> v) {
-  return d.regs.PRIM.TME && !d.regs.PRIM.FST &&
-         std::any_of(v.begin(), v.end(), [&](const vertex& x) { return x.Q != v[0].Q; });
-}
-
-// 12.4 texel coordinates of a vertex: UV with FST = 1, else S/Q·2^TW and T/Q·2^TH converted as every
-// perspective pixel is (gs::stq_texel: stq_range, stq_convert). With one Q for the primitive the
-// coordinates are divided per vertex and interpolated as UV are (PCSX2 SW ConvertVertexBuffer's
-// `q_div` path; parallel-gs triangle_setup.comp with a fixed LOD: 2 sources, a model choice).
+// 12.4 texel coordinates of a sprite's vertex: UV with FST = 1, else S/Q·2^TW and T/Q·2^TH converted
+// as a triangle's are (gs::stq_sampler with one Q).
 std::array<std::int32_t, 2> texel_position(const decoded& d, const vertex& x, const model_options& o) {
   if (!d.regs.PRIM.TME) return {0, 0};  // no texture: the coordinates are not used (nor checked)
   if (d.regs.PRIM.FST) {
@@ -278,12 +270,14 @@ std::uint64_t draw_primitive(mem::local_memory& m, const draw_registers& r, cons
   }
   const triangle_setup t = setup_triangle({window(v[0]), window(v[1]), window(v[2])});
   if (t.area2 == 0) return 0;
-  const bool per_pixel_stq = perspective(d, v);
+  const bool stq = p.TME && !p.FST;
   std::array<std::array<std::int32_t, 2>, 3> uv{};
-  if (p.TME && !per_pixel_stq)
+  if (p.TME && p.FST)
     for (std::size_t k = 0; k < 3; ++k) uv[k] = texel_position(d, v[k], o);
-  const gs::stq_triangle stq{t.v, t.area2, {stq_of(v[0]), stq_of(v[1]), stq_of(v[2])}};
-  const auto TW = static_cast<unsigned>(tex.TW.value()), TH = static_cast<unsigned>(tex.TH.value());
+  const gs::stq_sampler st =
+      stq ? gs::make_stq_sampler({t.v, t.area2, {stq_of(v[0]), stq_of(v[1]), stq_of(v[2])}},
+                                 static_cast<unsigned>(tex.TW.value()), static_cast<unsigned>(tex.TH.value()), o)
+          : gs::stq_sampler{};
   const triangle_attributes a =
       setup_attributes(t, {v[0].colour, v[1].colour, v[2].colour}, uv, d.ofx >> 4, d.ofy >> 4, o.setup, d.clip.x0);
   // Z as a plane (MODEL-PLANE-16, rasteriser.hpp); Z above 24 bits through Z / 256 (the plane's
@@ -296,8 +290,7 @@ std::uint64_t draw_primitive(mem::local_memory& m, const draw_registers& r, cons
                               0, 0xFFFFFF);
   const fragment_colour flat = flat_shading(v[2].colour);  // IIP = 0: the last vertex's colour
   rasterise_triangle(t, d.clip, [&](int x, int y) {
-    const auto uv16 =
-        per_pixel_stq ? gs::perspective_texel(stq, x, y, TW, TH, o) : std::array{a.u.at(x, y), a.v.at(x, y)};
+    const auto uv16 = stq ? st.at(x, y, o) : std::array{a.u.at(x, y), a.v.at(x, y)};
     shade(x, y, p.IIP ? a.colour_at(x, y) : flat, uv16[0], uv16[1], static_cast<std::uint32_t>(pz.at(x, y)) << zs);
   });
   return pixels;
