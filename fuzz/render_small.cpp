@@ -1,7 +1,7 @@
 // fuzz/render_small.cpp — libFuzzer harness: a tiny random scene (a few triangles, a small frame, a
-// random normal map, lights, model options and method) through pipeline::render. No crash, and the
-// two rasteriser paths — reference (every pass rasterises again) and cached (the fast path: the
-// fragments of step 1 replayed) — give identical frames, bit for bit.
+// random normal map, lights (with four-pass sometimes a spot light), model options and method) through
+// pipeline::render. No crash, and the two rasteriser paths — reference (every pass rasterises again) and cached (the
+// fast path: the fragments of step 1 replayed) — give identical frames, bit for bit.
 #include <cstddef>
 #include <cstdint>
 #include <iterator>
@@ -78,6 +78,8 @@ pl::render_options random_options(FuzzedDataProvider& in) {
   o.model.gouraud = in.ConsumeBool() ? gs::gouraud_fraction::truncate_to_8 : gs::gouraud_fraction::keep_fraction;
   o.model.shift = in.ConsumeBool() ? gs::blend_shift::truncate : gs::blend_shift::floor;
   o.model.bilinear = in.ConsumeBool() ? gs::bilinear_mode::nearest : gs::bilinear_mode::lerp16_4;
+  o.model.stq_range = in.ConsumeBool() ? gs::stq_range_mode::x86_int32 : gs::stq_range_mode::saturate_2047;
+  o.model.stq_convert = static_cast<gs::stq_convert_mode>(in.ConsumeIntegralInRange<int>(0, 2));
   o.threads = 1;
   return o;
 }
@@ -92,6 +94,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     pl::validate(s.model);
   } catch (const std::runtime_error&) { return 0; }
   const pl::method m = pl::gs_methods[in.ConsumeIntegralInRange<std::size_t>(0, std::size(pl::gs_methods) - 1)];
+  if (m == pl::method::four_pass && in.ConsumeBool()) {  // section 3.6's spot light (four-pass only)
+    s.lights[0].kind = pl::light_kind::spot;
+    s.lights[0].direction = unit_vector(in);
+    s.lights[0].cone_degrees = in.ConsumeFloatingPointInRange<float>(1.0f, 80.0f);
+  }
   pl::render_options o = random_options(in);
   const pl::prepared_scene ps = pl::prepare(s, in.ConsumeFloatingPointInRange<float>(0.0f, 360.0f), o.specular);
   o.path = pl::raster_path::reference;

@@ -66,28 +66,48 @@ std::vector<float> parse_floats(const std::string& what, const std::string& text
 }
 
 // [point:|directional:]X,Y,Z:RRGGBB — a point light's world position, or the world direction towards a
-// directional light (nonzero), and the colour in hex (0x80 per channel = 1.0).
+// directional light (nonzero), and the colour in hex (0x80 per channel = 1.0); or
+// spot:X,Y,Z:DX,DY,DZ:DEGREES:RRGGBB — a spot light's position, the cone's axis (nonzero) and its
+// half-angle (1..80 degrees).
 pipeline::scene_light parse_light(std::string text) {
-  pipeline::light_kind kind = pipeline::light_kind::point;
+  pipeline::scene_light l;
   for (const auto& [prefix, k] : {std::pair{std::string("point:"), pipeline::light_kind::point},
-                                  std::pair{std::string("directional:"), pipeline::light_kind::directional}})
+                                  std::pair{std::string("directional:"), pipeline::light_kind::directional},
+                                  std::pair{std::string("spot:"), pipeline::light_kind::spot}})
     if (text.starts_with(prefix)) {
-      kind = k;
+      l.kind = k;
       text.erase(0, prefix.size());
     }
-  const auto colon = text.find(':');
-  if (colon == std::string::npos)
-    throw usage_error("--light: expected [point:|directional:]X,Y,Z:RRGGBB, got '" + text + "'");
-  const auto p = parse_floats("--light", text.substr(0, colon), 3);
-  const std::string hex = text.substr(colon + 1);
+  const bool spot = l.kind == pipeline::light_kind::spot;
+  std::vector<std::string> fields;
+  for (std::size_t at = 0;;) {
+    const auto colon = text.find(':', at);
+    fields.push_back(text.substr(at, colon == std::string::npos ? std::string::npos : colon - at));
+    if (colon == std::string::npos) break;
+    at = colon + 1;
+  }
+  if (fields.size() != (spot ? 4u : 2u))
+    throw usage_error(spot ? "--light: expected spot:X,Y,Z:DX,DY,DZ:DEGREES:RRGGBB, got 'spot:" + text + "'"
+                           : "--light: expected [point:|directional:]X,Y,Z:RRGGBB, got '" + text + "'");
+  const auto p = parse_floats("--light", fields[0], 3);
+  l.position = {p[0], p[1], p[2]};
+  const std::string& hex = fields.back();
   if (hex.size() != 6 || hex.find_first_not_of("0123456789abcdefABCDEF") != std::string::npos)
     throw usage_error("--light: colour must be 6 hex digits RRGGBB, got '" + hex + "'");
-  if (kind == pipeline::light_kind::directional && p[0] == 0.0f && p[1] == 0.0f && p[2] == 0.0f)
+  if (l.kind == pipeline::light_kind::directional && p[0] == 0.0f && p[1] == 0.0f && p[2] == 0.0f)
     throw usage_error("--light: a directional light needs a nonzero direction, got '" + text + "'");
+  if (spot) {
+    const auto d = parse_floats("--light", fields[1], 3);
+    if (d[0] == 0.0f && d[1] == 0.0f && d[2] == 0.0f)
+      throw usage_error("--light: a spot light needs a nonzero axis, got '" + fields[1] + "'");
+    l.direction = {d[0], d[1], d[2]};
+    l.cone_degrees = parse_floats("--light", fields[2], 1)[0];
+    if (!(l.cone_degrees >= 1.0f && l.cone_degrees <= 80.0f))
+      throw usage_error("--light: a spot light's half-angle must be 1..80 degrees, got '" + fields[2] + "'");
+  }
   const unsigned long c = std::stoul(hex, nullptr, 16);
-  return {{p[0], p[1], p[2]},
-          {static_cast<std::uint8_t>(c >> 16), static_cast<std::uint8_t>(c >> 8), static_cast<std::uint8_t>(c)},
-          kind};
+  l.colour = {static_cast<std::uint8_t>(c >> 16), static_cast<std::uint8_t>(c >> 8), static_cast<std::uint8_t>(c)};
+  return l;
 }
 
 std::pair<int, int> parse_size(const std::string& text) {
@@ -179,6 +199,16 @@ scene_setup setup(const render_args& a) {
     throw usage_error("--memory-path: four " + a.size + " PSMCT32 buffers do not fit in the GS's 4 MiB (512 pages)");
   std::vector<pipeline::scene_light> lights;
   for (const std::string& l : a.lights) lights.push_back(parse_light(l));
+  const bool spot = std::any_of(lights.begin(), lights.end(),
+                                [](const pipeline::scene_light& l) { return l.kind == pipeline::light_kind::spot; });
+  if (spot && (!req.schemes.empty() || std::any_of(req.methods.begin(), req.methods.end(), [](pipeline::method m) {
+        return m != pipeline::method::four_pass;
+      })))
+    throw usage_error(
+        "--light spot:...: spot lights render with --method four-pass only (section 3.6 attenuates the "
+        "DPB after its four passes)");
+  if (spot && a.lod_share)
+    throw usage_error("--light spot:... and --lod-fade: spot lights are not split into LOD pairs");
   std::vector<float> eye;
   if (!a.camera.empty()) eye = parse_floats("--camera", a.camera, 3);
 
@@ -297,8 +327,10 @@ void add_options(CLI::App* cmd, render_args& a) {
   cmd->add_option("--bump", a.bump, "height-map slope scale (per grey level)")->capture_default_str();
   cmd->add_option(
       "--light", a.lights,
-      "light [point:]X,Y,Z:RRGGBB (point light at a world position) or directional:X,Y,Z:RRGGBB (world "
-      "direction towards the light; section 3: the same tolight at every vertex); colour in hex, 0x80 = 1.0; "
+      "light [point:]X,Y,Z:RRGGBB (point light at a world position), directional:X,Y,Z:RRGGBB (world "
+      "direction towards the light; section 3: the same tolight at every vertex) or spot:X,Y,Z:DX,DY,DZ:DEG:RRGGBB "
+      "(section 3.6: a point light at X,Y,Z through a projective intensity texture, a cone of half-angle DEG about "
+      "the axis DX,DY,DZ; --method four-pass only); colour in hex, 0x80 = 1.0; "
       "repeat for more lights; "
       "default: green 109820 at -2.2,1.4,2.2 and blue 1038B0 at 2.6,-0.2,0.4 (for a framed mesh: turned with --view)");
   cmd->add_option(

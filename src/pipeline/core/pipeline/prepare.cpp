@@ -52,7 +52,9 @@ prepared_scene prepare(const scene& s, float yaw_degrees, bool half_vectors) {
   const glm::mat4 to_object = glm::inverse(model);
   const glm::vec3 eye = glm::vec3(to_object * glm::vec4(s.view.eye, 1.0f));
   ps.lights.resize(s.lights.size());
+  ps.spots.resize(s.lights.size());
   for (std::size_t l = 0; l < s.lights.size(); ++l) {
+    if (s.lights[l].kind == light_kind::spot) ps.spots[l] = spot_coordinates(s.lights[l], to_object, s.model);
     const bool directional = s.lights[l].kind == light_kind::directional;
     const glm::vec3 lp = glm::vec3(to_object * glm::vec4(s.lights[l].position, directional ? 0.0f : 1.0f));
     ps.lights[l].resize(verts.size());

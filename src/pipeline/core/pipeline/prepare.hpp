@@ -10,6 +10,7 @@
 
 #include "pipeline/raster.hpp"
 #include "pipeline/scene.hpp"
+#include "pipeline/spot.hpp"
 
 namespace gsdot3::pipeline {
 
@@ -34,6 +35,9 @@ struct prepared_scene {
   int width = 0, height = 0;
   std::vector<prepared_triangle> triangles;       // front-facing, drawable, in mesh order
   std::vector<std::vector<light_vertex>> lights;  // [light][mesh vertex]
+  std::vector<std::vector<spot_vertex>> spots;    // [light][mesh vertex]: spot lights' (spot.hpp), else empty
+  // Whether light l is a spot light (a scene prepared by hand may have no `spots` at all).
+  bool spot(std::size_t l) const noexcept { return l < spots.size() && !spots[l].empty(); }
   int culled_back = 0, dropped_outside = 0;
 };
 

@@ -53,15 +53,18 @@ struct texture32 {
 };
 
 // Section 3 ("both methods work with directional, spot and point lights"): a point light at a world
-// position, or a directional light whose `position` is the world direction towards the light (any
-// length; the same tolight vector at every vertex). Spot lights (§3.6's projective intensity texture)
-// are not modelled.
-enum class light_kind { point, directional };
+// position, a directional light whose `position` is the world direction towards the light (any
+// length; the same tolight vector at every vertex), or a spot light: a point light whose intensity is
+// section 3.6's projective texture, a cone of half-angle `cone_degrees` about `direction`
+// (spot.hpp's spot_intensity).
+enum class light_kind { point, directional, spot };
 struct scene_light {
-  glm::vec3 position{};                  // point: world position; directional: direction towards the light
+  glm::vec3 position{};                  // point, spot: world position; directional: direction towards the light
   std::array<std::uint8_t, 3> colour{};  // GS colour units: 0x80 = 1.0
   light_kind kind = light_kind::point;
   bool gouraud = false;  // section 3.8: drawn with Gouraud shading, a co-located pair's cheap half (lod.hpp)
+  glm::vec3 direction{0.0f, 0.0f, -1.0f};  // spot: the cone's axis (world, any length)
+  float cone_degrees = 30.0f;              // spot: the cone's half-angle, 1..80
 };
 
 struct camera {

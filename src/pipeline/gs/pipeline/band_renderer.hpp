@@ -17,6 +17,7 @@
 #include "gs_arith/attribute_walk.hpp"
 #include "gs_arith/depth_test.hpp"
 #include "gs_arith/gouraud.hpp"
+#include "gs_arith/perspective.hpp"
 #include "gs_memory/fast_address.hpp"
 #include "gs_memory/swizzle_tables.hpp"
 #include "pipeline/gs_pass.hpp"
@@ -176,6 +177,32 @@ class band_renderer {
         if (passes_later_depth_test(tri, x, y)) shade(t, x, y);
       });
     }
+  }
+
+  // A triangle pass drawn with PRIM.FST = 0 (section 3.6's spot light): each triangle's texel
+  // coordinates from its S, T, Q (gs::stq_sampler, the packet interpreter's rule), vertex colour
+  // `colour`, pixel by pipeline pixel (ZTST = GEQUAL, ZMSK = 1, as draw()).
+  template <const pass_regs& Pass, class FB>
+  [[gnu::flatten]] void draw_projective(const texture_ref& tex, const std::vector<gs::stq_sampler>& st,
+                                        gs::rgba8 colour, const FB& fb) {
+    constexpr gs::gs_registers regs = Pass.registers();
+    const gs::fragment_colour cf = gs::fragment_colour::flat(colour);
+    auto shade = [&](std::size_t t, int x, int y) {
+      const auto [u, v] = st[t].at(x, y, o_.model);
+      const gs::rgba8 texel = tex.sample(u, v);
+      std::uint32_t& word = fb(x, y);
+      word = gs_pixel(regs, texel, cf, word, x, y, o_.model);
+      if (pending != nullptr) note_shaded(index(x, y), texel, cf);
+      ++ops_;
+    };
+    if (o_.path == raster_path::cached) {
+      for (const fragment& f : frags_) shade(static_cast<std::size_t>(f.tri), f.x, f.y);
+      return;
+    }
+    for (std::size_t t = 0; t < ps_.triangles.size(); ++t)
+      rasterise_triangle(ps_.triangles[t].setup, band_, [&](int x, int y) {
+        if (passes_later_depth_test(ps_.triangles[t], x, y)) shade(t, x, y);
+      });
   }
 
   // A 2D sprite pass with a flat colour over the drawn triangles' bounding rectangle within the band

@@ -2,6 +2,7 @@
 // (proofs::paper); the palettes built from them are here.
 #include "pipeline/encoders.hpp"
 
+#include "pipeline/spot.hpp"
 #include "proofs/paper_code.hpp"
 
 #include <algorithm>
@@ -29,6 +30,17 @@ gs::rgba8 pack_tolight(glm::vec3 t, int s) {
 
 std::vector<std::uint32_t> sphere_map(int width, int height) {
   return proofs::paper::generate_sphere_map(width, height);
+}
+
+std::vector<std::uint32_t> spot_map() {
+  std::vector<std::uint32_t> w(spot_map_size * spot_map_size);
+  for (int j = 0; j < spot_map_size; ++j)
+    for (int i = 0; i < spot_map_size; ++i) {
+      const double s = (i + 0.5) / spot_map_size, t = (j + 0.5) / spot_map_size;
+      const auto a = static_cast<std::uint32_t>(std::lround(128.0 * spot_intensity(s, t)));
+      w[static_cast<std::size_t>(j * spot_map_size + i)] = a << 24 | 0x808080u;
+    }
+  return w;
 }
 
 st sphere_coordinates(glm::vec3 t) {

@@ -32,6 +32,9 @@ gs::rgba8 pack_tolight(glm::vec3 t, int s);
 
 // Appendix 1 (proofs::paper::generate_sphere_map): the 24-bit sphere map as A8B8G8R8 words (alpha 0).
 std::vector<std::uint32_t> sphere_map(int width, int height);
+// Section 3.6's spot-light texture, spot_map_size² A8B8G8R8 words: RGB 0x80 (the blend's Cs = 128) and
+// alpha nearest(128·spot_intensity) at each texel's centre (the blend's As, 128 = 1.0).
+std::vector<std::uint32_t> spot_map();
 
 // Sphere-map texture coordinates (s, t) in 0..1 of a unit vector (section 3.6).
 struct st {

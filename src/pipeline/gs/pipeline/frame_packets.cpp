@@ -123,6 +123,34 @@ class stream {
     send();
   }
 
+  // Every prepared triangle with PRIM.FST = 0: PACKED {ST (with Q), RGBAQ, XYZ2} per vertex, stq(t) its
+  // three S, T, Q, vertex colour `colour` (the PACKED RGBAQ write takes the Q the ST write held).
+  template <class Stq>
+  void projective_triangles(const pass_regs& p, gs::rgba8 colour, Stq&& stq) {
+    flush();
+    const gs::prim_reg prim{gs::prim_type::TRIANGLE, false, p.TME, false, p.ABE, false, false, false, false};
+    static constexpr unsigned regs[] = {pk::desc::ST, pk::desc::RGBAQ, pk::desc::XYZ2};
+    std::vector<pk::qword> data;
+    for (const prepared_triangle& t : ps_.triangles) {
+      const std::array<gs::stq, 3> a = stq(t);
+      for (std::size_t k = 0; k < 3; ++k) {
+        const xy124 xy = t.setup.v[k];
+        data.push_back(pk::packed_stq(std::bit_cast<std::uint32_t>(a[k].S), std::bit_cast<std::uint32_t>(a[k].T),
+                                      std::bit_cast<std::uint32_t>(a[k].Q)));
+        data.push_back(pk::packed_rgba(colour.r.value(), colour.g.value(), colour.b.value(), colour.a.value()));
+        data.push_back(pk::packed_xyz2(static_cast<std::uint16_t>(xy.x + 16 * xy_offset_pixels),
+                                       static_cast<std::uint16_t>(xy.y + 16 * xy_offset_pixels),
+                                       static_cast<std::uint32_t>(t.z24[k]), false));
+      }
+      ++triangles_written;
+      if (data.size() >= 3 * 3 * 10000) {  // NLOOP = 3 per triangle, well under 32767
+        out.packed(static_cast<std::uint32_t>(gs::encode(prim)), regs, data);
+        data.clear();
+      }
+    }
+    if (!data.empty()) out.packed(static_cast<std::uint32_t>(gs::encode(prim)), regs, data);
+  }
+
   // Sprites of one flat colour, each [x0, x1) × [y0, y1) drawn 1:1 from texel (u0, v0).
   struct rect {
     int x0, y0, x1, y1, u0, v0;
@@ -342,6 +370,12 @@ frame_packets build_frame_packets(const scene& s, const prepared_scene& ps, meth
           break;
         }
       }
+    }
+    // Section 3.6's spot light after the four passes (render.cpp): its texture (CLAMP, nearest), ST/Q.
+    if (ps.spot(l)) {
+      g.texture(spot_attenuation, in.spot_at, spot_map_size, spot_map_size, std::nullopt, true, false);
+      g.target(DPB, spot_attenuation);
+      g.projective_triangles(spot_attenuation, white, [&](const prepared_triangle& t) { return spot_stq(ps, l, t); });
     }
     // 2.4: R += G, R += B; 2.5, 2.6: ILP[sum] × light colour added into the LAB.
     g.clip(area);

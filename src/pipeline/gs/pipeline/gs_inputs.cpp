@@ -121,6 +121,16 @@ gs_inputs make_inputs(const scene& s, method m, const render_options& o) {
   }
   for (const passes::light_pass& p : passes::describe(m).light)
     if (p.source == passes::pass_source::sphere_map) in.sphere = sphere_map(64, 64);
+  if (std::any_of(s.lights.begin(), s.lights.end(), [](const scene_light& l) { return l.kind == light_kind::spot; })) {
+    if (m != method::four_pass)
+      throw std::invalid_argument(
+          "spot lights render with the four-pass method only (section 3.6 attenuates the "
+          "DPB after its four passes), not " +
+          std::string(name(m)));
+    if (std::any_of(s.lights.begin(), s.lights.end(), [](const scene_light& l) { return l.gouraud; }))
+      throw std::invalid_argument("spot lights are not split into section 3.8's LOD pairs (--lod)");
+    in.spot = spot_map();
+  }
   return in;
 }
 
@@ -144,12 +154,14 @@ gs_inputs place_inputs(const gs_inputs& direct, std::uint32_t first) {
   for (std::size_t k = 0; k < normal_map_count(direct); ++k)
     in.nm_at[k] = place(direct.nm->width, direct.nm->height, index_psm(*direct.nm));
   if (!direct.sphere.empty()) in.sphere_at = place(64, 64, gs::mem::psm::PSMCT32);
+  if (!direct.spot.empty()) in.spot_at = place(spot_map_size, spot_map_size, gs::mem::psm::PSMCT32);
   in.diffuse_at = place(direct.diffuse->width, direct.diffuse->height, gs::mem::psm::PSMCT32);
   palettes_page();
   if (next <= gs::mem::memory_blocks) return in;
   in = direct;  // streamed: the normal map and the diffuse texture go through the window
   next = first;
   if (!direct.sphere.empty()) in.sphere_at = place(64, 64, gs::mem::psm::PSMCT32);
+  if (!direct.spot.empty()) in.spot_at = place(spot_map_size, spot_map_size, gs::mem::psm::PSMCT32);
   palettes_page();
   if (next + 32 * 4 > gs::mem::memory_blocks)
     throw texture_does_not_fit(
@@ -187,6 +199,7 @@ void add_uploads(gs::packets::packet_builder& b, const gs_inputs& in) {
     for (std::size_t k = 0; k < normal_map_count(in); ++k)
       host_transfer(b, in.nm_at[k], in.nm->width, in.nm->height, normal_map_texels(in, k));
   if (!in.sphere.empty()) host_transfer(b, in.sphere_at, 64, 64, bytes_of(in.sphere));
+  if (!in.spot.empty()) host_transfer(b, in.spot_at, spot_map_size, spot_map_size, bytes_of(in.spot));
   if (resident) host_transfer(b, in.diffuse_at, in.diffuse->width, in.diffuse->height, bytes_of(in.diffuse->texels));
   const auto all = palettes(in);
   for (std::size_t k = 0; k < all.size(); ++k) {
@@ -209,6 +222,7 @@ gs_inputs upload_inputs(gs::mem::local_memory& m, const gs_inputs& direct, std::
       for (std::size_t k = 0; k < normal_map_count(direct); ++k)
         in.nm_texels[k] = addresses(in.nm_at[k], direct.nm->width, direct.nm->height);
     if (!direct.sphere.empty()) in.sphere_texels = addresses(in.sphere_at, 64, 64);
+    if (!direct.spot.empty()) in.spot_texels = addresses(in.spot_at, spot_map_size, spot_map_size);
     if (in.window_first == 0)
       in.diffuse_texels = addresses(in.diffuse_at, direct.diffuse->width, direct.diffuse->height);
   };

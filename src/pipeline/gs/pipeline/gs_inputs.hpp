@@ -70,6 +70,7 @@ struct gs_inputs {
   // axis[0] is the three-pass terms palette (clut_slot::terms).
   gs::clut_buffer pos, neg, axis[3], ilp, grey, alpha_index;
   std::vector<std::uint32_t> sphere;  // 64×64, four-pass only
+  std::vector<std::uint32_t> spot;    // encoders.hpp's spot_map, when a light is a spot light
   // A 24-bit map read by four-pass (section 3.6's "three 8 bit normal maps", encoders.hpp's
   // component_map): axis a's pass samples component_maps[a] through the ramp palette in axis[a].
   // Empty otherwise: every pass samples nm's index map (normal_map_count, normal_map_of).
@@ -78,14 +79,14 @@ struct gs_inputs {
   // Placed (place_inputs): the textures' TBP0 / TBW / PSM (nm_at: one per normal-map texture) and
   // each palette's CBP (palettes() order).
   std::array<gs::mem::buffer, 3> nm_at{};
-  gs::mem::buffer sphere_at, diffuse_at;
+  gs::mem::buffer sphere_at, spot_at, diffuse_at;
   std::array<std::uint32_t, 8> cbp{};
   // Uploaded (upload_inputs): the memory the texels are read from; the CLUTs above are then the
   // ones TEX0.CLD = 1 loaded back from it.
   const gs::mem::local_memory* memory = nullptr;
   // and the byte address of every texel of the textures (gs_memory/fast_address.hpp).
   std::array<std::shared_ptr<const gs::mem::texel_addresses>, 3> nm_texels;
-  std::shared_ptr<const gs::mem::texel_addresses> sphere_texels, diffuse_texels;
+  std::shared_ptr<const gs::mem::texel_addresses> sphere_texels, spot_texels, diffuse_texels;
   // Streamed (the normal map and the diffuse texture do not fit beside the frame buffers with the
   // rest, texture_stream.hpp): the window's first page (0: every texture placed above), the diffuse
   // texels as the transfers send them, and the streamer (start_stream) the passes take pieces from.
@@ -113,7 +114,8 @@ std::array<gs::clut_buffer*, 8> palettes(gs_inputs& in);
 std::array<const gs::clut_buffer*, 8> palettes(const gs_inputs& in);
 
 // The renderer's and the packet stream's inputs; throws std::invalid_argument for draw_buffers::one
-// with more than max_free_alpha_lights lights or a z-trick DPB clear (method.hpp).
+// with more than max_free_alpha_lights lights or a z-trick DPB clear (method.hpp), and for a spot
+// light with a method other than four-pass (section 3.6 applies its texture after the four passes).
 gs_inputs make_inputs(const scene& s, method m, const render_options& o);
 // Places the textures from block `first` on: the normal map(s) (index_psm, an even TBW), the sphere map
 // and the diffuse texture (PSMCT32), then one PSMCT32 page holding the eight palettes as 16×16 CSM1

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <span>
@@ -18,6 +19,7 @@
 
 #include "gs_arith/colour.hpp"
 #include "gs_arith/depth_test.hpp"
+#include "gs_arith/perspective.hpp"
 #include "pipeline/encoders.hpp"
 #include "pipeline/gs_inputs.hpp"
 #include "gs_methods/pass_registers.hpp"
@@ -185,6 +187,32 @@ inline method_view describe(method m) {
       m, []<const auto & D>() {
         return method_view{D.palettes, D.light};
       });
+}
+
+// Section 3.6's spot light, after the four passes: triangle t's S, T, Q in the light's projection
+// (prepare.hpp's spots), or S = T = 0, Q = 1 (texel (0, 0), a border texel: no light) when a vertex is
+// behind the light; and every triangle's sampler of the spot_map_size² texture (nothing for a light
+// that is not a spot light).
+inline std::array<gs::stq, 3> spot_stq(const prepared_scene& ps, std::size_t light, const prepared_triangle& t) {
+  const auto& sv = ps.spots[light];
+  std::array<gs::stq, 3> a{};
+  const bool front = sv[t.vertex[0]].front && sv[t.vertex[1]].front && sv[t.vertex[2]].front;
+  for (std::size_t k = 0; k < 3; ++k) {
+    const spot_vertex& v = sv[t.vertex[k]];
+    a[k] = front ? gs::stq{v.S, v.T, v.Q} : gs::stq{0.0f, 0.0f, 1.0f};
+  }
+  return a;
+}
+inline constexpr auto spot_size_log2 = static_cast<unsigned>(std::bit_width(static_cast<unsigned>(spot_map_size)) - 1);
+inline std::vector<gs::stq_sampler> spot_samplers(const prepared_scene& ps, std::size_t light,
+                                                  const gs::model_options& o) {
+  std::vector<gs::stq_sampler> out;
+  if (!ps.spot(light)) return out;
+  out.reserve(ps.triangles.size());
+  for (const prepared_triangle& t : ps.triangles)
+    out.push_back(
+        gs::make_stq_sampler({t.setup.v, t.setup.area2, spot_stq(ps, light, t)}, spot_size_log2, spot_size_log2, o));
+  return out;
 }
 
 // A light pass's vertex colour and texture coordinates at corner k of triangle t (lv: the light's

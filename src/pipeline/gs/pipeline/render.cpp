@@ -149,6 +149,10 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
                            in.sphere_at,
                            in.sphere_texels.get()};
 
+  const texture_ref spot_texture{
+      spot_map_size, spot_map_size,       nullptr, nullptr, in.spot.data(), true, gs::bilinear_mode::nearest, in.memory,
+      in.spot_at,    in.spot_texels.get()};
+
   for (std::size_t l = 0; l < s.lights.size(); ++l) {
     const std::vector<light_vertex>& lv = ps.lights[l];
     // 2.1 (the DPB starts cleared; nothing is drawn outside the sprite area); 2.2 COLCLAMP = 0 in
@@ -192,6 +196,12 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
           }
           (std::make_index_sequence<D.light.size()>{});
         });
+    // Section 3.6: a spot light's projective intensity texture over the DPB after the four passes,
+    // (Cd − Cs)·As + Cs with Cs = 128: each channel's signed product scaled by the texel's alpha / 128.
+    if (const auto spot = spot_samplers(ps, l, o.model); !spot.empty()) {
+      r.draw_projective<spot_attenuation>(spot_texture, spot, white, dpb);
+      note("2.3 spot light: (Cd − 128)·As + 128 (projective texture, ST/Q)", li, "DPB", dpb);
+    }
     // 2.4: R += G, R += B (mod 256): additive sprites writing red only.
     channel_pass<post_add_into_red>(r, fb, white, in.grey, 1, dpb, dpb);
     note("2.4 R += G", li, "DPB", dpb);

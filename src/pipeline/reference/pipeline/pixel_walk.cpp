@@ -60,6 +60,19 @@ pixel_light interpolate_light(const prepared_scene& ps, std::size_t l, const pix
   return r;
 }
 
+double interpolate_spot(const prepared_scene& ps, std::size_t l, const pixel_sample& p) {
+  if (!ps.spot(l)) return 1.0;
+  const prepared_triangle& tri = ps.triangles[p.triangle];
+  double S = 0.0, T = 0.0, Q = 0.0;
+  for (std::size_t k = 0; k < 3; ++k) {
+    const spot_vertex& v = ps.spots[l][tri.vertex[k]];
+    if (!v.front) return 0.0;
+    const double w = p.lambda[static_cast<int>(k)];
+    S += static_cast<double>(v.S) * w, T += static_cast<double>(v.T) * w, Q += static_cast<double>(v.Q) * w;
+  }
+  return spot_intensity(S / Q, T / Q);
+}
+
 glm::dvec3 filtered(const std::function<glm::dvec3(std::int32_t, std::int32_t)>& texel, std::int32_t u16,
                     std::int32_t v16, bool bilinear) {
   const gs::texel_footprint f =

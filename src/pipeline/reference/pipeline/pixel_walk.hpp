@@ -36,6 +36,10 @@ struct pixel_light {
   double fade = 0.0;
 };
 pixel_light interpolate_light(const prepared_scene& ps, std::size_t l, const pixel_sample& p);
+// Light `l`'s spot intensity at the pixel (spot.hpp): spot_intensity at the projective coordinates
+// Σλ_k S_k / Σλ_k Q_k, Σλ_k T_k / Σλ_k Q_k (the exact perspective-correct point; 0 when a vertex of the
+// triangle is behind the light); 1 for a light that is not a spot light.
+double interpolate_spot(const prepared_scene& ps, std::size_t l, const pixel_sample& p);
 
 // A texel value filtered at (u16, v16): nearest, or the GS's 4-bit-weight bilinear blend of the four
 // texels (gs::footprint) applied to the float values texel(u, v) returns (u, v unwrapped integers).

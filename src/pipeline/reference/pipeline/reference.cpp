@@ -30,14 +30,15 @@ reference_frame render_reference(const scene& s, const prepared_scene& ps, const
     const prepared_triangle& tri = ps.triangles[p.triangle];
     for (std::size_t l = 0; l < s.lights.size(); ++l) {
       const pixel_light pl = interpolate_light(ps, l, p);
+      const double spot = interpolate_spot(ps, l, p);
       glm::dvec3 faded(0.0);
       for (std::size_t k = 0; k < 3; ++k) {
         const light_vertex& lv = ps.lights[l][tri.vertex[k]];
         faded += glm::dvec3(lv.T) * static_cast<double>(lv.fade) * p.lambda[static_cast<int>(k)];
       }
-      r.renormalised[l][p.index] =
-          static_cast<float>(glm::length(pl.T) > 0.0 ? 128.0 * pl.fade * glm::dot(N, glm::normalize(pl.T)) : 0.0);
-      r.unnormalised[l][p.index] = static_cast<float>(128.0 * glm::dot(N, faded));
+      r.renormalised[l][p.index] = static_cast<float>(
+          glm::length(pl.T) > 0.0 ? 128.0 * spot * pl.fade * glm::dot(N, glm::normalize(pl.T)) : 0.0);
+      r.unnormalised[l][p.index] = static_cast<float>(128.0 * spot * glm::dot(N, faded));
     }
   });
   r.colour = compose_lit(s, ps, visible, r.renormalised, bilinear, power);
