@@ -33,7 +33,7 @@ scene spot_scene(unsigned seed, float cone) {
   scene s = default_scene(32);
   const glm::vec3 at{pos(rng), pos(rng), 2.0f + std::fabs(pos(rng))};
   scene_light l{at, {0xC0, 0x90, 0x60}, light_kind::spot};
-  l.direction = glm::vec3(pos(rng) * 0.2f, pos(rng) * 0.2f, 0.0f) - at;
+  l.direction = glm::vec3{pos(rng) * 0.2f, pos(rng) * 0.2f, 0.0f} - at;  // braces: evaluated left to right
   l.cone_degrees = cone;
   s.lights = {l};
   s.width = 192, s.height = 168;
@@ -43,7 +43,7 @@ scene spot_scene(unsigned seed, float cone) {
 TEST(SpotLight, FullTexelsGiveThePointLightsDotAndEmptyOnesZero) {
   int full = 0, empty = 0, trial = 0;
   for (unsigned seed = 1; seed <= 4; ++seed) {
-    const scene spot = spot_scene(seed, 12.0f + 6.0f * static_cast<float>(seed));
+    const scene spot = spot_scene(seed, 6.0f + 3.0f * static_cast<float>(seed));
     scene point = spot;
     point.lights[0].kind = light_kind::point;
     const prepared_scene ps = prepare(spot), pp = prepare(point);
