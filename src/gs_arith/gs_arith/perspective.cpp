@@ -51,13 +51,18 @@ std::int32_t stq_texel(float s, float q, unsigned size_log2, const model_options
   return 0;
 }
 
+std::array<std::int32_t, 2> stq_vertex_texel(const stq& v, unsigned TW, unsigned TH, const model_options& o) {
+  return {std::clamp(stq_texel(v.S, v.Q, TW, o), -(1 << 20), 1 << 20),
+          std::clamp(stq_texel(v.T, v.Q, TH, o), -(1 << 20), 1 << 20)};
+}
+
 stq_sampler make_stq_sampler(const stq_triangle& t, unsigned TW, unsigned TH, const model_options& o) {
   stq_sampler s{t, TW, TH, t.a[1].Q != t.a[0].Q || t.a[2].Q != t.a[0].Q, {}, {}};
   if (s.per_pixel) return s;
   std::array<std::int32_t, 3> u{}, v{};
   for (std::size_t k = 0; k < 3; ++k) {
-    u[k] = std::clamp(stq_texel(t.a[k].S, t.a[k].Q, TW, o), -(1 << 20), 1 << 20);
-    v[k] = std::clamp(stq_texel(t.a[k].T, t.a[k].Q, TH, o), -(1 << 20), 1 << 20);
+    const auto uv = stq_vertex_texel(t.a[k], TW, TH, o);
+    u[k] = uv[0], v[k] = uv[1];
   }
   s.u = make_plane(t.v, u, -(1 << 20), 1 << 20);
   s.v = make_plane(t.v, v, -(1 << 20), 1 << 20);

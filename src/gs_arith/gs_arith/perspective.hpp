@@ -72,6 +72,9 @@ struct stq_sampler {
     return per_pixel ? perspective_texel(t, x, y, TW, TH, o) : std::array{u.at(x, y), v.at(x, y)};
   }
 };
+// A vertex's S/Q, T/Q as 12.4 texels (stq_texel), clamped to the UV planes' ±2^20: what the one-Q
+// rule (and a sprite with FST = 0) interpolates.
+std::array<std::int32_t, 2> stq_vertex_texel(const stq& v, unsigned TW, unsigned TH, const model_options& o);
 // `t.area2` must be nonzero.
 stq_sampler make_stq_sampler(const stq_triangle& t, unsigned TW, unsigned TH, const model_options& o);
 

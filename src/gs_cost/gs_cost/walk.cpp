@@ -36,13 +36,10 @@ std::array<std::int32_t, 2> texel_124(const packets::vertex& x, bool fst, std::u
     constexpr auto v_max = static_cast<std::int32_t>(R::max_value(R::UV::V));
     return {x.U & u_max, x.V & v_max};
   }
-  const float q = std::bit_cast<float>(x.Q);
-  auto fix = [&](std::uint32_t st, std::uint32_t size_log2) {
-    const float s = std::bit_cast<float>(st);
-    if (!std::isfinite(static_cast<double>(s) / static_cast<double>(q))) return 0;
-    return std::clamp(gs::stq_texel(s, q, size_log2, {}), -(1 << 20), 1 << 20);
-  };
-  return {fix(x.S, tw), fix(x.T, th)};
+  const gs::stq v{std::bit_cast<float>(x.S), std::bit_cast<float>(x.T), std::bit_cast<float>(x.Q)};
+  const double q = v.Q;
+  if (!std::isfinite(v.S / q) || !std::isfinite(v.T / q)) return {0, 0};
+  return gs::stq_vertex_texel(v, tw, th, {});
 }
 
 struct span {

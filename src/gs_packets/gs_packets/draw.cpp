@@ -197,13 +197,8 @@ std::array<std::int32_t, 2> texel_position(const decoded& d, const vertex& x, co
     constexpr auto v_max = static_cast<std::int32_t>(R::max_value(R::UV::V));
     return {x.U & u_max, x.V & v_max};
   }
-  // Clamped to the UV planes' range (MODEL-PLANE-16, rasteriser.hpp), as FST = 1's 14-bit UV always are.
-  const gs::stq c = stq_of(x);
-  auto fix = [&](float st, unsigned size_log2) {
-    return std::clamp(gs::stq_texel(st, c.Q, size_log2, o), -(1 << 20), 1 << 20);
-  };
-  return {fix(c.S, static_cast<unsigned>(d.regs.TEX0_1.TW.value())),
-          fix(c.T, static_cast<unsigned>(d.regs.TEX0_1.TH.value()))};
+  return gs::stq_vertex_texel(stq_of(x), static_cast<unsigned>(d.regs.TEX0_1.TW.value()),
+                              static_cast<unsigned>(d.regs.TEX0_1.TH.value()), o);
 }
 
 }  // namespace
