@@ -41,6 +41,7 @@ struct render_args {
   std::optional<double> lod_share;
   int normal_map_bits = 8;
   bool memory_path = false, scalar = false;
+  bool floor = false;  // step 5's geometry
   std::string dpb_clear = "explicit";
   int draw_buffers = 2;
   bool cost = false;  // render / report only: --cost and the cost model's options
@@ -233,6 +234,7 @@ scene_setup setup(const render_args& a) {
   }
   if (!eye.empty()) sr.eye = glm::vec3(eye[0], eye[1], eye[2]);
   sr.lights = lights;
+  sr.floor = a.floor;
   sr.width = w;
   sr.height = h;
   progress("building the scene");
@@ -291,7 +293,9 @@ void run(const render_args& a, bool html, context& ctx) {
   pipeline::report_summary sum;
   try {
     sum = pipeline::write_report(s, req);
-  } catch (const std::runtime_error& e) { throw usage_error(e.what()); }
+  } catch (const std::runtime_error& e) { throw usage_error(e.what()); } catch (const std::invalid_argument& e) {
+    throw usage_error(e.what());  // a frame the options ask for that the model does not draw (render.hpp)
+  }
   for (const auto& m : sum.methods)
     std::cerr << "gsdot3: " << pipeline::name(m.m) << ": max |e| " << m.vs_renormalised.max_abs << ", RMSE "
               << m.vs_renormalised.rmse << ", within ±1 " << 100.0 * m.vs_renormalised.within_1 << "%, wraps "
@@ -360,6 +364,10 @@ void add_options(CLI::App* cmd, render_args& a) {
          "pass (two-pass, three-pass, 2002, the other seeds') read the 8-bit map")
       ->check(CLI::IsMember({4, 8, 24}))
       ->capture_default_str();
+  cmd->add_flag("--floor", a.floor,
+                "section 3.1's step 5: a floor under the model, not normal-mapped, drawn after step 4 into the same "
+                "buffer as one generally would (per-vertex Lambert light of every light, Gouraud x the diffuse "
+                "texture, Z-tested against the model and writing Z); exported by gsdot3 dump, priced by --cost");
   cmd->add_option("--path", a.path, "rasteriser path: cached (fast) | reference (re-rasterise every pass)")
       ->capture_default_str();
   cmd->add_option("--threads", a.threads, "frame bands rendered in parallel")->capture_default_str();

@@ -114,6 +114,10 @@ inline constexpr pass_regs multiply_green{true,           true, gs::tfx::DECAL, 
                                           multiply_by_ad, true, only_channel[1]};
 inline constexpr pass_regs multiply_blue{true,           true, gs::tfx::DECAL, gs::tcc::RGB,
                                          multiply_by_ad, true, only_channel[2]};
+// Step 5 (section 3.1): non-normal-mapped geometry drawn "as one generally would" into the output after
+// step 4 — Gouraud vertex colours (PRIM.IIP = 1) times its texture, MODULATE, clamped, no blend; with
+// ZTST = GEQUAL and ZMSK = 0 (it writes Z: it is the last pass of the frame).
+inline constexpr pass_regs plain_gouraud{true, false, gs::tfx::MODULATE, gs::tcc::RGB, {}, true, 0};
 // Section 3.1's one-buffer variant (pipeline draw_buffers::one): the output buffer's R, G, B written
 // while its alpha keeps a dot layer or a LAB channel — flat fills (the LAB's ambient, step 3's clear),
 // the diffuse layer, and step 4's multiply by a free alpha read as the texel's.

@@ -6,6 +6,7 @@
 
 #include "pipeline/default_scene.hpp"
 #include "pipeline/files.hpp"
+#include "pipeline/floor.hpp"
 #include "pipeline/framing.hpp"
 
 namespace gsdot3::pipeline {
@@ -126,6 +127,11 @@ scene_input make_scene(const scene_request& r, const std::function<void(const st
   } else if (framed) {
     s.lights = default_lights(view[0], view[1]);
     sum.lights = "the embedded scene's two, relative to the unit bounding sphere, turned with the view";
+  }
+  if (r.floor) {
+    s.plain = floor_under(s.model);
+    in.description += "; step 5: a Gouraud-shaded floor (" + std::to_string(s.plain.triangles.size()) +
+                      " triangles, not normal-mapped) drawn after step 4 into the same buffer";
   }
   return in;
 }

@@ -23,6 +23,7 @@ struct scene_request {
   std::optional<std::array<float, 2>> view;  // azimuth, elevation in degrees (meshes: default 0, 0)
   std::optional<glm::vec3> eye;              // --camera: looking at the origin
   std::vector<scene_light> lights;           // empty: the defaults
+  bool floor = false;                        // step 5: a Gouraud-shaded floor under the model (floor.hpp)
   int width = 512, height = 448;
 };
 

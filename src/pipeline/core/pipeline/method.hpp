@@ -82,6 +82,8 @@ struct frame {
   std::vector<std::vector<std::uint8_t>> dot;  // per light: the DPB byte after the post filter
                                                // (dot product + 128, mod 256)
   std::vector<std::int32_t> visible_triangle;  // per pixel: index into prepared_scene::triangles, −1 = none
+                                               // (or step 5's geometry drawn over it)
+  std::vector<std::int32_t> plain_triangle;    // per pixel: index into prepared_scene::plain (step 5), −1 = none
   std::size_t pixel_ops = 0;                   // pixels sent through gs::pixel_pipeline
 };
 

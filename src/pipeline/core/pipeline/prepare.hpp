@@ -1,5 +1,6 @@
 // pipeline/prepare.hpp — the VU1's share (float, value level): transform, project to 12.4, cull,
-// and the per-vertex tangent-space tolight vectors T and fade_att for every light.
+// the per-vertex tangent-space tolight vectors T and fade_att for every light, and the
+// non-normal-mapped geometry's per-vertex (Gouraud) light.
 #pragma once
 
 #include <array>
@@ -36,6 +37,11 @@ struct prepared_scene {
   std::vector<prepared_triangle> triangles;       // front-facing, drawable, in mesh order
   std::vector<std::vector<light_vertex>> lights;  // [light][mesh vertex]
   std::vector<std::vector<spot_vertex>> spots;    // [light][mesh vertex]: spot lights' (spot.hpp), else empty
+  // Step 5 (scene::plain): its front-facing, drawable triangles (uv16 in diffuse-texture texels), and
+  // per plain vertex the VU1's Gouraud light: ambient + Σ colour_l · max(n·l, 0) · spot_l (GS colour
+  // units, 0x80 = 1.0; spot_l the spot light's spot_intensity at the vertex, 0 behind it), unclamped.
+  std::vector<prepared_triangle> plain;
+  std::vector<glm::vec3> plain_light;
   // Whether light l is a spot light (a scene prepared by hand may have no `spots` at all).
   bool spot(std::size_t l) const noexcept { return l < spots.size() && !spots[l].empty(); }
   int culled_back = 0, dropped_outside = 0;

@@ -1,5 +1,6 @@
 // pipeline/scene.hpp — what a render is made of: a mesh with per-vertex tangent frames, a
-// palettised tangent-space normal map, a diffuse texture, point lights and a camera.
+// palettised tangent-space normal map, a diffuse texture, lights, a camera, and optionally
+// non-normal-mapped geometry beside the mesh.
 // Everything here is float "VU1-side" data; the GS side starts in raster.hpp.
 #pragma once
 
@@ -75,6 +76,11 @@ struct camera {
 
 struct scene {
   mesh model;
+  // Section 3.1's step 5: "all non-normal mapped geometry, as one generally would, into the same
+  // buffer" after step 4 — Gouraud-lit per vertex (every light, Lambert, no normal map), textured with
+  // `diffuse` (its UVs, 1.0 = one repeat), depth-tested against the normal-mapped objects' Z and
+  // writing its own. Empty: none (assets/floor.hpp makes a floor under the model).
+  mesh plain;
   normal_map normals;
   texture32 diffuse;
   std::vector<scene_light> lights;

@@ -205,6 +205,34 @@ class band_renderer {
       });
   }
 
+  // Step 5 (section 3.1): prepared_scene::plain drawn in order with `attr` (plain_colour, its UVs)
+  // and ZTST = GEQUAL, ZMSK = 0, every pixel through gs::pixel_pipeline; a pixel it draws shows step
+  // 5's triangle (plain[i] = its index) and no longer the DOT3 mesh's (visible_triangle −1).
+  template <const pass_regs& Pass, class FB>
+  void draw_plain(const texture_ref& tex, const std::vector<tri_attr>& attr, const FB& fb,
+                  std::vector<std::int32_t>& plain) {
+    constexpr gs::gs_registers regs = Pass.registers();
+    for (std::size_t t = 0; t < ps_.plain.size(); ++t) {
+      const prepared_triangle& tri = ps_.plain[t];
+      const tri_attr& a = attr[t];
+      rasterise_triangle(tri.setup, band_, [&](int x, int y) {
+        const gs::depth_result d = gs::depth_test(passes::depth_gequal, passes::z_written,
+                                                  static_cast<std::uint32_t>(tri.z.at(x, y)), z_.read(x, y));
+        if (!d.pass) return;
+        if (d.write_z) z_.write(x, y, d.z);
+        const std::size_t i = index(x, y);
+        const gs::fragment_colour cf = a.colour_at(x, y);
+        const gs::rgba8 texel = tex.sample(a.u.at(x, y), a.v.at(x, y));
+        std::uint32_t& word = fb(x, y);
+        word = gs_pixel(regs, texel, cf, word, x, y, o_.model);
+        if (pending != nullptr) note_shaded(i, texel, cf);
+        visible_[i] = -1;
+        plain[i] = static_cast<std::int32_t>(t);
+        ++ops_;
+      });
+    }
+  }
+
   // A 2D sprite pass with a flat colour over the drawn triangles' bounding rectangle within the band
   // (an engine scissors its post filter to the object; outside it the DPB keeps its clear value and
   // the frame stays 0 = diffuse 0 × LAB); `texel(x, y)` gives the texel the sprite's 1:1 mapping
@@ -393,12 +421,14 @@ void draw_textured(band_renderer& r, gs::mem::local_memory* memory, texture_stre
   }
 }
 
-// Vertex colours → per-triangle attributes; `uv` picks the 12.4 texture coordinates per corner.
+// Vertex colours → per-triangle attributes of `triangles` (the DOT3 mesh's, or step 5's); `uv` picks
+// the 12.4 texture coordinates per corner.
 template <class Colour, class UV>
-std::vector<tri_attr> attributes(const prepared_scene& ps, gs::gouraud_setup setup, Colour&& colour, UV&& uv) {
-  std::vector<tri_attr> out(ps.triangles.size());
-  for (std::size_t t = 0; t < ps.triangles.size(); ++t) {
-    const prepared_triangle& tri = ps.triangles[t];
+std::vector<tri_attr> attributes(const std::vector<prepared_triangle>& triangles, gs::gouraud_setup setup,
+                                 Colour&& colour, UV&& uv) {
+  std::vector<tri_attr> out(triangles.size());
+  for (std::size_t t = 0; t < triangles.size(); ++t) {
+    const prepared_triangle& tri = triangles[t];
     std::array<gs::rgba8, 3> c{};
     std::array<std::array<std::int32_t, 2>, 3> uv16{};
     for (int k = 0; k < 3; ++k) {
@@ -409,6 +439,10 @@ std::vector<tri_attr> attributes(const prepared_scene& ps, gs::gouraud_setup set
     out[t] = gs::setup_attributes(tri.setup, c, uv16, xy_offset_pixels, xy_offset_pixels, setup);
   }
   return out;
+}
+template <class Colour, class UV>
+std::vector<tri_attr> attributes(const prepared_scene& ps, gs::gouraud_setup setup, Colour&& colour, UV&& uv) {
+  return attributes(ps.triangles, setup, colour, uv);
 }
 
 }  // namespace gsdot3::pipeline::detail

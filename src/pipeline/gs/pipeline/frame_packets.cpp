@@ -96,6 +96,12 @@ class stream {
   // streamed texture's piece draws (stream_piece::draws: the others draw nothing in it).
   template <class Colour, class UV>
   void triangles(const pass_regs& p, bool gouraud, Colour&& colour, UV&& uv, const stream_piece* only = nullptr) {
+    triangles_of(ps_.triangles, p, gouraud, colour, uv, only);
+  }
+  // The same for a list of triangles (the DOT3 mesh's, or step 5's).
+  template <class Colour, class UV>
+  void triangles_of(const std::vector<prepared_triangle>& tris, const pass_regs& p, bool gouraud, Colour&& colour,
+                    UV&& uv, const stream_piece* only = nullptr) {
     flush();
     const gs::prim_reg prim{gs::prim_type::TRIANGLE, gouraud, p.TME, false, p.ABE, false, true, false, false};
     static constexpr unsigned regs[] = {pk::desc::RGBAQ, pk::desc::UV, pk::desc::XYZ2};
@@ -104,8 +110,8 @@ class stream {
       if (!data.empty()) out.packed(static_cast<std::uint32_t>(gs::encode(prim)), regs, data);
       data.clear();
     };
-    for (std::uint32_t i = 0; i < ps_.triangles.size(); ++i) {
-      const prepared_triangle& t = ps_.triangles[i];
+    for (std::uint32_t i = 0; i < tris.size(); ++i) {
+      const prepared_triangle& t = tris[i];
       if (only != nullptr && !only->draws(i, t)) continue;
       for (int k = 0; k < 3; ++k) {
         const gs::rgba8 c = colour(t, k);
@@ -247,6 +253,7 @@ frame_packets build_frame_packets(const scene& s, const prepared_scene& ps, meth
   gs_inputs in = place_inputs(make_inputs(s, m, o), b.first_texture_block());
   const scissor area = detail::band_renderer::drawn_area(ps, {0, 0, ps.width, ps.height});
   start_stream(in, ps, o, area);
+  if (in.stream && !ps.plain.empty()) throw std::invalid_argument(plain_needs_resident_texture);
   stream g(ps, b, area);
   // draw_buffers::one (render.cpp's one_buffer_steps): the output is every light's DPB, then the
   // LAB; the free alphas are those of the buffer at FBP 0, of the Z buffer's words (as PSMCT32) and
@@ -396,6 +403,21 @@ frame_packets build_frame_packets(const scene& s, const prepared_scene& ps, meth
     g.channel_pass(ilp_into_lab, rgb(lc[0], lc[1], lc[2], 0x80), cbp(clut_slot::ilp), 0, DPB);
   }
 
+  // Step 5 (section 3.1, render.cpp): the non-normal-mapped geometry into the output over the whole
+  // frame, Gouraud × the diffuse texture (resident: plain_needs_resident_texture), Z written.
+  auto plain_step = [&] {
+    if (ps.plain.empty()) return;
+    g.clip(g.frame());
+    g.depth(depth_gequal, z_written);
+    g.texture(plain_gouraud, in.diffuse_at, in.diffuse->width, in.diffuse->height, std::nullopt, false, linear);
+    g.target(OUT, plain_gouraud);
+    g.triangles_of(
+        ps.plain, plain_gouraud, true,
+        [&](const prepared_triangle& t, int k) {
+          return plain_colour(ps.plain_light[t.vertex[static_cast<std::size_t>(k)]]);
+        },
+        nm_uv);
+  };
   if (one) {  // render.cpp's one_buffer_steps: 2.6 from the free alphas, their LAB channels, 3, 4
     g.clip(area);
     g.depth(depth_always, z_masked);
@@ -421,6 +443,7 @@ frame_packets build_frame_packets(const scene& s, const prepared_scene& ps, meth
       g.target(OUT, *multiply[c]);
       g.channel_pass(*multiply[c], white, cbp(clut_slot::alpha_index), 3, plane[c]);
     }
+    plain_step();
     finish(fp, g, ps, OUT, b);
     return fp;
   }
@@ -443,6 +466,7 @@ frame_packets build_frame_packets(const scene& s, const prepared_scene& ps, meth
     g.target(OUT, *multiply[c]);
     g.area_sprite(*multiply[c], white);
   }
+  plain_step();
   finish(fp, g, ps, OUT, b);
   return fp;
 }

@@ -13,7 +13,9 @@
 // 3. clears, as flat sprites over the frame: the DPB to 0x00808080, the LAB to 0, and the output
 //    and the Z buffer to 0 by one sprite (ZTST = ALWAYS, ZMSK = 0);
 // 4. step 1 (Z and ambient: TRIANGLE, ZTST = GEQUAL, Z written), per light steps 2.1-2.6, step 3
-//    (the DPB cleared to 0 over the sprite area, the diffuse layer drawn into it), step 4. Each pass
+//    (the DPB cleared to 0 over the sprite area, the diffuse layer drawn into it), step 4, and step 5
+//    when the scene has non-normal-mapped geometry (its triangles, Gouraud × the diffuse texture,
+//    MODULATE, ZTST = GEQUAL, ZMSK = 0, SCISSOR_1 the frame). Each pass
 //    writes FRAME_1, ALPHA_1, COLCLAMP, TEST_1, ZBUF_1 (gs_arith's encoders) and its texture's
 //    TEX0_1, TEX1_1, CLAMP_1. Triangle passes: PACKED {RGBAQ, UV, XYZ2}
 //    per vertex with PRE = 1 (PRIM.IIP = 1 for the Gouraud passes, FST = 1), ZTST = GEQUAL with

@@ -127,6 +127,11 @@ gs_inputs place_inputs(const gs_inputs& direct, std::uint32_t first);
 // The streamer of a streamed input set (nothing otherwise): the triangles of ps over the drawn
 // `area`, sampled as o says; the normal map and the diffuse texture as streamed textures.
 void start_stream(gs_inputs& in, const prepared_scene& ps, const render_options& o, const scissor& area);
+// Step 5's geometry (prepared_scene::plain) samples the diffuse texture where it is placed; with the
+// textures streamed the memory path and the packet stream refuse it (std::invalid_argument, this text).
+inline constexpr const char* plain_needs_resident_texture =
+    "step 5 (--floor): the textures stream through a window beside the frame buffers, and step 5's geometry needs "
+    "the diffuse texture resident: use a smaller --size or normal map";
 stream_texture normal_map_stream(const gs_inputs& in, std::size_t k);
 stream_texture diffuse_stream(const gs_inputs& in);
 // The transfers of a placed input set (host_transfer each, the streamed textures left to their

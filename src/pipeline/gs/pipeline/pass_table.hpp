@@ -63,6 +63,13 @@ inline gs::rgba8 baseline_colour(const light_vertex& l, bool negative) {
              0x80);
 }
 
+// Step 5 (section 3.1): a non-normal-mapped vertex's Gouraud light (prepared_scene::plain_light) as
+// RGBAQ, nearest per channel and clamped to 255, alpha 0x80.
+inline gs::rgba8 plain_colour(const glm::vec3& light) {
+  auto channel = [](float c) { return nearest(std::clamp(c, 0.0f, 255.0f)); };
+  return rgb(channel(light.x), channel(light.y), channel(light.z), 0x80);
+}
+
 // The texture coordinates (UV, 12.4 texels) per triangle corner: the normal map's, or the 64×64
 // sphere map's from the vertex's tolight vector.
 inline std::array<std::int32_t, 2> normal_map_uv(const prepared_triangle& t, int k) {

@@ -235,8 +235,17 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
   const texture_ref diffuse{
       in.diffuse->width, in.diffuse->height,     nullptr, nullptr, in.diffuse->texels.data(), false, filter, in.memory,
       in.diffuse_at,     in.diffuse_texels.get()};
-  // The lit frame, from the output.
+  // Step 5 (section 3.1): the non-normal-mapped geometry drawn into the output after step 4; then
+  // the lit frame, from the output.
   auto write_frame = [&] {
+    if (!ps.plain.empty()) {
+      r.draw_plain<plain_gouraud>(
+          diffuse,
+          attributes(
+              ps.plain, o.model.setup, [&](std::uint32_t v) { return plain_colour(ps.plain_light[v]); }, normal_map_uv),
+          fb.out, result.plain_triangle);
+      note("5 non-normal-mapped geometry: Gouraud × diffuse (MODULATE), Z written", -1, "frame", fb.out);
+    }
     for (int y = band.y0; y < band.y1; ++y)
       for (int x = band.x0; x < band.x1; ++x) result.colour[r.index(x, y)] = fb.out(x, y) | 0xFF000000u;
     return r.pixel_ops();
@@ -323,6 +332,7 @@ frame render(const scene& s, const prepared_scene& ps, method m, const render_op
   const std::size_t n = static_cast<std::size_t>(ps.width) * static_cast<std::size_t>(ps.height);
   result.colour.assign(n, 0);
   result.visible_triangle.assign(n, -1);
+  result.plain_triangle.assign(n, -1);
   result.dot.assign(s.lights.size(), std::vector<std::uint8_t>(n, 0));
   if (o.memory_path || o.dpb_clear != dpb_clear_mode::explicit_clear) {
     // gs_inputs.hpp's buffer layout: the DPB (and in step 3 the diffuse layer), the LAB, the output
@@ -361,6 +371,7 @@ frame render(const scene& s, const prepared_scene& ps, method m, const render_op
     if (o.dpb_clear != dpb_clear_mode::explicit_clear || o.buffers == draw_buffers::one) one.threads = 1;
     gs_inputs uploaded = upload_inputs(memory, in, layout.first_texture_block(), one.threads > 1);
     if (uploaded.window_first != 0) one.threads = 1;  // the pieces' uploads share the window
+    if (uploaded.window_first != 0 && !ps.plain.empty()) throw std::invalid_argument(plain_needs_resident_texture);
     start_stream(uploaded, ps, o, band_renderer::drawn_area(ps, {0, 0, ps.width, ps.height}));
     render_bands(s, ps, m, one, uploaded, fb, result);
   } else {

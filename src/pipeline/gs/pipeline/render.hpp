@@ -1,4 +1,4 @@
-// pipeline/render.hpp — whole frames through the modeled GS: the paper's steps 1–4 (section 3.1)
+// pipeline/render.hpp — whole frames through the modeled GS: the paper's steps 1–5 (section 3.1)
 // with the two-pass (3.5), four-pass (3.6) or Breugelmans 2002 (section 2) signed multiplications.
 #pragma once
 
@@ -8,6 +8,8 @@
 
 namespace gsdot3::pipeline {
 
+// Throws std::invalid_argument for a frame the options ask for that the model does not draw: buffers
+// beyond the 4 MiB, make_inputs' refusals (gs_inputs.hpp), step 5 with streamed textures.
 frame render(const scene& s, const prepared_scene& ps, method m, const render_options& o);
 
 }  // namespace gsdot3::pipeline

@@ -26,13 +26,13 @@ glm::dvec3 barycentric(const triangle_setup& t, int x, int y) {
           cross(v[0].x, v[0].y, v[1].x, v[1].y, px, py) / area};
 }
 
-}  // namespace
-
-void for_each_covered_pixel(const prepared_scene& ps, const std::vector<std::int32_t>& visible,
-                            const std::function<void(const pixel_sample&)>& f) {
-  std::vector<std::array<plane, 2>> uv(ps.triangles.size());
-  for (std::size_t t = 0; t < ps.triangles.size(); ++t) {
-    const prepared_triangle& tri = ps.triangles[t];
+// f for every pixel whose visible[index] ≥ 0, a triangle of `triangles`.
+void walk(const prepared_scene& ps, const std::vector<prepared_triangle>& triangles,
+          const std::vector<std::int32_t>& visible, const std::function<void(const pixel_sample&)>& f) {
+  if (visible.empty()) return;
+  std::vector<std::array<plane, 2>> uv(triangles.size());
+  for (std::size_t t = 0; t < triangles.size(); ++t) {
+    const prepared_triangle& tri = triangles[t];
     for (std::size_t c = 0; c < 2; ++c)
       uv[t][c] = make_plane(tri.setup.v, {tri.uv16[0][c], tri.uv16[1][c], tri.uv16[2][c]}, -(1 << 20), 1 << 20);
   }
@@ -42,11 +42,46 @@ void for_each_covered_pixel(const prepared_scene& ps, const std::vector<std::int
       p.index = static_cast<std::size_t>(p.y) * static_cast<std::size_t>(ps.width) + static_cast<std::size_t>(p.x);
       if (visible[p.index] < 0) continue;
       p.triangle = static_cast<std::size_t>(visible[p.index]);
-      p.lambda = barycentric(ps.triangles[p.triangle].setup, p.x, p.y);
+      p.lambda = barycentric(triangles[p.triangle].setup, p.x, p.y);
       p.u16 = uv[p.triangle][0].at(p.x, p.y);
       p.v16 = uv[p.triangle][1].at(p.x, p.y);
       f(p);
     }
+}
+
+// A texture32 texel (u, v), wrapped, as (r, g, b).
+glm::dvec3 rgb_texel(const texture32& t, std::int32_t u, std::int32_t v) {
+  const std::uint32_t w = t.texels[wrapped_texel(t.width, t.height, u, v)];
+  return {w & 0xFF, (w >> 8) & 0xFF, (w >> 16) & 0xFF};
+}
+
+std::uint32_t to_word(const glm::dvec3& c) {
+  return static_cast<std::uint32_t>(std::lround(c.x)) | static_cast<std::uint32_t>(std::lround(c.y)) << 8 |
+         static_cast<std::uint32_t>(std::lround(c.z)) << 16 | 0xFF000000u;
+}
+
+}  // namespace
+
+void for_each_covered_pixel(const prepared_scene& ps, const std::vector<std::int32_t>& visible,
+                            const std::function<void(const pixel_sample&)>& f) {
+  walk(ps, ps.triangles, visible, f);
+}
+
+void for_each_plain_pixel(const prepared_scene& ps, const std::vector<std::int32_t>& plain,
+                          const std::function<void(const pixel_sample&)>& f) {
+  walk(ps, ps.plain, plain, f);
+}
+
+void compose_plain(const scene& s, const prepared_scene& ps, const std::vector<std::int32_t>& plain, bool bilinear,
+                   std::vector<std::uint32_t>& colour) {
+  auto diffuse_texel = [&](std::int32_t u, std::int32_t v) { return rgb_texel(s.diffuse, u, v); };
+  for_each_plain_pixel(ps, plain, [&](const pixel_sample& p) {
+    glm::dvec3 light(0.0);
+    for (std::size_t k = 0; k < 3; ++k)
+      light +=
+          glm::min(glm::dvec3(ps.plain_light[ps.plain[p.triangle].vertex[k]]), 255.0) * p.lambda[static_cast<int>(k)];
+    colour[p.index] = to_word(glm::min(filtered(diffuse_texel, p.u16, p.v16, bilinear) * light / 128.0, 255.0));
+  });
 }
 
 pixel_light interpolate_light(const prepared_scene& ps, std::size_t l, const pixel_sample& p) {
@@ -89,11 +124,7 @@ std::vector<std::uint32_t> compose_lit(const scene& s, const prepared_scene& ps,
                                        const std::vector<std::vector<float>>& dot, bool bilinear, double power) {
   std::vector<std::uint32_t> colour(static_cast<std::size_t>(ps.width) * static_cast<std::size_t>(ps.height),
                                     0xFF000000u);
-  const texture32& dt = s.diffuse;
-  auto diffuse_texel = [&](std::int32_t u, std::int32_t v) {
-    const std::uint32_t w = dt.texels[wrapped_texel(dt.width, dt.height, u, v)];
-    return glm::dvec3(w & 0xFF, (w >> 8) & 0xFF, (w >> 16) & 0xFF);
-  };
+  auto diffuse_texel = [&](std::int32_t u, std::int32_t v) { return rgb_texel(s.diffuse, u, v); };
   for_each_covered_pixel(ps, visible, [&](const pixel_sample& p) {
     glm::dvec3 lab(s.ambient[0], s.ambient[1], s.ambient[2]);
     for (std::size_t l = 0; l < s.lights.size(); ++l) {
@@ -104,9 +135,7 @@ std::vector<std::uint32_t> compose_lit(const scene& s, const prepared_scene& ps,
     }
     const glm::dvec3 out =
         glm::min(filtered(diffuse_texel, p.u16, p.v16, bilinear) * glm::min(lab, 255.0) / 128.0, 255.0);
-    colour[p.index] = static_cast<std::uint32_t>(std::lround(out.x)) |
-                      static_cast<std::uint32_t>(std::lround(out.y)) << 8 |
-                      static_cast<std::uint32_t>(std::lround(out.z)) << 16 | 0xFF000000u;
+    colour[p.index] = to_word(out);
   });
   return colour;
 }

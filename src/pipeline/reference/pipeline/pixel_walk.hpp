@@ -29,6 +29,10 @@ struct pixel_sample {
 // Calls f for every pixel whose visible_triangle is ≥ 0, in raster order.
 void for_each_covered_pixel(const prepared_scene& ps, const std::vector<std::int32_t>& visible_triangle,
                             const std::function<void(const pixel_sample&)>& f);
+// The same over step 5's geometry: p.triangle indexes prepared_scene::plain, p.u16 / p.v16 are
+// diffuse-texture coordinates (an empty plain_triangle: no pixel).
+void for_each_plain_pixel(const prepared_scene& ps, const std::vector<std::int32_t>& plain_triangle,
+                          const std::function<void(const pixel_sample&)>& f);
 
 // Light `l` at the pixel: T = Σ λ_k T_k (not renormalised), fade = Σ λ_k fade_k.
 struct pixel_light {
@@ -54,6 +58,12 @@ constexpr std::size_t wrapped_texel(int width, int height, std::int32_t u, std::
 
 // The lit frame from per-light dot products d_l (1/128 units, NaN = not covered), composed as the
 // GS methods' steps 2.6–4 do in float: diffuse · min(ambient + Σ colour_l · (max(d_l, 0)/128)^power, 255) / 128.
+// Step 5's pixels (plain_triangle ≥ 0) in float, written into `colour`: the diffuse texel (filtered
+// as the GS samples it) · Σ λ_k min(plain_light_k, 255) / 128, clamped to 255 — the VU1's per-vertex
+// light interpolated without the GS's rounding of vertex colours, Gouraud steps or MODULATE's >> 7.
+void compose_plain(const scene& s, const prepared_scene& ps, const std::vector<std::int32_t>& plain_triangle,
+                   bool bilinear, std::vector<std::uint32_t>& colour);
+
 std::vector<std::uint32_t> compose_lit(const scene& s, const prepared_scene& ps,
                                        const std::vector<std::int32_t>& visible_triangle,
                                        const std::vector<std::vector<float>>& dot, bool bilinear, double power);

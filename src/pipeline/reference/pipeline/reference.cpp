@@ -12,7 +12,7 @@
 namespace gsdot3::pipeline {
 
 reference_frame render_reference(const scene& s, const prepared_scene& ps, const std::vector<std::int32_t>& visible,
-                                 bool bilinear, double power) {
+                                 bool bilinear, double power, const std::vector<std::int32_t>& plain) {
   reference_frame r;
   r.width = ps.width;
   r.height = ps.height;
@@ -42,6 +42,7 @@ reference_frame render_reference(const scene& s, const prepared_scene& ps, const
     }
   });
   r.colour = compose_lit(s, ps, visible, r.renormalised, bilinear, power);
+  compose_plain(s, ps, plain, bilinear, r.colour);
   return r;
 }
 

@@ -23,9 +23,11 @@ struct reference_frame {
   std::vector<std::uint32_t> colour;  // lit frame from the renormalised dot products (A8B8G8R8)
 };
 
-// `visible_triangle` comes from the GS render's step 1 (the same per-pixel winner).
-// `power`: the lit frame uses (max(dot, 0)/128)^power per light (the ILP's exponent).
+// `visible_triangle` comes from the GS render's step 1 (the same per-pixel winner), `plain_triangle`
+// from its step 5 (frame::plain_triangle; empty: none), whose pixels the lit frame shows composed by
+// compose_plain. `power`: the lit frame uses (max(dot, 0)/128)^power per light (the ILP's exponent).
 reference_frame render_reference(const scene& s, const prepared_scene& ps,
-                                 const std::vector<std::int32_t>& visible_triangle, bool bilinear, double power = 1.0);
+                                 const std::vector<std::int32_t>& visible_triangle, bool bilinear, double power = 1.0,
+                                 const std::vector<std::int32_t>& plain_triangle = {});
 
 }  // namespace gsdot3::pipeline
