@@ -1,7 +1,7 @@
 // fuzz/render_small.cpp — libFuzzer harness: a tiny random scene (a few triangles, a small frame, a
-// random normal map, lights (with four-pass sometimes a spot light), model options and method) through
-// pipeline::render. No crash, and the two rasteriser paths — reference (every pass rasterises again) and cached (the
-// fast path: the fragments of step 1 replayed) — give identical frames, bit for bit.
+// random normal map, lights (with four-pass sometimes a spot light), sometimes step 5's floor, model
+// options and method) through pipeline::render. No crash, and the two rasteriser paths — reference (every pass
+// rasterises again) and cached (the fast path: the fragments of step 1 replayed) — give identical frames, bit for bit.
 #include <cstddef>
 #include <cstdint>
 #include <iterator>
@@ -12,6 +12,7 @@
 
 #include "fuzz_check.hpp"
 #include "pipeline/files.hpp"
+#include "pipeline/floor.hpp"
 #include "pipeline/prepare.hpp"
 #include "pipeline/render.hpp"
 #include "pipeline/scene.hpp"
@@ -100,13 +101,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     s.lights[0].cone_degrees = in.ConsumeFloatingPointInRange<float>(1.0f, 80.0f);
   }
   pl::render_options o = random_options(in);
-  const pl::prepared_scene ps = pl::prepare(s, in.ConsumeFloatingPointInRange<float>(0.0f, 360.0f), o.specular);
+  const float yaw = in.ConsumeFloatingPointInRange<float>(0.0f, 360.0f);
+  if (in.ConsumeBool()) s.plain = pl::floor_under(s.model, in.ConsumeIntegralInRange<int>(1, 4));  // step 5
+  const pl::prepared_scene ps = pl::prepare(s, yaw, o.specular);
   o.path = pl::raster_path::reference;
   const pl::frame reference = pl::render(s, ps, m, o);
   o.path = pl::raster_path::cached;
   const pl::frame cached = pl::render(s, ps, m, o);
   require(reference.colour == cached.colour && reference.dot == cached.dot &&
-              reference.visible_triangle == cached.visible_triangle,
+              reference.visible_triangle == cached.visible_triangle &&
+              reference.plain_triangle == cached.plain_triangle,
           [&] {
             std::size_t i = 0;
             while (i < reference.colour.size() && i < cached.colour.size() && reference.colour[i] == cached.colour[i])
@@ -118,9 +122,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   // The memory path (frame buffers in the modelled GS local memory) against the value level.
   o.memory_path = true;
   const pl::frame memory = pl::render(s, ps, m, o);
-  require(memory.colour == cached.colour && memory.dot == cached.dot, [&] {
-    return "render: memory path and value level differ (method " + std::string(pl::name(m)) + ", " +
-           std::to_string(s.width) + "x" + std::to_string(s.height) + ")";
-  });
+  require(memory.colour == cached.colour && memory.dot == cached.dot && memory.plain_triangle == cached.plain_triangle,
+          [&] {
+            return "render: memory path and value level differ (method " + std::string(pl::name(m)) + ", " +
+                   std::to_string(s.width) + "x" + std::to_string(s.height) + ")";
+          });
   return 0;
 }

@@ -391,7 +391,7 @@ def main():
                 fail(f"picker shows {step['src_a']}, which the report did not write")
         # The memory section's table: every step of section 3.1 at register level on the memory path.
         steps = report.get("memory", {}).get("steps", [])
-        if [st["step"] for st in steps] != ["1", "2.1", "2.2", "2.3", "2.4", "2.5", "2.6", "3", "4"]:
+        if [st["step"] for st in steps] != ["1", "2.1", "2.2", "2.3", "2.4", "2.5", "2.6", "3", "4", "5"]:
             fail(f"memory steps: {[st['step'] for st in steps]}")
         for st in steps:
             shown = dom.cells.get("memory-step-" + st["step"])

@@ -14,7 +14,7 @@ struct memory_step {
   std::string_view step, does, memory_path, value_path;
 };
 
-inline constexpr std::array<memory_step, 9> memory_steps{{
+inline constexpr std::array<memory_step, 10> memory_steps{{
     {"1",
      "Z buffer and the ambient colour into the LAB: the LAB cleared, Z cleared (Z = 0, ZTST = ALWAYS), every "
      "triangle with TEST_1 ZTE = 1, ZTST = GEQUAL, ZBUF_1 PSMZ24, ZMSK = 0",
@@ -43,6 +43,11 @@ inline constexpr std::array<memory_step, 9> memory_steps{{
      "Cs·Ad writing that channel",
      "register level: the copy is a local -> local transfer (TRXDIR = 2), the channel move a channel-fetch sprite",
      "value level for the copy and the channel move, register level for the multiply"},
+    {"5",
+     "non-normal-mapped geometry (--floor) into the output: Gouraud × the diffuse texture (MODULATE), ZTST = "
+     "GEQUAL, ZMSK = 0",
+     "register level: the diffuse texture read from memory, Z tested and written at ZBP in memory",
+     "register level for the pixel pipeline and the depth test; the texture read from a host array"},
 }};
 
 }  // namespace gsdot3::pipeline

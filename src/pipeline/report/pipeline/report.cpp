@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <stdexcept>
 
@@ -25,6 +26,21 @@
 namespace gsdot3::pipeline {
 
 namespace {
+
+// Step 5's pixels of a frame: how many, and the largest per-channel difference of their colour from
+// the float Gouraud the reference composes there (compose_plain).
+nlohmann::json step5_json(const frame& f, const std::vector<std::uint32_t>& reference) {
+  std::size_t pixels = 0;
+  int worst = 0;
+  for (std::size_t i = 0; i < f.colour.size(); ++i) {
+    if (f.plain_triangle[i] < 0) continue;
+    ++pixels;
+    for (int c = 0; c < 24; c += 8)
+      worst = std::max(
+          worst, std::abs(static_cast<int>((f.colour[i] >> c) & 0xFF) - static_cast<int>((reference[i] >> c) & 0xFF)));
+  }
+  return {{"pixels", pixels}, {"colour_max_abs_vs_float_gouraud", worst}};
+}
 
 using report_images::error_map;
 using report_images::grey_image;
@@ -201,7 +217,9 @@ report_summary write_report(const scene& s, const report_request& r) {
                   {"height", s.normals.height},
                   {"palette", s.normals.palette.size()},
                   {"index_bits", s.normals.bits}}},
-                {"lights", s.lights.size()}};
+                {"lights", s.lights.size()},
+                {"step5_triangles", s.plain.triangles.size()},
+                {"drawn_step5_triangles", front.plain.size()}};
   j["options"] = {{"s", r.options.s},
                   {"filter", r.options.bilinear ? "bilinear" : "nearest"},
                   {"specular", r.options.specular},
@@ -230,6 +248,7 @@ report_summary write_report(const scene& s, const report_request& r) {
     j["methods"][nm] = {{"frame_seconds", mr.seconds},
                         {"vs_renormalised", to_json(mr.vs_renormalised)},
                         {"vs_unnormalised", to_json(mr.vs_unnormalised)}};
+    if (!front.plain.empty()) j["methods"][nm]["step5"] = step5_json(frames[k], ref.colour);
     if (r.cost)
       j["methods"][nm]["ps2"] =
           mr.ps2.frame ? gs::cost::frame_json(*mr.ps2.frame, false) : nlohmann::json{{"not_priced", mr.ps2.not_priced}};
