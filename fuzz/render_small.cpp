@@ -1,5 +1,5 @@
 // fuzz/render_small.cpp — libFuzzer harness: a tiny random scene (a few triangles, a small frame, a
-// random normal map, lights (with four-pass sometimes a spot light), sometimes step 5's floor, model
+// random normal map, lights (sometimes a spot light, in four-pass at either placement), sometimes step 5's floor, model
 // options and method) through pipeline::render. No crash, and the two rasteriser paths — reference (every pass
 // rasterises again) and cached (the fast path: the fragments of step 1 replayed) — give identical frames, bit for bit.
 #include <cstddef>
@@ -95,12 +95,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     pl::validate(s.model);
   } catch (const std::runtime_error&) { return 0; }
   const pl::method m = pl::gs_methods[in.ConsumeIntegralInRange<std::size_t>(0, std::size(pl::gs_methods) - 1)];
-  if (m == pl::method::four_pass && in.ConsumeBool()) {  // section 3.6's spot light (four-pass only)
+  if (in.ConsumeBool()) {  // section 3.6's spot light
     s.lights[0].kind = pl::light_kind::spot;
     s.lights[0].direction = unit_vector(in);
     s.lights[0].cone_degrees = in.ConsumeFloatingPointInRange<float>(1.0f, 80.0f);
   }
   pl::render_options o = random_options(in);
+  o.spot_after_first_pass = m == pl::method::four_pass && in.ConsumeBool();
   const float yaw = in.ConsumeFloatingPointInRange<float>(0.0f, 360.0f);
   if (in.ConsumeBool()) s.plain = pl::floor_under(s.model, in.ConsumeIntegralInRange<int>(1, 4));  // step 5
   const pl::prepared_scene ps = pl::prepare(s, yaw, o.specular);

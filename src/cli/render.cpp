@@ -42,6 +42,7 @@ struct render_args {
   int normal_map_bits = 8;
   bool memory_path = false, scalar = false;
   bool floor = false;  // step 5's geometry
+  bool spot_after_first_pass = false;
   std::string dpb_clear = "explicit";
   int draw_buffers = 2;
   bool cost = false;  // render / report only: --cost and the cost model's options
@@ -202,12 +203,12 @@ scene_setup setup(const render_args& a) {
   for (const std::string& l : a.lights) lights.push_back(parse_light(l));
   const bool spot = std::any_of(lights.begin(), lights.end(),
                                 [](const pipeline::scene_light& l) { return l.kind == pipeline::light_kind::spot; });
-  if (spot && (!req.schemes.empty() || std::any_of(req.methods.begin(), req.methods.end(), [](pipeline::method m) {
-        return m != pipeline::method::four_pass;
-      })))
-    throw usage_error(
-        "--light spot:...: spot lights render with --method four-pass only (section 3.6 attenuates the "
-        "DPB after its four passes)");
+  if (spot && !req.schemes.empty())
+    throw usage_error("--light spot:...: the other seeds' methods draw no spot light (section 3.6 is the GS's)");
+  if (a.spot_after_first_pass && std::any_of(req.methods.begin(), req.methods.end(),
+                                             [](pipeline::method m) { return m != pipeline::method::four_pass; }))
+    throw usage_error("--spot-after-first-pass: four-pass's placement (section 3.6); use --method four-pass");
+  req.options.spot_after_first_pass = a.spot_after_first_pass;
   if (spot && a.lod_share)
     throw usage_error("--light spot:... and --lod-fade: spot lights are not split into LOD pairs");
   std::vector<float> eye;
@@ -334,7 +335,8 @@ void add_options(CLI::App* cmd, render_args& a) {
       "light [point:]X,Y,Z:RRGGBB (point light at a world position), directional:X,Y,Z:RRGGBB (world "
       "direction towards the light; section 3: the same tolight at every vertex) or spot:X,Y,Z:DX,DY,DZ:DEG:RRGGBB "
       "(section 3.6: a point light at X,Y,Z through a projective intensity texture, a cone of half-angle DEG about "
-      "the axis DX,DY,DZ; --method four-pass only); colour in hex, 0x80 = 1.0; "
+      "the axis DX,DY,DZ; four-pass blends it over the DPB after its four passes, the other GS methods over the "
+      "post filter's sum); colour in hex, 0x80 = 1.0; "
       "repeat for more lights; "
       "default: green 109820 at -2.2,1.4,2.2 and blue 1038B0 at 2.6,-0.2,0.4 (for a framed mesh: turned with --view)");
   cmd->add_option(
@@ -364,6 +366,9 @@ void add_options(CLI::App* cmd, render_args& a) {
          "pass (two-pass, three-pass, 2002, the other seeds') read the 8-bit map")
       ->check(CLI::IsMember({4, 8, 24}))
       ->capture_default_str();
+  cmd->add_flag("--spot-after-first-pass", a.spot_after_first_pass,
+                "four-pass: a spot light's texture over the DPB after the first (sphere-map) pass instead of after all "
+                "four (section 3.6 gives both)");
   cmd->add_flag("--floor", a.floor,
                 "section 3.1's step 5: a floor under the model, not normal-mapped, drawn after step 4 into the same "
                 "buffer as one generally would (per-vertex Lambert light of every light, Gouraud x the diffuse "

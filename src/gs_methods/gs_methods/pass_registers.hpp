@@ -101,6 +101,11 @@ inline constexpr pass_regs four_pass_z{true,  true,           gs::tfx::DECAL, gs
 // attenuating blend, COLCLAMP off as every DPB pass of step 2, alpha kept.
 inline constexpr pass_regs spot_attenuation{true,  true,      gs::tfx::DECAL, gs::tcc::RGBA, attenuate_about_source,
                                             false, keep_alpha};
+// The same blend on the post filter's sum alone (red: the dot product + 128), after step 2.4: how the
+// methods other than four-pass draw a spot light (the paper places it only in four-pass; a model
+// choice, pipeline/pass_table.hpp's spot_step).
+inline constexpr pass_regs spot_attenuation_red{
+    true, true, gs::tfx::DECAL, gs::tcc::RGBA, attenuate_about_source, false, only_channel[0]};
 inline constexpr pass_regs baseline_add{true, true, gs::tfx::MODULATE, gs::tcc::RGB, add_source, false, keep_alpha};
 inline constexpr pass_regs baseline_subtract{true,  true,      gs::tfx::MODULATE, gs::tcc::RGB, subtract_source,
                                              false, keep_alpha};

@@ -74,6 +74,9 @@ struct render_options {
   dpb_clear_mode dpb_clear = dpb_clear_mode::explicit_clear;
   bool simd = true;  // the SIMD pixel pipeline (gs_simd); false: gs::pixel_pipeline per pixel
   draw_buffers buffers = draw_buffers::two;
+  // Section 3.6's spot light in four-pass: its texture over the DPB after the first (sphere-map) pass
+  // instead of after all four (pass_table.hpp's spot_step).
+  bool spot_after_first_pass = false;
 };
 
 struct frame {

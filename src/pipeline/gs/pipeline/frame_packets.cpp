@@ -345,7 +345,20 @@ frame_packets build_frame_packets(const scene& s, const prepared_scene& ps, meth
     g.depth(depth_gequal, z_masked);
     // 2.3 (and two-pass's 2.4a): the method's light passes (Gouraud's for a Gouraud light, lod.hpp),
     // pass_table.hpp's list in draw order.
+    // Section 3.6's spot light where spot_step says (render.cpp): its texture (CLAMP, nearest), ST/Q.
+    const spot_step spot_at = spot_placement(light_method(m, s.lights[l]), o);
+    auto spot_pass = [&](spot_step when) {
+      if (!ps.spot(l) || when != spot_at) return;
+      const pass_regs& regs = when == spot_step::after_post_filter ? spot_attenuation_red : spot_attenuation;
+      g.clip(g.frame());
+      g.depth(depth_gequal, z_masked);
+      g.texture(regs, in.spot_at, spot_map_size, spot_map_size, std::nullopt, true, false);
+      g.target(DPB, regs);
+      g.projective_triangles(regs, white, [&](const prepared_triangle& t) { return spot_stq(ps, l, t); });
+    };
+    std::size_t drawn = 0;
     for (const light_pass& p : describe(light_method(m, s.lights[l])).light) {
+      if (drawn++ == 1) spot_pass(spot_step::after_first_pass);  // after the first pass, before the second
       const pass_regs& regs = *p.regs;
       const std::uint32_t cbp = in.cbp[static_cast<std::size_t>(p.clut)];
       auto colour = [&](const prepared_triangle& t, int k) { return vertex_rgbaq(p.colour, at(t, k), o.s); };
@@ -378,12 +391,7 @@ frame_packets build_frame_packets(const scene& s, const prepared_scene& ps, meth
         }
       }
     }
-    // Section 3.6's spot light after the four passes (render.cpp): its texture (CLAMP, nearest), ST/Q.
-    if (ps.spot(l)) {
-      g.texture(spot_attenuation, in.spot_at, spot_map_size, spot_map_size, std::nullopt, true, false);
-      g.target(DPB, spot_attenuation);
-      g.projective_triangles(spot_attenuation, white, [&](const prepared_triangle& t) { return spot_stq(ps, l, t); });
-    }
+    spot_pass(spot_step::after_light_passes);
     // 2.4: R += G, R += B; 2.5, 2.6: ILP[sum] × light colour added into the LAB.
     g.clip(area);
     g.depth(depth_always, z_masked);
@@ -391,6 +399,11 @@ frame_packets build_frame_packets(const scene& s, const prepared_scene& ps, meth
     for (unsigned c : {1u, 2u}) {
       g.texflush();
       g.channel_pass(post_add_into_red, white, cbp(clut_slot::grey), c, DPB);
+    }
+    if (spot_at == spot_step::after_post_filter && ps.spot(l)) {
+      spot_pass(spot_step::after_post_filter);
+      g.clip(area);
+      g.depth(depth_always, z_masked);
     }
     g.texflush();
     if (one) {  // the dot layer into free alpha l

@@ -122,15 +122,13 @@ gs_inputs make_inputs(const scene& s, method m, const render_options& o) {
   for (const passes::light_pass& p : passes::describe(m).light)
     if (p.source == passes::pass_source::sphere_map) in.sphere = sphere_map(64, 64);
   if (std::any_of(s.lights.begin(), s.lights.end(), [](const scene_light& l) { return l.kind == light_kind::spot; })) {
-    if (m != method::four_pass)
-      throw std::invalid_argument(
-          "spot lights render with the four-pass method only (section 3.6 attenuates the "
-          "DPB after its four passes), not " +
-          std::string(name(m)));
     if (std::any_of(s.lights.begin(), s.lights.end(), [](const scene_light& l) { return l.gouraud; }))
       throw std::invalid_argument("spot lights are not split into section 3.8's LOD pairs (--lod)");
     in.spot = spot_map();
   }
+  if (o.spot_after_first_pass && m != method::four_pass)
+    throw std::invalid_argument("a spot light after the first pass is four-pass's placement (section 3.6), not " +
+                                std::string(name(m)) + "'s");
   return in;
 }
 

@@ -196,7 +196,18 @@ inline method_view describe(method m) {
       });
 }
 
-// Section 3.6's spot light, after the four passes: triangle t's S, T, Q in the light's projection
+// Where a spot light's texture is drawn over the DPB (section 3.6): four-pass "after the first pass"
+// (render_options::spot_after_first_pass) or "after all four passes are complete" (the default), the
+// blend on every channel; every other method after the post filter (step 2.4) on its sum, the red byte
+// (spot_attenuation_red: the paper gives four-pass's placements only, so this is the model's choice
+// for the others — the same blend on the one byte that holds the dot product).
+enum class spot_step : std::uint8_t { after_first_pass, after_light_passes, after_post_filter };
+inline spot_step spot_placement(method m, const render_options& o) {
+  if (m != method::four_pass) return spot_step::after_post_filter;
+  return o.spot_after_first_pass ? spot_step::after_first_pass : spot_step::after_light_passes;
+}
+
+// Section 3.6's spot light: triangle t's S, T, Q in the light's projection
 // (prepare.hpp's spots), or S = T = 0, Q = 1 (texel (0, 0), a border texel: no light) when a vertex is
 // behind the light; and every triangle's sampler of the spot_map_size² texture (nothing for a light
 // that is not a spot light).

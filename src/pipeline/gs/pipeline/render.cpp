@@ -189,24 +189,36 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
       }
       note(p.label, li, "DPB", dpb);
     };
+    // Section 3.6: a spot light's projective intensity texture over the DPB, (Cd − Cs)·As + Cs with
+    // Cs = 128: each channel's signed value scaled by the texel's alpha / 128, where spot_step says.
+    const std::vector<gs::stq_sampler> spot = spot_samplers(ps, l, o.model);
+    const spot_step spot_at = spot_placement(light_method(m, s.lights[l]), o);
+    auto spot_pass = [&](spot_step when) {
+      if (spot.empty() || when != spot_at) return;
+      if (when == spot_step::after_post_filter) {
+        r.draw_projective<spot_attenuation_red>(spot_texture, spot, white, dpb);
+        note("2.4 spot light: (R − 128)·As + 128 on the sum (projective texture, ST/Q)", li, "DPB", dpb);
+      } else {
+        r.draw_projective<spot_attenuation>(spot_texture, spot, white, dpb);
+        note("2.3 spot light: (Cd − 128)·As + 128 (projective texture, ST/Q)", li, "DPB", dpb);
+      }
+    };
     with_method(
         light_method(m, s.lights[l]), [&]<const auto & D>() {
           [&]<std::size_t... I>(std::index_sequence<I...>) {
-            (draw_pass.template operator()<*D.light[I].regs, D.light[I].source>(D.light[I]), ...);
+            ((draw_pass.template operator()<*D.light[I].regs, D.light[I].source>(D.light[I]),
+              I == 0 ? spot_pass(spot_step::after_first_pass) : void()),
+             ...);
           }
           (std::make_index_sequence<D.light.size()>{});
         });
-    // Section 3.6: a spot light's projective intensity texture over the DPB after the four passes,
-    // (Cd − Cs)·As + Cs with Cs = 128: each channel's signed product scaled by the texel's alpha / 128.
-    if (const auto spot = spot_samplers(ps, l, o.model); !spot.empty()) {
-      r.draw_projective<spot_attenuation>(spot_texture, spot, white, dpb);
-      note("2.3 spot light: (Cd − 128)·As + 128 (projective texture, ST/Q)", li, "DPB", dpb);
-    }
+    spot_pass(spot_step::after_light_passes);
     // 2.4: R += G, R += B (mod 256): additive sprites writing red only.
     channel_pass<post_add_into_red>(r, fb, white, in.grey, 1, dpb, dpb);
     note("2.4 R += G", li, "DPB", dpb);
     channel_pass<post_add_into_red>(r, fb, white, in.grey, 2, dpb, dpb);
     note("2.4 R += B (the post-filter sum)", li, "DPB", dpb);
+    spot_pass(spot_step::after_post_filter);
     // Outside the sprite area no pass draws: 0x80 (dot 0), the two-buffer DPB's clear (with one
     // buffer the output there keeps its 0).
     const scissor& drawn = r.sprite_area();
