@@ -12,13 +12,12 @@
 
 #include <glm/geometric.hpp>
 
-#include "gs_packets/dump.hpp"
-#include "gs_packets/interpreter.hpp"
 #include "pipeline/default_scene.hpp"
 #include "pipeline/floor.hpp"
 #include "pipeline/frame_packets.hpp"
 #include "pipeline/pixel_walk.hpp"
 #include "pipeline/render.hpp"
+#include "replayed_frame.hpp"
 
 namespace gsdot3::pipeline {
 namespace {
@@ -141,20 +140,9 @@ TEST(PlainGeometry, ValuePathMemoryPathAndReplayedDumpAgree) {
       const frame memory = render(s, ps, m, o);
       EXPECT_EQ(value.colour, memory.colour) << name(m);
       EXPECT_EQ(value.plain_triangle, memory.plain_triangle) << name(m);
-      const frame_packets fp = build_frame_packets(s, ps, m, o);
-      const gs::dump::gs_dump d = gs::dump::read_dump(gs::dump::write_dump(frame_dump(fp)));
-      gs::mem::local_memory mem;
-      gs::packets::interpreter gs(mem, {o.model, false});
-      gs.replay(d);
-      EXPECT_TRUE(gs.unmodelled_features().empty());
-      const gs::mem::buffer out{fixed::uint<14>::from_wrapped(32 * fp.buffers.output()),
-                                fixed::uint<6>::from_wrapped(fp.buffers.fbw), gs::mem::psm::PSMCT32};
-      std::vector<std::uint32_t> replayed;
-      for (int y = 0; y < s.height; ++y)
-        for (int x = 0; x < s.width; ++x)
-          replayed.push_back(mem.read_pixel(out, static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y)) |
-                             0xFF000000u);
-      EXPECT_EQ(replayed, value.colour) << name(m);
+      const replayed_frame replayed = replay_frame(build_frame_packets(s, ps, m, o), o.model);
+      EXPECT_TRUE(replayed.unmodelled.empty());
+      EXPECT_EQ(replayed.colour, value.colour) << name(m);
     }
 }
 

@@ -313,6 +313,35 @@ TEST(Reference, CoversTheSamePixelsAndStaysInRange) {
   EXPECT_GT(covered, 3000u);
 }
 
+// Section 3.6: fade_att "will make sure triangles facing away from the light remain unlit". Every
+// four-pass pixel of a triangle whose three vertices have fade 0 for a light (n·l ≤ 0 at each) reads
+// dot product 0 exactly — the sphere pass's vertex colour makes the vector 128 at every pixel, so
+// each signed multiply gives 0 — for any normal-map texel and with either filter. (Its ILP entry, 1,
+// still adds 1/128 of the light: ilp.dpb-clear-zero.) The domain: every such pixel of the embedded
+// scene lit from four directions.
+TEST(FourPass, TrianglesFacingAwayFromTheLightGetDotZero) {
+  std::size_t away = 0;
+  for (const glm::vec3 at : {glm::vec3{3, 0, 1}, glm::vec3{-3, 1, 1}, glm::vec3{0, 3, 0.5f}, glm::vec3{0, -3, 1}})
+    for (const bool bilinear : {false, true}) {
+      scene s = shared_scene();
+      s.lights = {{at, {0x80, 0x80, 0x80}}};
+      const prepared_scene ps = prepare(s);
+      render_options o;
+      o.bilinear = bilinear;
+      const frame f = render(s, ps, method::four_pass, o);
+      for (std::size_t i = 0; i < f.visible_triangle.size(); ++i) {
+        if (f.visible_triangle[i] < 0) continue;
+        const prepared_triangle& t = ps.triangles[static_cast<std::size_t>(f.visible_triangle[i])];
+        if (std::all_of(t.vertex.begin(), t.vertex.end(),
+                        [&](std::uint32_t v) { return ps.lights[0][v].fade == 0.0f; })) {
+          ++away;
+          ASSERT_EQ(f.dot[0][i], 0x80) << "pixel " << i << " light at " << at.x << "," << at.y << "," << at.z;
+        }
+      }
+    }
+  EXPECT_GT(away, 5000u);
+}
+
 // A directional light is the limit of a point light moved away along its direction: the per-vertex
 // tolight vectors and fades of directional d equal those of a point light at 10^5·d (within float
 // error), under a yaw too, and unlike a nearby point light's they do not depend on the vertex.

@@ -18,12 +18,11 @@
 #include <stdexcept>
 #include <string>
 
-#include "gs_packets/dump.hpp"
-#include "gs_packets/interpreter.hpp"
 #include "pipeline/default_scene.hpp"
 #include "pipeline/frame_packets.hpp"
 #include "pipeline/pixel_walk.hpp"
 #include "pipeline/render.hpp"
+#include "replayed_frame.hpp"
 
 namespace gsdot3::pipeline {
 namespace {
@@ -114,20 +113,9 @@ TEST(SpotLight, ValuePathMemoryPathAndReplayedDumpAgree) {
     const frame memory = render(s, ps, pl.m, o);
     EXPECT_EQ(value.colour, memory.colour) << "seed " << seed;
     EXPECT_EQ(value.dot, memory.dot) << "seed " << seed;
-    const frame_packets fp = build_frame_packets(s, ps, pl.m, o);
-    const gs::dump::gs_dump d = gs::dump::read_dump(gs::dump::write_dump(frame_dump(fp)));
-    gs::mem::local_memory mem;
-    gs::packets::interpreter gs(mem, {o.model, false});
-    gs.replay(d);
-    EXPECT_TRUE(gs.unmodelled_features().empty());
-    const gs::mem::buffer out{fixed::uint<14>::from_wrapped(32 * fp.buffers.output()),
-                              fixed::uint<6>::from_wrapped(fp.buffers.fbw), gs::mem::psm::PSMCT32};
-    std::vector<std::uint32_t> replayed;
-    for (int y = 0; y < s.height; ++y)
-      for (int x = 0; x < s.width; ++x)
-        replayed.push_back(mem.read_pixel(out, static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y)) |
-                           0xFF000000u);
-    EXPECT_EQ(replayed, value.colour) << "seed " << seed;
+    const replayed_frame replayed = replay_frame(build_frame_packets(s, ps, pl.m, o), o.model);
+    EXPECT_TRUE(replayed.unmodelled.empty());
+    EXPECT_EQ(replayed.colour, value.colour) << "seed " << seed;
   }
 }
 

@@ -17,8 +17,6 @@
 #include "common/temp_dir.hpp"
 #include "gs_arith/options.hpp"
 #include "gs_arith/profiles.hpp"
-#include "gs_packets/dump.hpp"
-#include "gs_packets/interpreter.hpp"
 #include "pipeline/band_renderer.hpp"
 #include "pipeline/default_scene.hpp"
 #include "pipeline/files.hpp"
@@ -28,6 +26,7 @@
 #include "pipeline/normal_map_image.hpp"
 #include "pipeline/render.hpp"
 #include "method_param.hpp"
+#include "replayed_frame.hpp"
 
 namespace gsdot3::pipeline {
 namespace {
@@ -68,24 +67,16 @@ void expect_streamed_frames_equal(const scene& s, method m, render_options o, bo
       << what << ": the head should fill part of the frame";
 
   // The dump, as bytes and back, replayed: the output buffer (DISPFB1) is the value path's frame.
-  const frame_packets fp = build_frame_packets(s, ps, m, o);
-  const gs::dump::gs_dump d = gs::dump::read_dump(gs::dump::write_dump(frame_dump(fp)));
-  gs::mem::local_memory mem;
-  gs::packets::interpreter gs(mem, {o.model, false});
-  gs.replay(d);
-  for (const auto& u : gs.unmodelled_features())
+  const replayed_frame replayed = replay_frame(build_frame_packets(s, ps, m, o), o.model);
+  for (const auto& u : replayed.unmodelled)
     ADD_FAILURE() << what << ": unmodelled at byte " << u.offset << ": " << u.what;
-  const gs::mem::buffer out = fp.buffers.colour(fp.buffers.output());
   long replay_differing = 0;
-  for (int y = 0; y < s.height; ++y)
-    for (int x = 0; x < s.width; ++x) {
-      const std::uint32_t w =
-          mem.read_pixel(out, static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y)) | 0xFF000000u;
-      const std::uint32_t v = value.colour[static_cast<std::size_t>(y * s.width + x)];
-      if (w != v && replay_differing++ < 3)
-        ADD_FAILURE() << what << ": replay pixel (" << x << ", " << y << "): 0x" << std::hex << w << ", value path 0x"
-                      << v;
-    }
+  for (std::size_t i = 0; i < replayed.colour.size(); ++i) {
+    const std::uint32_t w = replayed.colour[i], v = value.colour[i];
+    if (w != v && replay_differing++ < 3)
+      ADD_FAILURE() << what << ": replay pixel (" << i % static_cast<std::size_t>(s.width) << ", "
+                    << i / static_cast<std::size_t>(s.width) << "): 0x" << std::hex << w << ", value path 0x" << v;
+  }
   EXPECT_EQ(replay_differing, 0) << what << ": replayed dump";
 }
 
