@@ -33,6 +33,9 @@ nlohmann::json to_json(const pipeline::quality_scene& q) {
                                       {"rmse_sign_change_triangles", e.sign_change},
                                       {"samples", e.samples},
                                       {"sign_change_samples", e.sign_change_samples},
+                                      {"edge_highlighting", e.edge_highlighting},
+                                      {"edge_samples", e.edge_samples},
+                                      {"inside_samples", e.inside_samples},
                                       {"gs_pixel_ops", e.pixel_ops}};
   return j;
 }

@@ -85,6 +85,35 @@ TEST(Quality, FiguresAgreeWithIndependentComputations) {
     EXPECT_EQ(e.sign_change_samples, n);
     if (n > 0) { EXPECT_NEAR(e.sign_change, std::sqrt(sum / static_cast<double>(n)), 1e-9); }
     sign_change_seen += n;
+    // Edge highlighting: the pixel centre (x, y) in 12.4 units solved for its weights by Cramer's rule
+    // on (v1 − v0, v2 − v0), in long double; near an edge below 0.1, inside above 0.25.
+    long double near_sum = 0, inside_sum = 0;
+    std::size_t near_n = 0, inside_n = 0;
+    for (std::size_t i = 0; i < f.visible_triangle.size(); ++i) {
+      if (f.visible_triangle[i] < 0) continue;
+      const auto& v = ps.triangles[static_cast<std::size_t>(f.visible_triangle[i])].setup.v;
+      const long double px = 16.0L * static_cast<long double>(i % static_cast<std::size_t>(s.width)),
+                        py = 16.0L * static_cast<long double>(i / static_cast<std::size_t>(s.width));
+      const long double ax = v[1].x - v[0].x, ay = v[1].y - v[0].y, bx = v[2].x - v[0].x, by = v[2].y - v[0].y;
+      const long double det = ax * by - ay * bx, qx = px - v[0].x, qy = py - v[0].y;
+      const long double l1 = (qx * by - qy * bx) / det, l2 = (ax * qy - ay * qx) / det;
+      const long double least = std::min({1.0L - l1 - l2, l1, l2});
+      if (least >= 0.1L && least <= 0.25L) continue;
+      for (std::size_t l = 0; l < s.lights.size(); ++l) {
+        const long double err = dot_value(f.dot[l][i]) - static_cast<long double>(ref.renormalised[l][i]);
+        if (least < 0.1L)
+          near_sum += err, ++near_n;
+        else
+          inside_sum += err, ++inside_n;
+      }
+    }
+    EXPECT_EQ(e.edge_samples, near_n);
+    EXPECT_EQ(e.inside_samples, inside_n);
+    ASSERT_GT(near_n * inside_n, 0u);
+    EXPECT_NEAR(e.edge_highlighting,
+                static_cast<double>(std::fabs(near_sum / static_cast<long double>(near_n) -
+                                              inside_sum / static_cast<long double>(inside_n))),
+                1e-9);
   }
   EXPECT_GT(sign_change_seen, 0u) << "the scene has no triangle where the per-vertex clamping acts";
   // Section 3.6's pair: four-pass's frames of the 8-bit map and of the three component maps, against
@@ -144,10 +173,14 @@ TEST(Quality, VerdictIsHoldsRefutedOrMixedWithTheCount) {
   EXPECT_EQ(r.verdict, "mixed (1 of 2)");
   ASSERT_EQ(r.per_scene.size(), 2u);
   EXPECT_EQ(r.per_scene[1], (std::pair<double, double>{4, 3}));
-  // Four-pass normalises: the unnormalised-product metrics are not its claim.
+  // Four-pass normalises: the unnormalised-product metrics are not its claim; figure 7's edge
+  // highlighting is (both errors 0 here: equal on every scene).
   EXPECT_EQ(std::count_if(rows.begin(), rows.end(),
                           [](const quality_row& x) { return x.claim == "quality.four-pass-vs-two-pass"; }),
-            1);
+            2);
+  EXPECT_EQ(find("quality.four-pass-vs-two-pass", "edge_highlighting").verdict, "refuted (equal on every scene)");
+  EXPECT_EQ(
+      std::count_if(rows.begin(), rows.end(), [](const quality_row& x) { return x.metric == "edge_highlighting"; }), 1);
 }
 
 TEST(Quality, EqualOnEveryScene) {

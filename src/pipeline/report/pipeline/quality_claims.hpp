@@ -23,6 +23,10 @@ namespace gsdot3::pipeline {
 //                     scale such as two-pass's s/128 can be undone by the intensity palette, the ILP)
 //   sign_change:      RMSE against unnormalised over the samples whose triangle has a vertex tolight
 //                     component of each sign: where section 2's per-vertex clamping acts (figure 1)
+//   edge_highlighting: |mean(d − r) near a triangle's edge − mean(d − r) inside it| against the
+//                     renormalised reference r: "near" is a pixel centre whose smallest barycentric
+//                     weight is below 0.1, "inside" above 0.25 — section 3.5's "lighting ... decrease[s]
+//                     in intensity across the triangle and results in edge highlighting"
 //   pixel_ops:        pixels sent through the GS pixel pipeline for the frame (a count, not a timing)
 // What an entry measures: the frame of the scene's map against the reference of that map (own_map), or,
 // against the reference of the unquantised normals (the 24-bit map, scene.hpp), the frame of the 8-bit
@@ -31,8 +35,8 @@ enum class map_read : std::uint8_t { own_map, palettised, three_maps };
 struct method_errors {
   method m{};
   map_read map = map_read::own_map;
-  double vs_renormalised = 0, vs_unnormalised = 0, after_gain = 0, gain = 0, sign_change = 0;
-  std::size_t samples = 0, sign_change_samples = 0, pixel_ops = 0;
+  double vs_renormalised = 0, vs_unnormalised = 0, after_gain = 0, gain = 0, sign_change = 0, edge_highlighting = 0;
+  std::size_t samples = 0, sign_change_samples = 0, edge_samples = 0, inside_samples = 0, pixel_ops = 0;
 };
 
 // One sentence of the paper compared on one metric over every scene: `better` is the method the
