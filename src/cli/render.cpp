@@ -1,6 +1,7 @@
 // gsdot3 render / gsdot3 report — whole frames through the modeled GS, compared with the float
 // dot product. `report` adds the HTML page; both write PNGs and report.json into --out.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -39,6 +40,7 @@ struct render_args {
   int s = 122, threads = 2;
   double specular = 0.0;
   std::optional<double> lod_share;
+  std::string lod_distance;  // NEAR,FAR: the share from the camera's distance (lod.hpp's lod_share_at)
   int normal_map_bits = 8;
   bool memory_path = false, scalar = false;
   bool floor = false;  // step 5's geometry
@@ -209,8 +211,17 @@ scene_setup setup(const render_args& a) {
                                              [](pipeline::method m) { return m != pipeline::method::four_pass; }))
     throw usage_error("--spot-after-first-pass: four-pass's placement (section 3.6); use --method four-pass");
   req.options.spot_after_first_pass = a.spot_after_first_pass;
-  if (spot && a.lod_share)
-    throw usage_error("--light spot:... and --lod-fade: spot lights are not split into LOD pairs");
+  if (spot && (a.lod_share || !a.lod_distance.empty()))
+    throw usage_error("--light spot:... and --lod-fade / --lod-distance: spot lights are not split into LOD pairs");
+  if (a.lod_share && !a.lod_distance.empty())
+    throw usage_error("--lod-fade and --lod-distance exclude each other (one gives the share, the other derives it)");
+  std::optional<std::array<double, 2>> lod_range;
+  if (!a.lod_distance.empty()) {
+    const auto r = parse_floats("--lod-distance", a.lod_distance, 2);
+    if (!(r[0] >= 0.0f && r[0] < r[1]))
+      throw usage_error("--lod-distance: expected NEAR,FAR with 0 <= NEAR < FAR, got '" + a.lod_distance + "'");
+    lod_range = std::array<double, 2>{r[0], r[1]};
+  }
   std::vector<float> eye;
   if (!a.camera.empty()) eye = parse_floats("--camera", a.camera, 3);
 
@@ -242,11 +253,23 @@ scene_setup setup(const render_args& a) {
   try {
     req.in = pipeline::make_scene(sr, progress);
   } catch (const std::runtime_error& e) { throw usage_error(e.what()); }
-  if (a.lod_share) req.in.s.lights = pipeline::split_for_lod(req.in.s.lights, *a.lod_share);
+  std::optional<double> share = a.lod_share;
+  if (lod_range) {
+    const double d = pipeline::camera_distance(req.in.s);
+    share = pipeline::lod_share_at(d, (*lod_range)[0], (*lod_range)[1]);
+    char text[200];
+    std::snprintf(text, sizeof text,
+                  "; section 3.8's level of detail: the camera %.4g from the model's centre, per-pixel share %.6g "
+                  "(1 at %.4g, 0 at %.4g, linear between)",
+                  d, *share, (*lod_range)[0], (*lod_range)[1]);
+    req.in.description += text;
+    progress(text + 2);
+  }
+  if (share) req.in.s.lights = pipeline::split_for_lod(req.in.s.lights, *share);
   if (req.options.buffers == pipeline::draw_buffers::one && req.in.s.lights.size() > pipeline::max_free_alpha_lights)
     throw usage_error("--draw-buffers 1: " + std::to_string(req.in.s.lights.size()) +
                       " lights, but the one-buffer variant keeps at most 3 dot layers in free alphas (section 3.1)" +
-                      (a.lod_share ? "; --lod-fade makes each light a pair" : ""));
+                      (share ? "; the level of detail makes each light a pair" : ""));
   if (a.normal_map_bits != 8)  // the maps read are 8-bit
     req.in.s.normals = pipeline::with_index_bits(req.in.s.normals, a.normal_map_bits);
   if (a.normal_map_bits == 4)
@@ -354,9 +377,14 @@ void add_options(CLI::App* cmd, render_args& a) {
   cmd->add_option("--lod-fade", a.lod_share,
                   "section 3.8's level of detail: every light becomes a co-located pair, the per-pixel light at "
                   "this share of its colour (nearest per channel) and a Gouraud-shaded light (gouraud's passes) at "
-                  "the rest; 1 = per-pixel only, 0 = Gouraud only, a light at 0 % is left out. An engine sets it "
+                  "the rest; 1 = per-pixel only, 0 = Gouraud only, a light at 0 % is left out. An engine sets it (see "
+                  "--lod-distance) "
                   "from the object's distance. The other seeds' methods draw both halves their own way")
       ->check(CLI::Range(0.0, 1.0));
+  cmd->add_option("--lod-distance", a.lod_distance,
+                  "section 3.8's fade by distance: NEAR,FAR in world units (a framed mesh: its radius); the share "
+                  "--lod-fade takes is 1 with the camera at NEAR or nearer to the model's centre, 0 at FAR or beyond, "
+                  "linear between (the paper leaves the mapping to the engine: this ramp is gsdot3's)");
   cmd->add_option(
          "--normal-map-bits", a.normal_map_bits,
          "bits per normal-map index (section 3.8's 4/8-bit maps): 8 = PSMT8 with 256 palette entries, 4 = "

@@ -76,6 +76,26 @@ TEST(LevelOfDetail, ShareOutsideTheUnitIntervalIsAnError) {
 // The far level of detail's 4-bit map from the embedded 8-bit one: 16 unit entries, and each texel's
 // entry is one nearest (largest dot product, brute force) to its 8-bit normal; widening keeps the
 // indices; other widths are errors.
+// The distance ramp at points whose share is an exact binary fraction, its ends, and bad ranges; the
+// camera distance of a box seen from a 3-4-5 offset.
+TEST(LevelOfDetail, ShareFallsLinearlyFromNearToFar) {
+  EXPECT_EQ(lod_share_at(1.0, 2.0, 4.0), 1.0);
+  EXPECT_EQ(lod_share_at(2.0, 2.0, 4.0), 1.0);
+  EXPECT_EQ(lod_share_at(3.0, 2.0, 4.0), 0.5);
+  EXPECT_EQ(lod_share_at(3.5, 2.0, 4.0), 0.25);
+  EXPECT_EQ(lod_share_at(4.0, 2.0, 4.0), 0.0);
+  EXPECT_EQ(lod_share_at(9.0, 2.0, 4.0), 0.0);
+  EXPECT_THROW(lod_share_at(1.0, 4.0, 4.0), std::invalid_argument);
+  EXPECT_THROW(lod_share_at(1.0, -1.0, 4.0), std::invalid_argument);
+  scene s;
+  s.model.vertices.resize(2);
+  s.model.vertices[0].position = {-1.0f, 1.0f, -2.0f};
+  s.model.vertices[1].position = {3.0f, 3.0f, 2.0f};  // centre (1, 2, 0)
+  s.view.eye = {1.0f, 5.0f, 4.0f};
+  EXPECT_EQ(camera_distance(s), 5.0);
+  EXPECT_THROW(camera_distance(scene{}), std::invalid_argument);
+}
+
 TEST(NormalMapBits, FourBitsAreTheNearestOf16EntriesToTheEightBitNormals) {
   const normal_map eight = procedural_normal_map(64);
   ASSERT_EQ(eight.bits, 8);

@@ -20,6 +20,14 @@ namespace gsdot3::pipeline {
 // std::invalid_argument.
 std::vector<scene_light> split_for_lod(const std::vector<scene_light>& lights, double share);
 
+// The share at a distance, an engine's mapping the paper leaves to the engine ("fade at distance
+// continuously"; this linear ramp is the model's choice): 1 at distance ≤ near, 0 at ≥ far, linear
+// between. Throws std::invalid_argument unless 0 ≤ near < far (finite).
+double lod_share_at(double distance, double near, double far);
+// The camera's distance to the centre of the model's bounding box (world units; the model as drawn,
+// yaw 0). Throws std::invalid_argument for a model without vertices.
+double camera_distance(const scene& s);
+
 // The GS method that draws light l of a frame drawn with method m: gouraud for a Gouraud light.
 constexpr method light_method(method m, const scene_light& l) noexcept { return l.gouraud ? method::gouraud : m; }
 
