@@ -347,14 +347,15 @@ frame_packets build_frame_packets(const scene& s, const prepared_scene& ps, meth
     // pass_table.hpp's list in draw order.
     // Section 3.6's spot light where spot_step says (render.cpp): its texture (CLAMP, nearest), ST/Q.
     const spot_step spot_at = spot_placement(light_method(m, s.lights[l]), o);
-    auto spot_pass = [&](spot_step when) {
-      if (!ps.spot(l) || when != spot_at) return;
+    auto spot_pass = [&](spot_step when) {  // whether it drew
+      if (!ps.spot(l) || when != spot_at) return false;
       const pass_regs& regs = when == spot_step::after_post_filter ? spot_attenuation_red : spot_attenuation;
       g.clip(g.frame());
       g.depth(depth_gequal, z_masked);
       g.texture(regs, in.spot_at, spot_map_size, spot_map_size, std::nullopt, true, false);
       g.target(DPB, regs);
       g.projective_triangles(regs, white, [&](const prepared_triangle& t) { return spot_stq(ps, l, t); });
+      return true;
     };
     std::size_t drawn = 0;
     for (const light_pass& p : describe(light_method(m, s.lights[l])).light) {
@@ -400,8 +401,7 @@ frame_packets build_frame_packets(const scene& s, const prepared_scene& ps, meth
       g.texflush();
       g.channel_pass(post_add_into_red, white, cbp(clut_slot::grey), c, DPB);
     }
-    if (spot_at == spot_step::after_post_filter && ps.spot(l)) {
-      spot_pass(spot_step::after_post_filter);
+    if (spot_pass(spot_step::after_post_filter)) {  // the post filter's clip and depth again
       g.clip(area);
       g.depth(depth_always, z_masked);
     }
