@@ -271,7 +271,7 @@ class band_renderer {
       const gs::rgba8 t = texel(x, y);
       std::uint32_t& word = fb(x, y);
       word = gs_pixel(regs, t, cf, word, x, y, o_.model);
-      if (pending != nullptr) note_shaded(index(x, y), t, cf);
+      if (pending != nullptr && in_frame(x, y)) note_shaded(index(x, y), t, cf);
       ++ops_;
     });
   }
@@ -296,6 +296,10 @@ class band_renderer {
     }
   }
 
+  // Whether (x, y) is a pixel of the frame: sprites clipped to whole pages (the z-trick modes' Z clear,
+  // channel_pass.hpp) also draw the buffer's pixels past the frame's right and bottom edges, which the
+  // frame-sized records (the trace, the frame's per-pixel vectors) do not have.
+  bool in_frame(int x, int y) const { return x < ps_.width && y < ps_.height; }
   std::size_t index(int x, int y) const {
     return static_cast<std::size_t>(y) * static_cast<std::size_t>(ps_.width) + static_cast<std::size_t>(x);
   }
