@@ -67,7 +67,13 @@ class stream {
     set(address("TRXREG"), gs::mem::encode(c->TRXREG));
     set(address("TRXDIR"), gs::mem::encode(lab_copy::TRXDIR));
   }
-  void clip(const scissor& r) { set(address("SCISSOR_1"), pk::scissor_value(r.x0, r.x1 - 1, r.y0, r.y1 - 1)); }
+  // SCISSOR_1 over r; an empty r (the sprite area of a frame that shows no triangle, which may lie at
+  // row or column 0) as SCAX0 = 1 > SCAX1 = 0 and the same in y, which no pixel passes.
+  void clip(const scissor& r) {
+    const bool empty = r.x0 >= r.x1 || r.y0 >= r.y1;
+    set(address("SCISSOR_1"),
+        empty ? pk::scissor_value(1, 0, 1, 0) : pk::scissor_value(r.x0, r.x1 - 1, r.y0, r.y1 - 1));
+  }
   // TEX0_1 (with the pass's TFX / TCC), TEX1_1, CLAMP_1.
   // cbp: the palette of a PSMT8 / PSMT8H texture, loaded (CLD = 1) unless `load` is false.
   void texture(const pass_regs& p, gs::mem::buffer at, int w, int h, std::optional<std::uint32_t> cbp, bool clamp,
