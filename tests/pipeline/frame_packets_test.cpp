@@ -5,6 +5,7 @@
 // and the dump container (header, state, packets, display registers) read back.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <map>
 #include <optional>
 #include <string>
@@ -22,7 +23,9 @@
 #include "pipeline/encoders.hpp"
 #include "pipeline/frame_packets.hpp"
 #include "pipeline/pass_table.hpp"
+#include "pipeline/render.hpp"
 #include "method_param.hpp"
+#include "replayed_frame.hpp"
 
 namespace gsdot3::pipeline {
 namespace {
@@ -164,7 +167,6 @@ class FramePackets : public ::testing::TestWithParam<method> {};
 TEST_P(FramePackets, DrawsThePapersPassesInOrder) {
   const scene& s = small_scene();
   const prepared_scene ps = prepare(s);
-  ASSERT_FALSE(ps.triangles.empty());
   const frame_packets fp = build_frame_packets(s, ps, GetParam(), render_options{});
   EXPECT_EQ(decode(fp).passes, expected_passes(GetParam(), s.lights.size()));
 }
@@ -448,6 +450,20 @@ TEST(FramePacketsLimits, RefusesWhatItDoesNotWrite) {
   wide.width = 1024;
   wide.height = 64;
   EXPECT_THROW(build_frame_packets(wide, prepare(wide), method::two_pass, render_options{}), std::invalid_argument);
+}
+
+// A frame whose triangles all lie above it has an empty sprite area at row 0, which SCISSOR_1 cannot
+// hold as SCAY1 = SCAY0 - 1 = -1 (render_small found it); the stream clips it to nothing and replays
+// to the renderer's frame: the ambient-free clear everywhere.
+TEST_P(FramePackets, AFrameShowingNoTriangleIsWrittenAndReplays) {
+  scene s = small_scene();
+  s.view.eye = {0.0f, -1.0f, 3.0f};
+  s.view.target = {0.0f, -6.0f, 0.0f};  // the head far above the frame's top edge
+  const prepared_scene ps = prepare(s);
+  const frame f = render(s, ps, GetParam(), render_options{});
+  ASSERT_TRUE(std::all_of(f.visible_triangle.begin(), f.visible_triangle.end(), [](int t) { return t < 0; }));
+  const replayed_frame r = replay_frame(build_frame_packets(s, ps, GetParam(), render_options{}), {});
+  EXPECT_EQ(r.colour, f.colour);
 }
 
 INSTANTIATE_TEST_SUITE_P(Methods, FramePackets, ::testing::ValuesIn(gs_methods), method_param_name);
