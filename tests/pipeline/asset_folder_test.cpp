@@ -1,18 +1,24 @@
 // What a mesh may read (pipeline/asset_folder.hpp) and how a command's output folder appears
-// (pipeline/files.hpp staged_directory). The glTF files are written here: a triangle whose buffer
-// is named by an absolute path, a ".." escape, an http: URI, a relative path and a data: URI.
+// (pipeline/files.hpp staged_directory, its signal clean-up staging_signals.hpp). The glTF files are written here: a
+// triangle whose buffer is named by an absolute path, a ".." escape, an http: URI, a relative path and a data: URI.
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <stdexcept>
 #include <string>
+
+#include <csignal>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include "common/temp_dir.hpp"
 #include "expect_error.hpp"
 #include "pipeline/asset_folder.hpp"
 #include "pipeline/files.hpp"
 #include "pipeline/mesh_import.hpp"
+#include "pipeline/staging_signals.hpp"
 
 namespace gsdot3::pipeline {
 namespace {
@@ -98,14 +104,14 @@ TEST(StagedDirectory, NothingAppearsUnlessCommitted) {
   const fs::path dir = gsdot3::test::fresh_temp_dir("gsdot3-staged");
   const fs::path out = dir / "out";
   {
-    staged_directory s(out);
+    staged_directory s(out, "report.json");
     write(s.path() / "a.png", "half");
     EXPECT_FALSE(fs::exists(out));
   }  // an error before commit
   EXPECT_FALSE(fs::exists(out));
   EXPECT_TRUE(fs::is_empty(dir)) << "the staging folder was left behind";
   {
-    staged_directory s(out);
+    staged_directory s(out, "report.json");
     write(s.path() / "a.png", "new");
     s.commit();
   }
@@ -116,27 +122,101 @@ TEST(StagedDirectory, NothingAppearsUnlessCommitted) {
   fs::remove_all(dir);
 }
 
-TEST(StagedDirectory, AnExistingFolderKeepsWhatTheRunDidNotWrite) {
+std::set<std::string> names_in(const fs::path& dir) {
+  std::set<std::string> names;
+  for (const auto& e : fs::directory_iterator(dir)) names.insert(e.path().filename().string());
+  return names;
+}
+
+// Issue 51: a rerun into a previous output folder leaves exactly its own files, never a merge.
+TEST(StagedDirectory, ARerunHoldsExactlyTheNewFiles) {
   const fs::path dir = gsdot3::test::fresh_temp_dir("gsdot3-staged");
   const fs::path out = dir / "out";
-  write(out / "notes.txt", "mine");
+  write(out / "report.json", "{}");  // a previous run's
+  write(out / "baseline-lit.png", "old");
   write(out / "a.png", "old");
+  write(out / "sub" / "b.png", "old");
   {
-    staged_directory s(out);
+    staged_directory s(out, "report.json");
     write(s.path() / "a.png", "new");
-    write(s.path() / "report.html", "page");
-    s.commit({"report.html"});
+    write(s.path() / "report.json", "{}");
+    s.commit();
   }
-  std::string a, notes;
+  EXPECT_EQ(names_in(out), (std::set<std::string>{".gsdot3-out", "a.png", "report.json"}));
+  std::string a;
   std::ifstream(out / "a.png") >> a;
-  std::ifstream(out / "notes.txt") >> notes;
   EXPECT_EQ(a, "new");
-  EXPECT_EQ(notes, "mine");
-  EXPECT_TRUE(fs::exists(out / "report.html"));
-  EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1)
-      << "a staging folder was left behind";
+  EXPECT_EQ(names_in(dir), std::set<std::string>{"out"}) << "a staging or old folder was left behind";
+  {  // and again, over a folder marked by the staging itself
+    staged_directory s(out, "report.json");
+    write(s.path() / "c.png", "newer");
+    s.commit();
+  }
+  EXPECT_EQ(names_in(out), (std::set<std::string>{".gsdot3-out", "c.png"}));
+  EXPECT_EQ(names_in(dir), std::set<std::string>{"out"});
+  fs::remove_all(dir);
+}
+
+// A folder that is no previous output (no mark) is refused before any work, and kept as it was.
+TEST(StagedDirectory, RefusesToReplaceAFolderThatIsNoOutput) {
+  const fs::path dir = gsdot3::test::fresh_temp_dir("gsdot3-staged");
+  write(dir / "home" / "notes.txt", "mine");
+  expect_error([&] { staged_directory s(dir / "home", "report.json"); }, "is not a previous output");
+  EXPECT_EQ(names_in(dir / "home"), std::set<std::string>{"notes.txt"});
+  fs::create_directory(dir / "empty");
+  {
+    staged_directory s(dir / "empty", "report.json");
+    write(s.path() / "a.png", "new");
+    s.commit();
+  }
+  EXPECT_EQ(names_in(dir / "empty"), (std::set<std::string>{".gsdot3-out", "a.png"}));
   write(dir / "file", "x");
-  EXPECT_THROW(staged_directory(dir / "file"), std::runtime_error);  // not a directory
+  expect_error([&] { staged_directory s(dir / "file", "report.json"); }, "not a directory");
+  fs::remove_all(dir);
+}
+
+// A process that has exited and been reaped: kill(pid, 0) fails with ESRCH until the PID is reused.
+pid_t gone_pid() {
+  const pid_t pid = ::fork();
+  if (pid == 0) ::_exit(0);
+  ::waitpid(pid, nullptr, 0);
+  return pid;
+}
+
+TEST(StagedDirectory, RemovesStaleStagingFoldersOfGoneProcessesOnly) {
+  const fs::path dir = gsdot3::test::fresh_temp_dir("gsdot3-staged");
+  const std::string gone = std::to_string(gone_pid()), live = std::to_string(::getppid());
+  ASSERT_NE(::kill(::getppid(), 0), -1);
+  write(dir / ("out.partial-" + gone + "-0") / "a.png", "left by a crash");
+  write(dir / ("out.partial-" + gone + "-3.gone") / "a.png", "left by a failed signal clean-up");
+  write(dir / ("out.partial-" + live + "-0") / "a.png", "a run still writing");
+  write(dir / ("other.partial-" + gone + "-0") / "a.png", "another folder's");
+  write(dir / "out.partial-x-0" / "a.png", "not a staging name");
+  { staged_directory s(dir / "out", "report.json"); }
+  EXPECT_EQ(names_in(dir),
+            (std::set<std::string>{"out.partial-" + live + "-0", "other.partial-" + gone + "-0", "out.partial-x-0"}));
+  fs::remove_all(dir);
+}
+
+TEST(StagedDirectory, MessagesNameTheTarget) {
+  const fs::path dir = gsdot3::test::fresh_temp_dir("gsdot3-staged");
+  staged_directory s(dir / "out", "report.json");
+  EXPECT_EQ(s.as_target((s.path() / "a.png.tmp").string() + ": cannot write"),
+            (dir / "out" / "a.png.tmp").string() + ": cannot write");
+  fs::remove_all(dir);
+}
+
+// The signal handler's removal: a tree of files and folders, a link to a folder outside it not followed.
+TEST(StagedDirectory, SignalSafeRemovalRemovesTheTreeAndNoLinkTarget) {
+  const fs::path dir = gsdot3::test::fresh_temp_dir("gsdot3-staged");
+  write(dir / "keep" / "k.txt", "outside");
+  for (int i = 0; i < 300; ++i) write(dir / "t" / std::to_string(i), "x");  // several reads of the folder
+  write(dir / "t" / "sub" / "deeper" / "x.png", "x");
+  fs::create_directory_symlink(dir / "keep", dir / "t" / "sub" / "link");
+  EXPECT_TRUE(remove_tree_signal_safe((dir / "t").c_str()));
+  EXPECT_EQ(names_in(dir), std::set<std::string>{"keep"});
+  EXPECT_EQ(names_in(dir / "keep"), std::set<std::string>{"k.txt"});
+  EXPECT_TRUE(remove_tree_signal_safe((dir / "missing").c_str()));
   fs::remove_all(dir);
 }
 

@@ -6,7 +6,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
@@ -140,20 +139,14 @@ std::string normalisation_warning(const error_stats& n, bool four_pass_brighter)
   return text;
 }
 
-report_summary write_report(const scene& s, const report_request& r) {
+namespace {
+
+// write_report's work, every file into `staged`.
+report_summary write_staged(const scene& s, const report_request& r, staged_directory& staged) {
   namespace fs = std::filesystem;
   auto say = [&](const std::string& m) {
     if (r.progress) r.progress(m);
   };
-  std::error_code ec;
-  if (fs::is_directory(r.out_dir, ec)) {  // fail early, before minutes of work, if it cannot be written into
-    const fs::path probe = r.out_dir / ".gsdot3-write-test";
-    std::ofstream p(probe);
-    if (!p) throw std::runtime_error(r.out_dir.string() + ": the output directory is not writable");
-    p.close();
-    fs::remove(probe, ec);
-  }
-  staged_directory staged(r.out_dir);  // nothing reaches out_dir unless the whole report is written
   const fs::path& dir = staged.path();
   report_summary sum;
   sum.html = r.out_dir / "report.html";
@@ -380,11 +373,18 @@ report_summary write_report(const scene& s, const report_request& r) {
     say("writing the page and the inspector's per-pixel data");
     page.report_json = j.dump(2);
     write_report_page(dir, page);
-  } else {
-    fs::remove(sum.html, ec);  // a previous run's page would describe other frames
   }
-  staged.commit({"report.json", "report.html"});  // last: the page's presence means the report is complete
+  staged.commit();
   return sum;
+}
+
+}  // namespace
+
+report_summary write_report(const scene& s, const report_request& r) {
+  staged_directory staged(r.out_dir, "report.json");  // nothing reaches out_dir unless the whole report is written
+  try {
+    return write_staged(s, r, staged);
+  } catch (const std::runtime_error& e) { throw std::runtime_error(staged.as_target(e.what())); }
 }
 
 }  // namespace gsdot3::pipeline

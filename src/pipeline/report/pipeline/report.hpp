@@ -78,9 +78,9 @@ inline constexpr double normalisation_warning_rmse = 4.0;
 std::string normalisation_warning(const error_stats& normalisation, bool four_pass_brighter);
 
 // Renders, compares and writes everything into a staged folder that becomes out_dir only when all
-// is written (staged_directory: nothing half written; files of out_dir it does not write are kept).
-// Throws std::runtime_error (one line) when the directory cannot be written or the frame shows no
-// pixel of the mesh (with what to try).
+// is written (staged_directory: nothing half written; a previous out_dir is replaced whole, so it holds
+// exactly this run's files). Throws std::runtime_error (one line, naming out_dir, never the staged
+// folder) when the directory cannot be written or the frame shows no pixel of the mesh (with what to try).
 report_summary write_report(const scene& s, const report_request& r);
 
 }  // namespace gsdot3::pipeline
