@@ -13,6 +13,7 @@
 
 #include "commands.hpp"
 #include "pipeline/files.hpp"
+#include "pipeline/image_io.hpp"
 
 namespace gsdot3::cli {
 namespace {
@@ -22,11 +23,23 @@ struct rgba_image {
   std::vector<std::uint8_t> px;  // RGBA, rows top first
 };
 
-// Any PNG, converted to 8-bit RGBA by libpng's simplified API.
-rgba_image read_rgba(const std::string& file) {
+// The header of FILE read (libpng's simplified API), its size checked as the image loaders check it.
+png_image begin_read(const std::string& file) {
   png_image img{};
   img.version = PNG_IMAGE_VERSION;
   if (!png_image_begin_read_from_file(&img, file.c_str())) throw usage_error(file + ": " + img.message);
+  try {
+    pipeline::check_image_size(img.width, img.height, file);
+  } catch (const std::runtime_error& e) {
+    png_image_free(&img);
+    throw usage_error(e.what());
+  }
+  return img;
+}
+
+// Any PNG, converted to 8-bit RGBA.
+rgba_image read_rgba(const std::string& file) {
+  png_image img = begin_read(file);
   img.format = PNG_FORMAT_RGBA;
   rgba_image out;
   out.width = img.width;
@@ -47,6 +60,13 @@ std::string hex_pixel(const std::uint8_t* p) {
 }
 
 }  // namespace
+
+void check_png(const std::string& option, const std::string& file) {
+  try {
+    png_image img = begin_read(file);
+    png_image_free(&img);
+  } catch (const usage_error& e) { throw usage_error(option + ": " + e.what()); }
+}
 
 std::uint64_t compare_pngs(const std::string& file_a, const std::string& file_b, const std::string& heat_file,
                            int first_n, std::ostream& out) {

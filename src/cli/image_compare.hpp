@@ -11,6 +11,9 @@
 
 namespace gsdot3::cli {
 
+// Throws usage_error "OPTION: FILE: why" unless FILE's header reads as a PNG of a size compare_pngs takes.
+void check_png(const std::string& option, const std::string& file);
+
 std::uint64_t compare_pngs(const std::string& a, const std::string& b, const std::string& heat, int first,
                            std::ostream& out);
 

@@ -2,8 +2,11 @@
 #include <cstdio>
 #include <exception>
 #include <iostream>
+#include <stdexcept>
+#include <string>
 
 #include "commands.hpp"
+#include "pipeline/files.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"gsdot3 — bit-exact fixed-point verification of DOT3 normal mapping on the PS2 GS"};
@@ -32,6 +35,21 @@ int main(int argc, char** argv) {
     for (CLI::App* sub : a->get_subcommands({})) self(sub, self);
   };
   one_value_each(&app, one_value_each);
+  gsdot3::pipeline::remove_staging_on_signals();  // an interrupted run leaves no --out staging folder
+  std::string commands;
+  bool known = false;
+  for (CLI::App* sub : app.get_subcommands({})) {
+    commands += (commands.empty() ? "" : ", ") + sub->get_name();
+    known = known || (argc > 1 && sub->check_name(argv[1]));
+  }
+  if (argc < 2) {
+    std::cerr << "gsdot3: error: give a command (" << commands << "; gsdot3 CMD --help)\n";
+    return 2;
+  }
+  if (argv[1][0] != '-' && !known) {
+    std::cerr << "gsdot3: error: unknown command '" << argv[1] << "' (commands: " << commands << ")\n";
+    return 2;
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) { return app.exit(e); } catch (const CLI::CallForAllHelp& e) {
@@ -40,6 +58,9 @@ int main(int argc, char** argv) {
     std::cerr << "gsdot3: error: " << e.what() << " (see --help)\n";
     return 2;
   } catch (const gsdot3::cli::usage_error& e) {
+    std::cerr << "gsdot3: error: " << e.what() << "\n";
+    return 2;
+  } catch (const std::invalid_argument& e) {  // the libraries' word for bad input (their bugs throw logic_error)
     std::cerr << "gsdot3: error: " << e.what() << "\n";
     return 2;
   } catch (const std::exception& e) {

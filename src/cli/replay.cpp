@@ -92,17 +92,19 @@ struct args {
 };
 
 // Writes into the staging folder; prints the name the file has once the folder is committed (--out).
-void write_picture(const std::filesystem::path& file, const std::string& out, const pipeline::image& img) {
+void write_picture(const pipeline::staged_directory& dir, const std::string& name, const std::string& out,
+                   const pipeline::image& img) {
   try {
-    pipeline::write_png(file, img);
-  } catch (const std::runtime_error& e) { throw usage_error(e.what()); }
-  std::cout << (std::filesystem::path(out) / file.filename()).string() << "\n";
+    pipeline::write_png(dir.path() / name, img);
+  } catch (const std::runtime_error& e) { throw usage_error(dir.as_target(e.what())); }
+  std::cout << (std::filesystem::path(out) / name).string() << "\n";
 }
 
 void run(const args& a, context& ctx) {
   std::vector<buffer_arg> bufs;
   for (const auto& s : a.buffers) bufs.push_back(parse_buffer(s));
   if (a.height > 2048) throw usage_error("--height: out of range 1..2048");
+  if (!a.expect.empty()) check_png("--expect", a.expect);  // before the replay, which may take long
   gs::dump::gs_dump d;
   try {
     d = gs::dump::load_dump(a.file);
@@ -136,15 +138,12 @@ void run(const args& a, context& ctx) {
   if (bufs.empty() && !disp.frame) return;
   std::optional<pipeline::staged_directory> out;  // the PNGs appear together or not at all
   try {
-    out.emplace(a.out);
+    out.emplace(a.out, "display.png");
   } catch (const std::runtime_error& e) { throw usage_error("--out: " + std::string(e.what())); }
-  int compared = 0;
-  if (disp.frame && disp.frame->width > 0 && disp.frame->height > 0) {
-    const auto file = out->path() / "display.png";
-    write_picture(file, a.out,
+  const bool displayed = disp.frame && disp.frame->width > 0 && disp.frame->height > 0;
+  if (displayed)
+    write_picture(*out, "display.png", a.out,
                   picture(m, disp.frame->buffer, disp.frame->x, disp.frame->y, disp.frame->width, disp.frame->height));
-    if (!a.expect.empty()) compared = compare_pngs(file.string(), a.expect, a.heat, 10, std::cout) == 0 ? 0 : 1;
-  }
   for (const auto& b : bufs) {
     unsigned h = a.height;
     if (h == 0)  // the lowest row any transfer into this buffer wrote
@@ -153,15 +152,19 @@ void run(const args& a, context& ctx) {
             t.bitbltbuf.DBW.value() == static_cast<int>(b.fbw))
           h = std::max(h, static_cast<unsigned>(t.trxpos.DSAY.value() + t.trxreg.RRH.value()));
     if (h == 0) throw usage_error("--buffer " + b.text + ": no transfer wrote it; give --height");
-    const auto file = out->path() / ("buffer_" + std::to_string(b.fbp) + "_" + std::to_string(b.fbw) + "_" +
-                                     std::string(mem::name_of(b.psm)) + ".png");
+    const std::string name = "buffer_" + std::to_string(b.fbp) + "_" + std::to_string(b.fbw) + "_" +
+                             std::string(mem::name_of(b.psm)) + ".png";
     const mem::buffer buf{fixed::uint<14>::from_wrapped(b.fbp * 32), fixed::uint<6>::from_wrapped(b.fbw), b.psm};
-    write_picture(file, a.out, picture(m, buf, 0, 0, 64 * b.fbw, h));
+    write_picture(*out, name, a.out, picture(m, buf, 0, 0, 64 * b.fbw, h));
   }
   try {
     out->commit();
   } catch (const std::runtime_error& e) { throw usage_error("--out: " + std::string(e.what())); }
-  ctx.exit_code = compared;
+  // After the commit, so that every message names the frame where the user finds it.
+  if (displayed && !a.expect.empty())
+    ctx.exit_code =
+        compare_pngs((std::filesystem::path(a.out) / "display.png").string(), a.expect, a.heat, 10, std::cout) == 0 ? 0
+                                                                                                                    : 1;
 }
 
 }  // namespace
