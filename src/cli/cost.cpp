@@ -123,7 +123,8 @@ void print_claims(const args& a) {
 
 void run(args a) {
   a.o = a.model.resolve();
-  if (a.claims != a.file.empty()) throw usage_error("give a dump FILE or --claims, not both");
+  if (!a.claims && a.file.empty()) throw usage_error("give a dump FILE or --claims");
+  if (a.claims && !a.file.empty()) throw usage_error("give a dump FILE or --claims, not both");
   if (a.markdown && !a.claims) throw usage_error("--markdown goes with --claims");
   if (a.claims) {
     print_claims(a);

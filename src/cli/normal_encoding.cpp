@@ -82,7 +82,9 @@ normal_encoding::worst_case worst_case(const args& a, const std::string& method)
                        ? normal_encoding::method_of(normal_encoding::method_id::octahedral)
                        : m;
   normal_encoding::code_window win{};
-  if (a.window > 0) {
+  // spherical-lut exists only at 8 bits and its cells are LUT texels, not codes: always its whole sphere.
+  const bool windowed = a.window > 0 && !m.only_8_bits;
+  if (windowed) {
     // Around the 2×10 worst cell, scaled to `bits`: only those (2R + 1)² codes (a lower bound).
     const auto w10 = normal_encoding::cell_worst_case(cm, 10, 2);
     const bool snorm = cm.id == normal_encoding::method_id::octahedral_snorm;
@@ -93,9 +95,10 @@ normal_encoding::worst_case worst_case(const args& a, const std::string& method)
       return static_cast<std::uint32_t>(q * static_cast<double>(normal_encoding::unorm_max(a.bits)) / 1023.0 + 0.5);
     };
     const std::uint32_t ci = scaled(w10.q.c[0]), cj = scaled(w10.q.c[1]);
-    win = {ci > a.window ? ci - a.window : 0, ci + a.window, cj > a.window ? cj - a.window : 0, cj + a.window};
+    auto up = [&](std::uint32_t c) { return c > 0xFFFFFFFFu - a.window ? 0xFFFFFFFFu : c + a.window; };
+    win = {ci > a.window ? ci - a.window : 0, up(ci), cj > a.window ? cj - a.window : 0, up(cj)};
   }
-  return normal_encoding::cell_worst_case(cm, a.bits, 2, normal_encoding::default_tolerance_rad, a.window == 0, win);
+  return normal_encoding::cell_worst_case(cm, a.bits, 2, normal_encoding::default_tolerance_rad, !windowed, win);
 }
 
 // The normalisation bug of the 2009 encoders as its own figure: the encoder given v, the interpolated
@@ -213,8 +216,10 @@ void run(const args& a, context& ctx) {
                 worst.c_str(), upper.c_str());
   }
   if (a.window > 0)
-    std::printf("worst_deg here: sup over the %u x %u codes around the scaled 2x10 worst cell only: a LOWER bound\n",
-                2 * a.window + 1, 2 * a.window + 1);
+    std::printf(
+        "worst_deg here: sup over the %u x %u codes around the scaled 2x10 worst cell only: a LOWER bound "
+        "(spherical-lut: its whole sphere, 8 bits only)\n",
+        2 * a.window + 1, 2 * a.window + 1);
   std::printf(
       "worst_deg: sup over the whole sphere of the angle (#8: its front hemisphere), +NaN: some cells decode to NaN;\n"
       "octahedral-precise: octahedral's sup bounds it. #8 runs with the view down -z (= #1).\n\n");

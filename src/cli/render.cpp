@@ -38,7 +38,7 @@ struct render_args {
   std::vector<std::string> lights;
   model_args model;
   int s = 122, threads = 2;
-  double specular = 0.0;
+  std::optional<double> specular;  // the ILP power; unset: diffuse
   std::optional<double> lod_share;
   std::string lod_distance;  // NEAR,FAR: the share from the camera's distance (lod.hpp's lod_share_at)
   int normal_map_bits = 8;
@@ -183,10 +183,10 @@ scene_setup setup(const render_args& a) {
   req.options.path = a.path == "cached" ? pipeline::raster_path::cached : pipeline::raster_path::reference;
   if (a.threads < 1 || a.threads > 64) throw usage_error("--threads: expected 1..64");
   req.options.threads = a.threads;
-  if (a.specular != 0.0) {
-    if (!(a.specular >= 1.0 && a.specular <= 256.0)) throw usage_error("--specular: the ILP power must be 1..256");
+  if (a.specular) {
+    if (!(*a.specular >= 1.0 && *a.specular <= 256.0)) throw usage_error("--specular: the ILP power must be 1..256");
     req.options.specular = true;
-    req.options.specular_power = a.specular;
+    req.options.specular_power = *a.specular;
   }
   req.options.model = a.model.resolve();
   const auto [w, h] = parse_size(a.size);

@@ -78,8 +78,9 @@ TEST(AssetFolder, GltfBuffersOutsideTheFilesFolderAreRefused) {
   EXPECT_EQ(import_mesh(dir / "model" / "data.gltf").model.triangles.size(), 1u);
   for (const char* f : {"dotdot.gltf", "deeper_dotdot.gltf"})
     expect_error([&] { import_mesh(dir / "model" / f); }, "outside the file's folder");
-  // assimp composes "model//DIR/outside.bin", which is looked for below model/ and is not there.
-  expect_error([&] { import_mesh(dir / "model" / "absolute.gltf"); }, "could not open referenced file");
+  // assimp composes "model//DIR/outside.bin"; refused with the same line, naming the URI (issue 51).
+  expect_error([&] { import_mesh(dir / "model" / "absolute.gltf"); },
+               "outside the file's folder (" + (dir / "outside.bin").string() + ")");
   expect_error([&] { import_mesh(dir / "model" / "http.gltf"); }, "URI scheme (http:)");
   fs::remove_all(dir);
 }
@@ -90,7 +91,8 @@ TEST(AssetFolder, OutsideFolderJudgesTheResolvedPath) {
   const std::string m = (dir / "m").string();
   EXPECT_EQ(outside_folder(dir / "m", m + "/maps/n.png"), "");
   EXPECT_EQ(outside_folder(dir / "m", m + "/maps/../n.png"), "");  // still inside
-  EXPECT_EQ(outside_folder(dir / "m", m + "//etc/passwd"), "");    // opened as m/etc/passwd
+  EXPECT_EQ(outside_folder(dir / "m", m + "//etc/passwd"), "a path outside the file's folder (/etc/passwd)");
+  EXPECT_EQ(outside_folder(dir / "m", m + "//no-such-file"), "");  // opened as m/no-such-file
   EXPECT_NE(outside_folder(dir / "m", m + "/../n.png"), "");
   EXPECT_NE(outside_folder(dir / "m", "/etc/passwd"), "");
   EXPECT_NE(outside_folder(dir / "m", m + "/file:///etc/passwd"), "");

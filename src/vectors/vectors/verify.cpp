@@ -2,7 +2,10 @@
 #include "vectors/verify.hpp"
 
 #include <cstdint>
+#include <iterator>
 #include <optional>
+#include <sstream>
+#include <string>
 #include <string_view>
 
 #include "gs_arith/pixel_pipeline.hpp"
@@ -127,9 +130,21 @@ std::optional<blend_sample> parse_sample(std::string_view line) {
 
 }  // namespace
 
-verify_result verify_ps2autotests(std::istream& in, std::ostream& report, const verify_settings& s) {
+verify_result verify_ps2autotests(std::istream& input, std::ostream& report, const verify_settings& s) {
   gs::model_options o;
   apply_overrides(o, s);
+  // Not a recording at all (no mode line: another format, e.g. a gsdot3 vector file) is one error, not
+  // a failure per line.
+  const std::string text{std::istreambuf_iterator<char>(input), std::istreambuf_iterator<char>()};
+  std::istringstream in(text);
+  bool has_mode = false;
+  for (std::string line; !has_mode && std::getline(in, line);) has_mode = is_mode_line(line);
+  if (!has_mode)
+    throw format_error(text.starts_with(format_magic)
+                           ? "a gsdot3 vector file, not a ps2autotests recording (leave out --format ps2autotests)"
+                           : "no 'ABCD: ...' mode line: not a ps2autotests gs/blend.expected recording");
+  in.clear();
+  in.seekg(0);
   reporter rep(report, s);
   std::optional<gs::alpha_reg> alpha;
   std::string mode;

@@ -71,7 +71,8 @@ verify_result verify_vectors(std::istream& in, std::ostream& report, const verif
 // The ps2autotests gs/blend.expected format (see ../shared/hw/README.md): each sample is the
 // recorded hardware result of drawing `dst` unblended, then `src` blended with ALPHA_1 = ABCD/FIX,
 // COLCLAMP = 1, PSMCT32; the model runs the same two pixels through gs::pixel_pipeline. The
-// recorded value is the observed one.
+// recorded value is the observed one. Throws format_error when no line is an 'ABCD: ...' mode line (not
+// such a recording); a malformed line in a recording is a failure.
 verify_result verify_ps2autotests(std::istream& in, std::ostream& report, const verify_settings& s);
 
 }  // namespace gsdot3::vectors

@@ -29,15 +29,26 @@ std::string outside_folder(const std::filesystem::path& folder, const std::strin
   // The scheme is judged on what the file named: assimp composes "folder/" + the URI.
   std::string named = reference;
   const std::string prefix = folder.empty() ? std::string() : folder.string() + "/";
-  if (!prefix.empty() && named.compare(0, prefix.size(), prefix) == 0) named.erase(0, prefix.size());
+  bool absolute = false;  // "folder/" + an absolute URI
+  if (!prefix.empty() && named.compare(0, prefix.size(), prefix) == 0) {
+    named.erase(0, prefix.size());
+    absolute = named.starts_with('/');
+  }
   named.erase(0, named.find_first_not_of('/'));
   if (has_scheme(named))
     return "a URI scheme (" + named.substr(0, named.find(':') + 1) + ") other than a relative path";
-  // The rest as the operating system opens the path: "a//b" is "a/b", ".." and links resolved.
+  // As the operating system opens a path: "a//b" is "a/b", ".." and links resolved.
+  auto outside = [&](const fs::path& p) {
+    const fs::path resolved = fs::weakly_canonical(fs::absolute(p, ec), ec);
+    return std::mismatch(root.begin(), root.end(), resolved.begin(), resolved.end()).first != root.end();
+  };
+  // An absolute URI that names a file outside the folder. (assimp's OBJ reader also composes "folder/" +
+  // the material library's absolute path, or "folder//" + its name: files below the folder or none.)
+  if (absolute && fs::exists("/" + named, ec) && outside("/" + named))
+    return "a path outside the file's folder (/" + named + ")";
   const fs::path resolved = fs::weakly_canonical(fs::absolute(fs::path(reference), ec), ec);
   if (ec) return "a path that cannot be resolved";
-  const auto r = std::mismatch(root.begin(), root.end(), resolved.begin(), resolved.end()).first;
-  if (r != root.end()) return "a path outside the file's folder (" + resolved.string() + ")";
+  if (outside(resolved)) return "a path outside the file's folder (" + resolved.string() + ")";
   return "";
 }
 

@@ -16,8 +16,9 @@ namespace gsdot3::pipeline {
 // joins folder and a material's file name) may not be opened, or "" when it may: resolved as the
 // operating system opens it (relative to the working directory, "a//b" as "a/b", ".." and symbolic
 // links followed), it lies outside `folder`; or the name has a URI scheme ("http:", "file:"; data:
-// URIs never reach a file system, the importer decodes them). An absolute glTF URI composed under
-// the folder ("folder//etc/passwd") is looked for there and never reaches the absolute location.
+// URIs never reach a file system, the importer decodes them); or it is an absolute URI composed under
+// the folder ("folder//etc/passwd") that names an existing file outside the folder (named as the URI
+// gave it).
 std::string outside_folder(const std::filesystem::path& folder, const std::string& reference);
 
 // assimp's standard file access, refusing what outside_folder refuses; the first refusal is kept so

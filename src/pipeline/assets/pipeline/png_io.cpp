@@ -75,6 +75,7 @@ image read_texture_image_png(const std::filesystem::path& file, bool grey) {
     fail(file, what + " is " + std::to_string(img.width) + "x" + std::to_string(img.height) +
                    "; width and height must be powers of two from 8 to 1024");
   if (!grey && img.channels != 3) fail(file, "the normal map must be an RGB image, not grey");
+  if (grey && img.channels != 1) fail(file, "the height map must be a grey image, not colour");
   return img;
 }
 

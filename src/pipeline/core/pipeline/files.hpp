@@ -13,7 +13,7 @@
 
 namespace gsdot3::pipeline {
 
-// A normal map made from an 8-bit grey (or RGB: red) height map PNG: central differences with
+// A normal map made from an 8-bit grey height map PNG (a colour PNG is refused): central differences with
 // slopes scaled by `strength` (height units: grey levels), then quantised to 256 entries.
 normal_map load_height_map_png(const std::filesystem::path& file, float strength);
 
@@ -61,7 +61,8 @@ class staged_directory {
 void remove_staging_on_signals();
 
 // The texels of an 8-bit PNG texture (power-of-two sides 8..1024, as the loaders above check): RGB
-// (alpha stripped), or grey when `grey` is set and the file is grey. Used by `gsdot3 pvr-bump`.
+// (alpha stripped), or, when `grey` is set, grey (a colour file is refused: a height map has one
+// channel). Used by `gsdot3 pvr-bump`.
 image read_texture_image_png(const std::filesystem::path& file, bool grey);
 
 }  // namespace gsdot3::pipeline
