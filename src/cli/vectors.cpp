@@ -82,7 +82,13 @@ void run_gen(const gen_args& a) {
         throw usage_error("-o: error writing '" + a.output + "'");
       }
     }
-    std::filesystem::rename(tmp, a.output);
+    std::error_code ec;
+    std::filesystem::rename(tmp, a.output, ec);
+    if (ec) {
+      const std::string why = ec.message();
+      std::filesystem::remove(tmp, ec);
+      throw usage_error("-o: cannot write '" + a.output + "' (" + why + ")");
+    }
   }
   std::cerr << "gsdot3 vectors gen: " << n << " cases for unit " << a.unit << "\n";
 }
