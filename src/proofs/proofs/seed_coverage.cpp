@@ -86,7 +86,13 @@ std::vector<coverage_row> parse_seed_coverage(std::string_view text) {
 }
 
 const std::vector<coverage_row>& seed_coverage() {
-  static const std::vector<coverage_row> rows = parse_seed_coverage(gsdot3_seed_coverage_json);
+  static const std::vector<coverage_row> rows = [] {
+    try {
+      return parse_seed_coverage(gsdot3_seed_coverage_json);
+    } catch (const std::invalid_argument& e) {  // the file built in, not the user's input: a bug
+      throw std::logic_error(std::string("embedded ") + e.what());
+    }
+  }();
   return rows;
 }
 

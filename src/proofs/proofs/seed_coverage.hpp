@@ -21,8 +21,8 @@ struct coverage_row {
   std::string note;                     // uncovered: why; covered: what is partial or what the verdict says
 };
 
-// The embedded seed_coverage.json, parsed on first use (a malformed file throws std::invalid_argument
-// naming the row).
+// The embedded seed_coverage.json, parsed on first use (malformed, it throws std::logic_error naming the
+// row: a bug of the build, not bad input). parse_seed_coverage throws std::invalid_argument.
 const std::vector<coverage_row>& seed_coverage();
 std::vector<coverage_row> parse_seed_coverage(std::string_view json);
 

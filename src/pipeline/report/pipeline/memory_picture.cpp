@@ -50,8 +50,7 @@ dpb_pictures post_filter_dpb_pictures(const std::vector<pass_record>& trace, int
     if (p.light == 0 && p.label.rfind("2.4 R += G", 0) == 0) break;
     if (p.light == 0 && p.target == "DPB") dpb = &p;
   }
-  if (dpb == nullptr)
-    throw std::invalid_argument("memory picture: the trace has no DPB pass before light 0's post filter");
+  if (dpb == nullptr) throw std::logic_error("memory picture: the trace has no DPB pass before light 0's post filter");
   mem::local_memory m;
   const auto fbw = fixed::uint<6>::from_wrapped((w + 63) / 64);
   const mem::buffer drawn{{}, fbw, z_layout ? mem::psm::PSMZ32 : mem::psm::PSMCT32}, shown{{}, fbw, mem::psm::PSMCT32};

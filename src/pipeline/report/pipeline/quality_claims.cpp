@@ -61,7 +61,7 @@ const method_errors* find(const quality_scene& s, method m, map_read map) {
 }
 const method_errors& of(const quality_scene& s, method m, map_read map) {
   if (const method_errors* e = find(s, m, map)) return *e;
-  throw std::invalid_argument("quality rows: scene '" + s.name + "' has no " + label(m, map) + " render");
+  throw std::logic_error("quality rows: scene '" + s.name + "' has no " + label(m, map) + " render");
 }
 
 struct claim_def {
@@ -109,7 +109,7 @@ std::string label(method m, map_read map) {
     case map_read::palettised: return std::string(name(m)) + ", 8-bit map vs unquantised";
     case map_read::three_maps: return std::string(name(m)) + ", three 8-bit maps vs unquantised";
   }
-  throw std::invalid_argument("unknown map_read");
+  throw std::logic_error("unknown map_read");
 }
 
 method_errors measure_errors(method m, const frame& f, const reference_frame& ref, const prepared_scene& ps,

@@ -49,7 +49,7 @@ const std::vector<method>& methods() {
 const method& method_of(method_id id) {
   for (const auto& m : methods())
     if (m.id == id) return m;
-  throw std::invalid_argument("normal_encoding: unknown method id");
+  throw std::logic_error("normal_encoding: unknown method id");
 }
 
 const method& method_named(std::string_view name) {
