@@ -1,5 +1,6 @@
-// docs/dumps.md against the code: the state blob table (offset, size, field, in order) is the code's
-// state_fields_v8, and every header field the header table names sits at the documented offset of a
+// docs/dumps.md against the code: the state blob table (version-8 offset, version-9 offset, size,
+// field, in order) is the code's state_fields_v8 (the rows with a version-8 offset) and state_fields_v9
+// (every row), and every header field the header table names sits at the documented offset of a
 // dump written by write_dump (values chosen distinct, so a misplaced field cannot match).
 #include <gtest/gtest.h>
 
@@ -15,18 +16,13 @@
 
 namespace {
 
-struct row {
-  std::uint32_t offset, size;
-  std::string field;
-};
-
-// The rows "| offset | size | field | ..." of the first table after `heading`.
-std::vector<row> table_after(const std::string& heading) {
+// The data rows (first cell a number or "–") of the first table after `heading`, as cells.
+std::vector<std::vector<std::string>> table_after(const std::string& heading) {
   std::ifstream in(GSDOT3_DUMPS_MD);
   EXPECT_TRUE(in) << GSDOT3_DUMPS_MD;
   std::string line;
   while (std::getline(in, line) && line != heading) {}
-  std::vector<row> rows;
+  std::vector<std::vector<std::string>> rows;
   bool in_table = false;
   while (std::getline(in, line)) {
     if (line.rfind('|', 0) != 0) {
@@ -37,21 +33,31 @@ std::vector<row> table_after(const std::string& heading) {
     std::vector<std::string> cells;
     std::stringstream cs(line.substr(1));
     for (std::string c; std::getline(cs, c, '|');) cells.push_back(c.substr(1, c.size() - 2));
-    if (cells.size() < 3 || cells[0].empty() || !std::isdigit(static_cast<unsigned char>(cells[0][0]))) continue;
-    rows.push_back(
-        {static_cast<std::uint32_t>(std::stoul(cells[0])), static_cast<std::uint32_t>(std::stoul(cells[1])), cells[2]});
+    if (cells.size() >= 3 && (std::isdigit(static_cast<unsigned char>(cells[0][0])) || cells[0] == "–"))
+      rows.push_back(cells);
   }
   return rows;
 }
+std::uint32_t number(const std::string& cell) { return static_cast<std::uint32_t>(std::stoul(cell)); }
 
-TEST(DocsLayout, StateTableIsTheCodesVersion8Fields) {
+TEST(DocsLayout, StateTableIsTheCodesVersion8And9Fields) {
   const auto rows = table_after("## The state blob");
-  ASSERT_EQ(rows.size(), gs::dump::state_fields_v8.size());
+  ASSERT_EQ(rows.size(), gs::dump::state_fields_v9.size());
+  std::size_t k = 0;
   for (std::size_t i = 0; i < rows.size(); ++i) {
-    EXPECT_EQ(rows[i].field, gs::dump::state_fields_v8[i].name) << i;
-    EXPECT_EQ(rows[i].offset, gs::dump::state_fields_v8[i].offset) << rows[i].field;
-    EXPECT_EQ(rows[i].size, gs::dump::state_fields_v8[i].size) << rows[i].field;
+    const auto& r = rows[i];
+    ASSERT_GE(r.size(), 4u);
+    EXPECT_EQ(r[3], gs::dump::state_fields_v9[i].name) << i;
+    EXPECT_EQ(number(r[1]), gs::dump::state_fields_v9[i].offset) << r[3];
+    EXPECT_EQ(number(r[2]), gs::dump::state_fields_v9[i].size) << r[3];
+    if (r[0] == "–") continue;
+    ASSERT_LT(k, gs::dump::state_fields_v8.size());
+    EXPECT_EQ(r[3], gs::dump::state_fields_v8[k].name) << i;
+    EXPECT_EQ(number(r[0]), gs::dump::state_fields_v8[k].offset) << r[3];
+    EXPECT_EQ(number(r[2]), gs::dump::state_fields_v8[k].size) << r[3];
+    ++k;
   }
+  EXPECT_EQ(k, gs::dump::state_fields_v8.size());
 }
 
 TEST(DocsLayout, HeaderFieldsSitWhereTheTableSays) {
@@ -72,7 +78,7 @@ TEST(DocsLayout, HeaderFieldsSitWhereTheTableSays) {
   const std::map<std::string, std::uint32_t> want{{"0xFFFFFFFF (marks the new layout)", 0xFFFFFFFFu},
                                                   {"header_size: 36 + serial size + screenshot size", 64},
                                                   {"state_version", 8},
-                                                  {"state_size", 4194760},
+                                                  {"state_size", 4194752},
                                                   {"serial_offset (from byte 8; 36)", 36},
                                                   {"serial_size", 4},
                                                   {"crc (the game's CRC)", 0x12345678},
@@ -82,10 +88,10 @@ TEST(DocsLayout, HeaderFieldsSitWhereTheTableSays) {
                                                   {"screenshot_size (width × height × 4, RGBA)", 24}};
   const auto rows = table_after("## The file");
   ASSERT_EQ(rows.size(), want.size());
-  for (const row& r : rows) {
-    ASSERT_TRUE(want.count(r.field)) << "undocumented in the test: " << r.field;
-    EXPECT_EQ(r.size, 4u) << r.field;
-    EXPECT_EQ(le32(r.offset), want.at(r.field)) << r.field;
+  for (const auto& r : rows) {
+    ASSERT_TRUE(want.count(r[2])) << "undocumented in the test: " << r[2];
+    EXPECT_EQ(number(r[1]), 4u) << r[2];
+    EXPECT_EQ(le32(number(r[0])), want.at(r[2])) << r[2];
   }
 }
 

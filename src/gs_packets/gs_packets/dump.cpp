@@ -72,8 +72,16 @@ void check_state(gs_dump& d, std::size_t at) {
   // when their size fits their layout, decoded by the interpreter).
   if ((d.state_version == 8 || d.state_version == 9) && !state_layout(d.state_version, d.state.size()))
     throw dump_error("byte " + std::to_string(at) + ": state size " + std::to_string(d.state.size()) +
-                     " does not fit the version " + std::to_string(d.state_version) + " layout (version 8 has " +
-                     std::to_string(state_size_v8) + ")");
+                     " does not fit the version " + std::to_string(d.state_version) +
+                     " layout (PCSX2's GSState::Freeze: " + std::to_string(state_size_v8) + " bytes for version 8, " +
+                     std::to_string(state_size_v9) +
+                     " for 9; gsdot3's older version 8: " + std::to_string(state_size_gsdot3_v8) + ")");
+  if (d.state_version == 8 && d.state.size() == state_size_gsdot3_v8)
+    d.notices.push_back({"gsdot3_state_layout", at,
+                         "a version-8 state of " + std::to_string(state_size_gsdot3_v8) +
+                             " bytes is gsdot3's layout before issue 57 (UV and FOG 8 bytes each, not PCSX2's 4): read "
+                             "as such; PCSX2 and parallel-gs would read every field from XYZ on 8 bytes off (write "
+                             "the dump again with gsdot3 dump for PCSX2's layout)"});
 }
 
 // The body of a packet read, or a notice when the dump ends inside it (PCSX2 drops that last packet).

@@ -62,6 +62,9 @@ struct packet {
 //                          switch on the path has no case for it)
 //   state_version_differs  the header's state_version differs from the blob's: the blob's is used
 //                          (ReadFile does not read the header's; GSState::Defrost reads the blob's)
+// and one of gsdot3's own:
+//   gsdot3_state_layout    a version-8 state of state_size_gsdot3_v8 bytes, gsdot3's layout before issue 57
+//                          (state.hpp): read in that layout
 struct notice {
   std::string name;
   std::uint64_t offset = 0;  // byte of the dump (uncompressed) it is about

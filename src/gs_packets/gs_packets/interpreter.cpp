@@ -131,10 +131,6 @@ void interpreter::load_state(std::span<const std::uint8_t> state, std::uint32_t 
   for (std::uint32_t i = 0; i < dump::memory_bytes; ++i) mem_.set_byte(i, state[memory + i]);
   for (const auto& f : *layout)
     if (const auto a = gs_register_address(f.name)) regs_[*a] = dump::state_get(state, f);
-  if (const auto* extra = dump::find_field(*layout, "v9_transfer"))
-    unmodelled_.push_back({"state version 9: " + std::to_string(extra->size) +
-                               " bytes of transfer state before the memory skipped (not decoded)",
-                           0});
 }
 
 void interpreter::start_transfer(std::uint64_t offset) {

@@ -81,8 +81,8 @@ class interpreter {
  public:
   explicit interpreter(mem::local_memory& m, interpreter_options o = {}) : mem_(m), opt_(o) {}
 
-  // The memory and registers of a version-8 state blob (other versions: memory left as it is, and
-  // reported).
+  // The memory and registers of a state blob whose layout state.hpp knows (dump::state_layout; the
+  // transfer in progress, tr.*, is not resumed); any other blob: memory left as it is, and reported.
   void load_state(std::span<const std::uint8_t> state, std::uint32_t version);
   void apply(const gif_event& e, std::uint64_t offset);
   // Every path's events in dump order (the order of their bytes in the dump).
