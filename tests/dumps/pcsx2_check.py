@@ -10,8 +10,15 @@ Facts used (file and function read):
   screenshot_width, screenshot_height, screenshot_offset, screenshot_size); then the state, 8192
   bytes of registers, packets: 0 transfer [path u8][size u32][data], 1 vsync [u8], 2 readFIFO2 [u32],
   3 registers [8192]; any other type fails the read.
-- GSState::Defrost (pcsx2/GS/GSState.cpp): refuses a blob whose version exceeds STATE_VERSION (9);
-  version 8's blob is 4 + 15*8 + 2*12*8 + 5*8 + 8 + 2*4 + 4 MiB + 4*(16 + 4) + 4 = 4194760 bytes.
+- GSState::Defrost (pcsx2/GS/GSState.cpp): refuses a blob whose version exceeds STATE_VERSION (9).
+- GSState::Freeze and GetSaveStateSize(int version) (pcsx2/GS/GSState.cpp; version 9 read in the fork
+  TJnotJT/pcsx2): each field at its sizeof, from the declarations in GSRegs.h (pack 1: GIFReg* registers
+  u64, GIFTag 16 bytes, the GIFReg set 8, GIFPath::reg u32, VM_SIZE 4 MiB), GSVertex.h (RGBAQ, ST, XYZ
+  8 bytes; UV and FOG u32) and GSState.h (m_tr: int x, y, w, h, total, start, end; GSVector4i rect 16;
+  GIFReg* m_blit, m_pos, m_reg; bool write; float m_q): version 8's blob is
+  4 + 15*8 + 2*12*8 + (8 + 8 + 4 + 4 + 8) + 8 + 2*4 + 4 MiB + 4*(16 + 4) + 4 = 4194752 bytes, version 9's
+  61 more (4 + 4 + 8 + 8 + 8 + 16 + 4 + 4 + 4 + 1). A blob of another size is read by PCSX2 at offsets
+  that are not its own (Defrost checks only that it is not smaller).
 - GSDumpReplayerSendPacketToMTGS (pcsx2/GSDumpReplayer.cpp): asserts a transfer is whole qwords and
   copies it whole into the path's buffer, Gif_Path::CopyGSPacketData (pcsx2/Gif_Unit.h), which
   Gif_Unit's constructor sizes 9 MiB; path bytes 1, 2, 3 (PATH2, PATH3, PATH1 in new dumps: the
@@ -33,7 +40,8 @@ import sys
 MIB = 1 << 20
 PATH_BUFFER = 9 * MIB
 STATE_VERSION_MAX = 9
-STATE_SIZE_V8 = 4 + 15 * 8 + 2 * 12 * 8 + 5 * 8 + 8 + 2 * 4 + 4 * MIB + 4 * 20 + 4
+STATE_SIZE = {8: 4 + 15 * 8 + 2 * 12 * 8 + (8 + 8 + 4 + 4 + 8) + 8 + 2 * 4 + 4 * MIB + 4 * (16 + 4) + 4}
+STATE_SIZE[9] = STATE_SIZE[8] + 4 + 4 + 8 + 8 + 8 + 16 + 4 + 4 + 4 + 1
 REGISTERS = {0x00, 0x01, 0x02, 0x03, 0x04, 0x05, 0x06, 0x07, 0x08, 0x09, 0x0A, 0x0C, 0x0D, 0x14, 0x15, 0x16,
              0x17, 0x18, 0x19, 0x1A, 0x1B, 0x1C, 0x22, 0x34, 0x35, 0x36, 0x37, 0x3B, 0x3D, 0x3F,
              0x40, 0x41, 0x42, 0x43, 0x44, 0x45, 0x46, 0x47, 0x48, 0x49, 0x4A, 0x4B, 0x4C, 0x4D, 0x4E, 0x4F,
@@ -125,10 +133,9 @@ def check(path, video=None, max_packet=0):
         raise Fail('header state_version %d, blob %d' % (version, blob_version))
     if blob_version > STATE_VERSION_MAX:
         raise Fail('state version %d > PCSX2\'s STATE_VERSION %d' % (blob_version, STATE_VERSION_MAX))
-    if blob_version == 8 and state_size != STATE_SIZE_V8:
-        raise Fail('version 8 state of %d bytes, not %d' % (state_size, STATE_SIZE_V8))
-    if blob_version == 9 and state_size < STATE_SIZE_V8:
-        raise Fail('version 9 state of %d bytes, under version 8\'s %d' % (state_size, STATE_SIZE_V8))
+    if blob_version in STATE_SIZE and state_size != STATE_SIZE[blob_version]:
+        raise Fail('version %d state of %d bytes, not GSState::Freeze\'s %d: PCSX2 would read its fields at other '
+                   'offsets' % (blob_version, state_size, STATE_SIZE[blob_version]))
     at += state_size
     regs = b[at:at + 8192]
     if len(regs) != 8192:
