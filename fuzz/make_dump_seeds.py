@@ -1,15 +1,17 @@
 # fuzz/make_dump_seeds.py — writes the draw_* seeds of fuzz/corpus/dump_reader: a new-layout dump with a
 # 16-byte version-7 state (not loaded), 8 KiB privileged registers (PMODE.EN1, DISPFB1 FBW 1, DISPLAY1
 # 8x4), one PATH2 transfer of A+D writes (register values from the GS manual's bit layouts), a vsync.
+# The state_* seeds hold whole state blobs (xz-compressed): PCSX2's version-8 and version-9 layouts and
+# gsdot3's older version 8 (docs/dumps.md "The state blob").
 # Run from the repository root: python3 fuzz/make_dump_seeds.py
+import lzma
 import struct
 def ad(writes):
     q = struct.pack('<QQ', len(writes) | (1 << 15) | (1 << 60), 0xE)  # NLOOP, EOP, FLG PACKED, NREG 1; REGS A+D
     for a, v in writes: q += struct.pack('<QQ', v & (2**64 - 1), a)
     return q
-def dump(gif):
-    state = struct.pack('<I', 7) + bytes(12)
-    hdr = struct.pack('<9I', 7, len(state), 36, 0, 0, 0, 0, 36, 0)
+def dump(gif, state=struct.pack('<I', 7) + bytes(12)):
+    hdr = struct.pack('<9I', state[0], len(state), 36, 0, 0, 0, 0, 36, 0)
     priv = bytearray(8192)
     priv[0:8] = struct.pack('<Q', 1)
     priv[0x70:0x78] = struct.pack('<Q', 1 << 9)
@@ -43,3 +45,10 @@ at = len(base) - 2 - 6 - len(ad(sprite))  # the transfer's type byte
 open('fuzz/corpus/dump_reader/lenient_path4.gs', 'wb').write(base[:at + 1] + bytes([4]) + base[at + 2:])
 open('fuzz/corpus/dump_reader/lenient_screenshot.gs', 'wb').write(base[:40] + struct.pack('<I', 12) + base[44:])
 open('fuzz/corpus/dump_reader/lenient_unused_register.gs', 'wb').write(dump(ad(sprite + [(0x7F, 1)])))
+# Whole states, memory zero, PRMODECONT.AC = 1 (byte 12), Q = 1.0f: (name, version, size, Q's offset).
+for name, version, size, q in [('state_v8_pcsx2', 8, 4194752, 4194748), ('state_v9_pcsx2', 9, 4194813, 4194809),
+                               ('state_v8_gsdot3_old', 8, 4194760, 4194756)]:
+    st = bytearray(size)
+    st[0], st[12] = version, 1
+    st[q:q + 4] = struct.pack('<f', 1.0)
+    open('fuzz/corpus/dump_reader/' + name + '.gs.xz', 'wb').write(lzma.compress(dump(ad(sprite), bytes(st))))
