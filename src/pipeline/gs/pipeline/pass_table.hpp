@@ -183,7 +183,7 @@ decltype(auto) with_method(method m, F&& f) {
     case method::three_pass: return f.template operator()<three_pass_method>();
     case method::gouraud: return f.template operator()<gouraud_method>();
   }
-  throw std::invalid_argument("unknown GS method");
+  throw std::logic_error("unknown GS method");  // an enum value outside the list: a bug, not input
 }
 struct method_view {
   palette_kind palettes;
