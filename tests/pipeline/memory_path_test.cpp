@@ -235,7 +235,8 @@ TEST(MemoryPicture, DpbPicturesFollowTheChannelFetchFormula) {
       ASSERT_EQ(p.as_psmt8.data[static_cast<std::size_t>(v * 2 * w + u)], (word >> (8 * c)) & 0xFF)
           << "texel (" << u << ", " << v << ")";
     }
-  EXPECT_THROW(post_filter_dpb_pictures({trace[1]}, w, h, false), std::invalid_argument);
+  EXPECT_THROW(post_filter_dpb_pictures({trace[1]}, w, h, false),
+               std::logic_error);  // a trace without a DPB pass: a bug (e4bb708)
 }
 
 // The memory path's buffers (three 32-bit colour buffers and the Z buffer, each FBW·rows pages)
