@@ -50,8 +50,7 @@ bool same(const frame& a, const frame& b) {
 std::string first_difference(const frame& a, const frame& b) {
   for (std::size_t i = 0; i < a.colour.size() && i < b.colour.size(); ++i)
     if (a.colour[i] != b.colour[i])
-      return "pixel " + std::to_string(i) + ": 0x" + std::to_string(a.colour[i]) + " vs 0x" +
-             std::to_string(b.colour[i]);
+      return "pixel " + std::to_string(i) + ": " + std::to_string(a.colour[i]) + " vs " + std::to_string(b.colour[i]);
   return a.colour.size() != b.colour.size() ? "frame sizes differ" : "dot layers or step 5's pixels differ";
 }
 
