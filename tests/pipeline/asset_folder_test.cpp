@@ -85,6 +85,24 @@ TEST(AssetFolder, GltfBuffersOutsideTheFilesFolderAreRefused) {
   fs::remove_all(dir);
 }
 
+// CI's failure at 2ef3b5e: an OBJ whose mtllib is missing sends assimp's FileSystemFilter::BuildPath
+// (code/Common/FileSystemFilter.h) probing Exists("folder/" + a piece of the folder's own path as long as
+// "/NAME.mtl"); from a clone at /check/work/main the piece "work/main" named the developer's checkout and
+// the mesh was refused. Here the folder is DIR/tmp-copy-of-DIR/m, so a piece names DIR itself: the probe
+// must answer "no file" and the mesh load with its default material.
+TEST(AssetFolder, AMissingMaterialLibrarysProbesOfThePathDoNotRefuseTheMesh) {
+  const fs::path dir = gsdot3::test::fresh_temp_dir("gsdot3-asset-folder");
+  const std::string piece = dir.string().substr(1) + "/";  // "/" + piece is DIR, outside the folder
+  const fs::path folder = dir / piece / "m";
+  const std::string mtl = std::string(piece.size() - 1 - 4, 'x') + ".mtl";  // "/" + mtl is as long as piece
+  write(folder / "quad.obj", "mtllib " + mtl + "\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/1 2/2 3/3\n");
+  confined_io probe(folder);
+  ASSERT_FALSE(probe.Exists((folder.string() + "//" + piece).c_str()));
+  EXPECT_NE(probe.probed().find("outside the file's folder"), std::string::npos);  // a probe, answered "no"
+  EXPECT_EQ(import_mesh(folder / "quad.obj").model.triangles.size(), 1u);
+  fs::remove_all(dir);
+}
+
 TEST(AssetFolder, OutsideFolderJudgesTheResolvedPath) {
   const fs::path dir = gsdot3::test::fresh_temp_dir("gsdot3-asset-folder");
   fs::create_directories(dir / "m" / "maps");

@@ -55,7 +55,7 @@ std::string outside_folder(const std::filesystem::path& folder, const std::strin
 bool confined_io::Exists(const char* file) const {
   const std::string why = outside_folder(folder_, file);
   if (why.empty()) return DefaultIOSystem::Exists(file);
-  if (refused_.empty()) refused_ = std::string(file) + ": " + why;
+  if (probed_.empty()) probed_ = std::string(file) + ": " + why;
   return false;
 }
 

@@ -21,18 +21,24 @@ namespace gsdot3::pipeline {
 // gave it).
 std::string outside_folder(const std::filesystem::path& folder, const std::string& reference);
 
-// assimp's standard file access, refusing what outside_folder refuses; the first refusal is kept so
-// that the import's error names it (assimp's own message would only say a buffer was missing).
+// assimp's standard file access, refusing what outside_folder refuses. The first refused Open is kept
+// so that the import's error names it (assimp's own message would only say a buffer was missing).
+// An Exists outside the folder only answers "no": assimp's FileSystemFilter::Open, after a missing
+// file (an OBJ's absent mtllib), probes "folder/" + pieces of the folder's own path, and such a piece
+// can name an existing folder elsewhere ("folder//work/main"); the first such probe is kept in
+// `probed`, which names the cause when the import fails (a glTF buffer assimp looked for first).
 class confined_io : public Assimp::DefaultIOSystem {
  public:
   explicit confined_io(std::filesystem::path folder) : folder_(std::move(folder)) {}
   bool Exists(const char* file) const override;
   Assimp::IOStream* Open(const char* file, const char* mode = "rb") override;
   const std::string& refused() const noexcept { return refused_; }
+  const std::string& probed() const noexcept { return probed_; }
 
  private:
   std::filesystem::path folder_;
-  mutable std::string refused_;
+  std::string refused_;
+  mutable std::string probed_;
 };
 
 }  // namespace gsdot3::pipeline

@@ -323,9 +323,9 @@ imported_mesh import_mesh(const std::filesystem::path& file, const import_option
           auto* io = new confined_io(file.parent_path());
           imp.SetIOHandler(io);  // owned by imp
           const aiScene* s = imp.ReadFile(file.string(), import_flags);
-          if (!io->refused().empty())
-            throw std::runtime_error("refers to " + io->refused() +
-                                     "; only files in the mesh's folder or below it are read");
+          if (const std::string& why = s == nullptr && io->refused().empty() ? io->probed() : io->refused();
+              !why.empty())
+            throw std::runtime_error("refers to " + why + "; only files in the mesh's folder or below it are read");
           std::string ext = file.extension().string();
           if (!ext.empty()) ext.erase(0, 1);
           return serialise(from_scene(scene_or_error(s, imp, file.string()), file.string(), file.parent_path(),
