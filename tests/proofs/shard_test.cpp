@@ -75,7 +75,13 @@ TEST(Shard, MergeRefusesIncompleteOrMixedParts) {
   const p::claim* c = p::find_claim("eq5-eq7.split-multiply");
   ASSERT_NE(c, nullptr);
   auto parts = shards(*c, 3, cfg);
-  EXPECT_THROW(p::merge_shards({parts[0], parts[1]}, cfg), std::invalid_argument);            // one missing
+  EXPECT_THROW(p::merge_shards({parts[0], parts[1]}, cfg), std::invalid_argument);  // one missing
+  try {
+    p::merge_shards({parts[1]}, cfg);
+    ADD_FAILURE() << "shards 0 and 2 of 3 are missing";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(), "shards 0,2 of 3 are missing (as Slurm's --array=0,2 names them)");
+  }
   EXPECT_THROW(p::merge_shards({parts[0], parts[0], parts[1]}, cfg), std::invalid_argument);  // one twice
   const p::claim* other = p::find_claim("eq4.signed-multiply");
   ASSERT_NE(other, nullptr);
@@ -84,6 +90,13 @@ TEST(Shard, MergeRefusesIncompleteOrMixedParts) {
   EXPECT_THROW(p::merge_shards(mixed, cfg), std::invalid_argument);
   EXPECT_THROW(p::merge_shards({"{}"}, cfg), std::invalid_argument);
   EXPECT_THROW(p::merge_shards({"not json"}, cfg), std::invalid_argument);
+}
+
+TEST(Shard, MissingShardsAreNamedAsSlurmArrayRanges) {
+  EXPECT_EQ(p::missing_shards({true, true, true}), "");
+  EXPECT_EQ(p::missing_shards({true, true, true, false}), "3");
+  EXPECT_EQ(p::missing_shards({false, true, false, false, false, true, false}), "0,2-4,6");
+  EXPECT_EQ(p::missing_shards(std::vector<bool>(4096, false)), "0-4095");
 }
 
 namespace {

@@ -119,8 +119,11 @@ merged merge_shards(const std::vector<std::string>& parts, const run_config& cfg
       throw std::invalid_argument("part " + std::to_string(i + 1) + " is malformed: " + e.what());
     }
   }
-  for (unsigned k = 0; k < n; ++k)
-    if (!seen[k]) throw std::invalid_argument("shard " + std::to_string(k) + "/" + std::to_string(n) + " is missing");
+  if (const std::string gone = missing_shards(seen); !gone.empty())
+    throw std::invalid_argument(gone.find_first_of(",-") == std::string::npos
+                                    ? "shard " + gone + "/" + std::to_string(n) + " is missing"
+                                    : "shards " + gone + " of " + std::to_string(n) +
+                                          " are missing (as Slurm's --array=" + gone + " names them)");
   const claim* c = find_claim(claim_id);
   if (c == nullptr) throw std::invalid_argument("unknown claim id '" + claim_id + "' in the parts");
   gs::model_options o;
@@ -134,6 +137,20 @@ merged merge_shards(const std::vector<std::string>& parts, const run_config& cfg
   merged m{run_claim(*c, o, rc), 0};
   m.recomputed_chunks = log->recomputed;
   return m;
+}
+
+std::string missing_shards(const std::vector<bool>& seen) {
+  std::string out;
+  for (std::size_t k = 0; k < seen.size(); ++k) {
+    if (seen[k]) continue;
+    std::size_t last = k;
+    while (last + 1 < seen.size() && !seen[last + 1]) ++last;
+    if (!out.empty()) out += ',';
+    out += std::to_string(k);
+    if (last > k) out.append(1, '-').append(std::to_string(last));
+    k = last;
+  }
+  return out;
 }
 
 }  // namespace gsdot3::proofs

@@ -33,6 +33,11 @@ struct merged {
 };
 // Throws std::invalid_argument (with a one-line reason) unless the parts are one claim, one set of
 // options and variants, and shards 0..N−1 of one N, each exactly once.
+// A missing shard is named; several as ranges, "3,5-7" of the shards k with !seen[k] (Slurm's --array
+// syntax, so that the scheduler can rerun exactly those).
 merged merge_shards(const std::vector<std::string>& parts, const run_config& cfg);
+
+// The k with !seen[k], ascending, runs of consecutive k as "A-B": "" when none is missing.
+std::string missing_shards(const std::vector<bool>& seen);
 
 }  // namespace gsdot3::proofs
