@@ -3,7 +3,8 @@
 # (scripts/cluster/slurm-one-node) runs docs/sharding.md's job array of a claim; the merged ledger must
 # equal the unsplit run's. Then scripts/cluster/submit runs the same claim in 12 shards, two arrays under
 # the cluster's MaxArraySize of 8, with one shard cancelled by the scheduler: the merge must name that
-# shard and fail, and `submit --resubmit` must run that shard alone and complete the ledger. The cluster is stopped by its own PIDs whatever happens.
+# shard and fail, and `submit --resubmit` must run that shard alone and complete the ledger. Last, a shard
+# killed by the scheduler while it runs (scancel) must leave no part (prove -o writes at the end, atomically). The cluster is stopped by its own PIDs whatever happens.
 #   slurm_test.sh GSDOT3 SOURCE_DIR WORK_DIR
 set -euo pipefail
 gsdot3=$1 src=$2 work=$3
@@ -47,4 +48,17 @@ out=$("$cluster"/submit --resubmit --wait "$work/run")
 echo "$out"
 grep -q "^submit: $claim: job [0-9]*, shards 3 of 12$" <<<"$out" || fail "the resubmission was not shard 3 alone"
 same "$work/run/$claim.json" "$work/unsplit.json"
+
+echo "== a running shard killed by the scheduler leaves no part"
+# two-pass.error-bound's shards scan their whole slice (docs/sharding.md): seconds, long enough to kill.
+mkdir -p "$work/killed"
+job=$(sbatch --parsable --array=0 -o "$work/killed/%a.out" \
+  "$cluster"/prove-shard.sbatch "$gsdot3" "$work/killed" 8 --claim two-pass.error-bound)
+for _ in $(seq 300); do [[ $(squeue -h -j "$job" -o %T) == RUNNING ]] && break; sleep 0.1; done
+[[ $(squeue -h -j "$job" -o %T) == RUNNING ]] || fail "shard 0 of two-pass.error-bound did not start"
+sleep 1
+scancel "$job"
+while squeue -h -j "$job" | grep -q .; do sleep 0.2; done
+[[ ! -e $work/killed/part-0.json ]] || fail "the killed shard left a part"
+grep -q "CANCELLED" "$work/killed/0.out" || fail "the shard was not cancelled: $(cat "$work/killed/0.out")"
 echo "cluster_slurm: passed"
