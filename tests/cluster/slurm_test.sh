@@ -4,7 +4,8 @@
 # equal the unsplit run's. Then scripts/cluster/submit runs the same claim in 12 shards, two arrays under
 # the cluster's MaxArraySize of 8, with one shard cancelled by the scheduler: the merge must name that
 # shard and fail, and `submit --resubmit` must run that shard alone and complete the ledger. Last, a shard
-# killed by the scheduler while it runs (scancel) must leave no part (prove -o writes at the end, atomically). The cluster is stopped by its own PIDs whatever happens.
+# killed by the scheduler while it runs (scancel) must leave no part (prove -o writes at the end,
+# atomically). The cluster is stopped by its own PIDs whatever happens.
 #   slurm_test.sh GSDOT3 SOURCE_DIR WORK_DIR
 set -euo pipefail
 gsdot3=$1 src=$2 work=$3
