@@ -27,8 +27,8 @@ constexpr gs::alpha_reg blend{gs::blend_colour::Cs, gs::blend_colour::Cd, gs::bl
                               gs::u8{}};
 constexpr pl::pass_regs textured_blend{true, true, gs::tfx::MODULATE, gs::tcc::RGBA, blend, true, 0};
 
-// Under each gouraud_setup (both sides take it from their options).
-void expect_the_renderers_frame(gs::gouraud_setup setup) {
+// Under each gouraud_setup and uv_convert (both sides take them from their options).
+void expect_the_renderers_frame(gs::gouraud_setup setup, gs::uv_convert_mode uv_convert = gs::uv_convert_mode::floor) {
   constexpr int W = 64, H = 64, T = 16;
   std::mt19937 rng(15);
   std::uniform_int_distribution<int> xy(-8 * 16, 72 * 16), uv(0, 40 * 16), byte(0, 255);
@@ -56,13 +56,14 @@ void expect_the_renderers_frame(gs::gouraud_setup setup) {
   pl::render_options o;
   o.path = pl::raster_path::reference;
   o.model.setup = setup;
+  o.model.uv_convert = uv_convert;
   std::vector<std::uint32_t> z(W * H, 0), frame(W * H, 0x40808080u);
   std::vector<std::int32_t> visible(W * H, -1);
   pl::detail::band_renderer r(ps, o, pl::scissor{0, 0, W, H},
                               pl::detail::z_view{pl::detail::row_view{z.data(), W}, {}, false}, visible);
   const pl::texture_ref tex{T, T, nullptr, nullptr, texels.data(), false, o.model.bilinear, nullptr, {}};
   const auto attr = pl::detail::attributes(
-      ps, o.model.setup, [&](std::uint32_t v) { return colours[v]; },
+      ps, o.model, [&](std::uint32_t v) { return colours[v]; },
       [](const pl::prepared_triangle& t, int k) {
         return std::pair<std::int32_t, std::int32_t>{t.uv16[static_cast<std::size_t>(k)][0],
                                                      t.uv16[static_cast<std::size_t>(k)][1]};
@@ -127,6 +128,9 @@ TEST(RendererMatch, RandomTexturedGouraudTrianglesGiveTheRenderersFrame) {
 }
 TEST(RendererMatch, RandomTexturedPerPixelGouraudTrianglesGiveTheRenderersFrame) {
   expect_the_renderers_frame(gs::gouraud_setup::per_pixel);
+}
+TEST(RendererMatch, RandomTexturedTrianglesWithTheUvBiasGiveTheRenderersFrame) {
+  expect_the_renderers_frame(gs::gouraud_setup::per_pixel, gs::uv_convert_mode::floor_1_64);
 }
 
 }  // namespace

@@ -45,8 +45,10 @@ gs::triangle_attributes pipeline_attributes(const pl::triangle_setup& setup, con
   tri.vertex = {0, 1, 2};
   tri.setup = setup;
   ps.triangles.push_back(tri);
+  gs::model_options model;
+  model.setup = gouraud;
   const auto attr = pl::detail::attributes(
-      ps, gouraud, [&](std::uint32_t v) { return tt::light_colour(c.light[v]); },
+      ps, model, [&](std::uint32_t v) { return tt::light_colour(c.light[v]); },
       [](const pl::prepared_triangle&, int) {
         return std::pair<std::int32_t, std::int32_t>{0, 0};
       });

@@ -1,5 +1,5 @@
 // gs_arith/attribute_setup.hpp — a triangle's per-pixel attributes as the model sets them up: the
-// Gouraud colour plane (gs::gouraud_triangle) and the UV planes (gs::make_plane). The renderer
+// Gouraud colour plane (gs::gouraud_triangle) and the UV planes (gs::make_uv_plane). The renderer
 // (pipeline/band_renderer.hpp attributes()) and the packet interpreter (gs_packets/draw.cpp) both call
 // this, so a frame drawn from packets matches the renderer's bit for bit.
 //
@@ -11,7 +11,8 @@
 // - gouraud_triangle works in the GS's unsigned 16-bit 12.4 primitive space: window coordinates plus
 //   `offset` whole pixels (XYOFFSET's whole-pixel part; the renderer's 2048), so that vertices left
 //   of or above the window are not clamped.
-// - U and V are 12.4 texel planes clamped to ±2^20 (MODEL-PLANE-16, rasteriser.hpp).
+// - U and V are 12.4 texel planes clamped to ±2^20 (MODEL-PLANE-16, rasteriser.hpp), converted to
+//   the texel coordinate under the option uv_convert (uv_plane.hpp).
 #pragma once
 
 #include <algorithm>
@@ -22,6 +23,7 @@
 #include "gs_arith/gouraud.hpp"
 #include "gs_arith/rasteriser.hpp"
 #include "gs_arith/texture_function.hpp"
+#include "gs_arith/uv_plane.hpp"
 
 namespace gs {
 
@@ -41,7 +43,7 @@ struct triangle_attributes {
 inline triangle_attributes setup_attributes(const triangle_setup& t, const std::array<rgba8, 3>& c,
                                             const std::array<std::array<std::int32_t, 2>, 3>& uv16,
                                             std::int32_t offset_x, std::int32_t offset_y, gouraud_setup setup,
-                                            std::int32_t clip_x0 = 0) {
+                                            uv_convert_mode uv_convert, std::int32_t clip_x0 = 0) {
   triangle_attributes a;
   a.offset_x = offset_x;
   a.offset_y = offset_y;
@@ -58,8 +60,8 @@ inline triangle_attributes setup_attributes(const triangle_setup& t, const std::
   if (const auto g = gouraud_triangle(gv[0], gv[1], gv[2], x_ref + offset_x, y_ref + offset_y)) a.colour = *g;
   a.colour.clip_x0 = clip_x0 + offset_x;
   a.colour.lane_origin = offset_x;
-  a.u = make_plane(t.v, {uv16[0][0], uv16[1][0], uv16[2][0]}, -(1 << 20), 1 << 20);
-  a.v = make_plane(t.v, {uv16[0][1], uv16[1][1], uv16[2][1]}, -(1 << 20), 1 << 20);
+  a.u = make_uv_plane(t.v, {uv16[0][0], uv16[1][0], uv16[2][0]}, uv_convert);
+  a.v = make_uv_plane(t.v, {uv16[0][1], uv16[1][1], uv16[2][1]}, uv_convert);
   return a;
 }
 

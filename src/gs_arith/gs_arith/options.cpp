@@ -48,6 +48,11 @@ const std::vector<option_info>& option_catalogue() {
        {"truncate", "floor_1_64", "trunc_16_16"},
        "truncate: DobieStation render_half_triangle, PCSX2 PR #14078 HW tests with Q = 1 (2 sources); floor_1_64: "
        "parallel-gs (1); trunc_16_16: PCSX2 SW SampleTexture (1). No recording here with Q other than 1."},
+      {"uv_convert",
+       {"floor", "floor_1_64"},
+       "floor: no bias before the floor of the interpolated UV (PCSX2 SW, DobieStation, Play!: their own "
+       "interpolation floored or truncated); floor_1_64: parallel-gs sample_texture floor(uv*16 + 1/64) "
+       "(UV_EPSILON_PRE_SNAP) (1). No recording here of an interpolated UV near a texel boundary."},
   };
   return rows;
 }
@@ -110,6 +115,8 @@ std::optional<std::string> set_option(model_options& o, std::string_view name, s
   else if (name == "stq_convert")
     ok = pick(o.stq_convert, value, "truncate", stq_convert_mode::truncate, "floor_1_64", stq_convert_mode::floor_1_64,
               "trunc_16_16", stq_convert_mode::trunc_16_16);
+  else if (name == "uv_convert")
+    ok = pick(o.uv_convert, value, "floor", uv_convert_mode::floor, "floor_1_64", uv_convert_mode::floor_1_64);
   else if (name == "gouraud_setup") {
     for (int k = 0; k < static_cast<int>(std::size(setup_names)); ++k)
       if (value == setup_names[k]) o.setup = static_cast<gouraud_setup>(k), ok = true;
@@ -153,6 +160,7 @@ std::string_view option_value(const model_options& o, std::string_view name) {
     constexpr std::string_view names[] = {"truncate", "floor_1_64", "trunc_16_16"};
     return names[static_cast<int>(o.stq_convert)];
   }
+  if (name == "uv_convert") return o.uv_convert == uv_convert_mode::floor ? "floor" : "floor_1_64";
   return {};
 }
 

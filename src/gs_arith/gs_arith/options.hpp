@@ -94,6 +94,14 @@ enum class stq_range_mode { saturate_2047, x86_int32 };
 // then floored to 1/16 (PCSX2 SW SampleTexture: cvttps2dq, then the texel and 4-bit weight by shifts).
 enum class stq_convert_mode { truncate, floor_1_64, trunc_16_16 };
 
+// A UV plane's value at a pixel as the 12.4 texel coordinate (PRIM.FST = 1, sprites, and FST = 0
+// with one Q, which the model interpolates as UV; gs_arith/uv_plane.hpp; docs/evidence.md R12). The
+// plane carries 16 fraction bits below 1/16 texel (MODEL-PLANE-16, rasteriser.hpp).
+// floor: floor(16·U) (default: no bias; what the other sources' own interpolations do, R12).
+// floor_1_64: floor(16·U + 1/64), a bias of 1/64 of a sixteenth before the floor (parallel-gs
+//   ubershader.comp sample_texture, UV_EPSILON_PRE_SNAP, applied per pixel to the interpolated UV).
+enum class uv_convert_mode { floor, floor_1_64 };
+
 struct model_options {
   tfx_rounding tfx = tfx_rounding::floor;
   gouraud_fraction gouraud = gouraud_fraction::keep_fraction;
@@ -106,6 +114,7 @@ struct model_options {
   texture_buffer tex_buffer = texture_buffer::quarter_page;
   stq_range_mode stq_range = stq_range_mode::saturate_2047;
   stq_convert_mode stq_convert = stq_convert_mode::truncate;
+  uv_convert_mode uv_convert = uv_convert_mode::floor;
 
   friend constexpr bool operator==(const model_options&, const model_options&) = default;
 };

@@ -64,8 +64,8 @@ stq_sampler make_stq_sampler(const stq_triangle& t, unsigned TW, unsigned TH, co
     const auto uv = stq_vertex_texel(t.a[k], TW, TH, o);
     u[k] = uv[0], v[k] = uv[1];
   }
-  s.u = make_plane(t.v, u, -(1 << 20), 1 << 20);
-  s.v = make_plane(t.v, v, -(1 << 20), 1 << 20);
+  s.u = make_uv_plane(t.v, u, o.uv_convert);
+  s.v = make_uv_plane(t.v, v, o.uv_convert);
   return s;
 }
 

@@ -18,7 +18,8 @@ const std::vector<profile>& profiles() {
         {"texture_buffer", "draw_snapshot"},
         {"gouraud_setup", "pcsx2_rows_8"},
         {"stq_range", "x86_int32"},
-        {"stq_convert", "trunc_16_16"}}},
+        {"stq_convert", "trunc_16_16"},
+        {"uv_convert", "floor"}}},
       {"dobiestation",
        "DobieStation src/core/gsthread.cpp (interpreter: tex_lookup, draw_pixel)",
        {{"tfx_rounding", "floor"},
@@ -31,7 +32,8 @@ const std::vector<profile>& profiles() {
         {"texture_buffer", "per_fragment"},
         {"gouraud_setup", "per_pixel"},
         {"stq_range", "x86_int32"},
-        {"stq_convert", "truncate"}}},
+        {"stq_convert", "truncate"},
+        {"uv_convert", "floor"}}},
       {"play",
        "Play! Source/gs/GSH_Vulkan (GSH_VulkanDrawDesktop.cpp fragment shader, GSH_VulkanDrawUtils.cpp)",
        {{"tfx_rounding", "truncate"},
@@ -44,7 +46,8 @@ const std::vector<profile>& profiles() {
         {"texture_buffer", "quarter_page"},
         {"gouraud_setup", "per_pixel"},
         {"stq_range", "saturate_2047"},
-        {"stq_convert", "truncate"}}},
+        {"stq_convert", "truncate"},
+        {"uv_convert", "floor"}}},
       {"parallel-gs",
        "parallel-gs gs/shaders/ubershader.comp (compute_combined_color, alpha_blend, shade_resolve), "
        "triangle_setup.comp; rows not read keep the model default",
@@ -58,7 +61,8 @@ const std::vector<profile>& profiles() {
         {"texture_buffer", "quarter_page"},
         {"gouraud_setup", "per_pixel_level"},
         {"stq_range", "saturate_2047"},
-        {"stq_convert", "floor_1_64"}}},
+        {"stq_convert", "floor_1_64"},
+        {"uv_convert", "floor_1_64"}}},
   };
   return rows;
 }

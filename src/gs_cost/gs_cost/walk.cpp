@@ -11,6 +11,7 @@
 
 #include "gs_arith/perspective.hpp"
 #include "gs_arith/rasteriser.hpp"
+#include "gs_arith/uv_plane.hpp"
 #include "gs_memory/address.hpp"
 #include "gs_memory/memory_registers.hpp"
 #include "gs_memory/psm_names.hpp"
@@ -111,8 +112,8 @@ walk_counts walk_primitive(const packets::draw_registers& r, std::span<const pac
     if (m.textured) {
       const auto ta = texel_124(v[0], m.fst, tw, th), tb = texel_124(v[1], m.fst, tw, th);
       const std::array<xy124, 3> corners{a, xy124{b.x, a.y}, xy124{a.x, b.y}};
-      pu = make_plane(corners, {ta[0], tb[0], ta[0]}, -(1 << 20), 1 << 20);
-      pv = make_plane(corners, {ta[1], ta[1], tb[1]}, -(1 << 20), 1 << 20);
+      pu = gs::make_uv_plane(corners, {ta[0], tb[0], ta[0]}, gs::model_options{}.uv_convert);
+      pv = gs::make_uv_plane(corners, {ta[1], ta[1], tb[1]}, gs::model_options{}.uv_convert);
     }
   } else {
     const triangle_setup t = setup_triangle({window(v[0]), window(v[1]), window(v[2])});
@@ -134,8 +135,8 @@ walk_counts walk_primitive(const packets::draw_registers& r, std::span<const pac
         const auto tx = texel_124(v[k], m.fst, tw, th);
         us[k] = tx[0], vs[k] = tx[1];
       }
-      pu = make_plane(t.v, us, -(1 << 20), 1 << 20);
-      pv = make_plane(t.v, vs, -(1 << 20), 1 << 20);
+      pu = gs::make_uv_plane(t.v, us, gs::model_options{}.uv_convert);
+      pv = gs::make_uv_plane(t.v, vs, gs::model_options{}.uv_convert);
     }
   }
   if (y_first > y_last) return c;

@@ -25,6 +25,7 @@
 #include "gs_arith/pixel_pipeline.hpp"
 #include "gs_arith/rasteriser.hpp"
 #include "gs_arith/registers.hpp"
+#include "gs_arith/uv_plane.hpp"
 #include "gs_memory/address.hpp"
 #include "gs_memory/clut_load.hpp"
 #include "gs_memory/memory_registers.hpp"
@@ -258,8 +259,8 @@ std::uint64_t draw_primitive(mem::local_memory& m, const draw_registers& r, cons
     if (lo.x == hi.x || lo.y == hi.y) return 0;
     // U varies along x only and V along y only: the planes through the corners (a, U0), (b.x, U1), (b.y, V1).
     const std::array<xy124, 3> corners{a, xy124{b.x, a.y}, xy124{a.x, b.y}};
-    const plane pu = make_plane(corners, {ta[0], tb2[0], ta[0]}, -(1 << 20), 1 << 20);
-    const plane pv = make_plane(corners, {ta[1], ta[1], tb2[1]}, -(1 << 20), 1 << 20);
+    const plane pu = make_uv_plane(corners, {ta[0], tb2[0], ta[0]}, o.uv_convert);
+    const plane pv = make_uv_plane(corners, {ta[1], ta[1], tb2[1]}, o.uv_convert);
     rasterise_sprite(lo, hi, d.clip, [&](int x, int y) { shade(x, y, cf, pu.at(x, y), pv.at(x, y), v[1].Z); });
     return pixels;
   }
@@ -273,8 +274,8 @@ std::uint64_t draw_primitive(mem::local_memory& m, const draw_registers& r, cons
       stq ? gs::make_stq_sampler({t.v, t.area2, {stq_of(v[0]), stq_of(v[1]), stq_of(v[2])}},
                                  static_cast<unsigned>(tex.TW.value()), static_cast<unsigned>(tex.TH.value()), o)
           : gs::stq_sampler{};
-  const triangle_attributes a =
-      setup_attributes(t, {v[0].colour, v[1].colour, v[2].colour}, uv, d.ofx >> 4, d.ofy >> 4, o.setup, d.clip.x0);
+  const triangle_attributes a = setup_attributes(t, {v[0].colour, v[1].colour, v[2].colour}, uv, d.ofx >> 4, d.ofy >> 4,
+                                                 o.setup, o.uv_convert, d.clip.x0);
   // Z as a plane (MODEL-PLANE-16, rasteriser.hpp); Z above 24 bits through Z / 256 (the plane's
   // 32-bit range), low 8 bits 0: a model limit, stated.
   const bool wide = std::max({v[0].Z, v[1].Z, v[2].Z}) > 0xFFFFFFu;

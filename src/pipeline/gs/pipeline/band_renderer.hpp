@@ -428,7 +428,7 @@ void draw_textured(band_renderer& r, gs::mem::local_memory* memory, texture_stre
 // Vertex colours → per-triangle attributes of `triangles` (the DOT3 mesh's, or step 5's); `uv` picks
 // the 12.4 texture coordinates per corner.
 template <class Colour, class UV>
-std::vector<tri_attr> attributes(const std::vector<prepared_triangle>& triangles, gs::gouraud_setup setup,
+std::vector<tri_attr> attributes(const std::vector<prepared_triangle>& triangles, const gs::model_options& model,
                                  Colour&& colour, UV&& uv) {
   std::vector<tri_attr> out(triangles.size());
   for (std::size_t t = 0; t < triangles.size(); ++t) {
@@ -440,13 +440,14 @@ std::vector<tri_attr> attributes(const std::vector<prepared_triangle>& triangles
       const auto [u, v] = uv(tri, k);
       uv16[static_cast<std::size_t>(k)] = {u, v};
     }
-    out[t] = gs::setup_attributes(tri.setup, c, uv16, xy_offset_pixels, xy_offset_pixels, setup);
+    out[t] =
+        gs::setup_attributes(tri.setup, c, uv16, xy_offset_pixels, xy_offset_pixels, model.setup, model.uv_convert);
   }
   return out;
 }
 template <class Colour, class UV>
-std::vector<tri_attr> attributes(const prepared_scene& ps, gs::gouraud_setup setup, Colour&& colour, UV&& uv) {
-  return attributes(ps.triangles, setup, colour, uv);
+std::vector<tri_attr> attributes(const prepared_scene& ps, const gs::model_options& model, Colour&& colour, UV&& uv) {
+  return attributes(ps.triangles, model, colour, uv);
 }
 
 }  // namespace gsdot3::pipeline::detail

@@ -175,7 +175,7 @@ void start_stream(gs_inputs& in, const prepared_scene& ps, const render_options&
   if (in.window_first == 0) return;
   const gs::bilinear_mode filter = o.bilinear ? o.model.bilinear : gs::bilinear_mode::nearest;
   in.stream =
-      std::make_shared<texture_streamer>(ps, o.model.setup, filter, area, in.window_first, gs::mem::memory_blocks / 32);
+      std::make_shared<texture_streamer>(ps, o.model, filter, area, in.window_first, gs::mem::memory_blocks / 32);
 }
 stream_texture normal_map_stream(const gs_inputs& in, std::size_t k) {
   static constexpr std::array<const char*, 3> component{"x component map", "y component map", "z component map"};

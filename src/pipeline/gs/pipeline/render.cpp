@@ -172,7 +172,7 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
       std::vector<tri_attr>& a = attr[2 * static_cast<std::size_t>(p.colour) + (p.source == pass_source::sphere_map)];
       if (a.empty() && !ps.triangles.empty())
         a = attributes(
-            ps, o.model.setup, [&](std::uint32_t v) { return vertex_rgbaq(p.colour, lv[v], o.s); },
+            ps, o.model, [&](std::uint32_t v) { return vertex_rgbaq(p.colour, lv[v], o.s); },
             [&](const prepared_triangle& t, int k) { return vertex_uv(p.source, t, k, lv); });
       return a;
     };
@@ -254,7 +254,7 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
       r.draw_plain<plain_gouraud>(
           diffuse,
           attributes(
-              ps.plain, o.model.setup, [&](std::uint32_t v) { return plain_colour(ps.plain_light[v]); }, normal_map_uv),
+              ps.plain, o.model, [&](std::uint32_t v) { return plain_colour(ps.plain_light[v]); }, normal_map_uv),
           fb.out, result.plain_triangle);
       note("5 non-normal-mapped geometry: Gouraud × diffuse (MODULATE), Z written", -1, "frame", fb.out);
     }
@@ -265,7 +265,7 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
   if (one) {
     one_buffer_steps(r, s, in, ambient, fb, [&] {
       draw_textured<diffuse_layer_rgb>(r, fb.memory, in.stream.get(), diffuse_texels, diffuse,
-                                       attributes(ps, o.model.setup, flat_white, normal_map_uv), fb.out);
+                                       attributes(ps, o.model, flat_white, normal_map_uv), fb.out);
     });
     note("2.6, 3, 4 in one buffer (LAB, its channels into the free alphas, diffuse, × the alphas)", -1, "frame",
          fb.out);
@@ -275,7 +275,7 @@ std::size_t render_band(const scene& s, const prepared_scene& ps, method m, cons
   // Step 3: the unlit diffuse layer.
   r.fill(fb.diff, 0, false);
   draw_textured<diffuse_layer>(r, fb.memory, in.stream.get(), diffuse_texels, diffuse,
-                               attributes(ps, o.model.setup, flat_white, normal_map_uv), fb.diff);
+                               attributes(ps, o.model, flat_white, normal_map_uv), fb.diff);
   note("3 diffuse layer", -1, "diffuse", fb.diff);
 
   // Step 4: diffuse × LAB per channel: (Cs − 0)·Ad >> 7 with the LAB channel in the destination

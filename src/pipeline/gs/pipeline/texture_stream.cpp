@@ -97,16 +97,17 @@ void interpret(gs::mem::local_memory& m, const gs::packets::packet_builder& b) {
     throw std::logic_error("memory path upload: " + gs.unmodelled_features().front().what);
 }
 
-texture_streamer::texture_streamer(const prepared_scene& ps, gs::gouraud_setup setup, gs::bilinear_mode filter,
+texture_streamer::texture_streamer(const prepared_scene& ps, const gs::model_options& model, gs::bilinear_mode filter,
                                    scissor area, std::uint32_t first_page, std::uint32_t end_page)
     : ps_(ps),
       filter_(filter),
-      rows_only_(setup == gs::gouraud_setup::pcsx2_rows_4 || setup == gs::gouraud_setup::pcsx2_rows_8),
+      rows_only_(model.setup == gs::gouraud_setup::pcsx2_rows_4 || model.setup == gs::gouraud_setup::pcsx2_rows_8),
       area_(area),
       first_(first_page),
       end_(end_page) {
   for (const prepared_triangle& t : ps.triangles)
-    uv_.push_back(gs::setup_attributes(t.setup, {}, t.uv16, xy_offset_pixels, xy_offset_pixels, setup));
+    uv_.push_back(
+        gs::setup_attributes(t.setup, {}, t.uv16, xy_offset_pixels, xy_offset_pixels, model.setup, model.uv_convert));
 }
 
 std::vector<std::array<int, 2>> texture_streamer::cells_in(const stream_texture& t, const scissor& a,

@@ -96,9 +96,10 @@ struct stream_piece {
 
 class texture_streamer {
  public:
-  // The drawn area's triangles (ps, their UV planes by `setup`), sampled with `filter`; the window is
+  // The drawn area's triangles (ps, their UV planes under `model`'s set-up and uv_convert), sampled with
+  // `filter`; the window is
   // pages [first_page, end_page).
-  texture_streamer(const prepared_scene& ps, gs::gouraud_setup setup, gs::bilinear_mode filter, scissor area,
+  texture_streamer(const prepared_scene& ps, const gs::model_options& model, gs::bilinear_mode filter, scissor area,
                    std::uint32_t first_page, std::uint32_t end_page);
   // The pieces of the next pass that draws texture t, the window's contents updated. Throws
   // texture_does_not_fit when a pixel alone fetches more cells than the window holds.

@@ -8,6 +8,7 @@
 #include <glm/common.hpp>
 
 #include "gs_arith/bilinear.hpp"
+#include "gs_arith/uv_plane.hpp"
 #include "pipeline/raster.hpp"
 
 namespace gsdot3::pipeline {
@@ -34,7 +35,8 @@ void walk(const prepared_scene& ps, const std::vector<prepared_triangle>& triang
   for (std::size_t t = 0; t < triangles.size(); ++t) {
     const prepared_triangle& tri = triangles[t];
     for (std::size_t c = 0; c < 2; ++c)
-      uv[t][c] = make_plane(tri.setup.v, {tri.uv16[0][c], tri.uv16[1][c], tri.uv16[2][c]}, -(1 << 20), 1 << 20);
+      uv[t][c] = gs::make_uv_plane(tri.setup.v, {tri.uv16[0][c], tri.uv16[1][c], tri.uv16[2][c]},
+                                   gs::model_options{}.uv_convert);
   }
   pixel_sample p;
   for (p.y = 0; p.y < ps.height; ++p.y)
