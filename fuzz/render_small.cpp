@@ -185,6 +185,7 @@ pl::render_options random_options(FuzzedDataProvider& in) {
   o.model.bilinear = in.ConsumeBool() ? gs::bilinear_mode::nearest : gs::bilinear_mode::lerp16_4;
   o.model.stq_range = in.ConsumeBool() ? gs::stq_range_mode::x86_int32 : gs::stq_range_mode::saturate_2047;
   o.model.stq_convert = static_cast<gs::stq_convert_mode>(in.ConsumeIntegralInRange<int>(0, 2));
+  o.model.uv_convert = in.ConsumeBool() ? gs::uv_convert_mode::floor_1_64 : gs::uv_convert_mode::floor;
   o.model.tex_buffer = static_cast<gs::texture_buffer>(in.ConsumeIntegralInRange<int>(0, 3));
   o.threads = in.ConsumeIntegralInRange<int>(1, 3);
   return o;

@@ -1,7 +1,8 @@
 // Every GS method × step 2.1's DPB clear {explicit, z-trick, z-trick-psmz32} × draw buffers {1, 2} ×
 // {value, memory path} × {nothing, step 5's floor, a spot light} at frame sizes 1x1, 16x16, 33x17,
 // 96x80, 128x112 and 200x150 (issue 51: the z-trick modes overflowed the heap at most sizes that are
-// not whole pages, and no test drew them there). Each combination either renders or is refused with
+// not whole pages, and no test drew them there), under both values of uv_convert (each model option
+// is in this test from the day it is added). Each combination either renders or is refused with
 // std::invalid_argument (the CLI's one-line exit 2); nothing else may escape. The frames are checked
 // against the value path's two-buffer frame with explicit clears, each an independent sequence of
 // passes or storage: the memory path, the SIMD units against gs::pixel_pipeline per pixel (traced, as
@@ -54,15 +55,16 @@ std::string first_difference(const frame& a, const frame& b) {
   return a.colour.size() != b.colour.size() ? "frame sizes differ" : "dot layers or step 5's pixels differ";
 }
 
-class Combinations : public ::testing::TestWithParam<std::tuple<std::size_t, extra>> {};
+class Combinations : public ::testing::TestWithParam<std::tuple<std::size_t, extra, gs::uv_convert_mode>> {};
 
 TEST_P(Combinations, RenderOrRefuseAndAgree) {
-  const auto [size_index, e] = GetParam();
+  const auto [size_index, e, uv_convert] = GetParam();
   const scene s = scene_for(sizes[size_index], e);
   const prepared_scene ps = prepare(s);
   int drawn = 0, refused = 0;
   for (const method m : gs_methods) {
     render_options base;
+    base.model.uv_convert = uv_convert;
     const frame expected = render(s, ps, m, base);  // value path, explicit clears, two buffers, SIMD
     ASSERT_EQ(expected.colour.size(), static_cast<std::size_t>(s.width) * static_cast<std::size_t>(s.height));
     for (const dpb_clear_mode clear :
@@ -113,15 +115,18 @@ TEST_P(Combinations, RenderOrRefuseAndAgree) {
   EXPECT_EQ(drawn, 5 * (3 * 2 * 2 * 2 - 2 * 2 * 2 + 2));
 }
 
-std::string param_name(const ::testing::TestParamInfo<std::tuple<std::size_t, extra>>& p) {
-  const auto [i, e] = p.param;
+std::string param_name(const ::testing::TestParamInfo<std::tuple<std::size_t, extra, gs::uv_convert_mode>>& p) {
+  const auto [i, e, uv] = p.param;
   static constexpr const char* extras[] = {"none", "floor", "spot"};
-  return std::to_string(sizes[i][0]) + "x" + std::to_string(sizes[i][1]) + "_" + extras[static_cast<int>(e)];
+  return std::to_string(sizes[i][0]) + "x" + std::to_string(sizes[i][1]) + "_" + extras[static_cast<int>(e)] +
+         (uv == gs::uv_convert_mode::floor ? "" : "_uv_floor_1_64");
 }
 
 INSTANTIATE_TEST_SUITE_P(SizesAndExtras, Combinations,
                          ::testing::Combine(::testing::Range<std::size_t>(0, sizes.size()),
-                                            ::testing::Values(extra::none, extra::floor, extra::spot)),
+                                            ::testing::Values(extra::none, extra::floor, extra::spot),
+                                            ::testing::Values(gs::uv_convert_mode::floor,
+                                                              gs::uv_convert_mode::floor_1_64)),
                          param_name);
 
 }  // namespace
