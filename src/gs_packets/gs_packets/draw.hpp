@@ -10,9 +10,15 @@
 // DATM: the frame pixel's top bit, bit 31 or 15; PSMCT24 has none and passes), the depth test, then
 // texture fetch and gs::pixel_pipeline, the frame write (FBMSK and the alpha test inside the pipeline)
 // and the Z write.
+// Texture coordinates: UV with PRIM.FST = 1; with FST = 0 (ST/Q, perspective texturing) a triangle's
+// through gs::make_stq_sampler (gs_arith/perspective.hpp: S/Q and T/Q in float32 per pixel when Q
+// differs between the vertices, per vertex and interpolated as UV with one Q; then the model options
+// stq_range and stq_convert), a sprite's per vertex by gs::stq_vertex_texel.
 // What the model lacks is not drawn: check_primitive names it (fog PRIM.FGE, AA1, POINT and LINE
-// primitives, mip-mapping, per-pixel LOD, perspective ST/Q with differing Q, a CLUT load gs_memory refuses, a register
-// value the decoders refuse), and draw_primitive draws nothing when the name is not empty.
+// primitives, mip-mapping, a TEX1.LCM = 0 LOD that changes the filter within a primitive; with FST = 0
+// a SPRITE whose vertices' Q differ, Q of both signs, S/Q or T/Q not finite; a CLUT load gs_memory
+// refuses, a register value the decoders refuse), and draw_primitive draws nothing when the name is
+// not empty.
 #pragma once
 
 #include <cstdint>
