@@ -34,7 +34,7 @@ void add_dump_command(CLI::App& app, context& ctx) {
                   "largest GIF packet (one transfer each) in bytes; PCSX2's path buffer holds 9 MiB (9437184)")
       ->check(CLI::Range(std::size_t{32}, std::size_t{1} << 30))
       ->capture_default_str();
-  auto scene = add_scene_options(cmd);
+  auto scene = add_scene_options(cmd, pipeline::frame_use::packets);
   cmd->get_option("--method")->required();
   cmd->callback([out, video, max_packet, scene, &ctx] {
     scene_setup st = scene();

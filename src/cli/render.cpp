@@ -166,7 +166,7 @@ method_choice parse_methods(const std::string& list) {
 void progress(const std::string& m) { std::cerr << "gsdot3: " << m << "\n"; }
 
 // The scene, the render options and the methods of render's options (everything but --out).
-scene_setup setup(const render_args& a) {
+scene_setup setup(const render_args& a, pipeline::frame_use use) {
   scene_setup req;
   const method_choice chosen = parse_methods(a.method);
   req.methods = chosen.gs;
@@ -199,20 +199,13 @@ scene_setup setup(const render_args& a) {
   else if (a.dpb_clear != "explicit")
     throw usage_error("--dpb-clear: expected explicit, z-trick or z-trick-psmz32, got '" + a.dpb_clear + "'");
   req.options.buffers = a.draw_buffers == 1 ? pipeline::draw_buffers::one : pipeline::draw_buffers::two;
-  if ((a.memory_path || a.dpb_clear != "explicit") && 4 * ((w + 63) / 64) * ((h + 31) / 32) > 512)
-    throw usage_error("--memory-path: four " + a.size + " PSMCT32 buffers do not fit in the GS's 4 MiB (512 pages)");
   std::vector<pipeline::scene_light> lights;
   for (const std::string& l : a.lights) lights.push_back(parse_light(l));
   const bool spot = std::any_of(lights.begin(), lights.end(),
                                 [](const pipeline::scene_light& l) { return l.kind == pipeline::light_kind::spot; });
   if (spot && !req.schemes.empty())
     throw usage_error("--light spot:...: the other seeds' methods draw no spot light (section 3.6 is the GS's)");
-  if (a.spot_after_first_pass && std::any_of(req.methods.begin(), req.methods.end(),
-                                             [](pipeline::method m) { return m != pipeline::method::four_pass; }))
-    throw usage_error("--spot-after-first-pass: four-pass's placement (section 3.6); use --method four-pass");
   req.options.spot_after_first_pass = a.spot_after_first_pass;
-  if (spot && (a.lod_share || !a.lod_distance.empty()))
-    throw usage_error("--light spot:... and --lod-fade / --lod-distance: spot lights are not split into LOD pairs");
   if (a.lod_share && !a.lod_distance.empty())
     throw usage_error("--lod-fade and --lod-distance exclude each other (one gives the share, the other derives it)");
   std::optional<std::array<double, 2>> lod_range;
@@ -224,6 +217,17 @@ scene_setup setup(const render_args& a) {
   }
   std::vector<float> eye;
   if (!a.camera.empty()) eye = parse_floats("--camera", a.camera, 3);
+  // The frame limits (pipeline/frame_limits.hpp, the renderer's and the dump's own check): first on
+  // what the options and lights already say, so that they fail at once, then on the built scene.
+  auto check_limits = [&](const pipeline::scene& s) {
+    for (const pipeline::method m : req.methods)
+      if (const std::optional<std::string> why = pipeline::broken_limit(s, m, req.options, use))
+        throw usage_error(*why);
+  };
+  pipeline::scene outline;
+  outline.width = w, outline.height = h;
+  outline.lights = a.lod_share ? pipeline::split_for_lod(lights, *a.lod_share) : lights;
+  check_limits(outline);
 
   const pipeline::import_options import = parse_import_options(a.import);
 
@@ -266,10 +270,6 @@ scene_setup setup(const render_args& a) {
     progress(text + 2);
   }
   if (share) req.in.s.lights = pipeline::split_for_lod(req.in.s.lights, *share);
-  if (req.options.buffers == pipeline::draw_buffers::one && req.in.s.lights.size() > pipeline::max_free_alpha_lights)
-    throw usage_error("--draw-buffers 1: " + std::to_string(req.in.s.lights.size()) +
-                      " lights, but the one-buffer variant keeps at most 3 dot layers in free alphas (section 3.1)" +
-                      (share ? "; the level of detail makes each light a pair" : ""));
   if (a.normal_map_bits != 8)  // the maps read are 8-bit
     req.in.s.normals = pipeline::with_index_bits(req.in.s.normals, a.normal_map_bits);
   if (a.normal_map_bits == 4)
@@ -279,6 +279,7 @@ scene_setup setup(const render_args& a) {
         "; 24-bit normal map: four-pass samples three 8-bit component maps (section 3.6), the float reference the "
         "unquantised normals; two-pass, three-pass, the 2002 method and the other seeds' methods read the 8-bit "
         "palettised map";
+  check_limits(req.in.s);
   return req;
 }
 
@@ -293,7 +294,7 @@ std::string ps2_text(const pipeline::console_time& t) {
 }
 
 void run(const render_args& a, bool html, context& ctx) {
-  const scene_setup st = setup(a);
+  const scene_setup st = setup(a, pipeline::frame_use::render);
   const pipeline::scene_input& in = st.in;
   if (!a.export_mesh.empty()) {
     try {
@@ -425,10 +426,10 @@ void add_options(CLI::App* cmd, render_args& a) {
 
 }  // namespace
 
-std::function<scene_setup()> add_scene_options(CLI::App* cmd) {
+std::function<scene_setup()> add_scene_options(CLI::App* cmd, pipeline::frame_use use) {
   auto a = std::make_shared<render_args>();
   add_options(cmd, *a);
-  return [a] { return setup(*a); };
+  return [a, use] { return setup(*a, use); };
 }
 
 constexpr const char* export_mesh_help =

@@ -8,6 +8,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "pipeline/frame_limits.hpp"
 #include "pipeline/render.hpp"
 #include "pipeline/scene_input.hpp"
 #include "pipeline/scheme_method.hpp"
@@ -21,7 +22,8 @@ struct scene_setup {
   std::vector<const pipeline::scheme_method*> schemes;
 };
 
-// Registers the options on cmd; the function parses them (throws usage_error) and builds the scene.
-std::function<scene_setup()> add_scene_options(CLI::App* cmd);
+// Registers the options on cmd; the function parses them and builds the scene, and throws usage_error
+// for bad options and for a frame `use` does not draw (pipeline/frame_limits.hpp).
+std::function<scene_setup()> add_scene_options(CLI::App* cmd, pipeline::frame_use use);
 
 }  // namespace gsdot3::cli

@@ -17,6 +17,7 @@
 #include "gs_packets/register_values.hpp"
 #include "gs_packets/video_mode.hpp"
 #include "pipeline/band_renderer.hpp"
+#include "pipeline/frame_limits.hpp"
 #include "pipeline/lod.hpp"
 #include "pipeline/pass_table.hpp"
 
@@ -244,18 +245,10 @@ void finish(frame_packets& fp, stream& g, const prepared_scene& ps, std::uint32_
 }  // namespace
 
 frame_packets build_frame_packets(const scene& s, const prepared_scene& ps, method m, const render_options& o) {
-  if (o.dpb_clear != dpb_clear_mode::explicit_clear)
-    throw std::invalid_argument("frame packets: --dpb-clear " + std::string(name(o.dpb_clear)) +
-                                " is not written yet (explicit only)");
-  if (ps.width > 1023 || ps.height > 1023)
-    throw std::invalid_argument("frame packets: " + std::to_string(ps.width) + "x" + std::to_string(ps.height) +
-                                ": a sprite's UV (10.4) reaches 1023 texels, so frames are at most 1023x1023");
+  check(s, m, o, frame_use::packets);
   frame_packets fp;
   fp.buffers = buffer_layout_for(ps.width, ps.height);
   const buffer_layout& b = fp.buffers;
-  if (!b.fits())
-    throw std::invalid_argument("frame packets: four " + std::to_string(ps.width) + "x" + std::to_string(ps.height) +
-                                " PSMCT32 buffers do not fit in the GS's 4 MiB");
   gs_inputs in = place_inputs(make_inputs(s, m, o), b.first_texture_block());
   const scissor area = detail::band_renderer::drawn_area(ps, {0, 0, ps.width, ps.height});
   start_stream(in, ps, o, area);

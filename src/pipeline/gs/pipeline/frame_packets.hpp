@@ -32,8 +32,9 @@
 // textures after them. With draw_buffers::one the output is each light's DPB and then the LAB, and
 // the free alphas are those of the buffer at FBP 0, of the Z buffer's words and of the output
 // (render.cpp's one_buffer_steps; docs/dumps.md).
-// Not written: the z-trick DPB clears (render_options::dpb_clear other than explicit); frames wider
-// or taller than 1023 pixels (a sprite's UV is 10.4: at most 1023.9375).
+// Not written (frame_limits.hpp says why, before anything is built): the z-trick DPB clears
+// (render_options::dpb_clear other than explicit); frames wider or taller than 1023 pixels (a sprite's
+// UV is 10.4: at most 1023.9375).
 #pragma once
 
 #include <cstdint>

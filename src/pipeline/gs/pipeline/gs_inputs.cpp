@@ -77,17 +77,6 @@ std::span<const std::uint8_t> normal_map_texels(const gs_inputs& in, std::size_t
 }
 
 gs_inputs make_inputs(const scene& s, method m, const render_options& o) {
-  if (o.buffers == draw_buffers::one) {
-    if (s.lights.size() > max_free_alpha_lights)
-      throw std::invalid_argument("--draw-buffers 1: " + std::to_string(s.lights.size()) +
-                                  " lights, but the one-buffer variant keeps at most " +
-                                  std::to_string(max_free_alpha_lights) +
-                                  " dot layers in free alphas (section 3.1; --lod-fade counts each light twice)");
-    if (o.dpb_clear != dpb_clear_mode::explicit_clear)
-      throw std::invalid_argument(
-          "--draw-buffers 1 needs --dpb-clear explicit (the z-trick clears use the Z "
-          "buffer's top byte, which this variant keeps a free alpha in)");
-  }
   gs_inputs in;
   in.nm = &s.normals;
   in.diffuse = &s.diffuse;
@@ -121,14 +110,8 @@ gs_inputs make_inputs(const scene& s, method m, const render_options& o) {
   }
   for (const passes::light_pass& p : passes::describe(m).light)
     if (p.source == passes::pass_source::sphere_map) in.sphere = sphere_map(64, 64);
-  if (std::any_of(s.lights.begin(), s.lights.end(), [](const scene_light& l) { return l.kind == light_kind::spot; })) {
-    if (std::any_of(s.lights.begin(), s.lights.end(), [](const scene_light& l) { return l.gouraud; }))
-      throw std::invalid_argument("spot lights are not split into section 3.8's LOD pairs (--lod)");
+  if (std::any_of(s.lights.begin(), s.lights.end(), [](const scene_light& l) { return l.kind == light_kind::spot; }))
     in.spot = spot_map();
-  }
-  if (o.spot_after_first_pass && m != method::four_pass)
-    throw std::invalid_argument("a spot light after the first pass is four-pass's placement (section 3.6), not " +
-                                std::string(name(m)) + "'s");
   return in;
 }
 

@@ -113,10 +113,7 @@ std::span<const std::uint8_t> normal_map_texels(const gs_inputs& in, std::size_t
 std::array<gs::clut_buffer*, 8> palettes(gs_inputs& in);
 std::array<const gs::clut_buffer*, 8> palettes(const gs_inputs& in);
 
-// The renderer's and the packet stream's inputs; throws std::invalid_argument for draw_buffers::one
-// with more than max_free_alpha_lights lights or a z-trick DPB clear (method.hpp), for a spot light
-// split into a section 3.8 LOD pair, and for render_options::spot_after_first_pass with a method other
-// than four-pass.
+// The renderer's and the packet stream's inputs, for a frame frame_limits.hpp's check accepts.
 gs_inputs make_inputs(const scene& s, method m, const render_options& o);
 // Places the textures from block `first` on: the normal map(s) (index_psm, an even TBW), the sphere map
 // and the diffuse texture (PSMCT32), then one PSMCT32 page holding the eight palettes as 16×16 CSM1

@@ -1,4 +1,4 @@
-// pipeline/render.cpp — the pass sequences of the three methods, run over horizontal frame bands.
+// pipeline/render.cpp — the pass sequences of the five GS methods, run over horizontal frame bands.
 //
 // Register level (through gs::pixel_pipeline and the gs_arith units, see gs_pass.hpp): every triangle pass (step
 // 1, 2.3, 3), the clear values, the two-pass alpha post pass (PSMT8H reads the DPB's own alpha byte at the same pixel:
@@ -51,6 +51,7 @@
 #include "pipeline/band_renderer.hpp"
 #include "pipeline/channel_pass.hpp"
 #include "pipeline/encoders.hpp"
+#include "pipeline/frame_limits.hpp"
 #include "pipeline/gs_inputs.hpp"
 #include "pipeline/lod.hpp"
 #include "pipeline/gs_pass.hpp"
@@ -337,6 +338,7 @@ void render_bands(const scene& s, const prepared_scene& ps, method m, const rend
 }  // namespace
 
 frame render(const scene& s, const prepared_scene& ps, method m, const render_options& o) {
+  check(s, m, o, frame_use::render);
   const gs_inputs in = make_inputs(s, m, o);
   frame result;
   result.width = ps.width;
@@ -351,9 +353,6 @@ frame render(const scene& s, const prepared_scene& ps, method m, const render_op
     // (PSMCT32) and the Z buffer (PSMZ24), FBW = ceil(width / 64).
     const buffer_layout layout = buffer_layout_for(ps.width, ps.height);
     const std::uint32_t fbw = layout.fbw;
-    if (!layout.fits())
-      throw std::invalid_argument("memory path: four " + std::to_string(ps.width) + "x" + std::to_string(ps.height) +
-                                  " 32-bit buffers do not fit in the GS's 4 MiB");
     gs::mem::local_memory memory;
     frame_buffers<memory_view> fb;
     fb.memory = &memory;

@@ -8,8 +8,8 @@
 
 namespace gsdot3::pipeline {
 
-// Throws std::invalid_argument for a frame the options ask for that the model does not draw: buffers
-// beyond the 4 MiB, make_inputs' refusals (gs_inputs.hpp), step 5 with streamed textures.
+// Throws std::invalid_argument for a frame the options ask for that the model does not draw:
+// frame_limits.hpp's check, and on the memory path step 5 with streamed textures (gs_inputs.hpp).
 frame render(const scene& s, const prepared_scene& ps, method m, const render_options& o);
 
 }  // namespace gsdot3::pipeline

@@ -339,9 +339,10 @@ report_summary write_staged(const scene& s, const report_request& r, staged_dire
   for (const memory_step& st : memory_steps)
     j["memory"]["steps"].push_back(
         {{"step", st.step}, {"does", st.does}, {"memory_path", st.memory_path}, {"value_path", st.value_path}});
-  // The memory path may still refuse a frame whose buffers fit (step 5 with streamed textures:
-  // gs_inputs.hpp's plain_needs_resident_texture): the report says why instead of the pictures.
-  if (4 * ((w + 63) / 64) * ((h + 31) / 32) <= 512) {
+  // The memory path may refuse the frame (frame_limits.hpp: its buffers beyond the 4 MiB; step 5 with
+  // streamed textures, gs_inputs.hpp's plain_needs_resident_texture): the report says why instead of
+  // the pictures.
+  {
     try {
       // The first method's frame rendered again on the memory path with a trace: its DPB as the post
       // filter of light 0 reads it, displayed as PSMCT32 and read as PSMT8.
