@@ -1,8 +1,8 @@
 // pipeline/report_page.hpp — the report as a page (report.html: inline CSS and JavaScript, no
 // network, works from file://) that shows the PNGs of its folder and reads the per-pixel data of its
-// inspector from report-pixels.js beside it: the folder, not the page alone, is what to copy. The page is data-driven: it lists whatever methods report.json
-// holds (GS methods, the other seeds' scheme methods), so a method added to the report appears on
-// the page without changes here.
+// inspector from report-pixels.js beside it: the folder, not the page alone, is what to copy. The
+// page is data-driven: it lists whatever methods report.json holds (GS methods, the other seeds'
+// scheme methods), so a method added to the report appears on the page without changes here.
 //
 // report-pixels.js (format 1) assigns one object to `gsdot3_pixels`:
 //   {"format": 1, "count": N, "columns": [...], "deflate_base64": "..."}
