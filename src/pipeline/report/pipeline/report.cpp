@@ -342,32 +342,30 @@ report_summary write_staged(const scene& s, const report_request& r, staged_dire
   // The memory path may refuse the frame (frame_limits.hpp: its buffers beyond the 4 MiB; step 5 with
   // streamed textures, gs_inputs.hpp's plain_needs_resident_texture): the report says why instead of
   // the pictures.
-  {
-    try {
-      // The first method's frame rendered again on the memory path with a trace: its DPB as the post
-      // filter of light 0 reads it, displayed as PSMCT32 and read as PSMT8.
-      render_options traced = r.options;
-      traced.memory_path = true;
-      std::vector<pass_record> trace;
-      traced.trace = &trace;
-      render(s, front, sum.methods.front().m, traced);
-      const dpb_pictures dpb = post_filter_dpb_pictures(trace, w, h, traced.dpb_clear == dpb_clear_mode::z_trick);
-      write_png(dir / "memory-dpb-psmct32.png", dpb.display);
-      write_png(dir / "memory-dpb-as-psmt8.png", dpb.as_psmt8);
-      j["memory"]["dpb_pictures"] = {{"method", std::string(name(sum.methods.front().m))},
-                                     {"files", {"memory-dpb-psmct32.png", "memory-dpb-as-psmt8.png"}}};
-      render_options other = r.options;
-      other.memory_path = !r.options.memory_path;
-      other.dpb_clear = dpb_clear_mode::explicit_clear;
-      for (std::size_t k = 0; k < frames.size(); ++k) {
-        const frame f = render(s, front, sum.methods[k].m, other);
-        j["memory"]["memory_path_equals_value_level"][std::string(name(sum.methods[k].m))] =
-            f.colour == frames[k].colour && f.dot == frames[k].dot;
-      }
-    } catch (const std::invalid_argument& e) {
-      j["memory"]["not_drawn"] = e.what();
-      say(std::string("memory path not drawn: ") + e.what());
+  try {
+    // The first method's frame rendered again on the memory path with a trace: its DPB as the post
+    // filter of light 0 reads it, displayed as PSMCT32 and read as PSMT8.
+    render_options traced = r.options;
+    traced.memory_path = true;
+    std::vector<pass_record> trace;
+    traced.trace = &trace;
+    render(s, front, sum.methods.front().m, traced);
+    const dpb_pictures dpb = post_filter_dpb_pictures(trace, w, h, traced.dpb_clear == dpb_clear_mode::z_trick);
+    write_png(dir / "memory-dpb-psmct32.png", dpb.display);
+    write_png(dir / "memory-dpb-as-psmt8.png", dpb.as_psmt8);
+    j["memory"]["dpb_pictures"] = {{"method", std::string(name(sum.methods.front().m))},
+                                   {"files", {"memory-dpb-psmct32.png", "memory-dpb-as-psmt8.png"}}};
+    render_options other = r.options;
+    other.memory_path = !r.options.memory_path;
+    other.dpb_clear = dpb_clear_mode::explicit_clear;
+    for (std::size_t k = 0; k < frames.size(); ++k) {
+      const frame f = render(s, front, sum.methods[k].m, other);
+      j["memory"]["memory_path_equals_value_level"][std::string(name(sum.methods[k].m))] =
+          f.colour == frames[k].colour && f.dot == frames[k].dot;
     }
+  } catch (const std::invalid_argument& e) {
+    j["memory"]["not_drawn"] = e.what();
+    say(std::string("memory path not drawn: ") + e.what());
   }
   write_file_atomically(dir / "report.json", j.dump(2) + "\n");
   if (r.write_html) {
