@@ -20,7 +20,9 @@
 #include "gs_arith/perspective.hpp"
 #include "gs_memory/fast_address.hpp"
 #include "gs_memory/swizzle_tables.hpp"
+#include "pipeline/frame_views.hpp"
 #include "pipeline/gs_pass.hpp"
+#include "pipeline/pass_attributes.hpp"
 #include "pipeline/pass_table.hpp"
 #include "pipeline/prepare.hpp"
 #include "pipeline/method.hpp"
@@ -28,49 +30,6 @@
 #include "pipeline/span_batch.hpp"
 
 namespace gsdot3::pipeline::detail {
-
-// Per-triangle attributes of one pass: the Gouraud plane and the UV planes (gs::setup_attributes).
-using tri_attr = gs::triangle_attributes;
-
-// Where a frame buffer's pixel (x, y) is: a row-major frame-sized vector (value level, row_view), or
-// a PSMCT32 buffer in the modelled GS local memory (render_options::memory_path, memory_view: `words`
-// is the 4 MiB memory, FBP·32 = bp, FBW = bw; the address is gs_memory's PSMCT32 layout). The passes
-// are templates over the view, so the value-level path is compiled as before.
-struct row_view {
-  std::uint32_t* words = nullptr;
-  int width = 0;
-  std::uint32_t& operator()(int x, int y) const noexcept {
-    return words[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)];
-  }
-};
-// With `address` set (gs_memory's row_column_address of the same layout, equal to unit_address on
-// every pixel: tests/gs_memory/fast_address_test.cpp) the address is looked up, else computed.
-struct memory_view {
-  std::uint32_t* words = nullptr;
-  std::uint32_t bp = 0, bw = 0;  // blocks, 64-pixel units
-  bool z = false;                // the buffer is drawn in PSMZ32 (section 3.4's z-trick modes)
-  const gs::mem::row_column_address* address = nullptr;
-  constexpr gs::mem::layout layout() const noexcept { return z ? gs::mem::layout::z32 : gs::mem::layout::ct32; }
-  std::uint32_t& operator()(int x, int y) const noexcept {
-    const auto ux = static_cast<std::uint32_t>(x), uy = static_cast<std::uint32_t>(y);
-    return words[address ? address->unit(ux, uy) : gs::mem::tables::unit_address(layout(), bp, bw, ux, uy)];
-  }
-};
-
-// The Z buffer (ZBUF_1, PSMZ24): row-major on the value path, at ZBP in the modelled local memory on
-// the memory path (the word of PSMZ24 pixel (x, y): memory_view in the Z layout). A write keeps the
-// word's top byte (PSMZ24 stores bits 0-23).
-struct z_view {
-  row_view rows;
-  memory_view memory;
-  bool in_memory = false;
-  std::uint32_t& operator()(int x, int y) const noexcept { return in_memory ? memory(x, y) : rows(x, y); }
-  std::uint32_t read(int x, int y) const noexcept { return (*this)(x, y); }
-  void write(int x, int y, std::uint32_t z) const noexcept {
-    std::uint32_t& w = (*this)(x, y);
-    w = (w & 0xFF000000u) | (z & 0x00FFFFFFu);
-  }
-};
 
 struct fragment {
   std::int32_t tri;
@@ -90,16 +49,10 @@ class band_renderer {
                 std::vector<std::int32_t>& visible)
       : ps_(ps), o_(o), band_(band), sprite_area_(drawn_area(ps, band)), z_(z), visible_(visible) {}
 
-  // Step 1: Z buffer and the LAB's ambient colour (ZTST = GEQUAL, Z written).
+  // Step 1: the LAB's ambient colour and the Z buffer (ZTST = GEQUAL, Z written), after the frame
+  // program's clears of both; then, on the cached path, the fragments every later pass draws.
   template <class FB>
   void depth_and_ambient(const FB& lab, gs::rgba8 ambient) {
-    fill(lab, 0);
-    for (int y = band_.y0; y < band_.y1; ++y)
-      for (int x = band_.x0; x < band_.x1; ++x) {
-        const gs::depth_result d = gs::depth_test(passes::depth_always, passes::z_written, 0, z_.read(x, y));
-        if (d.write_z) z_.write(x, y, d.z);
-        visible_[index(x, y)] = -1;
-      }
     constexpr gs::gs_registers regs = passes::step1_ambient.registers();
     const gs::fragment_colour cf = gs::fragment_colour::flat(ambient);
     for (std::size_t t = 0; t < ps_.triangles.size(); ++t) {
@@ -296,6 +249,18 @@ class band_renderer {
     }
   }
 
+  // The frame program's clears over the frame (the memory's state before step 1): v written directly
+  // over the band, the bits of `keep` kept, and with `z` the Z buffer's 24 bits set to 0. They are
+  // not sent through gs::pixel_pipeline, so pixel_ops does not count them.
+  template <class FB>
+  void clear(const FB& fb, std::uint32_t v, std::uint32_t keep, bool z) {
+    for (int y = band_.y0; y < band_.y1; ++y)
+      for (int x = band_.x0; x < band_.x1; ++x) {
+        fb(x, y) = (fb(x, y) & keep) | (v & ~keep);
+        if (z) z_.write(x, y, 0);
+      }
+  }
+
   // Whether (x, y) is a pixel of the frame: sprites clipped to whole pages (the z-trick modes' Z clear,
   // channel_pass.hpp) also draw the buffer's pixels past the frame's right and bottom edges, which the
   // frame-sized records (the trace, the frame's per-pixel vectors) do not have.
@@ -341,9 +306,11 @@ class band_renderer {
   bool vectorised() const noexcept { return o_.simd && pending == nullptr; }
   // draw() through span_batch: one batch per triangle (the cached fragments are in triangle order),
   // the attributes stepped along each row (gs::attribute_walker, equal to colour_at and plane::at).
+  // Not inlined into draw<Pass> (whose scalar loop is compiled per register set): one copy per view,
+  // everything it calls inlined into it.
   template <class FB>
-  void draw_spans(const gs::gs_registers& regs, const texture_ref* tex, const std::vector<tri_attr>& attr,
-                  const FB& fb) {
+  [[gnu::noinline, gnu::flatten]] void draw_spans(const gs::gs_registers& regs, const texture_ref* tex,
+                                                  const std::vector<tri_attr>& attr, const FB& fb) {
     span_batch batch(regs, o_.model);
     auto add = [&](gs::attribute_walker& w, int x, int y) {
       const gs::attribute_walker::values a = w.at(x, y);
@@ -408,46 +375,5 @@ class band_renderer {
   std::vector<std::size_t> tri_frags_;  // triangle t's fragments: frags_[tri_frags_[t], tri_frags_[t + 1])
   std::size_t ops_ = 0;
 };
-
-// A triangle pass with a normal-map or diffuse texture: one draw, or on the memory path with the
-// texture streamed (`stream` set, texture_stream.hpp's argument for why it is the same frame) one
-// draw per piece over its rectangle, after the piece's uploads into `memory`, with the piece's TEX0.
-template <const pass_regs& Pass, class FB>
-void draw_textured(band_renderer& r, gs::mem::local_memory* memory, texture_streamer* stream,
-                   const stream_texture& streamed, texture_ref tex, const std::vector<tri_attr>& attr,
-                   const FB& target) {
-  if (stream == nullptr) return r.draw<Pass>(&tex, attr, target);
-  for (const stream_piece& p : stream->next_pass(streamed)) {
-    upload_piece(*memory, streamed, p);
-    tex.at = p.at;
-    tex.texel_at = &stream->addresses(streamed, p.at);
-    r.draw<Pass>(&tex, attr, target, &p);
-  }
-}
-
-// Vertex colours → per-triangle attributes of `triangles` (the DOT3 mesh's, or step 5's); `uv` picks
-// the 12.4 texture coordinates per corner.
-template <class Colour, class UV>
-std::vector<tri_attr> attributes(const std::vector<prepared_triangle>& triangles, const gs::model_options& model,
-                                 Colour&& colour, UV&& uv) {
-  std::vector<tri_attr> out(triangles.size());
-  for (std::size_t t = 0; t < triangles.size(); ++t) {
-    const prepared_triangle& tri = triangles[t];
-    std::array<gs::rgba8, 3> c{};
-    std::array<std::array<std::int32_t, 2>, 3> uv16{};
-    for (int k = 0; k < 3; ++k) {
-      c[static_cast<std::size_t>(k)] = colour(tri.vertex[static_cast<std::size_t>(k)]);
-      const auto [u, v] = uv(tri, k);
-      uv16[static_cast<std::size_t>(k)] = {u, v};
-    }
-    out[t] =
-        gs::setup_attributes(tri.setup, c, uv16, xy_offset_pixels, xy_offset_pixels, model.setup, model.uv_convert);
-  }
-  return out;
-}
-template <class Colour, class UV>
-std::vector<tri_attr> attributes(const prepared_scene& ps, const gs::model_options& model, Colour&& colour, UV&& uv) {
-  return attributes(ps.triangles, model, colour, uv);
-}
 
 }  // namespace gsdot3::pipeline::detail

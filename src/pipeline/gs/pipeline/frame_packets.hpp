@@ -1,5 +1,5 @@
 // pipeline/frame_packets.hpp — a method's whole frame as the GIF packet stream the GS receives
-// (issue 15): the environment, the texture and palette uploads, and every pass of render.cpp with
+// (issue 15): the frame program (frame_program.hpp) encoded, the program render.cpp executes, with
 // pass_table.hpp's register sets and vertex values, over the memory path's buffers. `gsdot3 dump`
 // writes it as a PCSX2 GS dump; tests/pipeline replays it and compares with the renderer.
 //
@@ -31,7 +31,7 @@
 // diffuse layer) at FBP 0, the LAB at P, the output at 2P, the Z buffer (PSMZ24) at ZBP = 3P, the
 // textures after them. With draw_buffers::one the output is each light's DPB and then the LAB, and
 // the free alphas are those of the buffer at FBP 0, of the Z buffer's words and of the output
-// (render.cpp's one_buffer_steps; docs/dumps.md).
+// (frame_program.cpp; docs/dumps.md).
 // Not written (frame_limits.hpp says why, before anything is built): the z-trick DPB clears
 // (render_options::dpb_clear other than explicit); frames wider or taller than 1023 pixels (a sprite's
 // UV is 10.4: at most 1023.9375).

@@ -18,7 +18,8 @@ inline constexpr std::array<memory_step, 10> memory_steps{{
     {"1",
      "Z buffer and the ambient colour into the LAB: the LAB cleared, Z cleared (Z = 0, ZTST = ALWAYS), every "
      "triangle with TEST_1 ZTE = 1, ZTST = GEQUAL, ZBUF_1 PSMZ24, ZMSK = 0",
-     "register level: Z at ZBP = 3P in local memory (PSMZ24 layout), gs::depth_test; the LAB clear is a flat sprite",
+     "register level: Z at ZBP = 3P in local memory (PSMZ24 layout), gs::depth_test; the clears before it (the "
+     "frame program's sprites over the frame) are the memory's state, stored directly",
      "register level for the depth test (gs::depth_test on a row-major Z array); the clears are fills"},
     {"2.1", "clear the DPB to 0x00808080 (explicit, or section 3.4's Z-buffer clear during 2.6)",
      "register level: a flat sprite, or the ILP sprites' Z writes (ZBUF = the DPB in PSMZ24, ZTST = ALWAYS)",

@@ -2,9 +2,9 @@
 // (its register set, pass_regs, is gs_methods/pass_registers.hpp's, which proofs/methods.hpp runs for
 // the claims), the per-vertex colour and texture
 // coordinates each triangle pass sends, and each method as data: its light passes in draw order
-// (method_passes, at the end). render.cpp interprets that list on the value and the memory path,
-// frame_packets.cpp writes the same list as GIF packets (TEX0_1.TFX/TCC, PRIM.TME/ABE, ALPHA_1,
-// COLCLAMP, FRAME_1.FBMSK; RGBAQ, UV per vertex) and gs_inputs.cpp builds the palettes it names,
+// (method_passes, at the end). frame_program.cpp puts that list into the frame's operations, which
+// render.cpp executes on the value and the memory path and frame_packets.cpp writes as GIF packets (TEX0_1.TFX/TCC,
+// PRIM.TME/ABE, ALPHA_1, COLCLAMP, FRAME_1.FBMSK; RGBAQ, UV per vertex) and gs_inputs.cpp builds the palettes it names,
 // so none of them can disagree on a pass.
 #pragma once
 
@@ -175,7 +175,7 @@ inline constexpr method_passes<4> baseline_method{
 // f.template operator()<D>() with D the method's method_passes (a constant, so a renderer can
 // instantiate its pixel loops per pass register set); the only switch over the GS methods.
 template <class F>
-decltype(auto) with_method(method m, F&& f) {
+constexpr decltype(auto) with_method(method m, F&& f) {
   switch (m) {
     case method::two_pass: return f.template operator()<two_pass_method>();
     case method::four_pass: return f.template operator()<four_pass_method>();
@@ -194,17 +194,6 @@ inline method_view describe(method m) {
       m, []<const auto & D>() {
         return method_view{D.palettes, D.light};
       });
-}
-
-// Where a spot light's texture is drawn over the DPB (section 3.6): four-pass "after the first pass"
-// (render_options::spot_after_first_pass) or "after all four passes are complete" (the default), the
-// blend on every channel; every other method after the post filter (step 2.4) on its sum, the red byte
-// (spot_attenuation_red: the paper gives four-pass's placements only, so this is the model's choice
-// for the others — the same blend on the one byte that holds the dot product).
-enum class spot_step : std::uint8_t { after_first_pass, after_light_passes, after_post_filter };
-inline spot_step spot_placement(method m, const render_options& o) {
-  if (m != method::four_pass) return spot_step::after_post_filter;
-  return o.spot_after_first_pass ? spot_step::after_first_pass : spot_step::after_light_passes;
 }
 
 // Section 3.6's spot light: triangle t's S, T, Q in the light's projection

@@ -1,0 +1,54 @@
+// pipeline/frame_views.hpp — where render.cpp's frame buffers keep pixel (x, y): row-major vectors (the
+// value path) or PSMCT32 / PSMZ24 buffers in the modelled GS local memory (the memory path). Internal
+// to render.cpp.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+#include "gs_memory/fast_address.hpp"
+#include "gs_memory/swizzle_tables.hpp"
+
+namespace gsdot3::pipeline::detail {
+
+// Where a frame buffer's pixel (x, y) is: a row-major frame-sized vector (value level, row_view), or
+// a PSMCT32 buffer in the modelled GS local memory (render_options::memory_path, memory_view: `words`
+// is the 4 MiB memory, FBP·32 = bp, FBW = bw; the address is gs_memory's PSMCT32 layout). The passes
+// are templates over the view, so the value-level path is compiled as before.
+struct row_view {
+  std::uint32_t* words = nullptr;
+  int width = 0;
+  std::uint32_t& operator()(int x, int y) const noexcept {
+    return words[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)];
+  }
+};
+// With `address` set (gs_memory's row_column_address of the same layout, equal to unit_address on
+// every pixel: tests/gs_memory/fast_address_test.cpp) the address is looked up, else computed.
+struct memory_view {
+  std::uint32_t* words = nullptr;
+  std::uint32_t bp = 0, bw = 0;  // blocks, 64-pixel units
+  bool z = false;                // the buffer is drawn in PSMZ32 (section 3.4's z-trick modes)
+  const gs::mem::row_column_address* address = nullptr;
+  constexpr gs::mem::layout layout() const noexcept { return z ? gs::mem::layout::z32 : gs::mem::layout::ct32; }
+  std::uint32_t& operator()(int x, int y) const noexcept {
+    const auto ux = static_cast<std::uint32_t>(x), uy = static_cast<std::uint32_t>(y);
+    return words[address ? address->unit(ux, uy) : gs::mem::tables::unit_address(layout(), bp, bw, ux, uy)];
+  }
+};
+
+// The Z buffer (ZBUF_1, PSMZ24): row-major on the value path, at ZBP in the modelled local memory on
+// the memory path (the word of PSMZ24 pixel (x, y): memory_view in the Z layout). A write keeps the
+// word's top byte (PSMZ24 stores bits 0-23).
+struct z_view {
+  row_view rows;
+  memory_view memory;
+  bool in_memory = false;
+  std::uint32_t& operator()(int x, int y) const noexcept { return in_memory ? memory(x, y) : rows(x, y); }
+  std::uint32_t read(int x, int y) const noexcept { return (*this)(x, y); }
+  void write(int x, int y, std::uint32_t z) const noexcept {
+    std::uint32_t& w = (*this)(x, y);
+    w = (w & 0xFF000000u) | (z & 0x00FFFFFFu);
+  }
+};
+
+}  // namespace gsdot3::pipeline::detail

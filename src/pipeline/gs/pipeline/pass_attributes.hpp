@@ -1,0 +1,45 @@
+// pipeline/pass_attributes.hpp — the per-triangle attributes a triangle pass draws with: the Gouraud
+// colour plane and the UV planes (gs::setup_attributes) from the pass's vertex colours and texture
+// coordinates. Internal to render.cpp.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "gs_arith/attribute_setup.hpp"
+#include "gs_arith/options.hpp"
+#include "pipeline/prepare.hpp"
+#include "pipeline/raster.hpp"
+
+namespace gsdot3::pipeline::detail {
+
+// Per-triangle attributes of one pass: the Gouraud plane and the UV planes (gs::setup_attributes).
+using tri_attr = gs::triangle_attributes;
+
+// Vertex colours → per-triangle attributes of `triangles` (the DOT3 mesh's, or step 5's); `uv` picks
+// the 12.4 texture coordinates per corner.
+template <class Colour, class UV>
+std::vector<tri_attr> attributes(const std::vector<prepared_triangle>& triangles, const gs::model_options& model,
+                                 Colour&& colour, UV&& uv) {
+  std::vector<tri_attr> out(triangles.size());
+  for (std::size_t t = 0; t < triangles.size(); ++t) {
+    const prepared_triangle& tri = triangles[t];
+    std::array<gs::rgba8, 3> c{};
+    std::array<std::array<std::int32_t, 2>, 3> uv16{};
+    for (int k = 0; k < 3; ++k) {
+      c[static_cast<std::size_t>(k)] = colour(tri.vertex[static_cast<std::size_t>(k)]);
+      const auto [u, v] = uv(tri, k);
+      uv16[static_cast<std::size_t>(k)] = {u, v};
+    }
+    out[t] =
+        gs::setup_attributes(tri.setup, c, uv16, xy_offset_pixels, xy_offset_pixels, model.setup, model.uv_convert);
+  }
+  return out;
+}
+template <class Colour, class UV>
+std::vector<tri_attr> attributes(const prepared_scene& ps, const gs::model_options& model, Colour&& colour, UV&& uv) {
+  return attributes(ps.triangles, model, colour, uv);
+}
+
+}  // namespace gsdot3::pipeline::detail
