@@ -87,49 +87,75 @@ class band_renderer {
     }
   }
 
-  // A triangle pass with ZTST = GEQUAL and ZMSK = 1; with `clip` only its pixels in that rectangle
-  // (SCISSOR_1 of a streamed texture's piece, pipeline/texture_stream.hpp).
+  // A triangle pass with ZTST = GEQUAL and ZMSK = 1; with a piece only its pixels in the piece's
+  // rectangle (SCISSOR_1 of a streamed texture's piece, pipeline/texture_stream.hpp). The scalar loop
+  // is compiled per register set, with one call site of the pixel so that each copy stays small.
   template <const pass_regs& Pass, class FB>
   [[gnu::flatten]] void draw(const texture_ref* tex, const std::vector<tri_attr>& attr, const FB& fb,
                              const stream_piece* piece = nullptr) {
-    constexpr gs::gs_registers regs = Pass.registers();
     // A streamed piece is drawn by the scalar loop below: the span batches know no SCISSOR_1.
     if (vectorised() && piece == nullptr) return draw_spans(batch_registers<Pass>, tex, attr, fb);
+    constexpr gs::gs_registers regs = Pass.registers();
+    const bool cached = piece == nullptr && o_.path == raster_path::cached;
+    const std::vector<fragment> cut = cached ? std::vector<fragment>{} : fragments_of(piece);
+    const std::vector<fragment>& fs = cached ? frags_ : cut;
+    std::array<pixel_inputs, 64> in;  // the texels and colours of up to 64 fragments, fetched first
+    for (std::size_t i = 0; i < fs.size(); i += in.size()) {
+      const std::size_t n = std::min(in.size(), fs.size() - i);
+      fetch_inputs(tex, attr, &fs[i], n, in.data());
+      for (std::size_t k = 0; k < n; ++k) {
+        const int x = fs[i + k].x, y = fs[i + k].y;
+        std::uint32_t& word = fb(x, y);
+        word = gs_pixel(regs, in[k].texel, in[k].cf, word, x, y, o_.model);
+        if (pending != nullptr) note_shaded(index(x, y), in[k].texel, in[k].cf);
+      }
+      ops_ += n;
+    }
+  }
+  // The texel (none without a texture) and the Gouraud colour of fragments f[0, n) (the triangle
+  // textures are never the target, so fetching them before the writes changes nothing); not per set.
+  struct pixel_inputs {
+    gs::rgba8 texel;
+    gs::fragment_colour cf;
+  };
+  [[gnu::noinline]] static void fetch_inputs(const texture_ref* tex, const std::vector<tri_attr>& attr,
+                                             const fragment* f, std::size_t n, pixel_inputs* out) {
+    for (std::size_t k = 0; k < n; ++k) {
+      const int x = f[k].x, y = f[k].y;
+      const tri_attr& a = attr[static_cast<std::size_t>(f[k].tri)];
+      out[k].cf = a.colour_at(x, y);
+      out[k].texel = tex != nullptr ? tex->sample(a.u.at(x, y), a.v.at(x, y)) : gs::rgba8{};
+    }
+  }
+  // The fragments a triangle pass draws, in draw order: with a piece its triangles' within its
+  // rectangle (from the cached fragments, rows in order within each triangle), on the reference path
+  // every triangle rasterised again and depth-tested against step 1's Z.
+  [[gnu::noinline]] std::vector<fragment> fragments_of(const stream_piece* piece) const {
+    std::vector<fragment> out;
     const scissor* clip = piece != nullptr ? &piece->area : nullptr;
     const triangle_range range =
         piece != nullptr ? piece->triangles : triangle_range{0, static_cast<std::uint32_t>(ps_.triangles.size())};
-    auto shade = [&](std::size_t t, int x, int y) {
-      const tri_attr& a = attr[t];
-      const gs::fragment_colour cf = a.colour_at(x, y);
-      const gs::rgba8 texel = tex != nullptr ? tex->sample(a.u.at(x, y), a.v.at(x, y)) : gs::rgba8{};
-      std::uint32_t& word = fb(x, y);
-      word = gs_pixel(regs, texel, cf, word, x, y, o_.model);
-      if (pending != nullptr) note_shaded(index(x, y), texel, cf);
-      ++ops_;
-    };
     if (o_.path == raster_path::cached) {
-      if (clip == nullptr) {
-        for (const fragment& f : frags_) shade(static_cast<std::size_t>(f.tri), f.x, f.y);
-      } else {  // the piece's triangles' fragments (rows in order within each) from the clip's first row
-        for (std::uint32_t t = range.first; t < range.end; ++t) {
-          const auto end = frags_.begin() + static_cast<std::ptrdiff_t>(tri_frags_[t + 1]);
-          auto f = std::lower_bound(frags_.begin() + static_cast<std::ptrdiff_t>(tri_frags_[t]), end, clip->y0,
-                                    [](const fragment& g, int y) { return g.y < y; });
-          for (; f != end && f->y < clip->y1; ++f)
-            if (f->x >= clip->x0 && f->x < clip->x1) shade(t, f->x, f->y);
-        }
+      for (std::uint32_t t = range.first; t < range.end; ++t) {
+        const auto end = frags_.begin() + static_cast<std::ptrdiff_t>(tri_frags_[t + 1]);
+        auto f = std::lower_bound(frags_.begin() + static_cast<std::ptrdiff_t>(tri_frags_[t]), end, clip->y0,
+                                  [](const fragment& g, int y) { return g.y < y; });
+        for (; f != end && f->y < clip->y1; ++f)
+          if (f->x >= clip->x0 && f->x < clip->x1) out.push_back(*f);
       }
-      return;
+      return out;
     }
     const scissor area = clip == nullptr ? band_
                                          : scissor{std::max(band_.x0, clip->x0), std::max(band_.y0, clip->y0),
                                                    std::min(band_.x1, clip->x1), std::min(band_.y1, clip->y1)};
-    for (std::size_t t = range.first; t < range.end; ++t) {
+    for (std::uint32_t t = range.first; t < range.end; ++t) {
       const prepared_triangle& tri = ps_.triangles[t];
       rasterise_triangle(tri.setup, area, [&](int x, int y) {
-        if (passes_later_depth_test(tri, x, y)) shade(t, x, y);
+        if (passes_later_depth_test(tri, x, y))
+          out.push_back({static_cast<std::int32_t>(t), static_cast<std::int16_t>(x), static_cast<std::int16_t>(y)});
       });
     }
+    return out;
   }
 
   // A triangle pass drawn with PRIM.FST = 0 (section 3.6's spot light): each triangle's texel
@@ -254,11 +280,15 @@ class band_renderer {
   // not sent through gs::pixel_pipeline, so pixel_ops does not count them.
   template <class FB>
   void clear(const FB& fb, std::uint32_t v, std::uint32_t keep, bool z) {
-    for (int y = band_.y0; y < band_.y1; ++y)
-      for (int x = band_.x0; x < band_.x1; ++x) {
-        fb(x, y) = (fb(x, y) & keep) | (v & ~keep);
-        if (z) z_.write(x, y, 0);
+    for (int y = band_.y0; y < band_.y1; ++y) {
+      if (std::is_same_v<FB, row_view> && keep == 0 && band_.x0 < band_.x1) {
+        std::fill(&fb(band_.x0, y), &fb(band_.x0, y) + (band_.x1 - band_.x0), v);
+      } else {
+        for (int x = band_.x0; x < band_.x1; ++x) fb(x, y) = (fb(x, y) & keep) | (v & ~keep);
       }
+      if (z)
+        for (int x = band_.x0; x < band_.x1; ++x) z_.write(x, y, 0);
+    }
   }
 
   // Whether (x, y) is a pixel of the frame: sprites clipped to whole pages (the z-trick modes' Z clear,
