@@ -31,17 +31,6 @@
 
 namespace gsdot3::pipeline::detail {
 
-struct fragment {
-  std::int32_t tri;
-  std::int16_t x, y;
-};
-// Fragments (x0 + k, y), k < n, of one triangle: the cached fragments' runs along a row.
-struct run {
-  std::int32_t tri;
-  std::int16_t x0, y;
-  std::int32_t n;
-};
-
 // One band of the frame and its buffers (rows [band.y0, band.y1) of the frame-sized buffers).
 class band_renderer {
  public:

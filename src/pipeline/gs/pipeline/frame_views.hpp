@@ -1,6 +1,6 @@
 // pipeline/frame_views.hpp — where render.cpp's frame buffers keep pixel (x, y): row-major vectors (the
 // value path) or PSMCT32 / PSMZ24 buffers in the modelled GS local memory (the memory path). Internal
-// to render.cpp.
+// to render.cpp. And the fragments a triangle pass draws, as positions and runs along a row.
 #pragma once
 
 #include <cstddef>
@@ -49,6 +49,17 @@ struct z_view {
     std::uint32_t& w = (*this)(x, y);
     w = (w & 0xFF000000u) | (z & 0x00FFFFFFu);
   }
+};
+
+struct fragment {
+  std::int32_t tri;
+  std::int16_t x, y;
+};
+// Fragments (x0 + k, y), k < n, of one triangle: the cached fragments' runs along a row.
+struct run {
+  std::int32_t tri;
+  std::int16_t x0, y;
+  std::int32_t n;
 };
 
 }  // namespace gsdot3::pipeline::detail
