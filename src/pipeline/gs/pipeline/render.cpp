@@ -185,15 +185,17 @@ std::size_t render_band(const prepared_scene& ps, const render_options& o, const
     const FB& src = view(op.source);
     const FB& dst = view(op.buffer);
     const gs::clut_buffer& clut = *palettes(in)[static_cast<std::size_t>(op.clut)];
+    if (!in_memory(FB{}) && op.regs == &move_into_alpha) {  // value level: the byte itself (palette i -> i)
+      const scissor& area = r.sprite_area();
+      for (int y = area.y0; y < area.y1; ++y)
+        for (int x = area.x0; x < area.x1; ++x)
+          dst(x, y) = (dst(x, y) & 0x00FFFFFFu) | (((src(x, y) >> (8 * op.channel)) & 0xFFu) << 24);
+      return;
+    }
     with_regs<program_regs::channel>(op.regs, [&]<const pass_regs & R>() {
       if constexpr (in_memory(FB{})) {
         channel_pass<R>(r, fb, op.colour, clut, op.channel, src, dst, op.z_clear,
                         op.z_clear ? o.model.tex_buffer : gs::texture_buffer::per_fragment);
-      } else if constexpr (&R == &move_into_alpha) {  // value level: the byte itself (the palette is i -> i)
-        const scissor& area = r.sprite_area();
-        for (int y = area.y0; y < area.y1; ++y)
-          for (int x = area.x0; x < area.x1; ++x)
-            dst(x, y) = (dst(x, y) & 0x00FFFFFFu) | (((src(x, y) >> (8 * op.channel)) & 0xFFu) << 24);
       } else {
         channel_pass<R>(r, fb, op.colour, clut, op.channel, src, dst);
       }
