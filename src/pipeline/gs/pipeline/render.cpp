@@ -276,10 +276,12 @@ std::size_t render_band(const prepared_scene& ps, const render_options& o, const
         break;
       }
       case kind::checkpoint: note(op.label, op.light, op.name, view(op.buffer)); break;
-      case kind::display:
+      case kind::display: {
+        const FB& out = view(op.buffer);
         for (int y = band.y0; y < band.y1; ++y)
-          for (int x = band.x0; x < band.x1; ++x) result.colour[r.index(x, y)] = view(op.buffer)(x, y) | 0xFF000000u;
+          for (int x = band.x0; x < band.x1; ++x) result.colour[r.index(x, y)] = out(x, y) | 0xFF000000u;
         break;
+      }
     }
   return r.pixel_ops();
 }
