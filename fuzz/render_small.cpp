@@ -9,8 +9,8 @@
 //   buffers, SIMD units, cached rasteriser): memory path = value path, scalar (traced or not) = SIMD, reference
 //   raster path = cached, one buffer = two, z-trick clears = explicit ones (z-trick-psmz32 under a
 //   texture buffer that holds the page, where section 3.4 claim (e) says it is the same frame);
-// - a frame the dump writer takes (explicit clears) replays from its GS dump to the same colours (frames
-//   of up to 4 pages: the interpreter's replay of a larger one takes seconds under ASan).
+// - the frame's GS dump (any DPB clear, either draw-buffer mode) replays to the same colours (frames of
+//   up to 4 pages: the interpreter's replay of a larger one takes seconds under ASan).
 // Input layout: the first integer FuzzedDataProvider takes (two bytes, from the end) is the combination
 // class k < class_count, in mixed radix method (5) · DPB clear (3) · draw buffers (2) · memory path (2)
 // · normal-map bits (3) · extra (5: none, floor, spot after the light passes, spot after four-pass's
@@ -274,12 +274,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
            "(first colour difference at pixel " + std::to_string(i) + ")";
   });
   // The dump writer's frames, replayed up to 4 pages: the packet interpreter sets up every channel-fetch
-  // sprite (16 a page and pass) as a primitive of its own, about 1/2 s in Release at 36 pages.
+  // sprite (128 a page and pass) as a primitive of its own, about 1/2 s in Release at 36 pages.
   const int pages = ((s.width + 63) / 64) * ((s.height + 31) / 32);
-  if (c.clear == pl::dpb_clear_mode::explicit_clear && pages <= 4) {
-    pl::render_options d = canonical;
-    d.buffers = c.buffers;
-    require(replayed_colour(pl::build_frame_packets(s, ps, c.m, d), d.model) == expected.colour,
+  if (pages <= 4) {
+    pl::render_options d = o;  // the frame's own options: its DPB clear, draw buffers and model options
+    d.trace = nullptr;
+    require(replayed_colour(pl::build_frame_packets(s, ps, c.m, d), d.model) == f.colour,
             [&] { return "the GS dump of " + describe(c, s, d) + " replays to another frame"; });
   }
   return 0;

@@ -131,6 +131,29 @@ TEST(GsMemoryLayout, PageOverlayIsTheChannelFetchMapping) {
 }
 
 // write -> read returns the value, and a write changes exactly the format's bits.
+// zsigma's formula against the overlay of the two formats' pages, and against locate over a buffer
+// of 3x2 pages: PSMZ32 pixel zsigma(x, y) and PSMCT32 pixel (x, y) are the same word.
+TEST(GsMemoryLayout, ZsigmaIsThePsmz32PixelOfAPsmct32Word) {
+  const std::vector<overlay_cell> cells = page_overlay(psm::PSMZ32, psm::PSMCT32);
+  for (int y = 0; y < 32; ++y)
+    for (int x = 0; x < 64; ++x) {
+      const overlay_cell& c = cells[static_cast<std::size_t>(y * 64 + x)];
+      EXPECT_EQ(zsigma(x, y), (std::array<int, 2>{static_cast<int>(c.x), static_cast<int>(c.y)})) << x << "," << y;
+      EXPECT_EQ(c.bit, 0u);
+    }
+  const buffer ct = buf(psm::PSMCT32, 64, 3), z = buf(psm::PSMZ32, 64, 3);
+  int checked = 0;
+  for (int y = 0; y < 64; ++y)
+    for (int x = 0; x < 192; ++x, ++checked) {
+      const auto [zx, zy] = zsigma(x, y);
+      ASSERT_EQ(locate(z, static_cast<std::uint32_t>(zx), static_cast<std::uint32_t>(zy)).byte,
+                locate(ct, static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y)).byte)
+          << x << "," << y;
+      ASSERT_EQ(zsigma(zx, zy), (std::array<int, 2>{x, y}));
+    }
+  EXPECT_EQ(checked, 192 * 64);
+}
+
 TEST(GsMemoryPixels, RoundTripAndNoOtherBitChanges) {
   std::mt19937 rng(14);
   for (const psm p : all_psms) {

@@ -60,7 +60,7 @@ TEST(FrameLimits, EachLimitNamesItsOption) {
 
   render_options z;
   z.dpb_clear = dpb_clear_mode::z_trick;
-  EXPECT_TRUE(starts(why(base, method::two_pass, z, frame_use::packets), "frame packets: --dpb-clear z-trick"));
+  EXPECT_EQ(why(base, method::two_pass, z, frame_use::packets), "(accepted)");
   EXPECT_EQ(why(base, method::two_pass, z, frame_use::render), "(accepted)");
   scene tall = base;
   tall.height = 1024;

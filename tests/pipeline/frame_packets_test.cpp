@@ -442,14 +442,56 @@ TEST_P(FramePackets, DumpHoldsTheStreamAndDisplaysTheOutputBuffer) {
 
 TEST(FramePacketsLimits, RefusesWhatItDoesNotWrite) {
   const scene& s = small_scene();
-  const prepared_scene ps = prepare(s);
-  render_options o;
-  o.dpb_clear = dpb_clear_mode::z_trick;
-  EXPECT_THROW(build_frame_packets(s, ps, method::two_pass, o), std::invalid_argument);
   scene wide = s;
   wide.width = 1024;
   wide.height = 64;
   EXPECT_THROW(build_frame_packets(wide, prepare(wide), method::two_pass, render_options{}), std::invalid_argument);
+}
+
+// Section 3.4's z-trick clears as register writes, read back from the stream: the DPB (z-trick) or
+// the LAB (z-trick-psmz32) and no other buffer drawn with FRAME_1.PSM = PSMZ32; the ILP pass of each
+// light the only primitives with ZBUF_1 at the DPB, each with ZMSK = 0, ZTST = ALWAYS, Z = 0x00808080
+// and FRAME_1 = the LAB under a SCISSOR_1 of whole 64x32 pages, the page in 8x2 channel-fetch tiles.
+TEST(FramePacketsZTrick, DrawsInTheZLayoutAndClearsTheDpbThroughZbuf) {
+  const scene& s = small_scene();
+  const prepared_scene ps = prepare(s);
+  for (const dpb_clear_mode clear : {dpb_clear_mode::z_trick, dpb_clear_mode::z_trick_psmz32}) {
+    render_options o;
+    o.dpb_clear = clear;
+    const frame_packets fp = build_frame_packets(s, ps, method::two_pass, o);
+    const std::uint32_t P = fp.buffers.pages, z_fbp = clear == dpb_clear_mode::z_trick ? 0 : P;
+    std::map<std::uint8_t, std::uint64_t> regs;
+    std::map<std::uint32_t, std::size_t> z_layout_prims;  // per FBP
+    std::size_t clear_prims = 0, clear_vertices = 0, clear_pages = 0;
+    for (const pk::gif_event& e : pk::decode_gif(fp.gif)) {
+      if (e.what != pk::gif_event::kind::reg_write) continue;
+      regs[e.address] = e.value;
+      const gs::frame_reg frame = gs::decode_frame(regs[addr("FRAME_1")]);
+      const gs::zbuf_reg zbuf = gs::decode_zbuf(regs[addr("ZBUF_1")]);
+      if (e.address == addr("PRIM") && frame.PSM == gs::frame_psm::PSMZ32) ++z_layout_prims[frame.FBP.value()];
+      if (regs.count(addr("ZBUF_1")) == 0 || zbuf.ZBP.value() != 0) continue;
+      if (e.address == addr("PRIM")) {  // one PRIM (GIF tag) per page
+        ++clear_prims;
+        EXPECT_FALSE(zbuf.ZMSK);
+        EXPECT_EQ(gs::decode_test(regs[addr("TEST_1")]).ZTST, gs::ztst::ALWAYS);
+        EXPECT_EQ(frame.FBP.value(), P);  // the LAB
+        const std::uint64_t sc = regs[addr("SCISSOR_1")];
+        const std::uint64_t x0 = bits(sc, 0, 11), x1 = bits(sc, 16, 11) + 1, y0 = bits(sc, 32, 11),
+                            y1 = bits(sc, 48, 11) + 1;
+        EXPECT_TRUE(x0 % 64 == 0 && x1 % 64 == 0 && y0 % 32 == 0 && y1 % 32 == 0) << std::hex << sc;
+        clear_pages = (x1 - x0) / 64 * ((y1 - y0) / 32);
+      }
+      if (e.address == addr("XYZ2")) {
+        EXPECT_EQ(bits(e.value, 32, 32), 0x00808080u);
+        ++clear_vertices;
+      }
+    }
+    EXPECT_EQ(z_layout_prims.size(), 1u) << name(clear);
+    EXPECT_GT(z_layout_prims[z_fbp], 0u) << name(clear);
+    ASSERT_GT(clear_pages, 0u);
+    EXPECT_EQ(clear_prims, s.lights.size() * clear_pages) << name(clear);
+    EXPECT_EQ(clear_vertices, clear_prims * (64 * 32 / (8 * 2)) * 2) << name(clear);  // 8x2 tiles, two XYZ2 each
+  }
 }
 
 // A frame whose triangles all lie above it has an empty sprite area at row 0, which SCISSOR_1 cannot

@@ -43,10 +43,11 @@ void check_state(const frame_program& p, const std::string& what) {
       EXPECT_EQ(st.target->buffer, op.buffer) << what;
       EXPECT_EQ(st.target->regs, op.regs) << what;
     };
-    auto depth_is = [&](const gs::test_reg& t, const gs::zbuf_reg& z) {
+    auto depth_is = [&](const gs::test_reg& t, const gs::zbuf_reg& z, buffer_role at = buffer_role::z_words) {
       ASSERT_NE(st.depth, nullptr) << what;
       EXPECT_EQ(st.depth->test, &t) << what;
       EXPECT_EQ(st.depth->zbuf, &z) << what;
+      EXPECT_EQ(st.depth->buffer, at) << what;
     };
     switch (op.what) {
       case kind::scissor: st.clip = op.area; break;
@@ -98,8 +99,14 @@ void check_state(const frame_program& p, const std::string& what) {
       case kind::channel:
         drawn_into_target();
         EXPECT_TRUE(in(program_regs::channel, op.regs)) << what;
-        depth_is(depth_always, z_masked);
-        EXPECT_EQ(st.clip, area_role::sprite_area) << what;
+        if (op.z_clear) {  // section 3.4: Z = 0x00808080 written into the DPB (PSMZ24) over whole pages
+          EXPECT_EQ(op.source, buffer_role::dpb) << what;
+          depth_is(depth_always, z_written, buffer_role::dpb);
+          EXPECT_EQ(st.clip, area_role::sprite_pages) << what;
+        } else {
+          depth_is(depth_always, z_masked);
+          EXPECT_EQ(st.clip, area_role::sprite_area) << what;
+        }
         break;
       case kind::plain:
         drawn_into_target();

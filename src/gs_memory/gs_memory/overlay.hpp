@@ -4,6 +4,7 @@
 // "the DPB read as an 8-bit texture": texel (u, v) is byte `bit / 8` (R, G, B, A) of pixel (x, y).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -40,5 +41,11 @@ inline std::vector<overlay_cell> page_overlay(psm base, psm view) {
     }
   return cells;
 }
+
+// zsigma(x, y): the PSMZ32 pixel whose word is PSMCT32 pixel (x, y)'s, in the same page. The two
+// formats' pages hold the same blocks with the four 32x16 quarters swapped along the diagonals, so the
+// map is x ^ 32, y ^ 16 (its own inverse); tests/gs_memory checks it against page_overlay and locate.
+// Section 3.4's z-trick draws the DPB in PSMZ32 and reads it back through the PSMCT32 layout with it.
+constexpr std::array<int, 2> zsigma(int x, int y) noexcept { return {x ^ 32, y ^ 16}; }
 
 }  // namespace gs::mem

@@ -43,15 +43,6 @@ struct frame_buffers {
   dpb_clear_mode clear = dpb_clear_mode::explicit_clear;
 };
 
-// zsigma(x, y): the pixel of the same page whose PSMZ32 address is PSMCT32 pixel (x, y)'s:
-// gs_memory's overlay of a PSMCT32 page on a PSMZ32 page (the four 32×16 quarters of the page
-// swapped along the diagonals), both 32-bit, so each pixel's whole word.
-inline std::array<int, 2> zsigma(int x, int y) {
-  static const std::vector<gs::mem::overlay_cell> cells =
-      gs::mem::page_overlay(gs::mem::psm::PSMZ32, gs::mem::psm::PSMCT32);
-  const gs::mem::overlay_cell& c = cells[static_cast<std::size_t>((y & 31) * 64 + (x & 63))];
-  return {(x & ~63) + static_cast<int>(c.x), (y & ~31) + static_cast<int>(c.y)};
-}
 inline constexpr bool in_memory(const row_view&) { return false; }
 inline constexpr bool in_memory(const memory_view&) { return true; }
 
@@ -65,10 +56,10 @@ inline void channel_pass(band_renderer& r, const frame_buffers<row_view>&, gs::r
       colour, [&](int x, int y) { return gs::clut_t8(clut, byte(static_cast<int>(src(x, y) >> (8 * channel)))); }, dst);
 }
 // The memory path. A source drawn in PSMZ32 (src.z) has logical pixel L in the word of PSMCT32
-// pixel zsigma(L): the tile that fetches PSMCT32 pixel M is drawn at zsigma(M) (the sprites' XYZ
-// in the Z layout). z_clear: the ILP pass of the z-trick modes, also writing Z = 0x00808080 into the
-// DPB as PSMZ24 at every fragment (after its texel fetch). In the z-trick modes the texel fetches
-// go through gs_memory's texture_page_buffer model (model option texture_buffer).
+// pixel zsigma(L) (gs_memory/overlay.hpp): the tile that fetches PSMCT32 pixel M is drawn at zsigma(M) (the sprites'
+// XYZ in the Z layout). z_clear: the ILP pass of the z-trick modes, also writing Z = 0x00808080 into the DPB as PSMZ24
+// at every fragment (after its texel fetch). In the z-trick modes the texel fetches go through gs_memory's
+// texture_page_buffer model (model option texture_buffer).
 template <const pass_regs& Pass>
 inline void channel_pass(band_renderer& r, const frame_buffers<memory_view>& fb, gs::rgba8 colour,
                          const gs::clut_buffer& clut, unsigned channel, const memory_view& src, const memory_view& dst,
@@ -84,7 +75,7 @@ inline void channel_pass(band_renderer& r, const frame_buffers<memory_view>& fb,
   const scissor& a = r.sprite_area();
   // With the Z clear the ILP sprites cover every page the area touches (the paper's per-page
   // primitives, section 3.3), so that the Z writes clear whole pages.
-  const scissor pages{a.x0 & ~63, a.y0 & ~31, (a.x1 + 63) & ~63, (a.y1 + 31) & ~31};
+  const scissor pages = whole_pages(a);
   r.scalar_sprites = true;  // the texel fetches read the memory the sprites write (span_batch.hpp)
   // The byte of the page (at TBP0 = 0) each sprite pixel fetches, through CLAMP_1 and the PSMT8
   // address: sprite k's pixel (dx, dy) at 16·k + 8·dy + dx. The sprites and their texels are the
@@ -115,8 +106,9 @@ inline void channel_pass(band_renderer& r, const frame_buffers<memory_view>& fb,
         const gs::mem::fetch_sprite& sp = f.sprites[k];
         const std::uint32_t* sprite_texels = &fetched[16 * k];
         const int mx = px * 64 + static_cast<int>(sp.x0),
-                  my = py * 32 + static_cast<int>(sp.y0);                                      // PSMCT32 pixel fetched
-        const std::array<int, 2> drawn = src.z ? zsigma(mx, my) : std::array<int, 2>{mx, my};  // where it is drawn
+                  my = py * 32 + static_cast<int>(sp.y0);  // PSMCT32 pixel fetched
+        const std::array<int, 2> drawn =
+            src.z ? gs::mem::zsigma(mx, my) : std::array<int, 2>{mx, my};  // where it is drawn
         const int x0 = drawn[0], y0 = drawn[1];  // plain ints: clang 14 cannot capture structured bindings
         const int w = static_cast<int>(sp.x1 - sp.x0), h = static_cast<int>(sp.y1 - sp.y0);
         r.sprite_rect<Pass>(
@@ -155,7 +147,7 @@ void alpha_into_rgb(band_renderer& r, const frame_buffers<memory_view>& fb, cons
   r.sprite<Pass>(
       passes::white,
       [&](int x, int y) {
-        const auto [tx, ty] = dpb.z ? zsigma(x, y) : std::array<int, 2>{x, y};
+        const auto [tx, ty] = dpb.z ? gs::mem::zsigma(x, y) : std::array<int, 2>{x, y};
         return gs::clut_t8(
             clut, byte(fb.memory->read_pixel(t8h, static_cast<std::uint32_t>(tx), static_cast<std::uint32_t>(ty))));
       },

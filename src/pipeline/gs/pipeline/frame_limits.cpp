@@ -12,8 +12,6 @@ std::optional<std::string> broken_limit(const scene& s, method m, const render_o
   const bool z_trick = o.dpb_clear != dpb_clear_mode::explicit_clear;
   if (use == frame_use::packets && (s.width > 1023 || s.height > 1023))
     return "frame packets: " + size + ": a sprite's UV (10.4) reaches 1023 texels, so frames are at most 1023x1023";
-  if (use == frame_use::packets && z_trick)
-    return "frame packets: --dpb-clear " + std::string(name(o.dpb_clear)) + " is not written yet (explicit only)";
   const bool in_memory = use == frame_use::packets || o.memory_path || z_trick;
   if (in_memory && !buffer_layout_for(s.width, s.height).fits())
     return "memory path: four " + size +

@@ -38,6 +38,7 @@ struct encoder {
   gif::stream g;
 
   std::uint32_t cbp(clut_slot c) const { return in.cbp[static_cast<std::size_t>(c)]; }
+  bool z_layout(buffer_role r) const { return in_z_layout(r, o.dpb_clear); }
   std::optional<std::uint32_t> palette(const frame_op& op) const {
     return op.no_clut ? std::nullopt : std::optional<std::uint32_t>(cbp(op.clut));
   }
@@ -60,6 +61,8 @@ struct encoder {
       case texture_role::diffuse:
         return g.texture(r, in.diffuse_at, in.diffuse->width, in.diffuse->height, std::nullopt, false, o.bilinear);
       case texture_role::buffer_t8h:
+        if (z_layout(op.source)) return;  // its pages' TEX0_1 are the draw's (gif::stream::t8h_quarters)
+        [[fallthrough]];
       case texture_role::buffer_ct32: {
         gs::mem::buffer at = b.colour(fbp(b, op.source));
         if (op.texture == texture_role::buffer_t8h) at.PSM = gs::mem::psm::PSMT8H;
@@ -95,11 +98,14 @@ struct encoder {
         return;
       case kind::uploads: return g.flush(), add_uploads(g.out, in), g.texflush();
       case kind::scissor:
-        return g.clip(op.area == area_role::frame         ? g.frame()
-                      : op.area == area_role::sprite_area ? g.area()
-                                                          : prog.pieces[static_cast<std::size_t>(op.piece)].area);
-      case kind::depth: return g.depth(*op.test, *op.zbuf);
-      case kind::target: return g.target(fbp(b, op.buffer), *op.regs);
+        return g.clip(op.area == area_role::frame          ? g.frame()
+                      : op.area == area_role::sprite_area  ? g.area()
+                      : op.area == area_role::sprite_pages ? whole_pages(g.area())
+                                                           : prog.pieces[static_cast<std::size_t>(op.piece)].area);
+      case kind::depth: return g.depth(*op.test, *op.zbuf, fbp(b, op.buffer));
+      case kind::target:
+        return g.target(fbp(b, op.buffer), *op.regs,
+                        z_layout(op.buffer) ? gs::frame_psm::PSMZ32 : gs::frame_psm::PSMCT32);
       case kind::texflush: return g.texflush();
       case kind::texture: return texture(op);
       case kind::piece_uploads:
@@ -116,11 +122,14 @@ struct encoder {
         return g.projective_triangles(*op.regs, white, [&](const prepared_triangle& t) {
           return spot_stq(ps, static_cast<std::size_t>(op.light), t);
         });
-      case kind::buffer_sprite: return g.area_sprite(*op.regs, white);
+      case kind::buffer_sprite:
+        if (op.texture == texture_role::buffer_t8h && z_layout(op.source))
+          return g.t8h_quarters(*op.regs, cbp(op.clut), fbp(b, op.source));
+        return g.area_sprite(*op.regs, white);
       case kind::channel:
-        if (op.z_clear) throw std::logic_error("the z-trick clear is not encoded (frame_limits.hpp refuses it)");
-        return g.channel_pass(*op.regs, op.colour, cbp(op.clut), op.channel, fbp(b, op.source));
-      case kind::copy_lab: return g.copy(lab_to_output(b, g.area(), false));
+        return g.channel_pass(*op.regs, op.colour, cbp(op.clut), op.channel, fbp(b, op.source), z_layout(op.source),
+                              op.z_clear ? clear_dpb : 0);
+      case kind::copy_lab: return g.copy(lab_to_output(b, g.area(), z_layout(buffer_role::lab)));
       case kind::plain:
         return g.triangles_of(
             ps.plain, *op.regs, true,

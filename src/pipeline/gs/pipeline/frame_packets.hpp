@@ -32,9 +32,13 @@
 // textures after them. With draw_buffers::one the output is each light's DPB and then the LAB, and
 // the free alphas are those of the buffer at FBP 0, of the Z buffer's words and of the output
 // (frame_program.cpp; docs/dumps.md).
-// Not written (frame_limits.hpp says why, before anything is built): the z-trick DPB clears
-// (render_options::dpb_clear other than explicit); frames wider or taller than 1023 pixels (a sprite's
-// UV is 10.4: at most 1023.9375).
+// The z-trick DPB clears (section 3.4, render_options::dpb_clear): FRAME_1.PSM = PSMZ32 for the buffer
+// frame_program.hpp's in_z_layout names; the ILP sprites over whole pages with ZBUF_1 = the DPB
+// (PSMZ24, ZMSK = 0), ZTST = ALWAYS and Z = 0x00808080; a Z-layout source's channel-fetch tiles drawn at
+// gs::mem::zsigma of the pixel they fetch; two-pass's PSMT8H read of a Z-layout DPB per page, a sprite
+// per 32x16 quarter (gif_stream.hpp's t8h_quarters); the LAB copy with SPSM = PSMZ32 (z-trick-psmz32).
+// Not written (frame_limits.hpp says why, before anything is built): frames wider or taller than 1023
+// pixels (a sprite's UV is 10.4: at most 1023.9375).
 #pragma once
 
 #include <cstdint>

@@ -37,9 +37,9 @@ class writer {
     frame_op& o = add(kind::scissor);
     o.area = a, o.piece = piece;
   }
-  void depth(const gs::test_reg& t, const gs::zbuf_reg& z) {
+  void depth(const gs::test_reg& t, const gs::zbuf_reg& z, buffer_role at = buffer_role::z_words) {
     frame_op& o = add(kind::depth);
-    o.test = &t, o.zbuf = &z;
+    o.test = &t, o.zbuf = &z, o.buffer = at;
   }
   void target(buffer_role b, const pass_regs& r) {
     frame_op& o = add(kind::target);
@@ -243,11 +243,17 @@ frame_program build_frame_program(const scene& s, const prepared_scene& ps, meth
       w.checkpoint("2.6' dot layer into a free alpha", li, "alpha plane", plane[l]);
       continue;
     }
-    // 2.5, 2.6: COLCLAMP = 1; ILP[sum] × light colour (MODULATE) added into the LAB.
+    // 2.5, 2.6: COLCLAMP = 1; ILP[sum] × light colour (MODULATE) added into the LAB. The z-trick
+    // (section 3.4): the same sprites over whole pages with Z = 0x00808080, ZTST = ALWAYS written into
+    // the DPB as a PSMZ24 Z buffer, clearing it for the next light.
+    const bool z_clear = o.dpb_clear != dpb_clear_mode::explicit_clear;
+    if (z_clear) {
+      w.clip(area_role::sprite_pages);
+      w.depth(depth_always, z_written, DPB);
+    }
     const auto& lc = s.lights[l].colour;
     w.target(LAB, ilp_into_lab);
-    w.channel(ilp_into_lab, rgb(lc[0], lc[1], lc[2], 0x80), clut_slot::ilp, 0, DPB, LAB,
-              o.dpb_clear != dpb_clear_mode::explicit_clear);
+    w.channel(ilp_into_lab, rgb(lc[0], lc[1], lc[2], 0x80), clut_slot::ilp, 0, DPB, LAB, z_clear);
     w.checkpoint("2.6 LAB += ILP[sum] × light colour", li, "LAB", LAB);
   }
 

@@ -30,9 +30,16 @@ namespace gsdot3::pipeline {
 // written as PSMCT32 (the one-buffer variant's second free alpha). The value path keeps the diffuse
 // layer in a vector of its own and the Z words' stand-in in the LAB's vector (unused with one buffer).
 enum class buffer_role : std::uint8_t { dpb, lab, diffuse, output, z_words };
+// Whether buffer b is drawn in PSMZ32 (FRAME_1.PSM, and read back in the Z layout: gs::mem::zsigma)
+// under DPB clear mode c (method.hpp): the DPB with z_trick, the LAB with z_trick_psmz32.
+constexpr bool in_z_layout(buffer_role b, dpb_clear_mode c) noexcept {
+  return (b == buffer_role::dpb && c == dpb_clear_mode::z_trick) ||
+         (b == buffer_role::lab && c == dpb_clear_mode::z_trick_psmz32);
+}
 // SCISSOR_1, and the extent of a fill: the frame, the sprite area (the drawn triangles' bounding
-// rectangle, band_renderer::drawn_area), or a streamed texture's piece.
-enum class area_role : std::uint8_t { frame, sprite_area, piece };
+// rectangle, band_renderer::drawn_area), the sprite area out to whole pages (gs_inputs.hpp's
+// whole_pages: the z-trick's ILP pass clears whole pages), or a streamed texture's piece.
+enum class area_role : std::uint8_t { frame, sprite_area, sprite_pages, piece };
 // What TEX0_1 / TEX1_1 / CLAMP_1 bind: a normal-map texture, the sphere map, the spot map, the diffuse
 // texture, a piece of a streamed one, or a frame buffer read back (PSMT8H: the DPB's alpha; PSMCT32).
 // none: an untextured pass (TME = 0).
@@ -52,7 +59,7 @@ struct frame_op {
     environment,    // PRMODECONT, XYOFFSET_1, SCISSOR_1 = frame, DTHE, PABE, FBA_1
     uploads,        // the textures and palettes (gs_inputs.hpp's add_uploads), TEXFLUSH
     scissor,        // SCISSOR_1 = area (piece: pieces[piece])
-    depth,          // TEST_1 = *test, ZBUF_1 = *zbuf at the Z buffer
+    depth,          // TEST_1 = *test, ZBUF_1 = *zbuf at buffer (the Z buffer; the DPB for the z-trick clear)
     target,         // FRAME_1 = buffer, ALPHA_1, COLCLAMP of *regs
     texflush,       // TEXFLUSH before a texture drawn earlier in the frame is read
     texture,        // TEX0_1, TEX1_1, CLAMP_1: texture (+ palette clut unless no_clut; CLD = load)
@@ -76,7 +83,7 @@ struct frame_op {
   texture_role texture = texture_role::normal_map;
   clut_slot clut = clut_slot::pos;
   bool no_clut = false, load = true, writes_z = false;
-  bool z_clear = false;  // the ILP pass also clears the DPB through ZBUF (dpb_clear_mode z_trick*)
+  bool z_clear = false;  // the ILP pass also clears the DPB: its sprites' Z is clear_dpb (dpb_clear_mode z_trick*)
   passes::vertex_colour colour_of = passes::vertex_colour::white;
   gs::rgba8 colour{};
   int light = -1, piece = -1, stream = -1;

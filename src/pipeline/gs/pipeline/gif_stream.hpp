@@ -16,6 +16,7 @@
 #include "gs_arith/registers.hpp"
 #include "gs_memory/channel_fetch.hpp"
 #include "gs_memory/memory_registers.hpp"
+#include "gs_memory/overlay.hpp"
 #include "gs_packets/builder.hpp"
 #include "gs_packets/gs_registers.hpp"
 #include "gs_packets/packed.hpp"
@@ -55,10 +56,11 @@ class stream {
     set(address("ALPHA_1"), gs::encode(p.ALPHA));
     set(address("COLCLAMP"), gs::encode(gs::colclamp_reg{p.CLAMP}));
   }
-  // TEST_1 and ZBUF_1 of a pass (pass_table.hpp's depth settings), ZBUF_1.ZBP the layout's Z buffer.
-  void depth(const gs::test_reg& test, gs::zbuf_reg z) {
+  // TEST_1 and ZBUF_1 of a pass (pass_table.hpp's depth settings), ZBUF_1.ZBP = zbp (the layout's Z
+  // buffer; the DPB for the z-trick clear).
+  void depth(const gs::test_reg& test, gs::zbuf_reg z, std::uint32_t zbp) {
     set(address("TEST_1"), gs::encode(test));
-    z.ZBP = fixed::uint<9>::from_wrapped(b_.z());
+    z.ZBP = fixed::uint<9>::from_wrapped(zbp);
     set(address("ZBUF_1"), gs::encode(z));
   }
   // The local -> local copy of gs_inputs.hpp's lab_to_output (nothing when the area is empty).
@@ -165,11 +167,11 @@ class stream {
     if (!data.empty()) out.packed(static_cast<std::uint32_t>(gs::encode(prim)), regs, data);
   }
 
-  // Sprites of one flat colour, each [x0, x1) × [y0, y1) drawn 1:1 from texel (u0, v0).
+  // Sprites of one flat colour, each [x0, x1) × [y0, y1) drawn 1:1 from texel (u0, v0), at Z = z.
   struct rect {
     int x0, y0, x1, y1, u0, v0;
   };
-  void sprites(const pass_regs& p, gs::rgba8 colour, const std::vector<rect>& rs) {
+  void sprites(const pass_regs& p, gs::rgba8 colour, const std::vector<rect>& rs, std::uint32_t z = 0) {
     if (rs.empty()) return;
     set(address("RGBAQ"), rgbaq(colour));
     flush();
@@ -179,7 +181,7 @@ class stream {
     auto corner = [&](int x, int y, int u, int v) {
       data.push_back(pk::packed_uv(static_cast<std::uint32_t>(16 * u), static_cast<std::uint32_t>(16 * v)));
       data.push_back(pk::packed_xyz2(static_cast<std::uint16_t>(16 * (x + xy_offset_pixels)),
-                                     static_cast<std::uint16_t>(16 * (y + xy_offset_pixels)), 0, false));
+                                     static_cast<std::uint16_t>(16 * (y + xy_offset_pixels)), z, false));
     };
     for (const rect& r : rs) {
       corner(r.x0, r.y0, r.u0, r.v0);
@@ -196,8 +198,10 @@ class stream {
   void frame_sprite(const pass_regs& p, gs::rgba8 colour) { sprites(p, colour, {{0, 0, ps_.width, ps_.height, 0, 0}}); }
 
   // Byte `channel` of every pixel of buffer src_fbp through palette cbp into the current target:
-  // gs_memory's channel-fetch sprites per page of the sprite area (as render.cpp's channel_pass).
-  void channel_pass(const pass_regs& p, gs::rgba8 colour, std::uint32_t cbp, unsigned channel, std::uint32_t src_fbp) {
+  // gs_memory's channel-fetch sprites per page of the sprite area (as render.cpp's channel_pass), at
+  // Z = z; a source in the Z layout has the tile that fetches PSMCT32 pixel M drawn at zsigma(M).
+  void channel_pass(const pass_regs& p, gs::rgba8 colour, std::uint32_t cbp, unsigned channel, std::uint32_t src_fbp,
+                    bool z_layout, std::uint32_t z) {
     const gs::mem::channel_fetch f = gs::mem::channel_fetch_sprites(channel);
     const scissor& a = area_;
     bool first = true;
@@ -210,11 +214,36 @@ class stream {
         first = false;
         std::vector<rect> rs;
         for (const gs::mem::fetch_sprite& sp : f.sprites) {
-          const int x0 = px * 64 + static_cast<int>(sp.x0), y0 = py * 32 + static_cast<int>(sp.y0);
+          const int mx = px * 64 + static_cast<int>(sp.x0), my = py * 32 + static_cast<int>(sp.y0);
+          const auto [x0, y0] = z_layout ? gs::mem::zsigma(mx, my) : std::array<int, 2>{mx, my};
           rs.push_back(
               {x0, y0, x0 + static_cast<int>(sp.x1 - sp.x0), y0 + static_cast<int>(sp.y1 - sp.y0), sp.u0, sp.v0});
         }
-        sprites(p, colour, rs);
+        sprites(p, colour, rs, z);
+      }
+  }
+  // Two-pass step 2.4a from a DPB drawn in the Z layout: logical pixel (x, y) is the PSMT8H texel of
+  // PSMCT32 pixel zsigma(x, y), so per page of the sprite area TEX0_1 = that page (PSMT8H, palette cbp
+  // loaded by the first) and one sprite per 32x16 quarter reading the quarter zsigma swaps it with.
+  void t8h_quarters(const pass_regs& p, std::uint32_t cbp, std::uint32_t src_fbp) {
+    const scissor& a = area_;
+    bool first = true;
+    for (int py = a.y0 / 32; py * 32 < a.y1; ++py)
+      for (int px = a.x0 / 64; px * 64 < a.x1; ++px) {
+        const std::uint32_t page = src_fbp + static_cast<std::uint32_t>(px) + static_cast<std::uint32_t>(py) * b_.fbw;
+        const gs::mem::buffer tex{fixed::uint<14>::from_wrapped(32 * page), fixed::uint<6>::from_wrapped(b_.fbw),
+                                  gs::mem::psm::PSMT8H};
+        texture(p, tex, 64, 32, cbp, false, false, nullptr, first);
+        first = false;
+        std::vector<rect> rs;
+        for (int qy = 0; qy < 32; qy += 16)
+          for (int qx = 0; qx < 64; qx += 32) {
+            const int x0 = px * 64 + qx, y0 = py * 32 + qy;
+            const auto [u0, v0] = gs::mem::zsigma(qx, qy);
+            if (x0 < a.x1 && x0 + 32 > a.x0 && y0 < a.y1 && y0 + 16 > a.y0)
+              rs.push_back({x0, y0, x0 + 32, y0 + 16, u0, v0});
+          }
+        sprites(p, passes::white, rs);
       }
   }
 

@@ -50,6 +50,11 @@ constexpr buffer_layout buffer_layout_for(int width, int height) noexcept {
   return {fbw, fbw * static_cast<std::uint32_t>((height + 31) / 32)};
 }
 
+// Area a out to whole 64x32 pages (the z-trick's ILP sprites: their Z writes clear whole pages).
+constexpr scissor whole_pages(const scissor& a) noexcept {
+  return {a.x0 & ~63, a.y0 & ~31, (a.x1 + 63) & ~63, (a.y1 + 31) & ~31};
+}
+
 // The copy of the LAB into the output over `area` before step 4, a local -> local transfer (the GS's
 // own copy, no pixel arithmetic): BITBLTBUF SBP = the LAB, SPSM = PSMCT32 (PSMZ32 when the LAB was
 // drawn in the Z layout, z-trick-psmz32: the transfer then reads it back into PSMCT32 order, the

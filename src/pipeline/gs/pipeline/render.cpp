@@ -338,8 +338,8 @@ frame render(const scene& s, const prepared_scene& ps, method m, const render_op
     fb.diff = fb.dpb;
     fb.zb.memory = memory_view{memory.words(), 32 * layout.z(), fbw, true};
     fb.zb.in_memory = true;
-    fb.dpb.z = o.dpb_clear == dpb_clear_mode::z_trick;
-    fb.lab.z = o.dpb_clear == dpb_clear_mode::z_trick_psmz32;
+    fb.dpb.z = in_z_layout(buffer_role::dpb, o.dpb_clear);
+    fb.lab.z = in_z_layout(buffer_role::lab, o.dpb_clear);
     // The inner loops' addresses tabulated over whole pages (gs_memory/fast_address.hpp).
     const gs::mem::texel_addresses page_as_t8(gs::mem::psm::PSMT8, 2 * fbw, 128, 64);  // channel_pass's TBW
     fb.page_as_t8 = &page_as_t8;
