@@ -17,9 +17,9 @@
 
 namespace {
 
-constexpr std::array<gs::gouraud_setup, 5> setups{gs::gouraud_setup::per_pixel, gs::gouraud_setup::plane_steps,
-                                                  gs::gouraud_setup::pcsx2_rows_4, gs::gouraud_setup::pcsx2_rows_8,
-                                                  gs::gouraud_setup::per_pixel_level};
+constexpr std::array<gs::gouraud_setup, 6> setups{
+    gs::gouraud_setup::per_pixel_floor, gs::gouraud_setup::per_pixel,    gs::gouraud_setup::plane_steps,
+    gs::gouraud_setup::pcsx2_rows_4,    gs::gouraud_setup::pcsx2_rows_8, gs::gouraud_setup::per_pixel_level};
 
 // floor(n / d) written with truncating division and a correction, and trunc(n / d) as C++ gives it.
 std::int64_t floor_of(std::int64_t n, std::int64_t d) { return n / d - (n % d != 0 && (n < 0) != (d < 0) ? 1 : 0); }

@@ -81,11 +81,31 @@ TEST(GouraudSetup, PerPixelLevelLiftsHalfAUnitBelowALevel) {
   EXPECT_EQ(red(*p, 617, 2, gouraud_setup::per_pixel_level), 0);  // 127.25 + 0.5 < 128
 }
 
+// A(623, 0) = 1, B(2671, 0) = 0, C(623, 8) = 1: red = 128 − (x − 623)/16 units, falling away from vertex 0.
+// At x = 627: 127.75. per_pixel_floor floors the value, 127; per_pixel truncates the distance −0.25 from
+// vertex 0's 128 toward zero, 128 (issue 53: DobieStation's float truncation of the value is the former).
+// At x = 631: 127.5, the same split; at x = 639 (623 + 16): exactly 127 under both.
+TEST(GouraudSetup, PerPixelFloorFloorsTheValueNotTheDistanceFromVertexZero) {
+  const auto p = gs::gouraud_triangle(at(623, 0, 1), at(2671, 0, 0), at(623, 8, 1), 0, 0);
+  ASSERT_TRUE(p.has_value());
+  EXPECT_EQ(red(*p, 627, 2, gouraud_setup::per_pixel_floor), 127);
+  EXPECT_EQ(red(*p, 627, 2, gouraud_setup::per_pixel), 128);
+  EXPECT_EQ(red(*p, 631, 2, gouraud_setup::per_pixel_floor), 127);
+  EXPECT_EQ(red(*p, 631, 2, gouraud_setup::per_pixel), 128);  // −0.5 truncated toward zero
+  EXPECT_EQ(red(*p, 639, 2, gouraud_setup::per_pixel_floor), 127);
+  EXPECT_EQ(red(*p, 639, 2, gouraud_setup::per_pixel), 127);  // exactly 127
+  // Rising from vertex 0 the two agree: the ramp of PerPixelLevelLiftsHalfAUnitBelowALevel, 127.75 -> 127.
+  const auto q = gs::gouraud_triangle(at(108, 0, 0), at(108, 1500, 0), at(1132, 0, 2), 0, 0);
+  ASSERT_TRUE(q.has_value());
+  EXPECT_EQ(red(*q, 619, 2, gouraud_setup::per_pixel_floor), 127);
+}
+
 // The option's names and its default (the value with the most sources, docs/evidence.md R9).
 TEST(GouraudSetup, OptionNamesAndDefault) {
   gs::model_options o;
-  EXPECT_EQ(gs::option_value(o, "gouraud_setup"), "per_pixel");
-  for (const char* v : {"plane_steps", "pcsx2_rows_4", "pcsx2_rows_8", "per_pixel_level", "per_pixel"}) {
+  EXPECT_EQ(gs::option_value(o, "gouraud_setup"), "per_pixel_floor");
+  for (const char* v :
+       {"plane_steps", "pcsx2_rows_4", "pcsx2_rows_8", "per_pixel_level", "per_pixel", "per_pixel_floor"}) {
     EXPECT_FALSE(gs::set_option(o, "gouraud_setup", v).has_value()) << v;
     EXPECT_EQ(gs::option_value(o, "gouraud_setup"), v);
   }

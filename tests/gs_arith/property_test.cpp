@@ -273,4 +273,13 @@ RC_GTEST_PROP(GsArithProperty, GouraudExactAtMatchesBarycentric, ()) {
             gs::gouraud_colour(*t.plane, t.xr, t.yr, gs::gouraud_setup::plane_steps));
 }
 
+// gouraud_setup = per_pixel_floor against the barycentric plane floored (the whole 2048-pixel window).
+RC_GTEST_PROP(GsArithProperty, GouraudFloorAtMatchesBarycentric, ()) {
+  const auto t = random_gouraud_triangle(2048, 0);  // the red channel
+  RC_PRE(gs_ref::plane_det(t.rv) != 0);
+  RC_ASSERT(t.plane.has_value());
+  RC_ASSERT(static_cast<long long>(gs::gouraud_floor_at(*t.plane, t.x, t.y).r.value()) ==
+            gs_ref::gouraud_floor_at(t.rv, t.x, t.y));
+}
+
 }  // namespace

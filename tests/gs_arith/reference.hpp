@@ -171,4 +171,12 @@ constexpr long long gouraud_exact_at(const plane_vertex (&v)[3], long long x, lo
   return std::min<long long>(std::max<long long>(value, 0), 0x7FFF);
 }
 
+// gouraud_setup = per_pixel_floor: floor(128·plane(x, y)), clamped (the value itself floored).
+constexpr long long gouraud_floor_at(const plane_vertex (&v)[3], long long x, long long y) {
+  long long num = 128 * plane_numerator(v, 16 * x, 16 * y), det = plane_det(v);
+  if (det < 0) num = -num, det = -det;
+  const long long value = num >= 0 ? num / det : -((-num + det - 1) / det);
+  return std::min<long long>(std::max<long long>(value, 0), 0x7FFF);
+}
+
 }  // namespace gs_ref

@@ -270,6 +270,10 @@ TEST(Draw, PerPixelGouraudTriangleIsTheExactPlaneOnTheFillRulesPixels) {
   expect_gouraud_triangle_plane_on_the_fill_rules_pixels(gs::gouraud_setup::per_pixel);
 }
 
+TEST(Draw, FlooredGouraudTriangleIsTheExactPlaneFlooredOnTheFillRulesPixels) {
+  expect_gouraud_triangle_plane_on_the_fill_rules_pixels(gs::gouraud_setup::per_pixel_floor);
+}
+
 TEST(Draw, FlatRightTriangleCoversTheTopLeftRulesTenPixels) {
   fixture f;
   // (0, 0), (4, 0), (0, 4): x, y >= 0 and x + y < 4 (the hypotenuse is a right edge): 4 + 3 + 2 + 1 pixels.

@@ -129,6 +129,9 @@ TEST(RendererMatch, RandomTexturedGouraudTrianglesGiveTheRenderersFrame) {
 TEST(RendererMatch, RandomTexturedPerPixelGouraudTrianglesGiveTheRenderersFrame) {
   expect_the_renderers_frame(gs::gouraud_setup::per_pixel);
 }
+TEST(RendererMatch, RandomTexturedFlooredGouraudTrianglesGiveTheRenderersFrame) {
+  expect_the_renderers_frame(gs::gouraud_setup::per_pixel_floor);
+}
 TEST(RendererMatch, RandomTexturedTrianglesWithTheUvBiasGiveTheRenderersFrame) {
   expect_the_renderers_frame(gs::gouraud_setup::per_pixel, gs::uv_convert_mode::floor_1_64);
 }

@@ -1,8 +1,8 @@
 // Whole frames through the SIMD pixel pipeline (render_options::simd, gs_simd) equal the frames of the
 // scalar gs::pixel_pipeline (--scalar) bit for bit: every method × rasteriser path × storage (value
 // level, memory path, both z-trick DPB clears) × filter × specular, under every value of the model
-// options the passes' units read (tfx_rounding, gouraud_fraction, gouraud_setup, blend_shift,
-// uv_convert), on the embedded scene at 160×140 and at 1 and 3 threads.
+// options the passes' units read (tfx_rounding, gouraud_fraction, blend_shift, uv_convert; gouraud_setup:
+// plane_steps, per_pixel_floor, per_pixel), on the embedded scene at 160×140 and at 1 and 3 threads.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -44,7 +44,11 @@ TEST_P(SimdFrame, EqualsTheScalarFrameUnderEveryPathStorageAndOption) {
         o.dpb_clear = st.clear;
         o.model.tfx = variant & 1 ? gs::tfx_rounding::truncate : gs::tfx_rounding::floor;
         o.model.gouraud = variant & 2 ? gs::gouraud_fraction::truncate_to_8 : gs::gouraud_fraction::keep_fraction;
-        o.model.setup = variant & 4 ? gs::gouraud_setup::per_pixel : gs::gouraud_setup::plane_steps;
+        // gouraud_setup: plane_steps, or (variant & 4) the exact plane, floored (the default; cached raster path)
+        // or its distance from vertex 0 truncated (reference raster path)
+        const gs::gouraud_setup exact =
+            path == raster_path::cached ? gs::gouraud_setup::per_pixel_floor : gs::gouraud_setup::per_pixel;
+        o.model.setup = variant & 4 ? exact : gs::gouraud_setup::plane_steps;
         o.model.shift = variant & 8 ? gs::blend_shift::truncate : gs::blend_shift::floor;
         // bit 0 of the variant's Gray code: floor_1_64 in half the variants, spread over the other options
         o.model.uv_convert =

@@ -126,12 +126,25 @@ TEST(ProbeDesign, PatchValuesAreTheOnesWorkedOutByHand) {
       // trunc(5.971) = 5 plus trunc(g·m) for m = k mod 4 (0..2): k = 601: 750 + 1 = 751, .., 606: 755 + 2 = 757: 5; 8
       // lanes: 75 steps of trunc(11.942) = 11 plus trunc(g·m), m = 1..6: 826..833: 6; plane_steps: k steps of
       // trunc(g) = 1 from 0: 601..606, 4; a whole level floor((897.1..904.6 + 1/2)/128) = 7.
+      // .falling, x = 625..630: 128 − (x − 623)/16 = 127.875 .. 127.5625 units, below level 1 by less than a unit:
+      // floored 127 -> 0; the distance from vertex 0 (−0.125 .. −0.4375) truncated to 0 -> 128 -> 1; +1/2 unit then
+      // floored to a level -> 1; rows from the scissor's left 624, trunc(127.9375) = 127 and offsets trunc(−m/16) = 0
+      // -> 0; plane_steps: the reference pixel's value 128 + trunc(−1/16) = 128 (truncated toward vertex 0, as
+      // per_pixel) and step trunc(−1/16) = 0 -> 1. The rising ramps
+      // (.ramp, .rows) rise from vertex 0, where floor and truncation toward it agree.
       {"gouraud_setup",
-       {{"plane_steps", {{"gouraud_setup.ramp", 0x000000}, {"gouraud_setup.rows", 0x040404}}},
-        {"per_pixel", {{"gouraud_setup.ramp", 0x030303}, {"gouraud_setup.rows", 0x070707}}},
-        {"pcsx2_rows_4", {{"gouraud_setup.ramp", 0x030303}, {"gouraud_setup.rows", 0x050505}}},
-        {"pcsx2_rows_8", {{"gouraud_setup.ramp", 0x030303}, {"gouraud_setup.rows", 0x060606}}},
-        {"per_pixel_level", {{"gouraud_setup.ramp", 0x030303}, {"gouraud_setup.rows", 0x070707}}}}},
+       {{"plane_steps",
+         {{"gouraud_setup.ramp", 0x000000}, {"gouraud_setup.rows", 0x040404}, {"gouraud_setup.falling", 0x010101}}},
+        {"per_pixel",
+         {{"gouraud_setup.ramp", 0x030303}, {"gouraud_setup.rows", 0x070707}, {"gouraud_setup.falling", 0x010101}}},
+        {"pcsx2_rows_4",
+         {{"gouraud_setup.ramp", 0x030303}, {"gouraud_setup.rows", 0x050505}, {"gouraud_setup.falling", 0x000000}}},
+        {"pcsx2_rows_8",
+         {{"gouraud_setup.ramp", 0x030303}, {"gouraud_setup.rows", 0x060606}, {"gouraud_setup.falling", 0x000000}}},
+        {"per_pixel_level",
+         {{"gouraud_setup.ramp", 0x030303}, {"gouraud_setup.rows", 0x070707}, {"gouraud_setup.falling", 0x010101}}},
+        {"per_pixel_floor",
+         {{"gouraud_setup.ramp", 0x030303}, {"gouraud_setup.rows", 0x070707}, {"gouraud_setup.falling", 0x000000}}}}},
       // 0x81 + floor(-129 / 128) = 0x7f; 0x81 + trunc(-129 / 128) = 0x80.
       {"blend_shift",
        {{"floor", {{"blend_shift.negative", 0x7F7F7F}}}, {"truncate", {{"blend_shift.negative", 0x808080}}}}},

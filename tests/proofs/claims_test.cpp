@@ -319,7 +319,7 @@ TEST(Claims, TwoPassMaxSVertex) {
 }
 
 TEST(Claims, TwoPassMaxSInterpolated) {
-  // Whole triangles, per gouraud_setup. Default per_pixel: no pixel lags, so the claim is the vertex
+  // Whole triangles, per gouraud_setup. Default per_pixel_floor: no pixel lags, so the claim is the vertex
   // lights' (two-pass.max-s.vertex, settled there by an exhaustive search above its argument): safe up
   // to 125, and only the flat triangle (the vertex claim's witness as three equal vertex lights) wraps,
   // at 126.
@@ -335,8 +335,8 @@ TEST(Claims, TwoPassMaxSInterpolated) {
   EXPECT_EQ(e.witnesses[0].rfind("s = 126: n = (-127, -15, 5)", 0), 0u) << e.witnesses[0];
   EXPECT_NE(e.note.find("the bound meets the lowest certificate"), std::string::npos) << e.note;
   EXPECT_NE(e.note.find("The paper's s = 122 is safe"), std::string::npos) << e.note;
-  // The table: ten rows, one per evidenced set-up and gouraud_fraction.
-  EXPECT_EQ(e.table.size(), 12u);
+  // The table: two header rows and twelve, one per set-up (six) and gouraud_fraction (two).
+  EXPECT_EQ(e.table.size(), 14u);
   // plane_steps (the model's DDA, no source): the paper's s = 122 wraps (a certificate, replayed through
   // the pipeline in triangle_test.cpp); the bound proves s <= 79 (78 under truncate_to_8: the same
   // inequality in doubles, triangle_test.cpp); the lowest certificate is s = 85 (84 under truncate_to_8).
@@ -392,7 +392,7 @@ TEST(Claims, TwoPassMaxSInterpolated) {
   const auto r4 = under("pcsx2_rows_4", "keep_fraction");
   EXPECT_EQ(r4.result, p::verdict::refuted);
   EXPECT_EQ(fig(r4, "first_wrapping_s"), 100);
-  // The dobiestation profile (per_pixel with truncate_to_8): the multiply's floor hands a pixel the
+  // The dobiestation profile (per_pixel_floor with truncate_to_8, issue 53): the multiply's floor hands a pixel the
   // integer light of the unit box its exact light lies in, which can sit just outside the packed
   // shell: safe up to 123 by the bound, and the s = 124 certificate's box m = (−27, −63, −105) has
   // the plain-int value −129 for n = (24, 59, 111).

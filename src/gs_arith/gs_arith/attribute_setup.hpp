@@ -31,7 +31,7 @@ struct triangle_attributes {
   gouraud_plane colour{};
   plane u, v;
   std::int32_t offset_x = 0, offset_y = 0;  // window pixel + offset = gouraud_triangle's pixel
-  gouraud_setup setup = gouraud_setup::per_pixel;
+  gouraud_setup setup = gouraud_setup::per_pixel_floor;
   // Cf at window pixel (x, y).
   constexpr fragment_colour colour_at(int x, int y) const noexcept {
     return gouraud_colour(colour, x + offset_x, y + offset_y, setup);

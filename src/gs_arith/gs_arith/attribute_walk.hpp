@@ -9,8 +9,8 @@
 // path walks, --scalar does not).
 // gouraud_setup::pcsx2_rows_4 / _8 (row-start dependent, not a plane) are evaluated at every pixel.
 // A colour plane that does not change (every channel's x and y gradient numerators 0, as for equal
-// vertex colours: the methods' white passes) is the same at every pixel: n = 0 under per_pixel and
-// per_pixel_level, base alone under plane_steps; it is computed where the walk starts and kept.
+// vertex colours: the methods' white passes) is the same at every pixel: n = 0 under per_pixel,
+// per_pixel_floor and per_pixel_level, base alone under plane_steps; it is computed where the walk starts and kept.
 #pragma once
 
 #include <array>
@@ -111,7 +111,8 @@ class attribute_walker {
           units_[i] = p.base[i].value() + clamp_distance(xo - p.x_ref) * p.dx[i].value() +
                       clamp_distance(yo - p.y_ref) * p.dy[i].value();
           break;
-        case gouraud_setup::per_pixel: walk_[i].start(sign * n, sign * s, sign * e.det); break;
+        case gouraud_setup::per_pixel:
+        case gouraud_setup::per_pixel_floor: walk_[i].start(sign * n, sign * s, sign * e.det); break;
         case gouraud_setup::per_pixel_level: {
           const std::int64_t num = sign * (e.c0[i].value() * e.det + n), den = sign * e.det;
           walk_[i].start(2 * num + den, 2 * sign * s, 256 * den);
@@ -140,6 +141,9 @@ class attribute_walker {
         case gouraud_setup::plane_steps: c[i] = gouraud_channel::from_saturated(units_[i]); break;
         case gouraud_setup::per_pixel:
           c[i] = gouraud_channel::from_saturated(a_.colour.exact.c0[i].value() + walk_[i].toward_zero());
+          break;
+        case gouraud_setup::per_pixel_floor:  // c0 is whole: c0 + floor(n / d) = floor(c0 + n / d)
+          c[i] = gouraud_channel::from_saturated(a_.colour.exact.c0[i].value() + walk_[i].q);
           break;
         case gouraud_setup::per_pixel_level: c[i] = gouraud_channel::from_saturated(128 * walk_[i].q); break;
         case gouraud_setup::pcsx2_rows_4:

@@ -257,6 +257,15 @@ constexpr fragment_colour gouraud_rows_at(const gouraud_plane& p, std::int32_t x
   return {ch(0), ch(1), ch(2), ch(3)};
 }
 
+// gouraud_setup::per_pixel_floor: the exact plane at (x, y) floored to whole 8.7 units, clamped.
+constexpr fragment_colour gouraud_floor_at(const gouraud_plane& p, std::int32_t x, std::int32_t y) noexcept {
+  auto ch = [&](int i) {
+    const auto f = exact_plane_fraction(p.exact, i, x, y);
+    return gouraud_channel::from_saturated(floor_div(f.num, f.den));
+  };
+  return {ch(0), ch(1), ch(2), ch(3)};
+}
+
 // The fragment colour at pixel (x, y) under the set-up in force.
 constexpr fragment_colour gouraud_colour(const gouraud_plane& p, std::int32_t x, std::int32_t y,
                                          gouraud_setup s) noexcept {
@@ -266,6 +275,7 @@ constexpr fragment_colour gouraud_colour(const gouraud_plane& p, std::int32_t x,
     case gouraud_setup::pcsx2_rows_4: return gouraud_rows_at(p, x, y, 4);
     case gouraud_setup::pcsx2_rows_8: return gouraud_rows_at(p, x, y, 8);
     case gouraud_setup::per_pixel_level: return gouraud_level_at(p, x, y);
+    case gouraud_setup::per_pixel_floor: return gouraud_floor_at(p, x, y);
   }
   return gouraud_exact_at(p, x, y);
 }

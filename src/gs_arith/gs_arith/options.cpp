@@ -36,10 +36,11 @@ const std::vector<option_info>& option_catalogue() {
        "quarter_page: Mikkelsen 2004 section 3.4; draw_snapshot: PCSX2 SW; per_fragment, page: what-ifs. Unconfirmed "
        "on HW."},
       {"gouraud_setup",
-       {"per_pixel", "plane_steps", "pcsx2_rows_4", "pcsx2_rows_8", "per_pixel_level"},
-       "per_pixel: DobieStation 3a23544b render_triangle2, Play! (float) (2 sources); plane_steps: a fixed-point DDA "
-       "with 8.7 steps, no source; pcsx2_rows_4/8: PCSX2 SW DrawTriangleSection + SetupPrim (1); per_pixel_level: "
-       "parallel-gs ubershader.comp (1). No recording here."},
+       {"per_pixel_floor", "per_pixel", "plane_steps", "pcsx2_rows_4", "pcsx2_rows_8", "per_pixel_level"},
+       "per_pixel_floor: DobieStation 68dd073e render_half_triangle (vtx_color.r = vtx.r), Play! Vulkan "
+       "int(color * 255) (float) (2 sources); per_pixel: the distance from vertex 0 truncated, no source; "
+       "plane_steps: a fixed-point DDA with 8.7 steps, no source; pcsx2_rows_4/8: PCSX2 SW DrawTriangleSection + "
+       "SetupPrim (1); per_pixel_level: parallel-gs ubershader.comp (1). No recording here."},
       {"stq_range",
        {"saturate_2047", "x86_int32"},
        "saturate_2047: parallel-gs sample_texture, PCSX2 PR #12201 (reported HW tests) (2 sources); x86_int32: PCSX2 "
@@ -59,8 +60,8 @@ const std::vector<option_info>& option_catalogue() {
 
 namespace {
 // gouraud_setup's names in enumerator order.
-constexpr std::string_view setup_names[] = {"plane_steps", "per_pixel", "pcsx2_rows_4", "pcsx2_rows_8",
-                                            "per_pixel_level"};
+constexpr std::string_view setup_names[] = {"plane_steps",  "per_pixel",       "pcsx2_rows_4",
+                                            "pcsx2_rows_8", "per_pixel_level", "per_pixel_floor"};
 template <typename E>
 bool pick(E& field, std::string_view value, std::string_view a, E ea, std::string_view b, E eb) {
   if (value == a) {

@@ -28,9 +28,12 @@ enum class gouraud_fraction { keep_fraction, truncate_to_8 };
 
 // A Gouraud triangle's colour set-up (docs/evidence.md R9, which names the functions read and counts
 // the sources per value; gs_arith/gouraud.hpp gouraud_colour).
-// per_pixel: the exact plane at every pixel, truncated toward zero to whole 8.7 units (default: two
-//   sources, DobieStation gsthread.cpp render_triangle2 / render_half_triangle and Play!'s GPU, both in
-//   float).
+// per_pixel_floor: the exact plane at every pixel, floored to whole 8.7 units (the value itself
+//   truncated, as a float converted to an integer is: default, two sources, DobieStation gsthread.cpp
+//   render_half_triangle `vtx_color.r = vtx.r` and Play!'s GPU `int(color * 255)`, both in float).
+// per_pixel: the exact plane at every pixel with its distance from vertex 0's value truncated toward
+//   zero to whole 8.7 units (one unit higher than per_pixel_floor where the colour falls away from
+//   vertex 0 and the value is not whole; once credited to DobieStation and Play!, issue 53: no source).
 // plane_steps: one plane per primitive, its start value at the bounding box's top-left pixel and both
 //   steps truncated toward zero to whole 8.7 units, every pixel start + a·dx + b·dy (a fixed-point DDA
 //   with 8.7 steps: the model's own, no source; a pixel far from the reference lags up to 16 levels
@@ -40,7 +43,7 @@ enum class gouraud_fraction { keep_fraction, truncate_to_8 };
 //   and per-vector steps of 4 (SSE) or 8 (AVX2) pixels.
 // per_pixel_level: parallel-gs (ubershader.comp compute_combined_color): the exact plane plus 1/256
 //   level, floored to a whole level.
-enum class gouraud_setup { plane_steps, per_pixel, pcsx2_rows_4, pcsx2_rows_8, per_pixel_level };
+enum class gouraud_setup { plane_steps, per_pixel, pcsx2_rows_4, pcsx2_rows_8, per_pixel_level, per_pixel_floor };
 
 // The blend's ((A − B)·C) >> 7. floor: HW-confirmed by all 486 ps2autotests blend results.
 // truncate (toward zero): refuted by 24 of them; kept as a what-if for the proofs.
@@ -105,7 +108,7 @@ enum class uv_convert_mode { floor, floor_1_64 };
 struct model_options {
   tfx_rounding tfx = tfx_rounding::floor;
   gouraud_fraction gouraud = gouraud_fraction::keep_fraction;
-  gouraud_setup setup = gouraud_setup::per_pixel;
+  gouraud_setup setup = gouraud_setup::per_pixel_floor;
   blend_shift shift = blend_shift::floor;
   dither_decode dither = dither_decode::twos_complement;
   dither_targets dither_on = dither_targets::sixteen_bit_only;

@@ -189,6 +189,20 @@ design make_design() {
                 "Gouraud TRIANGLE, MODULATE, texel 0x80, Cf = 0.25·(x − 108) units: 127.5 and 127.75 at x = 618, 619, "
                 "level 0 truncated, 1 with parallel-gs's +1/256 level (per_pixel_level); 128 and more from x = 620 on");
   }
+  {  // gouraud_setup (P12): a colour falling away from vertex 0, the exact plane within one 8.7 unit below a
+     // whole level (issue 53: DobieStation truncates the value, per_pixel the distance from vertex 0).
+    const int x = 624, y = 432;
+    // Colour 1 along x = 623 (vertex 0 first), 0 at x = 2671: 128 − (x − 623)/16 units, so 127.53 .. 127.91
+    // over the sampled pixels 625..630 ±1/2: every set-up gives one value over the cell.
+    b.add(gouraud_ramp(
+        base, x, y,
+        {{{623, y - 4, 0x80010101u, 24, 8}, {2671, y - 4, 0x80000000u, 24, 8}, {623, y + 28, 0x80010101u, 24, 8}}}));
+    b.add_patch("gouraud_setup.falling", "gouraud_setup", x, y,
+                "Gouraud TRIANGLE, MODULATE, texel 0x80, Cf from 1 at x = 623 (vertex 0) falling 1/16 unit per pixel: "
+                "127.56..127.88 units, level 0 floored (per_pixel_floor) or stepped from the row start (pcsx2_rows), 1 "
+                "with the distance from vertex 0 truncated (per_pixel, plane_steps' start) or the +1/256 level "
+                "(per_pixel_level)");
+  }
   {  // blend_shift (P3, settled by the recordings; probed anyway): (0 − 0x81)·1 >> 7 + 0x81.
     const int x = 32, y = 16;
     b.add(sprite(base, x, y, cell, cell, 0x80818181u));

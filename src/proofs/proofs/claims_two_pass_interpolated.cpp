@@ -129,8 +129,11 @@ std::string set_up_note(const gs::model_options& o, const findings& f) {
   const std::string setup(gs::option_value(o, "gouraud_setup"));
   const std::string w = std::to_string(two_pass::triangle::lag_window(o));
   const std::string how =
-      o.setup == gs::gouraud_setup::per_pixel ? "the exact plane at every pixel, truncated to whole 8.7 units: a "
-                                                "pixel's light is within one unit per channel"
+      o.setup == gs::gouraud_setup::per_pixel ? "the exact plane at every pixel, its distance from vertex 0 truncated "
+                                                "to whole 8.7 units: a pixel's light is within one unit per channel"
+      : o.setup == gs::gouraud_setup::per_pixel_floor
+          ? "the exact plane at every pixel, floored to whole 8.7 units: a pixel's light is within one unit per "
+            "channel"
       : o.setup == gs::gouraud_setup::per_pixel_level
           ? "the exact plane plus 1/256 level floored to a whole level: within 128 units per channel"
           : "each row from the plane at its first pixel, truncated 16-bit lane offsets and vector steps: within " + w +
@@ -348,8 +351,10 @@ outcome two_pass_max_s_interpolated(const gs::model_options& o, const sweep_conf
   out.table = {
       "| gouraud_setup (sources) | gouraud_fraction | verdict | s_max (proven) | first wrapping s | paper's s = 122 |",
       "|---|---|---|---|---|---|"};
-  const char* sources[] = {"0, the model's DDA", "2", "1 (PCSX2 SSE4)", "1 (PCSX2 AVX2)", "1 (parallel-gs)"};
-  for (const char* setup : {"per_pixel", "pcsx2_rows_4", "pcsx2_rows_8", "per_pixel_level", "plane_steps"})
+  const char* sources[] = {"0, the model's DDA",     "0", "1 (PCSX2 SSE4)", "1 (PCSX2 AVX2)", "1 (parallel-gs)",
+                           "2 (DobieStation, Play!)"};
+  for (const char* setup :
+       {"per_pixel_floor", "per_pixel", "pcsx2_rows_4", "pcsx2_rows_8", "per_pixel_level", "plane_steps"})
     for (const char* fraction : {"keep_fraction", "truncate_to_8"}) {
       gs::model_options v = o;
       (void)gs::set_option(v, "gouraud_setup", setup);

@@ -98,6 +98,7 @@ gs::fragment_colour pixel_light(const triangle_case& c,
 // Under gouraud_setup::per_pixel the light is the exact plane at p truncated toward zero from vertex
 // 0's value, so |E_c| < 1 unit on every channel whatever the gradients, with P(p) in the ball: no
 // case split, n·L(p) − n·centre < R·|n| + m (ball_reach_units with W = 1; lag_window is the W of (ii)).
+// Under per_pixel_floor L_c = floor(P_c(p)), so −1 < E_c <= 0: the same W = 1.
 // The other set-ups of a source are bounded the same way, with their own W, the largest |E_c| (in units):
 // - per_pixel_level: L_c = 128·floor((P_c(p) + 1/2)/128), so −127.5 < E_c <= 1/2: W = 128. L_c is a multiple of
 //   128, so the multiply's floors have the truncate_to_8 slack (floor_slack_units 128) and truncate_to_8
@@ -118,7 +119,8 @@ gs::fragment_colour pixel_light(const triangle_case& c,
 //   the model on random steep and shallow triangles.
 constexpr int lag_window(const gs::model_options& o) noexcept {
   switch (o.setup) {
-    case gs::gouraud_setup::per_pixel: return 1;
+    case gs::gouraud_setup::per_pixel:
+    case gs::gouraud_setup::per_pixel_floor: return 1;
     case gs::gouraud_setup::per_pixel_level: return 128;
     case gs::gouraud_setup::pcsx2_rows_4: return 2 + (window_pixels - 1 + 3) / 4;
     case gs::gouraud_setup::pcsx2_rows_8: return 2 + (window_pixels - 1 + 7) / 8;
