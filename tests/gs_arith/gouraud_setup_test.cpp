@@ -86,18 +86,20 @@ TEST(GouraudSetup, PerPixelLevelLiftsHalfAUnitBelowALevel) {
 // vertex 0's 128 toward zero, 128 (issue 53: DobieStation's float truncation of the value is the former).
 // At x = 631: 127.5, the same split; at x = 639 (623 + 16): exactly 127 under both.
 TEST(GouraudSetup, PerPixelFloorFloorsTheValueNotTheDistanceFromVertexZero) {
-  const auto p = gs::gouraud_triangle(at(623, 0, 1), at(2671, 0, 0), at(623, 8, 1), 0, 0);
-  ASSERT_TRUE(p.has_value());
-  EXPECT_EQ(red(*p, 627, 2, gouraud_setup::per_pixel_floor), 127);
-  EXPECT_EQ(red(*p, 627, 2, gouraud_setup::per_pixel), 128);
-  EXPECT_EQ(red(*p, 631, 2, gouraud_setup::per_pixel_floor), 127);
-  EXPECT_EQ(red(*p, 631, 2, gouraud_setup::per_pixel), 128);  // −0.5 truncated toward zero
-  EXPECT_EQ(red(*p, 639, 2, gouraud_setup::per_pixel_floor), 127);
-  EXPECT_EQ(red(*p, 639, 2, gouraud_setup::per_pixel), 127);  // exactly 127
+  const auto falling = gs::gouraud_triangle(at(623, 0, 1), at(2671, 0, 0), at(623, 8, 1), 0, 0);
   // Rising from vertex 0 the two agree: the ramp of PerPixelLevelLiftsHalfAUnitBelowALevel, 127.75 -> 127.
-  const auto q = gs::gouraud_triangle(at(108, 0, 0), at(108, 1500, 0), at(1132, 0, 2), 0, 0);
-  ASSERT_TRUE(q.has_value());
-  EXPECT_EQ(red(*q, 619, 2, gouraud_setup::per_pixel_floor), 127);
+  const auto rising = gs::gouraud_triangle(at(108, 0, 0), at(108, 1500, 0), at(1132, 0, 2), 0, 0);
+  ASSERT_TRUE(falling.has_value() && rising.has_value());
+  const struct {
+    const gs::gouraud_plane& p;
+    int x;
+    int floored, from_vertex_0;  // per_pixel_floor, per_pixel
+  } cases[] = {
+      {*falling, 627, 127, 128}, {*falling, 631, 127, 128}, {*falling, 639, 127, 127}, {*rising, 619, 127, 127}};
+  for (const auto& c : cases) {
+    EXPECT_EQ(red(c.p, c.x, 2, gouraud_setup::per_pixel_floor), c.floored) << c.x;
+    EXPECT_EQ(red(c.p, c.x, 2, gouraud_setup::per_pixel), c.from_vertex_0) << c.x;
+  }
 }
 
 // The option's names and its default (the value with the most sources, docs/evidence.md R9).

@@ -261,25 +261,19 @@ RC_GTEST_PROP(GsArithProperty, GouraudTriangleMatchesBarycentric, ()) {
             gs_ref::gouraud_plane_at(t.rv, t.xr, t.yr, t.x, t.y));
 }
 
-// gouraud_setup = per_pixel against the same barycentric formulation read at the pixel itself (the
-// whole 2048-pixel window), and against plane_steps at the reference pixel (both the start value there).
-RC_GTEST_PROP(GsArithProperty, GouraudExactAtMatchesBarycentric, ()) {
+// gouraud_setup = per_pixel and per_pixel_floor against the same barycentric formulation read at the
+// pixel itself (the whole 2048-pixel window): its distance from vertex 0 truncated, and the value
+// floored; per_pixel against plane_steps at the reference pixel (both the start value there).
+RC_GTEST_PROP(GsArithProperty, GouraudExactAndFloorAtMatchBarycentric, ()) {
   const auto t = random_gouraud_triangle(2048, 0);  // the red channel
   RC_PRE(gs_ref::plane_det(t.rv) != 0);
   RC_ASSERT(t.plane.has_value());
   RC_ASSERT(static_cast<long long>(gs::gouraud_exact_at(*t.plane, t.x, t.y).r.value()) ==
             gs_ref::gouraud_exact_at(t.rv, t.x, t.y));
-  RC_ASSERT(gs::gouraud_colour(*t.plane, t.xr, t.yr, gs::gouraud_setup::per_pixel) ==
-            gs::gouraud_colour(*t.plane, t.xr, t.yr, gs::gouraud_setup::plane_steps));
-}
-
-// gouraud_setup = per_pixel_floor against the barycentric plane floored (the whole 2048-pixel window).
-RC_GTEST_PROP(GsArithProperty, GouraudFloorAtMatchesBarycentric, ()) {
-  const auto t = random_gouraud_triangle(2048, 0);  // the red channel
-  RC_PRE(gs_ref::plane_det(t.rv) != 0);
-  RC_ASSERT(t.plane.has_value());
   RC_ASSERT(static_cast<long long>(gs::gouraud_floor_at(*t.plane, t.x, t.y).r.value()) ==
             gs_ref::gouraud_floor_at(t.rv, t.x, t.y));
+  RC_ASSERT(gs::gouraud_colour(*t.plane, t.xr, t.yr, gs::gouraud_setup::per_pixel) ==
+            gs::gouraud_colour(*t.plane, t.xr, t.yr, gs::gouraud_setup::plane_steps));
 }
 
 }  // namespace
