@@ -203,48 +203,39 @@ class stream {
   void channel_pass(const pass_regs& p, gs::rgba8 colour, std::uint32_t cbp, unsigned channel, std::uint32_t src_fbp,
                     bool z_layout, std::uint32_t z) {
     const gs::mem::channel_fetch f = gs::mem::channel_fetch_sprites(channel);
-    const scissor& a = area_;
-    bool first = true;
-    for (int py = a.y0 / 32; py * 32 < a.y1; ++py)
-      for (int px = a.x0 / 64; px * 64 < a.x1; ++px) {
-        const std::uint32_t page = src_fbp + static_cast<std::uint32_t>(px) + static_cast<std::uint32_t>(py) * b_.fbw;
-        const gs::mem::buffer tex{fixed::uint<14>::from_wrapped(32 * page), fixed::uint<6>::from_wrapped(2 * b_.fbw),
-                                  gs::mem::psm::PSMT8};
-        texture(p, tex, 128, 64, cbp, false, false, &f.CLAMP, first);  // the CLUT loaded once per pass
-        first = false;
-        std::vector<rect> rs;
-        for (const gs::mem::fetch_sprite& sp : f.sprites) {
-          const int mx = px * 64 + static_cast<int>(sp.x0), my = py * 32 + static_cast<int>(sp.y0);
-          const auto [x0, y0] = z_layout ? gs::mem::zsigma(mx, my) : std::array<int, 2>{mx, my};
-          rs.push_back(
-              {x0, y0, x0 + static_cast<int>(sp.x1 - sp.x0), y0 + static_cast<int>(sp.y1 - sp.y0), sp.u0, sp.v0});
-        }
-        sprites(p, colour, rs, z);
+    per_page(src_fbp, [&](int px, int py, std::uint32_t page, bool first) {
+      const gs::mem::buffer tex{fixed::uint<14>::from_wrapped(32 * page), fixed::uint<6>::from_wrapped(2 * b_.fbw),
+                                gs::mem::psm::PSMT8};
+      texture(p, tex, 128, 64, cbp, false, false, &f.CLAMP, first);  // the CLUT loaded once per pass
+      std::vector<rect> rs;
+      for (const gs::mem::fetch_sprite& sp : f.sprites) {
+        const int mx = px * 64 + static_cast<int>(sp.x0), my = py * 32 + static_cast<int>(sp.y0);
+        const auto [x0, y0] = z_layout ? gs::mem::zsigma(mx, my) : std::array<int, 2>{mx, my};
+        rs.push_back(
+            {x0, y0, x0 + static_cast<int>(sp.x1 - sp.x0), y0 + static_cast<int>(sp.y1 - sp.y0), sp.u0, sp.v0});
       }
+      sprites(p, colour, rs, z);
+    });
   }
   // Two-pass step 2.4a from a DPB drawn in the Z layout: logical pixel (x, y) is the PSMT8H texel of
   // PSMCT32 pixel zsigma(x, y), so per page of the sprite area TEX0_1 = that page (PSMT8H, palette cbp
   // loaded by the first) and one sprite per 32x16 quarter reading the quarter zsigma swaps it with.
   void t8h_quarters(const pass_regs& p, std::uint32_t cbp, std::uint32_t src_fbp) {
     const scissor& a = area_;
-    bool first = true;
-    for (int py = a.y0 / 32; py * 32 < a.y1; ++py)
-      for (int px = a.x0 / 64; px * 64 < a.x1; ++px) {
-        const std::uint32_t page = src_fbp + static_cast<std::uint32_t>(px) + static_cast<std::uint32_t>(py) * b_.fbw;
-        const gs::mem::buffer tex{fixed::uint<14>::from_wrapped(32 * page), fixed::uint<6>::from_wrapped(b_.fbw),
-                                  gs::mem::psm::PSMT8H};
-        texture(p, tex, 64, 32, cbp, false, false, nullptr, first);
-        first = false;
-        std::vector<rect> rs;
-        for (int qy = 0; qy < 32; qy += 16)
-          for (int qx = 0; qx < 64; qx += 32) {
-            const int x0 = px * 64 + qx, y0 = py * 32 + qy;
-            const auto [u0, v0] = gs::mem::zsigma(qx, qy);
-            if (x0 < a.x1 && x0 + 32 > a.x0 && y0 < a.y1 && y0 + 16 > a.y0)
-              rs.push_back({x0, y0, x0 + 32, y0 + 16, u0, v0});
-          }
-        sprites(p, passes::white, rs);
-      }
+    per_page(src_fbp, [&](int px, int py, std::uint32_t page, bool first) {
+      const gs::mem::buffer tex{fixed::uint<14>::from_wrapped(32 * page), fixed::uint<6>::from_wrapped(b_.fbw),
+                                gs::mem::psm::PSMT8H};
+      texture(p, tex, 64, 32, cbp, false, false, nullptr, first);
+      std::vector<rect> rs;
+      for (int qy = 0; qy < 32; qy += 16)
+        for (int qx = 0; qx < 64; qx += 32) {
+          const int x0 = px * 64 + qx, y0 = py * 32 + qy;
+          const auto [u0, v0] = gs::mem::zsigma(qx, qy);
+          if (x0 < a.x1 && x0 + 32 > a.x0 && y0 < a.y1 && y0 + 16 > a.y0)
+            rs.push_back({x0, y0, x0 + 32, y0 + 16, u0, v0});
+        }
+      sprites(p, passes::white, rs);
+    });
   }
 
   const scissor& area() const { return area_; }
@@ -258,6 +249,19 @@ class stream {
   buffer_layout b_;
   scissor area_, frame_;
   std::vector<std::pair<std::uint8_t, std::uint64_t>> pending_;
+
+  // f(px, py, page, first) for every page (px, py) the sprite area touches, in rows, with `page` the
+  // FBP of that page of the buffer at src_fbp and `first` true for the first.
+  template <class F>
+  void per_page(std::uint32_t src_fbp, F&& f) {
+    const scissor& a = area_;
+    bool first = true;
+    for (int py = a.y0 / 32; py * 32 < a.y1; ++py)
+      for (int px = a.x0 / 64; px * 64 < a.x1; ++px) {
+        f(px, py, src_fbp + static_cast<std::uint32_t>(px) + static_cast<std::uint32_t>(py) * b_.fbw, first);
+        first = false;
+      }
+  }
 };
 
 }  // namespace gsdot3::pipeline::gif
