@@ -188,6 +188,7 @@ pl::render_options random_options(FuzzedDataProvider& in) {
   o.model.uv_convert = in.ConsumeBool() ? gs::uv_convert_mode::floor_1_64 : gs::uv_convert_mode::floor;
   o.model.tex_buffer = static_cast<gs::texture_buffer>(in.ConsumeIntegralInRange<int>(0, 3));
   o.model.setup = static_cast<gs::gouraud_setup>(in.ConsumeIntegralInRange<int>(0, 5));  // all six Gouraud set-ups
+  o.model.uv_plane = in.ConsumeBool() ? gs::uv_plane_mode::fixed_16 : gs::uv_plane_mode::exact;
   o.threads = in.ConsumeIntegralInRange<int>(1, 3);
   return o;
 }

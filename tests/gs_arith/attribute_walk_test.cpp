@@ -1,6 +1,6 @@
 // gs_arith_attribute_walk — gs::attribute_walker (the stepped fast path) against the readable
 // formulas it replaces: triangle_attributes::colour_at and plane::at at every pixel a triangle
-// covers, under every gouraud_setup and either uv_convert (drawn at random), pixel by pixel (at) and
+// covers, under every gouraud_setup and each uv_plane and uv_convert (drawn at random), pixel by pixel (at) and
 // as runs of a row (row);
 // floor_division_walk against C++'s own division.
 #include <gtest/gtest.h>
@@ -47,7 +47,7 @@ struct walk_case {
   std::array<gs::rgba8, 3> c;
   std::array<std::array<std::int32_t, 2>, 3> uv;
   std::int32_t offset;
-  gs::uv_convert_mode uv_convert;
+  gs::uv_rule uv_rule;
 };
 
 // Compares the walker with the reference at every covered pixel in raster order, and at every
@@ -55,7 +55,7 @@ struct walk_case {
 void expect_walk_equal(const walk_case& k, gs::gouraud_setup s, int skip) {
   const gs::triangle_setup t = gs::setup_triangle(k.v);
   if (t.area2 == 0) return;
-  const gs::triangle_attributes a = gs::setup_attributes(t, k.c, k.uv, k.offset, k.offset, s, k.uv_convert);
+  const gs::triangle_attributes a = gs::setup_attributes(t, k.c, k.uv, k.offset, k.offset, s, k.uv_rule);
   gs::attribute_walker w(a);
   int n = 0;
   gs::rasterise_triangle(t, {0, 0, 1024, 1024}, [&](int x, int y) {
@@ -74,7 +74,7 @@ void expect_walk_equal(const walk_case& k, gs::gouraud_setup s, int skip) {
 void expect_rows_equal(const walk_case& k, gs::gouraud_setup s, int longest, bool box) {
   const gs::triangle_setup t = gs::setup_triangle(k.v);
   if (t.area2 == 0) return;
-  const gs::triangle_attributes a = gs::setup_attributes(t, k.c, k.uv, k.offset, k.offset, s, k.uv_convert);
+  const gs::triangle_attributes a = gs::setup_attributes(t, k.c, k.uv, k.offset, k.offset, s, k.uv_rule);
   struct run {
     int x0, y, n;
   };
@@ -122,7 +122,11 @@ rc::Gen<walk_case> triangle_gen(int span) {
   return rc::gen::construct<walk_case>(
       rc::gen::container<std::array<gs::xy124, 3>>(xy), rc::gen::container<std::array<gs::rgba8, 3>>(colour),
       rc::gen::container<std::array<std::array<std::int32_t, 2>, 3>>(uv), rc::gen::element(0, 2048, 4000),
-      rc::gen::element(gs::uv_convert_mode::floor, gs::uv_convert_mode::floor_1_64));
+      rc::gen::map(rc::gen::pair(rc::gen::element(gs::uv_plane_mode::exact, gs::uv_plane_mode::fixed_16),
+                                 rc::gen::element(gs::uv_convert_mode::floor, gs::uv_convert_mode::floor_1_64)),
+                   [](const auto& r) {
+                     return gs::uv_rule{r.first, r.second};
+                   }));
 }
 
 RC_GTEST_PROP(AttributeWalk, EqualsTheReferenceOnSmallTriangles, ()) {
@@ -166,7 +170,7 @@ TEST(AttributeWalk, RowsAcrossTheDistanceClamp) {
   const std::array<gs::rgba8, 3> c{gs::rgba8::from_u32(0x80808080), gs::rgba8::from_u32(0x7C7C8484),
                                    gs::rgba8::from_u32(0x80808080)};
   for (gs::gouraud_setup s : setups) {
-    gs::triangle_attributes a = gs::setup_attributes(t, c, {}, 0, 0, s, gs::uv_convert_mode::floor);
+    gs::triangle_attributes a = gs::setup_attributes(t, c, {}, 0, 0, s, gs::uv_rule{});
     a.offset_x = 65536 - 30;  // pixels 0..59 of a row are at distances 65506 .. 65565
     gs::attribute_walker w(a), rows(a);
     rows.row(0, 1, 60, [&](int x, const gs::attribute_walker::values& got) {

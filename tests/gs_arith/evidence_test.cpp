@@ -123,6 +123,32 @@ TEST_F(evidence, EveryRowNamesAProbeOfTheProbeList) {
   EXPECT_GE(rows, static_cast<int>(gs::option_catalogue().size()));
 }
 
+// "Profile sources": one row per option, each cell the profile's value first, then the file and
+// function it was read from (a second `...` token) or "not read".
+TEST_F(evidence, EveryProfileValueNamesItsSourceFunction) {
+  const auto rows = table(lines, "## Profile sources");
+  ASSERT_FALSE(rows.empty());
+  ASSERT_EQ(rows.front().size(), 2 + gs::profiles().size());
+  for (std::size_t i = 0; i < gs::profiles().size(); ++i) EXPECT_EQ(rows.front()[2 + i], gs::profiles()[i].name);
+  for (const auto& opt : gs::option_catalogue()) {
+    std::string name = "`";
+    name.append(opt.name).append("`");
+    const auto it = std::find_if(rows.begin(), rows.end(), [&](const auto& r) { return r.size() > 1 && r[1] == name; });
+    ASSERT_NE(it, rows.end()) << opt.name << " has no row";
+    for (std::size_t i = 0; i < gs::profiles().size(); ++i) {
+      const auto& p = gs::profiles()[i];
+      const std::string& cell = (*it)[2 + i];
+      const auto v =
+          std::find_if(p.values.begin(), p.values.end(), [&](const auto& kv) { return kv.first == opt.name; });
+      ASSERT_NE(v, p.values.end());
+      EXPECT_EQ(first_code(cell), v->second) << opt.name << " " << p.name;
+      const auto after = cell.find('`', cell.find('`', cell.find('`') + 1) + 1);  // a second code token
+      EXPECT_TRUE(after != std::string::npos || cell.find("not read") != std::string::npos)
+          << opt.name << " " << p.name << ": names no function: " << cell;
+    }
+  }
+}
+
 TEST(Profiles, EachSetsEveryOptionOnceToAValidValue) {
   for (const auto& p : gs::profiles()) {
     std::set<std::string_view> named;
@@ -151,6 +177,7 @@ TEST(Profiles, Pcsx2SwDiffersFromTheDefaultsWhereTheSourcesOutnumberItAndUnknown
   expected.setup = gs::gouraud_setup::pcsx2_rows_8;
   expected.stq_range = gs::stq_range_mode::x86_int32;  // a tie kept for the value with a hardware report
   expected.stq_convert = gs::stq_convert_mode::trunc_16_16;
+  expected.uv_plane = gs::uv_plane_mode::fixed_16;  // its 16.16 steps, outvoted by three float sources
   EXPECT_EQ(o, expected);
   const auto err = gs::apply_profile(o, "mame");
   ASSERT_TRUE(err.has_value());

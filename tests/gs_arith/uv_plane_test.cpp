@@ -1,18 +1,21 @@
-// gs_arith_uv_plane — option uv_convert (gs_arith/uv_plane.hpp, docs/evidence.md R12) against exact
-// rational arithmetic written here: the exact U at a pixel centre from the three vertices is the
-// rational N / D (edge functions in 12.4² units over the doubled area), and the texel coordinate is
-// floor(N / D) under `floor` and floor(N / D + 1/64) = floor((64·N + D) / (64·D)) under `floor_1_64`.
-// The model's plane floors its gradients (MODEL-PLANE-16), so it equals the exact value wherever the
-// exact value is farther from a boundary than the plane's error bound; the sweep checks exactly those
-// pixels and counts the ones where the two options differ.
+// gs_arith_uv_plane — options uv_plane and uv_convert (gs_arith/uv_plane.hpp, docs/evidence.md R12,
+// R13) against exact rational arithmetic written here: the exact U at a pixel centre from the three
+// vertices is the rational N / D (the barycentric sum of edge functions in 12.4² units over the doubled
+// area), and the texel coordinate is floor(N / D) under `floor` and floor(N / D + 1/64) =
+// floor((64·N + D) / (64·D)) under `floor_1_64`. uv_plane=exact equals it at every pixel;
+// uv_plane=fixed_16 floors its gradients (MODEL-PLANE-16), so it equals the exact value wherever the
+// exact value is farther from a boundary than the plane's error bound; the sweeps check exactly those
+// pixels and count the ones where the options differ.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <cstdlib>
 #include <random>
 #include <sstream>
 #include <string>
+#include <utility>
 
 #include "gs_arith/options.hpp"
 #include "gs_arith/rasteriser.hpp"
@@ -50,6 +53,9 @@ std::int64_t exact_texel(rational u, gs::uv_convert_mode m) {
   return static_cast<std::int64_t>(m == gs::uv_convert_mode::floor ? floor_q(u.n, u.d)
                                                                    : floor_q(64 * u.n + u.d, 64 * u.d));
 }
+
+gs::uv_rule fixed(gs::uv_convert_mode m) { return {gs::uv_plane_mode::fixed_16, m}; }
+gs::uv_rule exact(gs::uv_convert_mode m) { return {gs::uv_plane_mode::exact, m}; }
 
 std::string hex_of(std::int64_t v) {
   std::ostringstream s;
@@ -89,21 +95,25 @@ TEST(UvPlane, HandPickedPixelsJustBelowATexelBoundary) {
     const gs::triangle_setup t = gs::setup_triangle(c.p);
     ASSERT_NE(t.area2, 0);
     ASSERT_TRUE(gs::covers(t, c.x, c.y)) << c.what;
-    EXPECT_EQ(gs::make_uv_plane(c.p, c.u, gs::uv_convert_mode::floor).at(c.x, c.y), c.floor_texel) << c.what;
-    EXPECT_EQ(gs::make_uv_plane(c.p, c.u, gs::uv_convert_mode::floor_1_64).at(c.x, c.y), c.biased_texel) << c.what;
+    EXPECT_EQ(gs::make_uv_plane(c.p, c.u, fixed(gs::uv_convert_mode::floor)).at(c.x, c.y), c.floor_texel) << c.what;
+    EXPECT_EQ(gs::make_uv_plane(c.p, c.u, fixed(gs::uv_convert_mode::floor_1_64)).at(c.x, c.y), c.biased_texel)
+        << c.what;
+    EXPECT_EQ(gs::make_uv_plane(c.p, c.u, exact(gs::uv_convert_mode::floor)).at(c.x, c.y), c.floor_texel) << c.what;
+    EXPECT_EQ(gs::make_uv_plane(c.p, c.u, exact(gs::uv_convert_mode::floor_1_64)).at(c.x, c.y), c.biased_texel)
+        << c.what;
   }
 }
 
 // The bias is 1/64 of a sixteenth in plane units, carried in the base: every pixel of a biased plane
 // is uv_texel of the unbiased plane's value (what plane::at, gs::attribute_walker and the SIMD rows,
 // which all shift (base + dx·x + dy·y) by 16, compute).
-TEST(UvPlane, TheBiasedPlaneIsUvTexelOfTheUnbiasedValue) {
+TEST(UvPlane, TheBiasedFixedPlaneIsUvTexelOfTheUnbiasedValue) {
   EXPECT_EQ(gs::uv_convert_bias(gs::uv_convert_mode::floor), 0);
   EXPECT_EQ(gs::uv_convert_bias(gs::uv_convert_mode::floor_1_64), 1024);
   const std::array<gs::xy124, 3> p{{{3, 5}, {16 * 90 + 7, 40}, {100, 16 * 70 + 9}}};
   const std::array<std::int32_t, 3> u{16383, 17, 8000};
-  const gs::plane plain = gs::make_uv_plane(p, u, gs::uv_convert_mode::floor);
-  const gs::plane biased = gs::make_uv_plane(p, u, gs::uv_convert_mode::floor_1_64);
+  const gs::plane plain = gs::make_uv_plane(p, u, fixed(gs::uv_convert_mode::floor));
+  const gs::plane biased = gs::make_uv_plane(p, u, fixed(gs::uv_convert_mode::floor_1_64));
   EXPECT_EQ(plain.dx, biased.dx);
   EXPECT_EQ(plain.dy, biased.dy);
   for (int y = -3; y < 80; ++y)
@@ -119,7 +129,7 @@ TEST(UvPlane, TheBiasedPlaneIsUvTexelOfTheUnbiasedValue) {
 // the plane gives the exact texel under both options. The bound: make_plane floors both gradients (an
 // error under one plane unit each per pixel from vertex 0) and the base (under one unit), so
 // |P − 2^16·U| < |x − x0| + |y − y0| + 1 plane units, x0, y0 vertex 0 in pixels.
-TEST(UvPlane, RandomTrianglesEqualTheExactRationalsAwayFromTheBound) {
+TEST(UvPlane, RandomTrianglesFixed16EqualsTheExactRationalsAwayFromTheBound) {
   std::mt19937_64 rng(57);
   std::uniform_int_distribution<std::int32_t> pos(0, 16 * 64), uv(0, 16383);
   long checked = 0, undecided = 0, parted = 0;
@@ -128,8 +138,8 @@ TEST(UvPlane, RandomTrianglesEqualTheExactRationalsAwayFromTheBound) {
     const std::array<std::int32_t, 3> u{uv(rng), uv(rng), uv(rng)};
     const gs::triangle_setup t = gs::setup_triangle(p);
     if (t.area2 == 0) continue;
-    const gs::plane plain = gs::make_uv_plane(t.v, {u[0], u[1], u[2]}, gs::uv_convert_mode::floor);
-    const gs::plane biased = gs::make_uv_plane(t.v, {u[0], u[1], u[2]}, gs::uv_convert_mode::floor_1_64);
+    const gs::plane plain = gs::make_uv_plane(t.v, {u[0], u[1], u[2]}, fixed(gs::uv_convert_mode::floor));
+    const gs::plane biased = gs::make_uv_plane(t.v, {u[0], u[1], u[2]}, fixed(gs::uv_convert_mode::floor_1_64));
     gs::rasterise_triangle(t, {0, 0, 64, 64}, [&](int x, int y) {
       const rational e = exact_u(t.v, u, x, y);
       // plane units, from the vertex make_uv_plane starts at; one more than the bound, to be safe
@@ -159,6 +169,51 @@ TEST(UvPlane, RandomTrianglesEqualTheExactRationalsAwayFromTheBound) {
   EXPECT_GT(checked, 500'000);
   EXPECT_GT(parted, checked / 2 / 200) << "pixels where floor and floor_1_64 differ";
   EXPECT_LT(undecided, checked / 2 / 50) << "pixels within the plane's error bound of a boundary";
+}
+
+// uv_plane=exact is the rational at every covered pixel, under both uv_convert values, on random
+// triangles (fixed seed) with 12.4 positions and 14-bit UVs, pixel centres on and off the edges; and
+// fixed_16 parts from it at some pixels (its floored gradients land below a boundary the exact value
+// reaches), which is what the option tells apart.
+TEST(UvPlane, ExactPlaneIsTheRationalAtEveryPixel) {
+  std::mt19937_64 rng(53);
+  std::uniform_int_distribution<std::int32_t> pos(0, 16 * 64), uv(0, 16383), small(0, 48);
+  long checked = 0, fixed_parts = 0;
+  for (int n = 0; n < 3000; ++n) {
+    // every third triangle with whole-pixel vertices and small UVs: exact values on a boundary are common
+    const bool grid = n % 3 == 0;
+    auto at = [&] { return grid ? 16 * (pos(rng) / 16) : pos(rng); };
+    const std::array<gs::xy124, 3> p{{{at(), at()}, {at(), at()}, {at(), at()}}};
+    const std::array<std::int32_t, 3> u =
+        grid ? std::array{small(rng), small(rng), small(rng)} : std::array{uv(rng), uv(rng), uv(rng)};
+    const gs::triangle_setup t = gs::setup_triangle(p);
+    if (t.area2 == 0) continue;
+    for (const auto m : {gs::uv_convert_mode::floor, gs::uv_convert_mode::floor_1_64}) {
+      const gs::plane e = gs::make_uv_plane(t.v, {u[0], u[1], u[2]}, exact(m));
+      const gs::plane f = gs::make_uv_plane(t.v, {u[0], u[1], u[2]}, fixed(m));
+      gs::rasterise_triangle(t, {0, 0, 64, 64}, [&](int x, int y) {
+        const std::int64_t want = exact_texel(exact_u(t.v, u, x, y), m);
+        ASSERT_EQ(e.at(x, y), want) << "triangle " << n << " pixel (" << x << ", " << y << ")";
+        fixed_parts += f.at(x, y) != want;
+        ++checked;
+      });
+    }
+  }
+  EXPECT_GT(checked, 1'000'000);
+  EXPECT_GT(fixed_parts, 0) << "pixels where fixed_16 and the exact value differ";
+  EXPECT_LT(fixed_parts, checked / 20);
+}
+
+// The exact plane keeps U within the ±2^20 clamp's range at its largest inputs without overflow: vertex
+// UVs of ±2^20 (the perspective path's clamp) on a triangle spanning the 12.4 range.
+TEST(UvPlane, ExactPlaneAtTheLargestInputs) {
+  const std::array<gs::xy124, 3> p{{{0, 0}, {65535, 7}, {3, 65535}}};
+  const std::array<std::int32_t, 3> u{1 << 20, -(1 << 20), 12345};
+  const gs::plane e = gs::make_uv_plane(p, u, exact(gs::uv_convert_mode::floor_1_64));
+  for (const auto& [x, y] : {std::pair{0, 0}, {4095, 0}, {0, 4095}, {2000, 1000}, {1, 1}})
+    EXPECT_EQ(e.at(x, y), std::clamp<std::int64_t>(exact_texel(exact_u(p, u, x, y), gs::uv_convert_mode::floor_1_64),
+                                                   -(1 << 20), 1 << 20))
+        << x << ", " << y;
 }
 
 }  // namespace

@@ -27,8 +27,9 @@ constexpr gs::alpha_reg blend{gs::blend_colour::Cs, gs::blend_colour::Cd, gs::bl
                               gs::u8{}};
 constexpr pl::pass_regs textured_blend{true, true, gs::tfx::MODULATE, gs::tcc::RGBA, blend, true, 0};
 
-// Under each gouraud_setup and uv_convert (both sides take them from their options).
-void expect_the_renderers_frame(gs::gouraud_setup setup, gs::uv_convert_mode uv_convert = gs::uv_convert_mode::floor) {
+// Under each gouraud_setup, uv_convert and uv_plane (both sides take them from their options).
+void expect_the_renderers_frame(gs::gouraud_setup setup, gs::uv_convert_mode uv_convert = gs::uv_convert_mode::floor,
+                                gs::uv_plane_mode uv_plane = gs::uv_plane_mode::exact) {
   constexpr int W = 64, H = 64, T = 16;
   std::mt19937 rng(15);
   std::uniform_int_distribution<int> xy(-8 * 16, 72 * 16), uv(0, 40 * 16), byte(0, 255);
@@ -57,6 +58,7 @@ void expect_the_renderers_frame(gs::gouraud_setup setup, gs::uv_convert_mode uv_
   o.path = pl::raster_path::reference;
   o.model.setup = setup;
   o.model.uv_convert = uv_convert;
+  o.model.uv_plane = uv_plane;
   std::vector<std::uint32_t> z(W * H, 0), frame(W * H, 0x40808080u);
   std::vector<std::int32_t> visible(W * H, -1);
   pl::detail::band_renderer r(ps, o, pl::scissor{0, 0, W, H},
@@ -134,6 +136,10 @@ TEST(RendererMatch, RandomTexturedFlooredGouraudTrianglesGiveTheRenderersFrame) 
 }
 TEST(RendererMatch, RandomTexturedTrianglesWithTheUvBiasGiveTheRenderersFrame) {
   expect_the_renderers_frame(gs::gouraud_setup::per_pixel, gs::uv_convert_mode::floor_1_64);
+}
+TEST(RendererMatch, RandomTexturedTrianglesOnTheFixed16UvPlaneGiveTheRenderersFrame) {
+  expect_the_renderers_frame(gs::gouraud_setup::per_pixel_floor, gs::uv_convert_mode::floor_1_64,
+                             gs::uv_plane_mode::fixed_16);
 }
 
 }  // namespace

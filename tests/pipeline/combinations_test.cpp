@@ -56,16 +56,23 @@ std::string first_difference(const frame& a, const frame& b) {
   return a.colour.size() != b.colour.size() ? "frame sizes differ" : "dot layers or step 5's pixels differ";
 }
 
-class Combinations : public ::testing::TestWithParam<std::tuple<std::size_t, extra, gs::uv_convert_mode>> {};
+// Every pair of uv_plane and uv_convert values (the UV planes' two options).
+constexpr std::array<gs::uv_rule, 4> uv_rules{{{gs::uv_plane_mode::exact, gs::uv_convert_mode::floor},
+                                               {gs::uv_plane_mode::exact, gs::uv_convert_mode::floor_1_64},
+                                               {gs::uv_plane_mode::fixed_16, gs::uv_convert_mode::floor},
+                                               {gs::uv_plane_mode::fixed_16, gs::uv_convert_mode::floor_1_64}}};
+
+class Combinations : public ::testing::TestWithParam<std::tuple<std::size_t, extra, std::size_t>> {};
 
 TEST_P(Combinations, RenderOrRefuseAndAgree) {
-  const auto [size_index, e, uv_convert] = GetParam();
+  const auto [size_index, e, uv_index] = GetParam();
   const scene s = scene_for(sizes[size_index], e);
   const prepared_scene ps = prepare(s);
   int drawn = 0, refused = 0;
   for (const method m : gs_methods) {
     render_options base;
-    base.model.uv_convert = uv_convert;
+    base.model.uv_plane = uv_rules[uv_index].plane;
+    base.model.uv_convert = uv_rules[uv_index].convert;
     const frame expected = render(s, ps, m, base);  // value path, explicit clears, two buffers, SIMD
     ASSERT_EQ(expected.colour.size(), static_cast<std::size_t>(s.width) * static_cast<std::size_t>(s.height));
     std::vector<std::pair<render_options, frame>> memory_frames;  // what each dump must replay to
@@ -115,18 +122,19 @@ TEST_P(Combinations, RenderOrRefuseAndAgree) {
   EXPECT_EQ(drawn, 5 * (3 * 2 * 2 * 2 - 2 * 2 * 2 + 4));
 }
 
-std::string param_name(const ::testing::TestParamInfo<std::tuple<std::size_t, extra, gs::uv_convert_mode>>& p) {
-  const auto [i, e, uv] = p.param;
+std::string param_name(const ::testing::TestParamInfo<std::tuple<std::size_t, extra, std::size_t>>& p) {
+  const auto [i, e, uv_index] = p.param;
+  const gs::uv_rule uv = uv_rules[uv_index];
   static constexpr const char* extras[] = {"none", "floor", "spot"};
   return std::to_string(sizes[i][0]) + "x" + std::to_string(sizes[i][1]) + "_" + extras[static_cast<int>(e)] +
-         (uv == gs::uv_convert_mode::floor ? "" : "_uv_floor_1_64");
+         (uv.plane == gs::uv_plane_mode::exact ? "" : "_uv_fixed_16") +
+         (uv.convert == gs::uv_convert_mode::floor ? "" : "_uv_floor_1_64");
 }
 
 INSTANTIATE_TEST_SUITE_P(SizesAndExtras, Combinations,
                          ::testing::Combine(::testing::Range<std::size_t>(0, sizes.size()),
                                             ::testing::Values(extra::none, extra::floor, extra::spot),
-                                            ::testing::Values(gs::uv_convert_mode::floor,
-                                                              gs::uv_convert_mode::floor_1_64)),
+                                            ::testing::Range<std::size_t>(0, uv_rules.size())),
                          param_name);
 
 }  // namespace

@@ -34,11 +34,26 @@ const scene& shared_scene() {
 int ch(std::uint32_t w, int k) { return static_cast<int>((w >> (8 * k)) & 0xFF); }
 
 // The inputs one pixel sees, interpolated as the model documents it (gs::gouraud_triangle with the
-// triangle's top-left pixel as reference; UV planes), and the per-pixel formula in plain integers.
+// triangle's top-left pixel as reference; UV as the exact rational, floored), and the per-pixel formula in plain
+// integers.
 struct pixel_inputs {
   std::array<std::int32_t, 4> colour87{};  // 8.7 Gouraud r, g, b, a
   std::int32_t u16 = 0, v16 = 0;
 };
+
+// The 12.4 texel coordinate at pixel centre (x, y) under uv_plane=exact and uv_convert=floor (the
+// defaults): floor of the barycentric sum Σ E_k·a_k / area, the edge functions E_k in 12.4² units.
+std::int32_t exact_uv16(const std::array<gs::xy124, 3>& p, const std::array<std::int32_t, 3>& a, int x, int y) {
+  auto edge = [](gs::xy124 a0, gs::xy124 b0, std::int64_t cx, std::int64_t cy) {
+    return (std::int64_t{b0.x} - a0.x) * (cy - a0.y) - (std::int64_t{b0.y} - a0.y) * (cx - a0.x);
+  };
+  const std::int64_t px = std::int64_t{x} * 16, py = std::int64_t{y} * 16;
+  std::int64_t area = edge(p[0], p[1], p[2].x, p[2].y);
+  std::int64_t n = edge(p[1], p[2], px, py) * a[0] + edge(p[2], p[0], px, py) * a[1] + edge(p[0], p[1], px, py) * a[2];
+  if (area < 0) area = -area, n = -n;
+  const std::int64_t q = n / area - (n % area != 0 && n < 0 ? 1 : 0);
+  return static_cast<std::int32_t>(std::clamp<std::int64_t>(q, -(1 << 20), 1 << 20));
+}
 
 pixel_inputs inputs_at(const prepared_triangle& t, const std::array<gs::rgba8, 3>& c,
                        const std::array<std::array<std::int32_t, 2>, 3>& uv, int x, int y) {
@@ -54,8 +69,8 @@ pixel_inputs inputs_at(const prepared_triangle& t, const std::array<gs::rgba8, 3
       gs::gouraud_colour(gp, x + xy_offset_pixels, y + xy_offset_pixels, gs::model_options{}.setup);
   pixel_inputs in;
   in.colour87 = {f.r.value(), f.g.value(), f.b.value(), f.a.value()};
-  in.u16 = make_plane(t.setup.v, {uv[0][0], uv[1][0], uv[2][0]}, -(1 << 20), 1 << 20).at(x, y);
-  in.v16 = make_plane(t.setup.v, {uv[0][1], uv[1][1], uv[2][1]}, -(1 << 20), 1 << 20).at(x, y);
+  in.u16 = exact_uv16(t.setup.v, {uv[0][0], uv[1][0], uv[2][0]}, x, y);
+  in.v16 = exact_uv16(t.setup.v, {uv[0][1], uv[1][1], uv[2][1]}, x, y);
   return in;
 }
 

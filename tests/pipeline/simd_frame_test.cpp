@@ -1,7 +1,7 @@
 // Whole frames through the SIMD pixel pipeline (render_options::simd, gs_simd) equal the frames of the
 // scalar gs::pixel_pipeline (--scalar) bit for bit: every method × rasteriser path × storage (value
 // level, memory path, both z-trick DPB clears) × filter × specular, under every value of the model
-// options the passes' units read (tfx_rounding, gouraud_fraction, blend_shift, uv_convert; gouraud_setup:
+// options the passes' units read (tfx_rounding, gouraud_fraction, blend_shift, uv_convert, uv_plane; gouraud_setup:
 // plane_steps, per_pixel_floor, per_pixel), on the embedded scene at 160×140 and at 1 and 3 threads.
 #include <gtest/gtest.h>
 
@@ -53,6 +53,9 @@ TEST_P(SimdFrame, EqualsTheScalarFrameUnderEveryPathStorageAndOption) {
         // bit 0 of the variant's Gray code: floor_1_64 in half the variants, spread over the other options
         o.model.uv_convert =
             ((variant ^ (variant >> 1)) & 1) != 0 ? gs::uv_convert_mode::floor_1_64 : gs::uv_convert_mode::floor;
+        // bit 1 of the Gray code: the fixed_16 UV plane in half the variants, every pair with uv_convert
+        o.model.uv_plane =
+            ((variant ^ (variant >> 1)) & 2) != 0 ? gs::uv_plane_mode::fixed_16 : gs::uv_plane_mode::exact;
         o.bilinear = variant % 3 == 1;
         o.specular = variant % 5 == 2;
         o.specular_power = o.specular ? 8.0 : 1.0;

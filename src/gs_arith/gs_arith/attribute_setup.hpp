@@ -12,7 +12,7 @@
 //   `offset` whole pixels (XYOFFSET's whole-pixel part; the renderer's 2048), so that vertices left
 //   of or above the window are not clamped.
 // - U and V are 12.4 texel planes clamped to ±2^20 (MODEL-PLANE-16, rasteriser.hpp), converted to
-//   the texel coordinate under the option uv_convert (uv_plane.hpp).
+//   the texel coordinate under the options uv_plane and uv_convert (uv_plane.hpp).
 #pragma once
 
 #include <algorithm>
@@ -43,7 +43,7 @@ struct triangle_attributes {
 inline triangle_attributes setup_attributes(const triangle_setup& t, const std::array<rgba8, 3>& c,
                                             const std::array<std::array<std::int32_t, 2>, 3>& uv16,
                                             std::int32_t offset_x, std::int32_t offset_y, gouraud_setup setup,
-                                            uv_convert_mode uv_convert, std::int32_t clip_x0 = 0) {
+                                            uv_rule uv, std::int32_t clip_x0 = 0) {
   triangle_attributes a;
   a.offset_x = offset_x;
   a.offset_y = offset_y;
@@ -60,8 +60,8 @@ inline triangle_attributes setup_attributes(const triangle_setup& t, const std::
   if (const auto g = gouraud_triangle(gv[0], gv[1], gv[2], x_ref + offset_x, y_ref + offset_y)) a.colour = *g;
   a.colour.clip_x0 = clip_x0 + offset_x;
   a.colour.lane_origin = offset_x;
-  a.u = make_uv_plane(t.v, {uv16[0][0], uv16[1][0], uv16[2][0]}, uv_convert);
-  a.v = make_uv_plane(t.v, {uv16[0][1], uv16[1][1], uv16[2][1]}, uv_convert);
+  a.u = make_uv_plane(t.v, {uv16[0][0], uv16[1][0], uv16[2][0]}, uv);
+  a.v = make_uv_plane(t.v, {uv16[0][1], uv16[1][1], uv16[2][1]}, uv);
   return a;
 }
 

@@ -3,8 +3,8 @@
 // readable reference. At (x + 1, y) after (x, y) each value comes from the last one by additions; any
 // other move starts again from the reference formulas. Equal to them at every pixel: each plane is
 // linear in x along a row, so its numerator grows by a constant, and floor(n / d) with its remainder
-// follows n exactly (floor_division_walk); truncation toward zero is the floor plus one for a negative
-// inexact quotient. Checked pixel for pixel against the reference on random triangles under every
+// follows n exactly (floor_division_walk; an exact UV plane too, plane_walk); truncation toward zero is the floor plus
+// one for a negative inexact quotient. Checked pixel for pixel against the reference on random triangles under every
 // set-up (tests/gs_arith/attribute_walk_test.cpp) and on whole frames (pipeline_simd_frame: the SIMD
 // path walks, --scalar does not).
 // gouraud_setup::pcsx2_rows_4 / _8 (row-start dependent, not a plane) are evaluated at every pixel.
@@ -35,6 +35,22 @@ struct floor_division_walk {
   }
   // trunc(n / d): the floor, plus one when n < 0 (q < 0) and d does not divide n.
   constexpr std::int64_t toward_zero() const noexcept { return q + (q < 0 && r != 0 ? 1 : 0); }
+};
+
+// plane::quotient along a row: the numerator n = base + dx·x + dy·y, and for an exact plane (den > 0)
+// floor(n / den) with its remainder, stepped without a division.
+struct plane_walk {
+  std::int64_t n = 0;
+  floor_division_walk w;
+  constexpr void start(const plane& p, int x, int y) noexcept {
+    n = p.base + p.dx * x + p.dy * y;
+    if (p.den != 0) w.start(n, p.dx, p.den);
+  }
+  constexpr void step(const plane& p) noexcept {
+    n += p.dx;
+    if (p.den != 0) w.step();
+  }
+  constexpr std::int64_t value(const plane& p) const noexcept { return p.den == 0 ? n >> 16 : p.lifted(w.q, w.r); }
 };
 
 class attribute_walker {
@@ -73,8 +89,8 @@ class attribute_walker {
     const bool inside = unclamped(a_.u, u_, n - 1) && unclamped(a_.v, v_, n - 1);
     for (int k = 1; k < n; ++k) {
       step();
-      const std::int32_t u = inside ? static_cast<std::int32_t>(u_ >> 16) : clamped(a_.u, u_);
-      const std::int32_t v = inside ? static_cast<std::int32_t>(v_ >> 16) : clamped(a_.v, v_);
+      const std::int32_t u = inside ? static_cast<std::int32_t>(u_.value(a_.u)) : clamped(a_.u, u_);
+      const std::int32_t v = inside ? static_cast<std::int32_t>(v_.value(a_.v)) : clamped(a_.v, v_);
       f(k, values{flat_ ? cf_ : colour(x0 + k, y), u, v});
     }
     x_ = x0 + n - 1;
@@ -97,8 +113,8 @@ class attribute_walker {
     return k > -65536 && k <= 65536;
   }
   constexpr void start(int x, int y) noexcept {
-    u_ = a_.u.base + a_.u.dx * x + a_.u.dy * y;
-    v_ = a_.v.base + a_.v.dx * x + a_.v.dy * y;
+    u_.start(a_.u, x, y);
+    v_.start(a_.v, x, y);
     const gouraud_plane& p = a_.colour;
     const gouraud_exact_plane& e = p.exact;
     const std::int64_t xo = std::int64_t{x} + a_.offset_x, yo = std::int64_t{y} + a_.offset_y;
@@ -124,7 +140,7 @@ class attribute_walker {
     }
   }
   constexpr void step() noexcept {
-    u_ += a_.u.dx, v_ += a_.v.dx;
+    u_.step(a_.u), v_.step(a_.v);
     if (flat_) return;
     for (std::size_t i = 0; i < 4; ++i) {
       if (a_.setup == gouraud_setup::plane_steps) {
@@ -152,14 +168,14 @@ class attribute_walker {
     }
     return {c[0], c[1], c[2], c[3]};
   }
-  // plane::at from the accumulated base + dx·x + dy·y.
-  static constexpr std::int32_t clamped(const plane& p, std::int64_t acc) noexcept {
-    const std::int64_t v = acc >> 16;
+  // plane::at from the walked value.
+  static constexpr std::int32_t clamped(const plane& p, const plane_walk& w) noexcept {
+    const std::int64_t v = w.value(p);
     return static_cast<std::int32_t>(v < p.lo ? p.lo : v > p.hi ? p.hi : v);
   }
-  // Whether acc >> 16 and (acc + steps·dx) >> 16 both lie in [lo, hi] (then every step between does).
-  static constexpr bool unclamped(const plane& p, std::int64_t acc, int steps) noexcept {
-    const std::int64_t first = acc >> 16, last = (acc + p.dx * steps) >> 16;
+  // Whether the value here and `steps` pixels on both lie in [lo, hi] (then every step between does).
+  static constexpr bool unclamped(const plane& p, const plane_walk& w, int steps) noexcept {
+    const std::int64_t first = w.value(p), last = p.quotient(w.n + p.dx * steps);
     return first >= p.lo && first <= p.hi && last >= p.lo && last <= p.hi;
   }
 
@@ -168,7 +184,7 @@ class attribute_walker {
   fragment_colour cf_{};  // the colour of a flat plane
   int x_ = 0, y_ = 0;
   bool started_ = false;
-  std::int64_t u_ = 0, v_ = 0;
+  plane_walk u_, v_;
   std::array<std::int64_t, 4> units_{};
   std::array<floor_division_walk, 4> walk_{};
 };

@@ -35,6 +35,7 @@
 #include "fixed/rounding.hpp"
 #include "gs_arith/colour.hpp"
 #include "gs_arith/options.hpp"
+#include "gs_arith/rasteriser.hpp"
 #include "gs_arith/texture_function.hpp"
 
 namespace gs {
@@ -177,9 +178,6 @@ constexpr plane_fraction exact_plane_fraction(const gouraud_exact_plane& e, int 
   const std::int64_t px = clamp_distance(x) * 16 - e.x0, py = clamp_distance(y) * 16 - e.y0;
   const std::int64_t num = e.c0[i].value() * e.det + (e.nx[i] * px + e.ny[i] * py) * 128;
   return e.det < 0 ? plane_fraction{-num, -e.det} : plane_fraction{num, e.det};
-}
-constexpr std::int64_t floor_div(std::int64_t num, std::int64_t den) noexcept {  // den > 0
-  return num >= 0 ? num / den : -((-num + den - 1) / den);
 }
 
 // gouraud_setup::per_pixel_level (parallel-gs gs/shaders/ubershader.comp compute_combined_color: the

@@ -54,6 +54,12 @@ const std::vector<option_info>& option_catalogue() {
        "floor: no bias before the floor of the interpolated UV (PCSX2 SW, DobieStation, Play!: their own "
        "interpolation floored or truncated); floor_1_64: parallel-gs sample_texture floor(uv*16 + 1/64) "
        "(UV_EPSILON_PRE_SNAP) (1). No recording here of an interpolated UV near a texel boundary."},
+      {"uv_plane",
+       {"exact", "fixed_16"},
+       "exact: the rational UV at the pixel centre; DobieStation render_half_triangle (float32 steps), Play! "
+       "(GPU float), parallel-gs compute_combined_color (float barycentrics) (3 sources, each up to its float "
+       "rounding); fixed_16: 16 fraction bits, floored gradients, nearest to PCSX2 SW's 16.16 steps (1). No "
+       "recording here of an interpolated UV near a texel boundary."},
   };
   return rows;
 }
@@ -118,6 +124,8 @@ std::optional<std::string> set_option(model_options& o, std::string_view name, s
               "trunc_16_16", stq_convert_mode::trunc_16_16);
   else if (name == "uv_convert")
     ok = pick(o.uv_convert, value, "floor", uv_convert_mode::floor, "floor_1_64", uv_convert_mode::floor_1_64);
+  else if (name == "uv_plane")
+    ok = pick(o.uv_plane, value, "exact", uv_plane_mode::exact, "fixed_16", uv_plane_mode::fixed_16);
   else if (name == "gouraud_setup") {
     for (int k = 0; k < static_cast<int>(std::size(setup_names)); ++k)
       if (value == setup_names[k]) o.setup = static_cast<gouraud_setup>(k), ok = true;
@@ -162,6 +170,7 @@ std::string_view option_value(const model_options& o, std::string_view name) {
     return names[static_cast<int>(o.stq_convert)];
   }
   if (name == "uv_convert") return o.uv_convert == uv_convert_mode::floor ? "floor" : "floor_1_64";
+  if (name == "uv_plane") return o.uv_plane == uv_plane_mode::exact ? "exact" : "fixed_16";
   return {};
 }
 

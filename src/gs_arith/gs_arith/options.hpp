@@ -98,12 +98,18 @@ enum class stq_range_mode { saturate_2047, x86_int32 };
 enum class stq_convert_mode { truncate, floor_1_64, trunc_16_16 };
 
 // A UV plane's value at a pixel as the 12.4 texel coordinate (PRIM.FST = 1, sprites, and FST = 0
-// with one Q, which the model interpolates as UV; gs_arith/uv_plane.hpp; docs/evidence.md R12). The
-// plane carries 16 fraction bits below 1/16 texel (MODEL-PLANE-16, rasteriser.hpp).
+// with one Q, which the model interpolates as UV; gs_arith/uv_plane.hpp; docs/evidence.md R12), the
+// plane as uv_plane interpolates it.
 // floor: floor(16·U) (default: no bias; what the other sources' own interpolations do, R12).
 // floor_1_64: floor(16·U + 1/64), a bias of 1/64 of a sixteenth before the floor (parallel-gs
 //   ubershader.comp sample_texture, UV_EPSILON_PRE_SNAP, applied per pixel to the interpolated UV).
 enum class uv_convert_mode { floor, floor_1_64 };
+// How a UV plane is interpolated (the same planes as uv_convert; docs/evidence.md R13).
+// exact: the rational value at the pixel centre (default: DobieStation render_half_triangle, Play!,
+//   parallel-gs interpolate in float, which is this value up to float rounding: 3 sources).
+// fixed_16: 16 fraction bits below 1/16 texel with floored gradients (MODEL-PLANE-16, rasteriser.hpp;
+//   the nearest value to PCSX2 SW's 16.16 UV steps, GSSetupPrimCodeGenerator: 1 source).
+enum class uv_plane_mode { exact, fixed_16 };
 
 struct model_options {
   tfx_rounding tfx = tfx_rounding::floor;
@@ -118,6 +124,7 @@ struct model_options {
   stq_range_mode stq_range = stq_range_mode::saturate_2047;
   stq_convert_mode stq_convert = stq_convert_mode::truncate;
   uv_convert_mode uv_convert = uv_convert_mode::floor;
+  uv_plane_mode uv_plane = uv_plane_mode::exact;
 
   friend constexpr bool operator==(const model_options&, const model_options&) = default;
 };

@@ -64,8 +64,8 @@ stq_sampler make_stq_sampler(const stq_triangle& t, unsigned TW, unsigned TH, co
     const auto uv = stq_vertex_texel(t.a[k], TW, TH, o);
     u[k] = uv[0], v[k] = uv[1];
   }
-  s.u = make_uv_plane(t.v, u, o.uv_convert);
-  s.v = make_uv_plane(t.v, v, o.uv_convert);
+  s.u = make_uv_plane(t.v, u, uv_rule_of(o));
+  s.v = make_uv_plane(t.v, v, uv_rule_of(o));
   return s;
 }
 

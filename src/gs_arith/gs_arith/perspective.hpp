@@ -61,7 +61,7 @@ inline std::array<std::int32_t, 2> perspective_texel(const stq_triangle& t, int 
 // The 12.4 texel coordinates a triangle drawn with FST = 0 samples, the one rule for the packet
 // interpreter (gs_packets/draw.cpp) and the renderer (pipeline): per pixel (perspective_texel) when Q
 // differs between the vertices; with one Q, S/Q and T/Q converted per vertex (stq_texel, clamped to the
-// UV planes' ±2^20, MODEL-PLANE-16) and interpolated as UV are (make_uv_plane, uv_convert): PCSX2 SW
+// UV planes' ±2^20) and interpolated as UV are (make_uv_plane, uv_plane and uv_convert): PCSX2 SW
 // ConvertVertexBuffer's `q_div` path and parallel-gs triangle_setup.comp with a fixed LOD (2 sources),
 // a model choice.
 struct stq_sampler {

@@ -19,7 +19,8 @@ const std::vector<profile>& profiles() {
         {"gouraud_setup", "pcsx2_rows_8"},
         {"stq_range", "x86_int32"},
         {"stq_convert", "trunc_16_16"},
-        {"uv_convert", "floor"}}},
+        {"uv_convert", "floor"},
+        {"uv_plane", "fixed_16"}}},
       {"dobiestation",
        "DobieStation src/core/gsthread.cpp (interpreter: tex_lookup, draw_pixel)",
        {{"tfx_rounding", "floor"},
@@ -33,7 +34,8 @@ const std::vector<profile>& profiles() {
         {"gouraud_setup", "per_pixel_floor"},
         {"stq_range", "x86_int32"},
         {"stq_convert", "truncate"},
-        {"uv_convert", "floor"}}},
+        {"uv_convert", "floor"},
+        {"uv_plane", "exact"}}},
       {"play",
        "Play! Source/gs/GSH_Vulkan (GSH_VulkanDrawDesktop.cpp fragment shader, GSH_VulkanDrawUtils.cpp)",
        {{"tfx_rounding", "truncate"},
@@ -47,7 +49,8 @@ const std::vector<profile>& profiles() {
         {"gouraud_setup", "per_pixel_floor"},
         {"stq_range", "saturate_2047"},
         {"stq_convert", "truncate"},
-        {"uv_convert", "floor"}}},
+        {"uv_convert", "floor"},
+        {"uv_plane", "exact"}}},
       {"parallel-gs",
        "parallel-gs gs/shaders/ubershader.comp (compute_combined_color, alpha_blend, shade_resolve), "
        "triangle_setup.comp; rows not read keep the model default",
@@ -62,7 +65,8 @@ const std::vector<profile>& profiles() {
         {"gouraud_setup", "per_pixel_level"},
         {"stq_range", "saturate_2047"},
         {"stq_convert", "floor_1_64"},
-        {"uv_convert", "floor_1_64"}}},
+        {"uv_convert", "floor_1_64"},
+        {"uv_plane", "exact"}}},
   };
   return rows;
 }

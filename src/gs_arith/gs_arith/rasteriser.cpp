@@ -7,7 +7,8 @@ namespace gs {
 
 namespace {
 
-std::int64_t floor_div(std::int64_t a, std::int64_t b) {
+// floor(a / b) for b of either sign.
+std::int64_t floor_div_signed(std::int64_t a, std::int64_t b) {
   std::int64_t q = a / b;
   if ((a % b != 0) && ((a < 0) != (b < 0))) --q;
   return q;
@@ -68,10 +69,28 @@ plane make_plane(const std::array<xy124, 3>& p, const std::array<std::int32_t, 3
   // kept with 16 extra fraction bits.
   constexpr std::int64_t one = std::int64_t{1} << 16;
   plane pl;
-  pl.dx = floor_div((da1 * y2 - da2 * y1) * 16 * one, det);
-  pl.dy = floor_div((da2 * x1 - da1 * x2) * 16 * one, det);
+  pl.dx = floor_div_signed((da1 * y2 - da2 * y1) * 16 * one, det);
+  pl.dy = floor_div_signed((da2 * x1 - da1 * x2) * 16 * one, det);
   // value(0,0) = a0 − gradient·(p0 in pixels), p0 in 12.4 so divide by 16.
-  pl.base = a[0] * one - floor_div(pl.dx * p[0].x + pl.dy * p[0].y, 16);
+  pl.base = a[0] * one - floor_div_signed(pl.dx * p[0].x + pl.dy * p[0].y, 16);
+  pl.lo = lo;
+  pl.hi = hi;
+  return pl;
+}
+
+plane make_exact_plane(const std::array<xy124, 3>& p, const std::array<std::int32_t, 3>& a, std::int32_t lo,
+                       std::int32_t hi) {
+  const std::int64_t det = cross(p[0], p[1], p[2]);
+  if (det == 0) throw std::logic_error("make_exact_plane: zero-area triangle");
+  const std::int64_t da1 = a[1] - a[0], da2 = a[2] - a[0];
+  const std::int64_t x1 = p[1].x - p[0].x, y1 = p[1].y - p[0].y, x2 = p[2].x - p[0].x, y2 = p[2].y - p[0].y;
+  // value(X, Y) = a0 + (gx·(X − X0) + gy·(Y − Y0)) / det at 12.4 position (X, Y); pixel x is at X = 16x.
+  const std::int64_t gx = da1 * y2 - da2 * y1, gy = da2 * x1 - da1 * x2, sign = det < 0 ? -1 : 1;
+  plane pl;
+  pl.den = sign * det;
+  pl.dx = sign * gx * 16;
+  pl.dy = sign * gy * 16;
+  pl.base = sign * (a[0] * det - gx * p[0].x - gy * p[0].y);
   pl.lo = lo;
   pl.hi = hi;
   return pl;

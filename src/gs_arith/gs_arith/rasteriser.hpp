@@ -8,11 +8,12 @@
 //   edge is inside only for a left edge (interior towards +x) or a horizontal top edge (interior
 //   towards +y); `covers` states it and the tests check it against the digest's span rule.
 // - Sprites: ceil of both corners, right and bottom excluded.
-// - Attributes (Gouraud RGBA in 8.7, UV in 12.4 texels, Z) are planes evaluated at the pixel
-//   centre: value = (base + dx·x + dy·y) >> 16, the gradients set up per triangle by exact integer
-//   division (floor) with 16 extra fraction bits, the result clamped to the attribute's range. The
-//   GS steps the same planes with its own fraction width (SW: per pixel in 8.7; confidence low for
-//   the exact low bits, which no recording covers). Model choice, stated: MODEL-PLANE-16.
+// - Attributes (UV in 12.4 texels, Z) are planes evaluated at the pixel centre. Z: value = (base +
+//   dx·x + dy·y) >> 16, the gradients set up per triangle by exact integer division (floor) with 16
+//   extra fraction bits, the result clamped to the attribute's range. The GS steps the same planes
+//   with its own fraction width (SW: per pixel in 8.7; confidence low for the exact low bits, which no
+//   recording covers). Model choice, stated: MODEL-PLANE-16. UV: that plane or the exact rational one
+//   (make_exact_plane), the option uv_plane (docs/evidence.md R13). Gouraud colour: gouraud.hpp.
 // - Back-face culling is the VU1's job on the PS2; here triangles whose screen area is ≥ 0
 //   (clockwise in the y-down frame = facing away) are dropped when culling is on, as are
 //   zero-area (edge-on) triangles, which cover no pixel centre anyway.
@@ -39,20 +40,42 @@ struct scissor {
 // ceil(v / 16) for a 12.4 value (the first pixel centre at or after v).
 constexpr int ceil_124(std::int32_t v) noexcept { return static_cast<int>((static_cast<std::int64_t>(v) + 15) >> 4); }
 
-// A linear attribute over the screen: value(x, y) = (base + dx·x + dy·y) >> 16 at pixel (x, y),
-// then clamped to [lo, hi].
+// floor(num / den) for den > 0.
+constexpr std::int64_t floor_div(std::int64_t num, std::int64_t den) noexcept {
+  return num >= 0 ? num / den : -((-num + den - 1) / den);
+}
+
+// A linear attribute over the screen, value(x, y) = floor(n / d) for n = base + dx·x + dy·y at pixel
+// (x, y), clamped to [lo, hi]. Two forms (make_plane, make_exact_plane):
+// - den == 0: fixed point, d = 2^16 (16 fraction bits below the attribute's unit; the value is n >> 16);
+// - den > 0: exact, d = den; n / d is the attribute's rational value at the pixel centre. lift_1_64 adds
+//   1/64 of the unit before the floor (uv_plane.hpp: the fixed form carries that bias in base instead).
 struct plane {
   std::int64_t base = 0, dx = 0, dy = 0;
   std::int32_t lo = 0, hi = 0;
+  std::int64_t den = 0;
+  bool lift_1_64 = false;
+  // The exact form's value from q = floor(n / den) and r = n − q·den: floor(n / den + 1/64) when lifted.
+  constexpr std::int64_t lifted(std::int64_t q, std::int64_t r) const noexcept {
+    return lift_1_64 && 64 * r >= 63 * den ? q + 1 : q;
+  }
+  // floor(n / d) before the clamp.
+  constexpr std::int64_t quotient(std::int64_t n) const noexcept {
+    if (den == 0) return n >> 16;
+    const std::int64_t q = floor_div(n, den);
+    return lifted(q, n - q * den);
+  }
   constexpr std::int32_t at(int x, int y) const noexcept {
-    const std::int64_t v = (base + dx * x + dy * y) >> 16;
-    return static_cast<std::int32_t>(std::clamp<std::int64_t>(v, lo, hi));
+    return static_cast<std::int32_t>(std::clamp<std::int64_t>(quotient(base + dx * x + dy * y), lo, hi));
   }
 };
 
 // The plane through three vertex values a[i] (in the attribute's own fixed-point unit) at the
 // three 12.4 positions; `area2` is the doubled signed area in 12.4² units (non-zero).
 plane make_plane(const std::array<xy124, 3>& p, const std::array<std::int32_t, 3>& a, std::int32_t lo, std::int32_t hi);
+// The same plane in exact form: den = |doubled area| (12.4² units), n / den the rational value.
+plane make_exact_plane(const std::array<xy124, 3>& p, const std::array<std::int32_t, 3>& a, std::int32_t lo,
+                       std::int32_t hi);
 
 // Triangle set-up: the three edge functions oriented so the interior is positive.
 struct triangle_setup {

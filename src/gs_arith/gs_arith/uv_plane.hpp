@@ -13,12 +13,15 @@
 //   UV `compute_combined_color` interpolates ("Want a soft-floor here, not round behavior"; "Exact
 //   rounding on hardware is somwhat unclear").
 //
-// Where it is applied: a UV plane's value at a pixel, P = base + dx·x + dy·y, is in units of 2^-16 of
-// a sixteenth of a texel, and every evaluator takes the texel coordinate as P >> 16 (plane::at, the
-// row walk gs::attribute_walker that the SIMD path uses, the texture streamer's footprint). The bias
-// b is added to the plane's base here, once: floor((P + b) / 2^16) = ((base + b) + dx·x + dy·y) >> 16
-// is an identity of integers, so each evaluator applies floor(16·U + 1/64) at every pixel without a
-// second copy of the rule (tests/gs_arith/uv_plane_test.cpp checks it against exact rationals).
+// How the plane is interpolated (option uv_plane, docs/evidence.md R13): `exact` keeps U as its
+// rational value at the pixel centre (make_exact_plane), so floor(16·U + b) is exact and the bias is the
+// plane's lift_1_64; `fixed_16` is MODEL-PLANE-16 (make_plane: 16 fraction bits below a sixteenth,
+// gradients floored, so a value may land just below the exact one), whose value at a pixel, P = base +
+// dx·x + dy·y, every evaluator takes as P >> 16 (plane::at, the row walk gs::attribute_walker that the
+// SIMD path uses, the texture streamer's footprint). There the bias b is added to the plane's base,
+// once: floor((P + b) / 2^16) = ((base + b) + dx·x + dy·y) >> 16 is an identity of integers, so each
+// evaluator applies floor(16·U + 1/64) at every pixel without a second copy of the rule
+// (tests/gs_arith/uv_plane_test.cpp checks both forms against exact rationals).
 #pragma once
 
 #include <array>
@@ -35,14 +38,27 @@ constexpr std::int64_t uv_convert_bias(uv_convert_mode m) noexcept {
 }
 static_assert(uv_convert_bias(uv_convert_mode::floor_1_64) * 64 == std::int64_t{1} << 16, "1/64 of a sixteenth");
 
-// The 12.4 texel coordinate of a UV plane value P (plane units, before the ±2^20 clamp): floor((P + b) / 2^16).
+// The 12.4 texel coordinate of a fixed_16 UV plane value P (plane units, before the ±2^20 clamp):
+// floor((P + b) / 2^16).
 constexpr std::int64_t uv_texel(std::int64_t p, uv_convert_mode m) noexcept { return (p + uv_convert_bias(m)) >> 16; }
 
+// The two UV options, as every path that samples through UV planes reads them.
+struct uv_rule {
+  uv_plane_mode plane = uv_plane_mode::exact;
+  uv_convert_mode convert = uv_convert_mode::floor;
+};
+constexpr uv_rule uv_rule_of(const model_options& o) noexcept { return {o.uv_plane, o.uv_convert}; }
+
 // The UV plane through three vertex coordinates uv16 (12.4 texels) at the 12.4 positions p (non-zero
-// area), clamped to ±2^20 (MODEL-PLANE-16), whose plane::at(x, y) is uv_texel of the unbiased plane.
-inline plane make_uv_plane(const std::array<xy124, 3>& p, const std::array<std::int32_t, 3>& uv16, uv_convert_mode m) {
+// area), clamped to ±2^20, whose plane::at(x, y) is the 12.4 texel coordinate under `r`.
+inline plane make_uv_plane(const std::array<xy124, 3>& p, const std::array<std::int32_t, 3>& uv16, uv_rule r) {
+  if (r.plane == uv_plane_mode::exact) {
+    plane pl = make_exact_plane(p, uv16, -(1 << 20), 1 << 20);
+    pl.lift_1_64 = r.convert == uv_convert_mode::floor_1_64;
+    return pl;
+  }
   plane pl = make_plane(p, uv16, -(1 << 20), 1 << 20);
-  pl.base += uv_convert_bias(m);
+  pl.base += uv_convert_bias(r.convert);
   return pl;
 }
 

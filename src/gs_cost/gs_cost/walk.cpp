@@ -112,8 +112,8 @@ walk_counts walk_primitive(const packets::draw_registers& r, std::span<const pac
     if (m.textured) {
       const auto ta = texel_124(v[0], m.fst, tw, th), tb = texel_124(v[1], m.fst, tw, th);
       const std::array<xy124, 3> corners{a, xy124{b.x, a.y}, xy124{a.x, b.y}};
-      pu = gs::make_uv_plane(corners, {ta[0], tb[0], ta[0]}, gs::model_options{}.uv_convert);
-      pv = gs::make_uv_plane(corners, {ta[1], ta[1], tb[1]}, gs::model_options{}.uv_convert);
+      pu = gs::make_uv_plane(corners, {ta[0], tb[0], ta[0]}, gs::uv_rule_of(gs::model_options{}));
+      pv = gs::make_uv_plane(corners, {ta[1], ta[1], tb[1]}, gs::uv_rule_of(gs::model_options{}));
     }
   } else {
     const triangle_setup t = setup_triangle({window(v[0]), window(v[1]), window(v[2])});
@@ -135,8 +135,8 @@ walk_counts walk_primitive(const packets::draw_registers& r, std::span<const pac
         const auto tx = texel_124(v[k], m.fst, tw, th);
         us[k] = tx[0], vs[k] = tx[1];
       }
-      pu = gs::make_uv_plane(t.v, us, gs::model_options{}.uv_convert);
-      pv = gs::make_uv_plane(t.v, vs, gs::model_options{}.uv_convert);
+      pu = gs::make_uv_plane(t.v, us, gs::uv_rule_of(gs::model_options{}));
+      pv = gs::make_uv_plane(t.v, vs, gs::uv_rule_of(gs::model_options{}));
     }
   }
   if (y_first > y_last) return c;

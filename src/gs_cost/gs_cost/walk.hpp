@@ -9,7 +9,7 @@
 // A band's blocks are those of the hull of its two rows' spans (a triangle's rows are each one span);
 // the texel of a pixel is the top-left texel of its footprint (u >> 4 nearest, (u - 8) >> 4 bilinear)
 // through CLAMP, from the UV plane through the vertices (uv_plane.hpp make_uv_plane, under the default
-// uv_convert), not the renderer's full attribute set-up: the page it falls in, not its value, is what
+// uv_plane and uv_convert), not the renderer's full attribute set-up: the page it falls in, not its value, is what
 // is counted.
 // The page state carries over from one primitive to the next (the GS keeps its page open).
 #pragma once

@@ -259,8 +259,8 @@ std::uint64_t draw_primitive(mem::local_memory& m, const draw_registers& r, cons
     if (lo.x == hi.x || lo.y == hi.y) return 0;
     // U varies along x only and V along y only: the planes through the corners (a, U0), (b.x, U1), (b.y, V1).
     const std::array<xy124, 3> corners{a, xy124{b.x, a.y}, xy124{a.x, b.y}};
-    const plane pu = make_uv_plane(corners, {ta[0], tb2[0], ta[0]}, o.uv_convert);
-    const plane pv = make_uv_plane(corners, {ta[1], ta[1], tb2[1]}, o.uv_convert);
+    const plane pu = make_uv_plane(corners, {ta[0], tb2[0], ta[0]}, uv_rule_of(o));
+    const plane pv = make_uv_plane(corners, {ta[1], ta[1], tb2[1]}, uv_rule_of(o));
     rasterise_sprite(lo, hi, d.clip, [&](int x, int y) { shade(x, y, cf, pu.at(x, y), pv.at(x, y), v[1].Z); });
     return pixels;
   }
@@ -275,7 +275,7 @@ std::uint64_t draw_primitive(mem::local_memory& m, const draw_registers& r, cons
                                  static_cast<unsigned>(tex.TW.value()), static_cast<unsigned>(tex.TH.value()), o)
           : gs::stq_sampler{};
   const triangle_attributes a = setup_attributes(t, {v[0].colour, v[1].colour, v[2].colour}, uv, d.ofx >> 4, d.ofy >> 4,
-                                                 o.setup, o.uv_convert, d.clip.x0);
+                                                 o.setup, uv_rule_of(o), d.clip.x0);
   // Z as a plane (MODEL-PLANE-16, rasteriser.hpp); Z above 24 bits through Z / 256 (the plane's
   // 32-bit range), low 8 bits 0: a model limit, stated.
   const bool wide = std::max({v[0].Z, v[1].Z, v[2].Z}) > 0xFFFFFFu;

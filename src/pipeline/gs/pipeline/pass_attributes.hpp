@@ -32,8 +32,8 @@ std::vector<tri_attr> attributes(const std::vector<prepared_triangle>& triangles
       const auto [u, v] = uv(tri, k);
       uv16[static_cast<std::size_t>(k)] = {u, v};
     }
-    out[t] =
-        gs::setup_attributes(tri.setup, c, uv16, xy_offset_pixels, xy_offset_pixels, model.setup, model.uv_convert);
+    out[t] = gs::setup_attributes(tri.setup, c, uv16, xy_offset_pixels, xy_offset_pixels, model.setup,
+                                  gs::uv_rule_of(model));
   }
   return out;
 }

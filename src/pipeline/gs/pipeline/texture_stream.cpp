@@ -106,8 +106,8 @@ texture_streamer::texture_streamer(const prepared_scene& ps, const gs::model_opt
       first_(first_page),
       end_(end_page) {
   for (const prepared_triangle& t : ps.triangles)
-    uv_.push_back(
-        gs::setup_attributes(t.setup, {}, t.uv16, xy_offset_pixels, xy_offset_pixels, model.setup, model.uv_convert));
+    uv_.push_back(gs::setup_attributes(t.setup, {}, t.uv16, xy_offset_pixels, xy_offset_pixels, model.setup,
+                                       gs::uv_rule_of(model)));
 }
 
 std::vector<std::array<int, 2>> texture_streamer::cells_in(const stream_texture& t, const scissor& a,

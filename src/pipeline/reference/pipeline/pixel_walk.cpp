@@ -36,7 +36,7 @@ void walk(const prepared_scene& ps, const std::vector<prepared_triangle>& triang
     const prepared_triangle& tri = triangles[t];
     for (std::size_t c = 0; c < 2; ++c)
       uv[t][c] = gs::make_uv_plane(tri.setup.v, {tri.uv16[0][c], tri.uv16[1][c], tri.uv16[2][c]},
-                                   gs::model_options{}.uv_convert);
+                                   gs::uv_rule_of(gs::model_options{}));
   }
   pixel_sample p;
   for (p.y = 0; p.y < ps.height; ++p.y)

@@ -1,7 +1,7 @@
 // pipeline/pixel_walk.hpp — the per-pixel inputs of a float evaluation on the GS render's geometry:
 // the same visible triangle per pixel (from the GS render's step 1), the exact barycentric weights
 // of the pixel centre in the 12.4 triangle, the same normal-map texel footprint (UV planes as the
-// rasteriser sets them up, under the default uv_convert: the float reference takes no model option)
+// rasteriser sets them up, under the default uv_plane and uv_convert: the float reference takes no model option)
 // and the tangent-space light interpolated with those weights. The float reference (reference.cpp)
 // and the other seeds' schemes (scheme_method.hpp) both walk the frame through this one function, so
 // they see the same pixels. Compiled with -ffp-contract=off.
