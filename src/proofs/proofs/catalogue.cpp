@@ -218,6 +218,11 @@ const std::vector<claim>& catalogue() {
       {"normal-encoding.ranking", "seed 002 and 2010 quality tables", "the PSNR ranking of the methods",
        "the 4 methods in both tables: worst case at 2×8 vs PSNR 2009 and 2010", M::reduction, depends(),
        c::normal_encoding_ranking, c::normal_encoding_section},
+      {"normal-encoding.seed-2009-measure", "seed 002 quality table; 2010 header (\"do not normalize\")",
+       "sphere map, CryEngine 3 and Lambert score 44.781, 40.355 and 43.054 dB as the seed measured them",
+       "every method × the pixels of UV spheres 8×16, 16×32, 32×64 drawn at 512×512 (per-vertex normals "
+       "interpolated, not normalised)",
+       M::exhaustive, depends(), c::normal_encoding_seed_2009_measure, c::normal_encoding_section},
       {"powervr.identity", "Tangent Space and Bump Shading Shortcuts",
        "K1 + K2·sin S + K3·cos S·cos(R − Q) with K1 = 1 − S_l, K2 = S_l sin T, K3 = S_l cos T equals (1 − S_l) + "
        "S_l·(N·L)",

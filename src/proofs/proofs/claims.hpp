@@ -65,6 +65,7 @@ GSDOT3_CLAIM(normal_encoding_singularities);
 GSDOT3_CLAIM(normal_encoding_xy_wrong_sign);
 GSDOT3_CLAIM(normal_encoding_2009_vs_2010);
 GSDOT3_CLAIM(normal_encoding_ranking);
+GSDOT3_CLAIM(normal_encoding_seed_2009_measure);  // claims_normal_encoding_2009.cpp
 // seed 004: PowerVR Series 2 polar bump mapping (claims_powervr.cpp)
 inline constexpr std::string_view powervr_section =
     "Seed 004: Imagination Technologies 1999, Bump Mapping Tricks for Series 2";

@@ -3,10 +3,12 @@
 // (which a supremum can never be below).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <string>
 
+#include "normal_encoding/seed_2009.hpp"
 #include "proofs/claim.hpp"
 #include "proofs/runner.hpp"
 
@@ -75,4 +77,42 @@ TEST(NormalEncodingClaims, EquivalenceSingularitiesRanking) {
   const auto r = run("normal-encoding.ranking");
   ASSERT_EQ(r.witnesses.size(), 3u);
   EXPECT_NE(r.witnesses[0].substr(r.witnesses[0].find(':')), r.witnesses[1].substr(r.witnesses[1].find(':')));
+}
+
+TEST(NormalEncodingClaims, SeedMeasure2009) {
+  // The seed's 2009 measure on faceted spheres. References: xyz stores the vector it is given, so
+  // against that vector its error is 8-bit quantisation alone, 10·log10(3·255²) = 52.90 dB (uniform
+  // error on ±1/255 per channel); against normalize(v) it also carries (1 − |v|) along v, so its MSE
+  // per channel is E[(1 − |v|)²]/3 plus that quantisation (the two uncorrelated).
+  namespace ne = gsdot3::normal_encoding;
+  const auto o = run("normal-encoding.seed-2009-measure");
+  EXPECT_EQ(o.result, p::verdict::bound);
+  const double q2 = 1.0 / (3 * 255.0 * 255.0);
+  double previous_spread = 1e9, previous_length = 0;
+  for (const auto& t : ne::sphere_tessellations) {
+    const std::string tag = "sphere" + std::to_string(t.rings) + "x" + std::to_string(t.segments);
+    EXPECT_NEAR(o.real(tag + ".xyz.psnr"), 10 * std::log10(3.0 * 255 * 255), 0.1) << tag;
+    double deficit = 0, length = 0;
+    const auto pixels = ne::faceted_sphere_normals(t.rings, t.segments, ne::sphere_pixels);
+    for (const auto& v : pixels) {
+      deficit += (1 - ne::length(v)) * (1 - ne::length(v));
+      length += ne::length(v);
+    }
+    deficit /= static_cast<double>(pixels.size());
+    EXPECT_NEAR(o.real(tag + ".xyz.psnr_vs_unit"), -10 * std::log10(deficit / 3 + q2), 0.2) << tag;
+    EXPECT_NEAR(o.real(tag + ".mean_length"), length / static_cast<double>(pixels.size()), 1e-12) << tag;
+    EXPECT_GT(o.real(tag + ".mean_length"), previous_length) << tag;  // finer facets, longer normals
+    previous_length = o.real(tag + ".mean_length");
+    // The three methods that are one mapping for unit input score apart, less so as |v| nears 1.
+    const double sph = o.real(tag + ".spheremap.psnr"), lam = o.real(tag + ".lambert.psnr"),
+                 cry = o.real(tag + ".cryengine3.psnr");
+    EXPECT_GT(std::fabs(sph - lam), 0.05) << tag;
+    EXPECT_GT(std::fabs(lam - cry), 0.05) << tag;
+    EXPECT_GT(std::fabs(sph - cry), 0.05) << tag;
+    const double spread = std::max({sph, lam, cry}) - std::min({sph, lam, cry});
+    EXPECT_LT(spread, previous_spread) << tag;
+    previous_spread = spread;
+    // seed_order says whether they rank as the seed's table does: 44.781 > 43.054 > 40.355.
+    EXPECT_EQ(o.integer(tag + ".seed_order"), sph > lam && lam > cry ? 1 : 0) << tag;
+  }
 }

@@ -68,7 +68,7 @@ std::vector<psnr_row> normal_encoding_psnr(const scene& s, const prepared_scene&
   // The view rotation of prepare() (yaw 0): glm::lookAt's upper 3×3.
   const glm::dmat3 view(glm::lookAt(glm::dvec3(s.view.eye), glm::dvec3(s.view.target), glm::dvec3(0, 1, 0)));
   struct px {
-    glm::dvec3 raw, unit;
+    glm::dvec3 raw, unit, geometric;
   };
   std::vector<px> pixels;
   for_each_covered_pixel(ps, visible, [&](const pixel_sample& p) {
@@ -83,7 +83,7 @@ std::vector<psnr_row> normal_encoding_psnr(const scene& s, const prepared_scene&
     const glm::dvec3 tn(
         s.normals.palette[s.normals.index[wrapped_texel(s.normals.width, s.normals.height, p.u16 >> 4, p.v16 >> 4)]]);
     const glm::dvec3 raw = view * (tn.x * t + tn.y * b + tn.z * n);
-    pixels.push_back({raw, glm::normalize(raw)});
+    pixels.push_back({raw, glm::normalize(raw), view * n});
   });
   std::size_t facing_away = 0;
   double length_sum = 0;
@@ -97,7 +97,9 @@ std::vector<psnr_row> normal_encoding_psnr(const scene& s, const prepared_scene&
     // #8 takes the per-pixel view vector; the scene's is not kept per pixel, so it runs with the view
     // straight down −z (its table frame), i.e. as #1.
     ne::seed_error_sum given, given8(8), raw_self, bug;
+    ne::seed_2009_sum as_2009;
     for (const auto& p : pixels) {
+      as_2009.add(m, to_ne(p.geometric), bits);
       const ne::vec3 v = to_ne(p.raw), n = to_ne(p.unit);
       const ne::vec3 dn = m.decode(m.encode(n, bits), bits), dv = m.decode(m.encode(v, bits), bits);
       given.add(n, dn);
@@ -106,7 +108,8 @@ std::vector<psnr_row> normal_encoding_psnr(const scene& s, const prepared_scene&
       bug.add(n, dv);
     }
     rows.push_back({std::string(m.name), pixels.size(), facing_away, given.done(), given8.done(), raw_self.done(),
-                    bug.done(), length_sum / static_cast<double>(std::max<std::size_t>(1, pixels.size()))});
+                    bug.done(), length_sum / static_cast<double>(std::max<std::size_t>(1, pixels.size())),
+                    as_2009.done()});
   }
   return rows;
 }
