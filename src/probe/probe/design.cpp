@@ -352,17 +352,19 @@ design make_design() {
                               "S, T and Q are interpolated (float32 in a different order in each source, "
                               "docs/stq-evidence.md) as well as on this option; a sprite with Q = 1 cannot reach "
                               "the 2047 limit or a negative S/Q between 0 and -1/16 texel apart from the others"});
-  // docs/evidence.md P14: a UV triangle whose exact U lies within 1/64 of a sixteenth below a texel
-  // boundary; the model's own plane (MODEL-PLANE-16, floored gradients) lands up to a sixteenth below
-  // exact values, so the patch needs vertices where the plane is exact first.
+  // docs/evidence.md P14. uv_convert: a pixel whose exact U lies within 1/64 of a sixteenth below a
+  // texel boundary, by margins above the emulators' float32 rounding, in a patch whose other pixels stay
+  // clear of every boundary. uv_plane: fixed_16 lands below the exact value by at most
+  // (|x − x0| + |y − y0| + 1) / 2^16 of a sixteenth, x0, y0 its first vertex up and left of the pixel.
   b.d.not_probed.push_back({"uv_convert",
-                            "no patch designed yet: the texel an interpolated UV reads within 1/64 of a sixteenth "
-                            "below a boundary depends on how the GS interpolates UV (the model's plane floors its "
-                            "gradients, MODEL-PLANE-16) as well as on this option"});
+                            "no patch designed yet: a UV triangle whose exact U lies within 1/64 of a sixteenth "
+                            "below a texel boundary at chosen pixels, by margins above the emulators' float32 "
+                            "rounding, with every other pixel clear of a boundary"});
   b.d.not_probed.push_back({"uv_plane",
-                            "no patch designed yet: the exact and fixed_16 planes part only where the exact U lies on "
-                            "a boundary the floored gradients land below, within one step's float rounding of the "
-                            "emulators' own interpolation"});
+                            "no patch designed yet: fixed_16 lands below the exact U by at most (|x - x0| + "
+                            "|y - y0| + 1) / 65536 of a sixteenth from its first vertex; to differ also under "
+                            "uv_convert=floor_1_64 (+1/64) that vertex must lie over 1000 pixels up and left of "
+                            "the patch, off the probe's frame without an XYOFFSET"});
   return b.d;
 }
 
