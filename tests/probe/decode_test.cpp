@@ -49,7 +49,7 @@ TEST(ProbeDecode, RecoversEveryValueOfEveryOptionFromTheModelsFrame) {
       }
       ++decoded;
     }
-  // stq_range, stq_convert, uv_convert, uv_plane: not probed
+  // stq_range, stq_convert, uv_plane: not probed
   EXPECT_EQ(decoded, 2 + 2 + 2 + 3 + 2 + 3 + 2 + 4 + 6 + 2 + 3 + 2 + 2);
   EXPECT_EQ(verdict_of(decode(model_rgb_frame()), "tfx_rounding").matches.size(), 0u);
   EXPECT_FALSE(verdict_of(decode(model_rgb_frame()), "tfx_rounding").not_probed.empty());

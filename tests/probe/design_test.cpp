@@ -211,6 +211,25 @@ TEST(ProbeDesign, PatchValuesAreTheOnesWorkedOutByHand) {
     EXPECT_EQ(rgb_of(exact[434 * frame_width + 620]), 0x010101u);
     EXPECT_EQ(rgb_of(biased[434 * frame_width + 620]), 0x010101u);
   }
+  // uv_convert.below_texel: U = 14 + 15·(x − 116)/128 sixteenths (V 8: row 0, texel 0 white, texel 1 0x80):
+  // x = 132: 15 111/128 (texel 0 either way); x = 133: 15 127/128, floor 15 -> texel 0, +1/64 -> 16 1/128 ->
+  // texel 1; x = 134: 16 14/128, texel 1 either way. Every row of the cell alike.
+  {
+    const patch& uv = find("uv_convert.below_texel");
+    EXPECT_EQ(uv.x, 128);
+    const auto fl = frame_with("uv_convert", "floor"), biased = frame_with("uv_convert", "floor_1_64");
+    for (int y = uv.y + sample_inset; y < uv.y + cell - sample_inset; ++y) {
+      const auto at = [y](const std::vector<std::uint32_t>& f, int x) {
+        return rgb_of(f[static_cast<std::size_t>(y) * frame_width + static_cast<std::size_t>(x)]);
+      };
+      EXPECT_EQ(at(fl, 132), 0xFFFFFFu) << y;
+      EXPECT_EQ(at(biased, 132), 0xFFFFFFu) << y;
+      EXPECT_EQ(at(fl, 133), 0xFFFFFFu) << y;
+      EXPECT_EQ(at(biased, 133), 0x808080u) << y;
+      EXPECT_EQ(at(fl, 134), 0x808080u) << y;
+      EXPECT_EQ(at(biased, 134), 0x808080u) << y;
+    }
+  }
   // Checks, default options: 0xc0 + 0x80 wraps to 0x40; HIGHLIGHT clamps to 0xff; 16-bit FBMSK.
   const std::vector<std::uint32_t> f = model_frame({});
   EXPECT_EQ(pixel(f, find("check.colclamp_wrap")), 0x404040u);

@@ -203,6 +203,23 @@ design make_design() {
                 "with the distance from vertex 0 truncated (per_pixel, plane_steps' start) or the +1/256 level "
                 "(per_pixel_level)");
   }
+  {  // uv_convert (P14): U rising 15/128 of a sixteenth per pixel from 14 at x = 116 (vertex 0), V 8 (row 0):
+     // the exact U at x = 133 is 14 + 17·15/128 = 15 127/128, 1/128 below texel 1; at x = 129..132 and 134
+     // at least 15/128 from 16 and from 16 − 1/64 (and fixed_16's plane lands on the same texels there).
+    const int x = 128, y = 16;
+    draw t;
+    t.regs = base;
+    t.regs.PRIM.PRIM = gs::prim_type::TRIANGLE;
+    t.regs.PRIM.TME = true;
+    t.regs.TEX0_1 = small_texture(gs::tfx::DECAL);
+    t.scissor = {x, y, x + cell - 1, y + cell - 1};
+    t.v = {{116, 0, 0x80808080u, 14, 8}, {244, 0, 0x80808080u, 29, 8}, {116, 64, 0x80808080u, 14, 8}};
+    b.add(t);
+    b.add_patch("uv_convert.below_texel", "uv_convert", x, y,
+                "UV TRIANGLE (FST = 1), DECAL, nearest, U = 14 + 15·(x − 116)/128 sixteenths along row 0: at x = 133 "
+                "U = 15 127/128, texel 0 (white) floored, texel 1 (0x80) with parallel-gs's +1/64 (floor_1_64); the "
+                "columns left of it white, right of it 0x80 under both");
+  }
   {  // blend_shift (P3, settled by the recordings; probed anyway): (0 − 0x81)·1 >> 7 + 0x81.
     const int x = 32, y = 16;
     b.add(sprite(base, x, y, cell, cell, 0x80818181u));
@@ -352,14 +369,8 @@ design make_design() {
                               "S, T and Q are interpolated (float32 in a different order in each source, "
                               "docs/stq-evidence.md) as well as on this option; a sprite with Q = 1 cannot reach "
                               "the 2047 limit or a negative S/Q between 0 and -1/16 texel apart from the others"});
-  // docs/evidence.md P14. uv_convert: a pixel whose exact U lies within 1/64 of a sixteenth below a
-  // texel boundary, by margins above the emulators' float32 rounding, in a patch whose other pixels stay
-  // clear of every boundary. uv_plane: fixed_16 lands below the exact value by at most
+  // docs/evidence.md P14. uv_plane: fixed_16 lands below the exact value by at most
   // (|x − x0| + |y − y0| + 1) / 2^16 of a sixteenth, x0, y0 its first vertex up and left of the pixel.
-  b.d.not_probed.push_back({"uv_convert",
-                            "no patch designed yet: a UV triangle whose exact U lies within 1/64 of a sixteenth "
-                            "below a texel boundary at chosen pixels, by margins above the emulators' float32 "
-                            "rounding, with every other pixel clear of a boundary"});
   b.d.not_probed.push_back({"uv_plane",
                             "no patch designed yet: fixed_16 lands below the exact U by at most (|x - x0| + "
                             "|y - y0| + 1) / 65536 of a sixteenth from its first vertex; to differ also under "

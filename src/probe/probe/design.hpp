@@ -8,9 +8,13 @@
 // model predicts under any options, probe/packets.hpp encodes the same draws as GIF packets.
 // Design rules that keep the prediction independent of rasteriser details the model does not settle:
 //   - every textured primitive has one UV for all its vertices, so every pixel samples the same
-//     texel footprint (no dependence on how the GS interpolates UV or where it samples in a pixel);
+//     texel footprint (no dependence on how the GS interpolates UV or where it samples in a pixel),
+//     except the one that probes UV interpolation (uv_convert.below_texel): it assumes the sample point
+//     at the pixel's integer coordinates (docs/evidence.md R13's sources) and exact U within 1/128 of a
+//     sixteenth, and a GS that samples elsewhere shows "none matches" there;
 //   - patches are uniform over their sampled pixels (the inner 6×6 of the cell) except the Gouraud
-//     ramp, whose per-pixel values give the same verdict for any sample position within ±1/2 pixel;
+//     ramp, whose per-pixel values give the same verdict for any sample position within ±1/2 pixel,
+//     and uv_convert.below_texel, uniform along each column;
 //   - 16-bit patches are drawn into a PSMCT16 buffer laid over one page of the displayed frame: a
 //     PSMCT16 block (16×8 pixels) occupies the same 256 bytes as a PSMCT32 block (8×8; gs_memory's
 //     layout), so a uniform 16-bit value v shows as the 32-bit pixel v | v << 16, i.e. R = B = v & 0xFF,

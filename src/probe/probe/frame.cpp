@@ -2,12 +2,14 @@
 #include "probe/frame.hpp"
 
 #include <algorithm>
+#include <array>
 #include <optional>
 #include <stdexcept>
 
 #include "gs_arith/bilinear.hpp"
 #include "gs_arith/gouraud.hpp"
 #include "gs_arith/pixel_pipeline.hpp"
+#include "gs_arith/uv_plane.hpp"
 #include "gs_memory/address.hpp"
 #include "gs_memory/local_memory.hpp"
 #include "gs_memory/texture_buffer.hpp"
@@ -80,12 +82,21 @@ void draw_primitive(mem::local_memory& m, const draw& d, std::optional<mem::text
     plane = gs::gouraud_triangle(gv(d.v[0]), gv(d.v[1]), gv(d.v[2]), d.v[0].x, d.v[0].y);
     if (plane) plane->clip_x0 = d.scissor.x0;  // pcsx2_rows: a row starts at SCISSOR's left at the latest
   }
-  gs::rgba8 texel{};
-  if (d.regs.PRIM.TME) {
-    const gs::bilinear_mode mode = d.linear ? o.bilinear : gs::bilinear_mode::nearest;
-    texel = gs::sample([&](std::int32_t u, std::int32_t v) { return fetch_texel(*tb, d.regs.TEX0_1, u, v); }, last.u16,
-                       last.v16, mode);
+  // A textured triangle's U and V planes under the options' UV rule (uv_plane.hpp; constant where every
+  // vertex has one UV); a sprite samples its last vertex's UV at every pixel.
+  std::optional<std::array<gs::plane, 2>> uv;
+  if (triangle && d.regs.PRIM.TME) {
+    const std::array<gs::xy124, 3> p{
+        {{d.v[0].x * 16, d.v[0].y * 16}, {d.v[1].x * 16, d.v[1].y * 16}, {d.v[2].x * 16, d.v[2].y * 16}}};
+    uv = {gs::make_uv_plane(p, {d.v[0].u16, d.v[1].u16, d.v[2].u16}, gs::uv_rule_of(o)),
+          gs::make_uv_plane(p, {d.v[0].v16, d.v[1].v16, d.v[2].v16}, gs::uv_rule_of(o))};
   }
+  auto texel_at = [&](int x, int y) {
+    if (!d.regs.PRIM.TME) return gs::rgba8{};
+    const gs::bilinear_mode mode = d.linear ? o.bilinear : gs::bilinear_mode::nearest;
+    return gs::sample([&](std::int32_t u, std::int32_t v) { return fetch_texel(*tb, d.regs.TEX0_1, u, v); },
+                      uv ? (*uv)[0].at(x, y) : last.u16, uv ? (*uv)[1].at(x, y) : last.v16, mode);
+  };
   int x0 = d.scissor.x0, y0 = d.scissor.y0, x1 = d.scissor.x1 + 1, y1 = d.scissor.y1 + 1;
   if (!triangle) {
     x0 = std::max(x0, d.v[0].x), y0 = std::max(y0, d.v[0].y);
@@ -98,7 +109,7 @@ void draw_primitive(mem::local_memory& m, const draw& d, std::optional<mem::text
       const gs::fragment_colour cf =
           plane ? gs::gouraud_colour(*plane, x, y, o.setup) : gs::fragment_colour::flat(gs::rgba8::from_u32(last.rgba));
       const auto ux = static_cast<std::uint32_t>(x), uy = static_cast<std::uint32_t>(y);
-      const gs::pixel_input in{cf, texel, m.read_pixel(fb, ux, uy), ux, uy};
+      const gs::pixel_input in{cf, texel_at(x, y), m.read_pixel(fb, ux, uy), ux, uy};
       m.write_pixel(fb, ux, uy, gs::pixel_pipeline(d.regs, in, o).out);
     }
 }
