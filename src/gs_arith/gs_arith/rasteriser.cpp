@@ -2,6 +2,7 @@
 #include "gs_arith/rasteriser.hpp"
 
 #include <stdexcept>
+#include <string>
 
 namespace gs {
 
@@ -59,18 +60,29 @@ bool covers(const triangle_setup& t, int x, int y) {
   return t.area2 != 0;
 }
 
-plane make_plane(const std::array<xy124, 3>& p, const std::array<std::int32_t, 3>& a, std::int32_t lo,
-                 std::int32_t hi) {
+namespace {
+// The doubled signed area det (12.4² units) and the gradient numerators of the plane through a[k] at
+// p[k]: the value changes by gx / det per 12.4 unit of x and gy / det per unit of y.
+struct plane_gradient {
+  std::int64_t det, gx, gy;
+};
+plane_gradient gradient(const std::array<xy124, 3>& p, const std::array<std::int32_t, 3>& a, const char* who) {
   const std::int64_t det = cross(p[0], p[1], p[2]);
-  if (det == 0) throw std::logic_error("make_plane: zero-area triangle");
+  if (det == 0) throw std::logic_error(std::string(who) + ": zero-area triangle");
   const std::int64_t da1 = a[1] - a[0], da2 = a[2] - a[0];
   const std::int64_t x1 = p[1].x - p[0].x, y1 = p[1].y - p[0].y, x2 = p[2].x - p[0].x, y2 = p[2].y - p[0].y;
-  // Gradients per 12.4 unit are (da1·y2 − da2·y1)/det and (da2·x1 − da1·x2)/det; per pixel ×16;
-  // kept with 16 extra fraction bits.
+  return {det, da1 * y2 - da2 * y1, da2 * x1 - da1 * x2};
+}
+}  // namespace
+
+plane make_plane(const std::array<xy124, 3>& p, const std::array<std::int32_t, 3>& a, std::int32_t lo,
+                 std::int32_t hi) {
+  const plane_gradient g = gradient(p, a, "make_plane");
+  // Per pixel ×16, kept with 16 extra fraction bits.
   constexpr std::int64_t one = std::int64_t{1} << 16;
   plane pl;
-  pl.dx = floor_div_signed((da1 * y2 - da2 * y1) * 16 * one, det);
-  pl.dy = floor_div_signed((da2 * x1 - da1 * x2) * 16 * one, det);
+  pl.dx = floor_div_signed(g.gx * 16 * one, g.det);
+  pl.dy = floor_div_signed(g.gy * 16 * one, g.det);
   // value(0,0) = a0 − gradient·(p0 in pixels), p0 in 12.4 so divide by 16.
   pl.base = a[0] * one - floor_div_signed(pl.dx * p[0].x + pl.dy * p[0].y, 16);
   pl.lo = lo;
@@ -80,17 +92,14 @@ plane make_plane(const std::array<xy124, 3>& p, const std::array<std::int32_t, 3
 
 plane make_exact_plane(const std::array<xy124, 3>& p, const std::array<std::int32_t, 3>& a, std::int32_t lo,
                        std::int32_t hi) {
-  const std::int64_t det = cross(p[0], p[1], p[2]);
-  if (det == 0) throw std::logic_error("make_exact_plane: zero-area triangle");
-  const std::int64_t da1 = a[1] - a[0], da2 = a[2] - a[0];
-  const std::int64_t x1 = p[1].x - p[0].x, y1 = p[1].y - p[0].y, x2 = p[2].x - p[0].x, y2 = p[2].y - p[0].y;
+  const plane_gradient g = gradient(p, a, "make_exact_plane");
   // value(X, Y) = a0 + (gx·(X − X0) + gy·(Y − Y0)) / det at 12.4 position (X, Y); pixel x is at X = 16x.
-  const std::int64_t gx = da1 * y2 - da2 * y1, gy = da2 * x1 - da1 * x2, sign = det < 0 ? -1 : 1;
+  const std::int64_t sign = g.det < 0 ? -1 : 1;
   plane pl;
-  pl.den = sign * det;
-  pl.dx = sign * gx * 16;
-  pl.dy = sign * gy * 16;
-  pl.base = sign * (a[0] * det - gx * p[0].x - gy * p[0].y);
+  pl.den = sign * g.det;
+  pl.dx = sign * g.gx * 16;
+  pl.dy = sign * g.gy * 16;
+  pl.base = sign * (a[0] * g.det - g.gx * p[0].x - g.gy * p[0].y);
   pl.lo = lo;
   pl.hi = hi;
   return pl;
