@@ -27,10 +27,10 @@ std::int64_t floor_of(std::int64_t n, std::int64_t d) { return n / d - (n % d !=
 // Every start n0 in −60..60, step s in −60..60, divisor d in 1..17, 40 steps: quotient, remainder
 // and the truncated quotient after each step (121·121·17·40 = 9 955 880 cases).
 TEST(AttributeWalk, FloorDivisionWalkOnEverySmallCase) {
+  gs::floor_division_walk w;  // one walk restarted throughout: with the step kept, and with a new step or divisor
   for (std::int64_t d = 1; d <= 17; ++d)
     for (std::int64_t s = -60; s <= 60; ++s)
       for (std::int64_t n0 = -60; n0 <= 60; ++n0) {
-        gs::floor_division_walk w;
         w.start(n0, s, d);
         for (std::int64_t k = 0; k < 40; ++k) {
           const std::int64_t n = n0 + k * s;

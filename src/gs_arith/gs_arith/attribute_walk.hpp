@@ -22,16 +22,18 @@
 namespace gs {
 
 // floor(n / d) and n − d·floor(n / d) for n = n0 + k·s, d > 0, stepped in k without a division.
+// The step's quotient and remainder are kept while the step and the divisor stay (a triangle's rows).
 struct floor_division_walk {
-  std::int64_t q = 0, r = 0, dq = 0, dr = 0, d = 1;
-  constexpr void start(std::int64_t n0, std::int64_t s, std::int64_t den) noexcept {
-    d = den;
+  std::int64_t q = 0, r = 0, dq = 0, dr = 0, d = 0, s = 0;  // d = 0: never started
+  constexpr void start(std::int64_t n0, std::int64_t step_n, std::int64_t den) noexcept {
+    if (den != d || step_n != s) d = den, s = step_n, dq = floor_div(s, d), dr = s - dq * d;
     q = floor_div(n0, d), r = n0 - q * d;
-    dq = floor_div(s, d), dr = s - dq * d;
   }
+  // The carry as a value, not a branch: it follows the remainder, which no predictor follows.
   constexpr void step() noexcept {
     q += dq, r += dr;
-    if (r >= d) r -= d, ++q;
+    const std::int64_t carry = r >= d ? 1 : 0;
+    q += carry, r -= d & -carry;
   }
   // trunc(n / d): the floor, plus one when n < 0 (q < 0) and d does not divide n.
   constexpr std::int64_t toward_zero() const noexcept { return q + (q < 0 && r != 0 ? 1 : 0); }
@@ -173,10 +175,15 @@ class attribute_walker {
     const std::int64_t v = w.value(p);
     return static_cast<std::int32_t>(v < p.lo ? p.lo : v > p.hi ? p.hi : v);
   }
-  // Whether the value here and `steps` pixels on both lie in [lo, hi] (then every step between does).
+  // Whether the value here and `steps` pixels on both lie in [lo, hi] (then every step between does). An
+  // exact plane's value k pixels on is q + k·dq + floor((r + k·dr) / den), with 0 <= r, dr < den: within
+  // [q + k·dq, q + k·dq + k] (+ 1 lifted), a bound without a division; a run whose bound reaches past
+  // the clamp takes the clamped path, exact either way.
   static constexpr bool unclamped(const plane& p, const plane_walk& w, int steps) noexcept {
-    const std::int64_t first = w.value(p), last = p.quotient(w.n + p.dx * steps);
-    return first >= p.lo && first <= p.hi && last >= p.lo && last <= p.hi;
+    const std::int64_t first = w.value(p);
+    const std::int64_t low = p.den == 0 ? (w.n + p.dx * steps) >> 16 : w.w.q + w.w.dq * steps;
+    const std::int64_t high = p.den == 0 ? low : low + steps + 1;
+    return first >= p.lo && first <= p.hi && low >= p.lo && high <= p.hi;
   }
 
   const triangle_attributes& a_;
