@@ -91,12 +91,14 @@ void draw_primitive(mem::local_memory& m, const draw& d, std::optional<mem::text
     uv = {gs::make_uv_plane(p, {d.v[0].u16, d.v[1].u16, d.v[2].u16}, gs::uv_rule_of(o)),
           gs::make_uv_plane(p, {d.v[0].v16, d.v[1].v16, d.v[2].v16}, gs::uv_rule_of(o))};
   }
-  auto texel_at = [&](int x, int y) {
-    if (!d.regs.PRIM.TME) return gs::rgba8{};
+  auto sample_at = [&](std::int32_t u16, std::int32_t v16) {
     const gs::bilinear_mode mode = d.linear ? o.bilinear : gs::bilinear_mode::nearest;
-    return gs::sample([&](std::int32_t u, std::int32_t v) { return fetch_texel(*tb, d.regs.TEX0_1, u, v); },
-                      uv ? (*uv)[0].at(x, y) : last.u16, uv ? (*uv)[1].at(x, y) : last.v16, mode);
+    return gs::sample([&](std::int32_t u, std::int32_t v) { return fetch_texel(*tb, d.regs.TEX0_1, u, v); }, u16, v16,
+                      mode);
   };
+  // Without UV planes one texel serves the whole primitive: fetched once, before its writes.
+  const gs::rgba8 one_texel = d.regs.PRIM.TME && !uv ? sample_at(last.u16, last.v16) : gs::rgba8{};
+  auto texel_at = [&](int x, int y) { return uv ? sample_at((*uv)[0].at(x, y), (*uv)[1].at(x, y)) : one_texel; };
   int x0 = d.scissor.x0, y0 = d.scissor.y0, x1 = d.scissor.x1 + 1, y1 = d.scissor.y1 + 1;
   if (!triangle) {
     x0 = std::max(x0, d.v[0].x), y0 = std::max(y0, d.v[0].y);
