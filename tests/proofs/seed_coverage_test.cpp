@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <filesystem>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -78,6 +79,11 @@ TEST(SeedCoverage, MalformedJsonNamesTheRow) {
 // the numbered steps of §3.1 (1. … 5. and 2.1 … 2.6). Equations (3) and (6) carry no label in the
 // text (they are displayed only), so eight of the ten are found there; the table has all ten.
 TEST(SeedCoverage, EveryLabelOfThePaperHasARow) {
+  // Seed 000 is the team's (../shared/seeds, beside the clone): a clone without it skips this one
+  // check, by name, and builds and runs everything else (README "Quick start").
+  if (!std::filesystem::is_regular_file(GSDOT3_SEED_000))
+    GTEST_SKIP() << "seed 000 not found at " << GSDOT3_SEED_000
+                 << " (../shared beside the clone, or -DGSDOT3_SHARED_DIR)";
   std::ifstream f(GSDOT3_SEED_000);
   ASSERT_TRUE(f) << GSDOT3_SEED_000;
   std::stringstream ss;
