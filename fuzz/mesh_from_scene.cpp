@@ -1,6 +1,6 @@
 // fuzz/mesh_from_scene.cpp — libFuzzer harness: gsdot3's conversion of an assimp scene
 // (pipeline::from_scene: node instancing, conversion, normal/UV/tangent repairs, MikkTSpace, merging,
-// the material's normal map) on scenes this harness builds from the bytes itself, in this process.
+// the materials' normal-map layers) on scenes this harness builds from the bytes itself, in this process.
 // No assimp parser runs: the imports run their parser and this conversion in a child process
 // (child_process.hpp), where parse_inputs sees no coverage of it.
 // The scene is well formed as assimp's importers leave one (counts match arrays, nodes form a tree)
@@ -38,6 +38,7 @@
 #include <limits>
 #include <memory>
 #include <stdexcept>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -121,7 +122,10 @@ constexpr std::array<unsigned, 8> face_sizes = {3, 3, 3, 4, 1, 2, 0, 6};
 // What the conversion must report for an accepted scene, counted from the scene as built.
 struct expected {
   std::size_t instances = 0, meshes = 0, points = 0, lines = 0;
-  bool normal_map = false, normal_slot = false;  // a normal map at all; one in the "normal" slot
+  // The distinct maps (name, slot: "normal" before "bump") the instanced meshes' materials name, and
+  // whether one of those meshes has a material without a map (the flat layer when there are maps).
+  std::set<std::pair<std::string, std::string>> maps;
+  bool unmapped = false;
 };
 
 aiMesh* read_mesh(scene_reader& r) {
@@ -187,9 +191,9 @@ aiTexture* read_texture(scene_reader& r) {
   return t.release();
 }
 
-bool has_texture(const aiMaterial& m, aiTextureType type) {
+std::string texture_of(const aiMaterial& m, aiTextureType type) {
   aiString path;
-  return m.GetTexture(type, 0, &path) == aiReturn_SUCCESS && path.length > 0;
+  return m.GetTexture(type, 0, &path) == aiReturn_SUCCESS ? std::string(path.C_Str()) : std::string();
 }
 
 // The node tree: the root, then extra nodes each hung below an earlier one. Counts the instances.
@@ -232,10 +236,15 @@ void count_instanced(const aiScene& s, const std::vector<char>& instanced, expec
       e.points += m->mFaces[f].mNumIndices == 1;
       e.lines += m->mFaces[f].mNumIndices == 2;
     }
-    if (m->mMaterialIndex >= s.mNumMaterials || s.mMaterials[m->mMaterialIndex] == nullptr) continue;
-    const bool normal = has_texture(*s.mMaterials[m->mMaterialIndex], aiTextureType_NORMALS);
-    e.normal_slot = e.normal_slot || normal;
-    e.normal_map = e.normal_map || normal || has_texture(*s.mMaterials[m->mMaterialIndex], aiTextureType_HEIGHT);
+    const aiMaterial* mat = m->mMaterialIndex < s.mNumMaterials ? s.mMaterials[m->mMaterialIndex] : nullptr;
+    const std::string normal = mat != nullptr ? texture_of(*mat, aiTextureType_NORMALS) : "";
+    const std::string bump = mat != nullptr ? texture_of(*mat, aiTextureType_HEIGHT) : "";
+    if (!normal.empty())
+      e.maps.insert({normal, "normal"});
+    else if (!bump.empty())
+      e.maps.insert({bump, "bump"});
+    else
+      e.unmapped = true;
   }
 }
 
@@ -293,8 +302,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                    std::to_string(e.instances) + ", " + std::to_string(e.meshes) + ", " + std::to_string(e.points) +
                    ", " + std::to_string(e.lines) + ", " + std::to_string(m.model.triangles.size());
           });
-  require(m.normal_texture.has_value() == e.normal_map &&
-              (!e.normal_map || (m.normal_texture->slot == "normal") == e.normal_slot),
-          [&] { return std::string("from_scene's normal map does not match the instanced meshes' materials"); });
+  std::set<std::pair<std::string, std::string>> maps;
+  for (const pl::texture_ref& t : m.layers.maps) maps.insert({t.name, t.slot});
+  require(maps == e.maps && maps.size() == m.layers.maps.size() &&
+              m.layers.flat_materials.empty() == (e.maps.empty() || !e.unmapped),
+          [&] { return std::string("from_scene's normal-map layers do not match the instanced meshes' materials"); });
+  require(m.layers.count() > 1 || m.model.layer.empty(), [&] {
+    return "from_scene gave " + std::to_string(m.model.layer.size()) + " layer numbers for " +
+           std::to_string(m.layers.count()) + " layers";
+  });
+  for (std::uint16_t k : m.model.layer)
+    require(k < m.layers.count(), [&] { return "a triangle samples layer " + std::to_string(k) + " of none"; });
   return 0;
 }

@@ -1,6 +1,7 @@
 // fuzz/render_small.cpp — libFuzzer harness over every render option a user can set (issue 51): a
 // random scene of a few triangles in a frame of 1x1 up to 320x320 (any size, not only whole pages),
-// a random normal map at 4, 8 or 24 bits, 1 to 6 lights, a spot light at either four-pass placement,
+// a random normal map at 4, 8 or 24 bits of one layer or two (materials' maps, the triangles' layers
+// random), 1 to 6 lights, a spot light at either four-pass placement,
 // step 5's floor, section 3.8's LOD fade (a share, or one derived from the camera's distance), model
 // options, and the combination class below. What must hold:
 // - no crash, and the only refusals (std::invalid_argument) are the documented ones: the one-buffer
@@ -83,9 +84,8 @@ glm::vec3 unit_vector(FuzzedDataProvider& in) {
 
 // A normal map of `size`² texels with a palette of up to 16 entries; every texel keeps an unquantised
 // normal near its palette entry (what with_index_bits(.., 24) reads), one byte per component.
-pl::normal_map random_normals(FuzzedDataProvider& in, int bits) {
+pl::normal_map random_normals(FuzzedDataProvider& in, int bits, int size) {
   pl::normal_map nm;
-  const int size = 8 << in.ConsumeIntegralInRange<int>(0, 1);
   nm.width = nm.height = size;
   const int palette = in.ConsumeIntegralInRange<int>(1, 16);
   for (int i = 0; i < palette; ++i) nm.palette.push_back(unit_vector(in));
@@ -136,7 +136,10 @@ pl::scene random_scene(FuzzedDataProvider& in, const combination& c) {
   }
   if (c.e == extra::floor) s.plain = pl::floor_under(s.model, in.ConsumeIntegralInRange<int>(1, 4));  // step 5
   // The textures last: an input that runs out of bytes has every choice above made.
-  s.normals = random_normals(in, c.bits);
+  const int map_size = 8 << in.ConsumeIntegralInRange<int>(0, 1);
+  s.normals = random_normals(in, c.bits, map_size);
+  if (in.ConsumeBool())  // a second layer (a second material's map, scene.hpp): mesh::layer chosen last
+    s.normals = pl::stacked({s.normals, random_normals(in, c.bits, map_size)});
   s.diffuse.width = s.diffuse.height = 8;
   for (int i = 0; i < 64; ++i)
     s.diffuse.texels.push_back(0x80000000u | (in.ConsumeIntegral<std::uint32_t>() & 0xFFFFFFu));
@@ -198,8 +201,9 @@ std::string describe(const combination& c, const pl::scene& s, const pl::render_
          (c.buffers == pl::draw_buffers::one ? ", one buffer" : ", two buffers") +
          (c.memory_path ? ", memory path" : ", value path") + (o.simd ? ", SIMD" : ", scalar") +
          (o.path == pl::raster_path::reference ? ", reference raster" : "") + ", " + std::to_string(c.bits) +
-         "-bit map, extra " + std::to_string(static_cast<int>(c.e)) + ", " + std::to_string(s.lights.size()) +
-         " lights, " + std::to_string(s.width) + "x" + std::to_string(s.height);
+         "-bit map of " + std::to_string(pl::layers(s.normals)) + " layer(s), extra " +
+         std::to_string(static_cast<int>(c.e)) + ", " + std::to_string(s.lights.size()) + " lights, " +
+         std::to_string(s.width) + "x" + std::to_string(s.height);
 }
 
 bool same(const pl::frame& a, const pl::frame& b) {
@@ -248,6 +252,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     s.model = facing_quad();  // so that every input draws (random bytes often make a degenerate mesh)
     if (c.e == extra::floor) s.plain = pl::floor_under(s.model);
   }
+  if (pl::layers(s.normals) > 1)
+    for (std::size_t t = 0; t < s.model.triangles.size(); ++t) s.model.layer.push_back(in.ConsumeBool());
   if (c.e == extra::lod) fade(lod, s);
   const pl::prepared_scene ps = pl::prepare(s, yaw, canonical.specular);
 

@@ -70,7 +70,7 @@ void expect_the_renderers_frame(gs::gouraud_setup setup, gs::uv_convert_mode uv_
         return std::pair<std::int32_t, std::int32_t>{t.uv16[static_cast<std::size_t>(k)][0],
                                                      t.uv16[static_cast<std::size_t>(k)][1]};
       });
-  r.draw<textured_blend>(&tex, attr, pl::detail::row_view{frame.data(), W});
+  r.draw<textured_blend>(&tex, attr, pl::detail::row_view{frame.data(), W}, ps.layer(0));
 
   // The packets: FRAME_1 FBP 0 FBW 1; ZBUF_1 page 8 PSMZ24 ZMSK (the renderer's Z buffer); TEST ZTE GEQUAL; XYOFFSET
   // 2048 px; SCISSOR 0..63; the texture PSMCT32 16×16 at block 1024 (TBW 1), uploaded; TEX0 TW = TH = 4, TCC RGBA, TFX

@@ -24,11 +24,12 @@
 #include "pipeline/frame_packets.hpp"
 #include "pipeline/render.hpp"
 #include "replayed_frame.hpp"
+#include "test_scenes.hpp"
 
 namespace gsdot3::pipeline {
 namespace {
 
-enum class extra { none, floor, spot };
+enum class extra { none, floor, spot, layers };  // layers: a two-layer map (test_scenes.hpp's two_layers)
 constexpr std::array<std::array<int, 2>, 6> sizes{{{1, 1}, {16, 16}, {33, 17}, {96, 80}, {128, 112}, {200, 150}}};
 
 scene scene_for(std::array<int, 2> size, extra e) {
@@ -42,7 +43,7 @@ scene scene_for(std::array<int, 2> size, extra e) {
     l.direction = glm::vec3{0.1f, -0.1f, 0.0f} - l.position;  // at the head's centre
     l.cone_degrees = 15.0f;
   }
-  return s;
+  return e == extra::layers ? test::two_layers(s) : s;
 }
 
 // What the frame says of every pixel that another path must reproduce.
@@ -125,7 +126,7 @@ TEST_P(Combinations, RenderOrRefuseAndAgree) {
 std::string param_name(const ::testing::TestParamInfo<std::tuple<std::size_t, extra, std::size_t>>& p) {
   const auto [i, e, uv_index] = p.param;
   const gs::uv_rule uv = uv_rules[uv_index];
-  static constexpr const char* extras[] = {"none", "floor", "spot"};
+  static constexpr const char* extras[] = {"none", "floor", "spot", "layers"};
   return std::to_string(sizes[i][0]) + "x" + std::to_string(sizes[i][1]) + "_" + extras[static_cast<int>(e)] +
          (uv.plane == gs::uv_plane_mode::exact ? "" : "_uv_fixed_16") +
          (uv.convert == gs::uv_convert_mode::floor ? "" : "_uv_floor_1_64");
@@ -133,7 +134,7 @@ std::string param_name(const ::testing::TestParamInfo<std::tuple<std::size_t, ex
 
 INSTANTIATE_TEST_SUITE_P(SizesAndExtras, Combinations,
                          ::testing::Combine(::testing::Range<std::size_t>(0, sizes.size()),
-                                            ::testing::Values(extra::none, extra::floor, extra::spot),
+                                            ::testing::Values(extra::none, extra::floor, extra::spot, extra::layers),
                                             ::testing::Range<std::size_t>(0, uv_rules.size())),
                          param_name);
 

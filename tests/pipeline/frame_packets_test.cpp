@@ -359,7 +359,7 @@ TEST_P(FramePackets, UploadsPutTheScenesTexturesWhereTheTexturesAreRead) {
   if (GetParam() == method::two_pass) {
     gs::tex0_reg t;
     t.PSM = gs::tex_psm::PSMT8;
-    t.CBP = fixed::uint<14>::from_wrapped(in.cbp[0]);
+    t.CBP = fixed::uint<14>::from_wrapped(in.cbp[0][0]);
     t.CLD = gs::u3::from_wrapped(1);
     const gs::clut_buffer clut = gs::mem::load_clut(m, t, {}).buffer;
     EXPECT_EQ(clut, two_pass_palette(s.normals.palette, false));
@@ -368,7 +368,7 @@ TEST_P(FramePackets, UploadsPutTheScenesTexturesWhereTheTexturesAreRead) {
   if (GetParam() == method::three_pass) {
     gs::tex0_reg t;
     t.PSM = gs::tex_psm::PSMT8;
-    t.CBP = fixed::uint<14>::from_wrapped(in.cbp[static_cast<std::size_t>(clut_slot::terms)]);
+    t.CBP = fixed::uint<14>::from_wrapped(in.cbp[0][static_cast<std::size_t>(clut_slot::terms)]);
     t.CLD = gs::u3::from_wrapped(1);
     const gs::clut_buffer clut = gs::mem::load_clut(m, t, {}).buffer;
     for (std::size_t i = 0; i < s.normals.palette.size() && i < 256; ++i) {

@@ -88,26 +88,26 @@ TEST(NormalMapImage, BoxResamplingAveragesCoveredTexels) {
 
 TEST(NormalMapImage, MaterialsNameTheirNormalMaps) {
   const imported_mesh norm = import_mesh(meshes / "quad_norm.obj");
-  ASSERT_TRUE(norm.normal_texture.has_value());
-  EXPECT_EQ(norm.normal_texture->slot, "normal");  // MTL norm
-  EXPECT_EQ(norm.normal_texture->file.filename(), "tilt_green.tga");
+  ASSERT_EQ(norm.layers.maps.size(), 1u);
+  EXPECT_EQ(norm.layers.maps[0].slot, "normal");  // MTL norm
+  EXPECT_EQ(norm.layers.maps[0].file.filename(), "tilt_green.tga");
   const imported_mesh bump = import_mesh(meshes / "quad_bump.obj");
-  ASSERT_TRUE(bump.normal_texture.has_value());
-  EXPECT_EQ(bump.normal_texture->slot, "bump");  // MTL map_Bump
-  EXPECT_EQ(bump.normal_texture->file.filename(), "halves_24x20.jpg");
+  ASSERT_EQ(bump.layers.maps.size(), 1u);
+  EXPECT_EQ(bump.layers.maps[0].slot, "bump");  // MTL map_Bump
+  EXPECT_EQ(bump.layers.maps[0].file.filename(), "halves_24x20.jpg");
   const imported_mesh height = import_mesh(meshes / "quad_height.obj");
-  ASSERT_TRUE(height.normal_texture.has_value());
+  ASSERT_EQ(height.layers.maps.size(), 1u);
   normal_map_settings s;
   s.grey_is_height = true;
-  const loaded_normal_map h = load_normal_map(height.normal_texture->file, s);
-  EXPECT_TRUE(h.from_height);                                                       // a grey bump image is a height map
-  EXPECT_FALSE(import_mesh(meshes / "cube_seams.obj").normal_texture.has_value());  // its .mtl is missing
+  const loaded_normal_map h = load_normal_map(height.layers.maps[0].file, s);
+  EXPECT_TRUE(h.from_height);                                               // a grey bump image is a height map
+  EXPECT_TRUE(import_mesh(meshes / "cube_seams.obj").layers.maps.empty());  // its .mtl is missing
 }
 
 TEST(NormalMapImage, GlbEmbeddedNormalMapDecodes) {
   const imported_mesh im = import_mesh(meshes / "mikk_mirrored.glb");
-  ASSERT_TRUE(im.normal_texture.has_value());
-  const auto& e = im.normal_texture->embedded;
+  ASSERT_EQ(im.layers.maps.size(), 1u);
+  const auto& e = im.layers.maps[0].embedded;
   const loaded_normal_map m = load_normal_map(e.data(), e.size(), "embedded", {});
   EXPECT_EQ(m.format, "PNG");
   EXPECT_EQ(m.map.width, 16);

@@ -128,8 +128,8 @@ TEST(NormalMapBits, FourBitsAreTheNearestOf16EntriesToTheEightBitNormals) {
   EXPECT_EQ(full.index, eight.index);
   EXPECT_EQ(four.unquantised, eight.unquantised);
   for (std::size_t i = 0; i < full.index.size(); i += 97) {
-    EXPECT_EQ(texel_normal(full, i), eight.unquantised[i]);
-    EXPECT_EQ(texel_normal(eight, i), eight.palette[eight.index[i]]);
+    EXPECT_EQ(texel_normal(full, 0, i), eight.unquantised[i]);
+    EXPECT_EQ(texel_normal(eight, 0, i), eight.palette[eight.index[i]]);
   }
   EXPECT_THROW(with_index_bits(four, 24), std::invalid_argument);
   normal_map bare = eight;

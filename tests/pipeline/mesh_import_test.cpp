@@ -131,10 +131,12 @@ TEST(MeshImport, GlbWithEmbeddedNormalMapAndTangents) {
   EXPECT_EQ(im.model.triangles.size(), 124u);  // sphere 2·12·(6 − 1) + strip 4
   EXPECT_EQ(im.report.meshes, 2u);
   EXPECT_EQ(im.report.tangents, "file (TANGENT)");
-  ASSERT_TRUE(im.normal_texture.has_value());
-  EXPECT_EQ(im.normal_texture->slot, "normal");
-  ASSERT_GE(im.normal_texture->embedded.size(), 8u);
-  EXPECT_EQ(im.normal_texture->embedded[1], 'P');  // \x89PNG
+  ASSERT_EQ(im.layers.maps.size(), 1u);  // both meshes' material names it: one layer, no flat one
+  EXPECT_TRUE(im.layers.flat_materials.empty());
+  EXPECT_TRUE(im.model.layer.empty());
+  EXPECT_EQ(im.layers.maps[0].slot, "normal");
+  ASSERT_GE(im.layers.maps[0].embedded.size(), 8u);
+  EXPECT_EQ(im.layers.maps[0].embedded[1], 'P');  // \x89PNG
   expect_frames(im.model);
 }
 

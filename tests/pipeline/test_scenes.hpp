@@ -1,6 +1,8 @@
 // tests/pipeline/test_scenes.hpp — small hand-built scenes for closed-form checks.
 #pragma once
 
+#include <cstddef>
+
 #include <glm/geometric.hpp>
 
 #include "pipeline/default_scene.hpp"
@@ -41,6 +43,32 @@ inline flat_quad make_flat_quad(glm::vec3 n, glm::vec3 T, int w = 64, int h = 48
   };
   q.ps.triangles = {tri({0, 2, 1}, {a, c, b}), tri({1, 2, 3}, {b, c, d})};
   return q;
+}
+
+// A second map unlike m: its rows upside down and its normals turned 90° about z (palette and
+// unquantised alike).
+inline normal_map turned(const normal_map& m) {
+  normal_map t = m;
+  auto turn = [](glm::vec3 n) { return glm::vec3(-n.y, n.x, n.z); };
+  for (glm::vec3& n : t.palette) n = turn(n);
+  for (int y = 0; y < m.height; ++y)
+    for (int x = 0; x < m.width; ++x) {
+      const auto to = static_cast<std::size_t>(y * m.width + x);
+      const auto from = static_cast<std::size_t>((m.height - 1 - y) * m.width + x);
+      t.index[to] = m.index[from];
+      if (!m.unquantised.empty()) t.unquantised[to] = turn(m.unquantised[from]);
+    }
+  return t;
+}
+
+// s with a two-layer map, s's own and turned(s's): the model's first half samples layer 0, the rest
+// layer 1 (contiguous: the draw order stays the mesh's).
+inline scene two_layers(scene s) {
+  s.normals = stacked({s.normals, turned(s.normals)});
+  const std::size_t n = s.model.triangles.size();
+  s.model.layer.assign(n, 0);
+  for (std::size_t t = n / 2; t < n; ++t) s.model.layer[t] = 1;
+  return s;
 }
 
 }  // namespace gsdot3::pipeline::test

@@ -27,6 +27,7 @@
 #include "pipeline/render.hpp"
 #include "method_param.hpp"
 #include "replayed_frame.hpp"
+#include "test_scenes.hpp"
 
 namespace gsdot3::pipeline {
 namespace {
@@ -38,7 +39,9 @@ std::array<std::size_t, 2> first_pass_uploads(const scene& s, const prepared_sce
   if (in.window_first == 0) return {0, 0};
   start_stream(in, ps, o, detail::band_renderer::drawn_area(ps, {0, 0, s.width, s.height}));
   std::size_t pages = 0;
-  for (const stream_piece& p : in.stream->next_pass(normal_map_stream(in, 0))) pages += p.uploads.size();
+  for (const stream_piece& p :
+       in.stream->next_pass(normal_map_stream(in, 0, 0, {0, static_cast<std::uint32_t>(ps.triangles.size())})))
+    pages += p.uploads.size();
   return {pages, in.stream->window_pages()};
 }
 
@@ -93,7 +96,7 @@ scene sized(scene s, int w, int h) {
 const scene& map_1024() {
   static const scene s = [] {
     scene t = default_scene(256);
-    normal_map big{1024, 1024, std::vector<std::uint8_t>(1024u * 1024u), t.normals.palette, {}, 8};
+    normal_map big{1024, 1024, std::vector<std::uint8_t>(1024u * 1024u), t.normals.palette, {}, 8, {}};
     for (int y = 0; y < 1024; ++y)
       for (int x = 0; x < 1024; ++x)
         big.index[static_cast<std::size_t>(y * 1024 + x)] = static_cast<std::uint8_t>(
@@ -108,6 +111,13 @@ const scene& map_1024() {
 TEST(TextureStream, A1024MapAtTheDefaultFrameEqualsTheValuePath) {
   expect_streamed_frames_equal(map_1024(), method::two_pass, render_options{}, true,
                                "1024², 512x448, two-pass, nearest");
+}
+
+// Two layers (two materials' maps, scene.hpp) of 1024² each: each layer's passes stream its own
+// texture over its own triangles (stream_texture::triangles), each with its layer's CLUT.
+TEST(TextureStream, TwoLayersOf1024StreamEachTheirOwnTexture) {
+  expect_streamed_frames_equal(sized(test::two_layers(map_1024()), 320, 240), method::two_pass, render_options{}, false,
+                               "two layers of 1024², 320x240, two-pass, nearest");
 }
 
 // A 1024² 4-bit map (PSMT4: pages of 128 × 128 texels, two to a byte in the transfers), patched as
@@ -197,7 +207,8 @@ TEST(TextureStream, Pcsx2RowPiecesAreWholeRowsInTriangleOrder) {
   const scissor area = detail::band_renderer::drawn_area(ps, {0, 0, s.width, s.height});
   start_stream(in, ps, o, area);
   for (int pass = 0; pass < 2; ++pass) {
-    const std::vector<stream_piece> pieces = in.stream->next_pass(normal_map_stream(in, 0));
+    const std::vector<stream_piece> pieces =
+        in.stream->next_pass(normal_map_stream(in, 0, 0, {0, static_cast<std::uint32_t>(ps.triangles.size())}));
     int split_rows = 0;
     for (std::size_t k = 0; k < pieces.size(); ++k) {
       EXPECT_EQ(pieces[k].area.x0, area.x0);
@@ -234,7 +245,7 @@ TEST(TextureStream, Pcsx2RowThatDoesNotFitIsAUserError) {
 // A 2048² PNG normal map (generated here: a pattern of bumps) loaded as a user's file is resampled
 // to 1024² (the GS's TW/TH limit) and streams like the procedural one.
 TEST(TextureStream, A2048ImageResampledTo1024EqualsTheValuePath) {
-  const std::filesystem::path dir = test::fresh_temp_dir("gsdot3-stream");
+  const std::filesystem::path dir = gsdot3::test::fresh_temp_dir("gsdot3-stream");
   image img{2048, 2048, 3, {}};
   img.data.resize(2048u * 2048u * 3u);
   for (int y = 0; y < 2048; ++y)

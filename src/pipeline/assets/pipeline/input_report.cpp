@@ -68,6 +68,7 @@ std::string input_json(const input_summary& s) {
     if (n.resampled) j["normal_map"]["filter"] = resample_filter;
     j["normal_map"]["from_height_map"] = n.from_height;
   }
+  if (!s.layers.empty()) j["normal_map"]["layers"] = s.layers;
   j["camera"] = s.camera;
   j["lights"] = s.lights;
   j["notices"] = s.notices;
@@ -98,6 +99,7 @@ std::string input_html(const input_summary& s) {
                                    : "") +
           ", green " + s.normal_map_y + ")";
   h += row("normal map", nm);
+  for (std::size_t k = 0; k < s.layers.size(); ++k) h += row("layer " + std::to_string(k), s.layers[k]);
   h += row("camera", s.camera);
   h += row("lights", s.lights);
   for (const std::string& n : s.notices) h += row("notice", n);

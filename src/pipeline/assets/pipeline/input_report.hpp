@@ -16,6 +16,8 @@ struct input_summary {
   std::string normal_map_source = "procedural (embedded)";  // or "--normal-map FILE", "material of the mesh: NAME", …
   std::optional<loaded_normal_map> normal_map;              // what was decoded (map itself not written)
   std::string normal_map_y = "up";
+  // A mesh whose materials name normal maps: one line per layer (scene.hpp), its map and its materials.
+  std::vector<std::string> layers;
   std::string camera = "embedded scene's";  // or "framed (azimuth A, elevation E)", "--camera X,Y,Z"
   std::string lights = "embedded scene's";  // or "default, turned with the view", "--light"
   std::vector<std::string> notices;         // every notice, in order (the mesh's included)

@@ -42,9 +42,13 @@ std::size_t find_duplicate_triangles(mesh& m, bool drop) {
   for (std::size_t t = 0; t < m.triangles.size(); ++t) {
     const bool fresh = seen.insert(key_of(m, m.triangles[t])).second;
     found += !fresh;
-    if (fresh || !drop) m.triangles[kept++] = m.triangles[t];
+    if (fresh || !drop) {
+      if (!m.layer.empty()) m.layer[kept] = m.layer[t];
+      m.triangles[kept++] = m.triangles[t];
+    }
   }
   m.triangles.resize(kept);
+  if (!m.layer.empty()) m.layer.resize(kept);
   return found;
 }
 

@@ -18,6 +18,7 @@
 
 #include "pipeline/asset_folder.hpp"
 #include "pipeline/child_process.hpp"
+#include "pipeline/material_layers.hpp"
 #include "pipeline/mesh_repair.hpp"
 
 namespace gsdot3::pipeline {
@@ -33,7 +34,8 @@ glm::mat4 to_glm(const aiMatrix4x4& m) {  // assimp is row-major (a4, b4, c4: tr
 
 glm::vec3 v3(const aiVector3D& v) { return {v.x, v.y, v.z}; }
 
-source_mesh convert(const aiMesh& am, std::size_t index, import_report& report) {
+// Mesh `index`, its UVs from set `uv_set` (its material's normal map's; set 0 when it lacks that set).
+source_mesh convert(const aiMesh& am, std::size_t index, unsigned uv_set, import_report& report) {
   source_mesh m;
   const std::string which = "mesh " + std::to_string(index);
   if (am.mVertices == nullptr && am.mNumVertices > 0) throw std::runtime_error(which + " has no positions");
@@ -47,9 +49,11 @@ source_mesh convert(const aiMesh& am, std::size_t index, import_report& report) 
   }
   if (am.mNormals != nullptr)
     for (unsigned i = 0; i < am.mNumVertices; ++i) m.normals.push_back(v3(am.mNormals[i]));
-  if (am.mTextureCoords[0] != nullptr)  // assimp: v runs up the image; the renderer's v runs down
-    for (unsigned i = 0; i < am.mNumVertices; ++i)
-      m.uvs.push_back({am.mTextureCoords[0][i].x, 1.0f - am.mTextureCoords[0][i].y});
+  const aiVector3D* uv = uv_set < AI_MAX_NUMBER_OF_TEXTURECOORDS && am.mTextureCoords[uv_set] != nullptr
+                             ? am.mTextureCoords[uv_set]
+                             : am.mTextureCoords[0];
+  if (uv != nullptr)  // assimp: v runs up the image; the renderer's v runs down
+    for (unsigned i = 0; i < am.mNumVertices; ++i) m.uvs.push_back({uv[i].x, 1.0f - uv[i].y});
   if (am.mTangents != nullptr && am.mBitangents != nullptr)
     for (unsigned i = 0; i < am.mNumVertices; ++i) {
       m.tangents.push_back(v3(am.mTangents[i]));
@@ -85,51 +89,6 @@ std::vector<source_instance> instances_of(const aiScene& s) {
       if (node->mChildren[c] != nullptr) pending.push_back({node->mChildren[c], t});
   }
   return out;
-}
-
-// The first normal map of the instanced meshes' materials: glTF normalTexture / MTL norm
-// (aiTextureType_NORMALS), else an MTL bump / map_Bump (aiTextureType_HEIGHT).
-std::optional<texture_ref> find_normal_map(const aiScene& s, const std::vector<source_instance>& inst,
-                                           const std::filesystem::path& dir) {
-  std::optional<texture_ref> found;
-  std::size_t others = 0;
-  for (aiTextureType type : {aiTextureType_NORMALS, aiTextureType_HEIGHT}) {
-    for (const source_instance& in : inst) {
-      if (s.mMeshes[in.mesh] == nullptr) continue;  // skipped by the conversion too (fuzz/mesh_from_scene)
-      const aiMesh& am = *s.mMeshes[in.mesh];
-      if (am.mMaterialIndex >= s.mNumMaterials || s.mMaterials[am.mMaterialIndex] == nullptr) continue;
-      aiString path;
-      if (s.mMaterials[am.mMaterialIndex]->GetTexture(type, 0, &path) != aiReturn_SUCCESS || path.length == 0) continue;
-      std::string name(path.C_Str());
-      if (found) {
-        others += name != found->name;
-        continue;
-      }
-      texture_ref t;
-      t.name = name;
-      t.slot = type == aiTextureType_NORMALS ? "normal" : "bump";
-      if (const aiTexture* tex = s.GetEmbeddedTexture(path.C_Str())) {
-        if (tex->mHeight == 0) {  // compressed: mWidth bytes of an image file
-          const auto* bytes = reinterpret_cast<const std::uint8_t*>(tex->pcData);
-          t.embedded.assign(bytes, bytes + tex->mWidth);
-        } else {  // raw BGRA texels
-          t.raw = {static_cast<int>(tex->mWidth), static_cast<int>(tex->mHeight), 3, {}};
-          for (std::size_t i = 0; i < static_cast<std::size_t>(tex->mWidth) * tex->mHeight; ++i)
-            t.raw.data.insert(t.raw.data.end(), {tex->pcData[i].r, tex->pcData[i].g, tex->pcData[i].b});
-        }
-      } else {
-        std::replace(name.begin(), name.end(), '\\', '/');  // Windows exporters
-        if (const std::string why = outside_folder(dir, (dir / name).string()); !why.empty())
-          throw std::runtime_error("the material's normal map " + name + " is " + why +
-                                   "; only files in the mesh's folder or below it are read");
-        t.file = dir / std::filesystem::path(name);
-      }
-      found = std::move(t);
-    }
-    if (found) break;
-  }
-  if (found) found->other_maps = others;
-  return found;
 }
 
 // The scene the importer read, or its error as "NAME: cannot read the mesh (why)".
@@ -199,6 +158,7 @@ std::string serialise(const imported_mesh& m) {
   writer w;
   w.pods(m.model.vertices);
   w.pods(m.model.triangles);
+  w.pods(m.model.layer);
   const import_report& r = m.report;
   for (const std::string* t : {&r.file, &r.format, &r.normals, &r.uvs, &r.tangents}) w.text(*t);
   for (std::size_t n : {r.meshes, r.instances, r.triangles, r.dropped_points, r.dropped_lines, r.dropped_degenerate,
@@ -208,9 +168,12 @@ std::string serialise(const imported_mesh& m) {
   w.pod(r.duplicates_dropped);
   w.pod(r.notices.size());
   for (const std::string& n : r.notices) w.text(n);
-  w.pod(m.normal_texture.has_value());
-  if (m.normal_texture) {
-    const texture_ref& t = *m.normal_texture;
+  auto texts = [&](const std::vector<std::string>& v) {
+    w.pod(v.size());
+    for (const std::string& t : v) w.text(t);
+  };
+  w.pod(m.layers.maps.size());
+  for (const texture_ref& t : m.layers.maps) {
     w.text(t.name);
     w.text(t.file.string());
     w.pods(t.embedded);
@@ -218,9 +181,12 @@ std::string serialise(const imported_mesh& m) {
     w.pod(t.raw.height);
     w.pod(t.raw.channels);
     w.pods(t.raw.data);
-    w.pod(t.other_maps);
     w.text(t.slot);
+    w.pod(t.scale);
+    w.pod(t.uv_set);
+    texts(t.materials);
   }
+  texts(m.layers.flat_materials);
   return std::move(w.out);
 }
 
@@ -229,6 +195,7 @@ imported_mesh deserialise(const std::string& bytes) {
   imported_mesh m;
   m.model.vertices = rd.pods<vertex>();
   m.model.triangles = rd.pods<std::array<std::uint32_t, 3>>();
+  m.model.layer = rd.pods<std::uint16_t>();
   import_report& r = m.report;
   for (std::string* t : {&r.file, &r.format, &r.normals, &r.uvs, &r.tangents}) *t = rd.text();
   for (std::size_t* n : {&r.meshes, &r.instances, &r.triangles, &r.dropped_points, &r.dropped_lines,
@@ -237,8 +204,13 @@ imported_mesh deserialise(const std::string& bytes) {
     *n = rd.pod<std::size_t>();
   r.duplicates_dropped = rd.pod<bool>();
   for (std::size_t i = 0, n = rd.pod<std::size_t>(); i < n && rd.at < bytes.size(); ++i) r.notices.push_back(rd.text());
-  if (rd.pod<bool>()) {
-    texture_ref t;
+  auto texts = [&] {
+    std::vector<std::string> v;
+    for (std::size_t i = 0, n = rd.pod<std::size_t>(); i < n && rd.at < bytes.size(); ++i) v.push_back(rd.text());
+    return v;
+  };
+  for (std::size_t i = 0, n = rd.pod<std::size_t>(); i < n && rd.at < bytes.size(); ++i) {
+    texture_ref& t = m.layers.maps.emplace_back();
     t.name = rd.text();
     t.file = rd.text();
     t.embedded = rd.pods<std::uint8_t>();
@@ -246,10 +218,12 @@ imported_mesh deserialise(const std::string& bytes) {
     t.raw.height = rd.pod<int>();
     t.raw.channels = rd.pod<int>();
     t.raw.data = rd.pods<std::uint8_t>();
-    t.other_maps = rd.pod<std::size_t>();
     t.slot = rd.text();
-    m.normal_texture = std::move(t);
+    t.scale = rd.pod<float>();
+    t.uv_set = rd.pod<unsigned>();
+    t.materials = texts();
   }
+  m.layers.flat_materials = texts();
   return m;
 }
 
@@ -269,19 +243,22 @@ imported_mesh from_scene(const aiScene& s, const std::string& name, const std::f
   try {
     const std::vector<source_instance> inst = instances_of(s);
     r.instances = inst.size();
+    std::vector<std::uint16_t> mesh_layer;
+    std::vector<unsigned> uv_set;
+    out.layers = layers_of(s, inst, dir, mesh_layer, uv_set);
     std::vector<source_mesh> meshes(s.mNumMeshes);
     std::vector<char> used(s.mNumMeshes, 0);
     for (const source_instance& in : inst) {
       if (used[in.mesh] || s.mMeshes[in.mesh] == nullptr) continue;
       used[in.mesh] = 1;
-      meshes[in.mesh] = convert(*s.mMeshes[in.mesh], in.mesh, r);
+      meshes[in.mesh] = convert(*s.mMeshes[in.mesh], in.mesh, uv_set[in.mesh], r);
+      meshes[in.mesh].layer = mesh_layer[in.mesh];
       ++r.meshes;
     }
     if (r.dropped_points + r.dropped_lines > 0)
       r.notices.push_back(std::to_string(r.dropped_points) + " point(s) and " + std::to_string(r.dropped_lines) +
                           " line(s) ignored (only triangles are rendered)");
     out.model = build_mesh(meshes, inst, options, r);
-    out.normal_texture = find_normal_map(s, inst, dir);
   } catch (const std::runtime_error& e) { throw std::runtime_error(name + ": " + e.what()); }
   if (r.dropped_degenerate > 0)
     r.notices.push_back(std::to_string(r.dropped_degenerate) + " zero-area triangle(s) dropped");

@@ -29,14 +29,25 @@ struct import_options {
   duplicates_mode duplicates = duplicates_mode::drop;
 };
 
-// The material's normal map: a file beside the mesh, or an image embedded in it (.glb).
+// A material's normal map: a file beside the mesh, or an image embedded in it (.glb).
 struct texture_ref {
   std::string name;                    // as the mesh file names it
   std::filesystem::path file;          // resolved path of an external image (empty when embedded)
   std::vector<std::uint8_t> embedded;  // the encoded image (PNG, JPEG, TGA) when embedded
   image raw;                           // or its texels, when the file embeds them uncompressed
-  std::size_t other_maps = 0;          // further materials naming other normal maps (one is used)
   std::string slot;                    // "normal" (glTF normalTexture, MTL norm) or "bump" (MTL bump, map_Bump)
+  float scale = 1.0f;                  // glTF normalTexture.scale: x and y of the map's normals scaled
+  unsigned uv_set = 0;                 // the texture-coordinate set it reads (glTF texCoord; assimp's UVWSRC)
+  std::vector<std::string> materials;  // the drawn materials that name it
+};
+
+// The normal-map layers of a file's materials (scene.hpp's layers): one per distinct map (name, slot,
+// scale, UV set) the drawn materials name, then, when some drawn material names none, a flat layer
+// for those (a map whose every texel is (0, 0, 1), as an unmapped surface shades).
+struct material_layers {
+  std::vector<texture_ref> maps;            // layer k < maps.size(): maps[k]
+  std::vector<std::string> flat_materials;  // the materials of the flat layer (empty: none)
+  std::size_t count() const noexcept { return maps.size() + (flat_materials.empty() ? 0 : 1); }
 };
 
 // What was read and what was done to it (report.json "input", and one stderr line per notice).
@@ -57,10 +68,14 @@ struct import_report {
   std::vector<std::string> notices;     // one line each, in the order they arose
 };
 
+// At most this many layers: the report page numbers palette entries (256 a layer) in 16 bits.
+inline constexpr std::size_t max_layers = 255;
+
+// No material naming a map: one layer, of the map the scene gives (model.layer empty).
 struct imported_mesh {
-  mesh model;
+  mesh model;  // model.layer: per triangle, its material's layer of `layers`
   import_report report;
-  std::optional<texture_ref> normal_texture;
+  material_layers layers;
 };
 
 // Reads a mesh file. Throws std::runtime_error "FILE: why" (one line) for an importer error, no

@@ -31,14 +31,18 @@ mesh_figures measure(const mesh& m) {
 
 namespace {
 
-nlohmann::json normal_map_json(const imported_mesh& im) {
-  if (!im.normal_texture) return nullptr;
-  const texture_ref& t = *im.normal_texture;
-  return {{"name", t.name},
-          {"slot", t.slot},
-          {"embedded", t.file.empty()},
-          {"file", t.file.empty() ? "" : t.file.string()},
-          {"other_maps", t.other_maps}};
+// The materials' normal maps, one a layer (mesh_import.hpp's material_layers).
+nlohmann::json normal_maps_json(const imported_mesh& im) {
+  nlohmann::json maps = nlohmann::json::array();
+  for (const texture_ref& t : im.layers.maps)
+    maps.push_back({{"name", t.name},
+                    {"slot", t.slot},
+                    {"embedded", t.file.empty()},
+                    {"file", t.file.empty() ? "" : t.file.string()},
+                    {"scale", t.scale},
+                    {"uv_set", t.uv_set},
+                    {"materials", t.materials}});
+  return maps;
 }
 
 std::string xyz(glm::vec3 v) {
@@ -55,7 +59,8 @@ std::string mesh_info_json(const imported_mesh& im, const mesh_figures& f) {
   j["bounds"] = {{"min", {f.lo.x, f.lo.y, f.lo.z}}, {"max", {f.hi.x, f.hi.y, f.hi.z}}};
   j["uvs"] = {{"source", im.report.uvs}, {"area", f.uv_area}};
   j["tangents"]["w"] = {{"plus", f.w_plus}, {"minus", f.w_minus}};
-  j["normal_map"] = normal_map_json(im);
+  j["normal_maps"] = normal_maps_json(im);
+  j["materials_without_normal_map"] = im.layers.flat_materials;
   j["notices"] = im.report.notices;
   return j.dump();
 }
@@ -77,11 +82,23 @@ std::string mesh_info_text(const imported_mesh& im, const mesh_figures& f) {
     << " triangle(s) with zero UV area\n"
     << "tangents    " << r.tangents << "; w +1 on " << f.w_plus << " vertices, -1 (mirrored UVs) on " << f.w_minus
     << ", " << r.fallback_tangent_corners << " fallback corner(s)\n";
-  if (im.normal_texture)
-    o << "normal map  " << im.normal_texture->name << " (" << im.normal_texture->slot << ", "
-      << (im.normal_texture->file.empty() ? "embedded" : im.normal_texture->file.string()) << ")\n";
-  else
-    o << "normal map  none in the material\n";
+  for (std::size_t k = 0; k < im.layers.maps.size(); ++k) {
+    const texture_ref& t = im.layers.maps[k];
+    o << "layer " << k << "     " << t.name << " (" << t.slot << ", "
+      << (t.file.empty() ? "embedded" : t.file.string());
+    if (t.scale != 1.0f) o << ", scale " << t.scale;
+    if (t.uv_set != 0) o << ", UV set " << t.uv_set;
+    o << "); materials:";
+    for (const std::string& m : t.materials) o << " " << m;
+    o << "\n";
+  }
+  if (im.layers.maps.empty()) {
+    o << "normal map  none in the materials\n";
+  } else if (!im.layers.flat_materials.empty()) {
+    o << "layer " << im.layers.maps.size() << "     flat (no normal map); materials:";
+    for (const std::string& m : im.layers.flat_materials) o << " " << m;
+    o << "\n";
+  }
   for (const std::string& n : r.notices) o << "notice      " << n << "\n";
   return o.str();
 }

@@ -7,6 +7,7 @@
 #include <numbers>
 #include <stdexcept>
 #include <unordered_map>
+#include <utility>
 
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
@@ -131,9 +132,10 @@ struct corner {
   float sign;
 };
 
-// Corners with identical attributes become one vertex.
-mesh weld(const std::vector<corner>& corners) {
+// Corners with identical attributes become one vertex; triangle t samples layer layer[t] (none but 0: no layers).
+mesh weld(const std::vector<corner>& corners, std::vector<std::uint16_t> layer) {
   mesh m;
+  if (std::any_of(layer.begin(), layer.end(), [](std::uint16_t k) { return k != 0; })) m.layer = std::move(layer);
   std::unordered_map<std::array<std::uint32_t, 12>, std::uint32_t, word_hash> ids;
   std::array<std::uint32_t, 3> tri{};
   for (std::size_t c = 0; c < corners.size(); ++c) {
@@ -166,6 +168,7 @@ mesh build_mesh(const std::vector<source_mesh>& meshes, const std::vector<source
   std::vector<char> counted(meshes.size(), 0);
   std::size_t meshes_file_tangents = 0, meshes_mikk = 0, meshes_generated_normals = 0;
   std::vector<corner> all;
+  std::vector<std::uint16_t> layer;  // per triangle of `all`
   for (const source_instance& in : instances) {
     const source_mesh& sm = meshes[in.mesh];
     const bool first = !counted[in.mesh];
@@ -295,6 +298,7 @@ mesh build_mesh(const std::vector<source_mesh>& meshes, const std::vector<source
         continue;
       }
       all.insert(all.end(), k.begin(), k.end());
+      layer.push_back(sm.layer);
     }
   }
   if (all.empty())
@@ -313,7 +317,7 @@ mesh build_mesh(const std::vector<source_mesh>& meshes, const std::vector<source
                         ? "MikkTSpace (computed)"
                         : "file (TANGENT) for " + std::to_string(meshes_file_tangents) +
                               " meshes, MikkTSpace (computed) for " + std::to_string(meshes_mikk);
-  mesh out = weld(all);
+  mesh out = weld(all, std::move(layer));
   report.duplicates_dropped = options.duplicates == duplicates_mode::drop;
   report.duplicate_triangles = find_duplicate_triangles(out, report.duplicates_dropped);
   report.triangles = out.triangles.size();

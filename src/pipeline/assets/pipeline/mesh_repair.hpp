@@ -24,6 +24,7 @@ struct source_mesh {
   std::vector<glm::vec3> tangents;    // empty: none; with them:
   std::vector<glm::vec3> bitangents;  // the file's bitangents (pointing up the image)
   std::vector<std::array<std::uint32_t, 3>> triangles;
+  std::uint16_t layer = 0;  // the normal-map layer of its material (mesh::layer)
 };
 
 struct source_instance {

@@ -135,6 +135,11 @@ normal_map with_index_bits(const normal_map& m, int bits) {
   if (bits != 4 && bits != 8 && bits != 24)
     throw std::invalid_argument("normal map bits: 4, 8 or 24, not " + std::to_string(bits));
   if (m.bits == bits) return m;
+  if (layers(m) > 1) {  // each layer (a material's map) on its own palette
+    std::vector<normal_map> each;
+    for (std::size_t k = 0; k < layers(m); ++k) each.push_back(with_index_bits(layer_map(m, k), bits));
+    return stacked(each);
+  }
   if (bits == 24 && (m.bits != 8 || m.unquantised.size() != m.index.size()))
     throw std::invalid_argument(
         "normal map bits: 24 needs an 8-bit map with its unquantised normals (quantise keeps them)");

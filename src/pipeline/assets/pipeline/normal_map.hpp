@@ -24,7 +24,7 @@ normal_map quantise(const std::vector<glm::vec3>& normals, int width, int height
 // unquantised normals, scene.hpp): the same map when it has them; an 8-bit map to 4 bits by quantising
 // its texels' normals (palette[index]) to 16 entries as above, the far level of detail made from the
 // near one (section 3.8); a 4-bit map's indices are valid 8-bit ones; 24 from an 8-bit map only.
-// Throws std::invalid_argument for any other bits.
+// A map of several layers: each layer so. Throws std::invalid_argument for any other bits.
 normal_map with_index_bits(const normal_map& m, int bits);
 
 }  // namespace gsdot3::pipeline

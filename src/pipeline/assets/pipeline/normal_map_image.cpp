@@ -81,12 +81,13 @@ loaded_normal_map normal_map_from_image(const image& img, const std::string& nam
     normals.reserve(texels);
     const float y_sign = s.y == normal_map_y::up ? -1.0f : 1.0f;  // into the renderer's v-down frame
     for (std::size_t i = 0; i < texels; ++i) {
-      const glm::vec3 n{img.data[3 * i] / 127.5f - 1.0f, y_sign * (img.data[3 * i + 1] / 127.5f - 1.0f),
+      const glm::vec3 n{s.xy_scale * (img.data[3 * i] / 127.5f - 1.0f),
+                        s.xy_scale * y_sign * (img.data[3 * i + 1] / 127.5f - 1.0f),
                         img.data[3 * i + 2] / 127.5f - 1.0f};
       normals.push_back(glm::length(n) > 1e-3f ? glm::normalize(n) : glm::vec3(0, 0, 1));
     }
   }
-  const int W = texture_side(img.width), H = texture_side(img.height);
+  const int W = s.width > 0 ? s.width : texture_side(img.width), H = s.height > 0 ? s.height : texture_side(img.height);
   r.resampled = W != img.width || H != img.height;
   if (r.resampled) normals = resample_normals(normals, img.width, img.height, W, H);
   r.map = quantise(normals, W, H, 256);

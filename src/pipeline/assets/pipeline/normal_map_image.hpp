@@ -24,6 +24,8 @@ struct normal_map_settings {
   normal_map_y y = normal_map_y::up;  // glTF's convention
   bool grey_is_height = false;        // a grey image is a height map (an MTL bump) instead of an error
   float height_strength = 0.05f;      // slope per grey level for such a height map
+  float xy_scale = 1.0f;              // x and y of every normal scaled, then renormalised (glTF normalTexture.scale)
+  int width = 0, height = 0;          // the GS texture's sides (0: texture_side of the image's)
 };
 
 struct loaded_normal_map {

@@ -34,6 +34,9 @@ void validate(const mesh& m) {
     for (std::uint32_t i : m.triangles[t])
       if (i >= m.vertices.size())
         throw std::runtime_error("triangle " + std::to_string(t) + " refers to missing vertex " + std::to_string(i));
+  if (!m.layer.empty() && m.layer.size() != m.triangles.size())
+    throw std::runtime_error("the mesh has " + std::to_string(m.layer.size()) + " layer numbers for " +
+                             std::to_string(m.triangles.size()) + " triangles");
 }
 
 void compute_tangents(mesh& m) {

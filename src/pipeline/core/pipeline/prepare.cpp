@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 #include <glm/ext/matrix_clip_space.hpp>
 #include <glm/ext/matrix_transform.hpp>
@@ -44,13 +46,15 @@ std::vector<prepared_triangle> set_up(const mesh& m, const std::vector<screen_ve
                                       int& culled, int& dropped) {
   std::vector<prepared_triangle> out;
   const float tw = static_cast<float>(tex_w) * 16.0f, th = static_cast<float>(tex_h) * 16.0f;
-  for (const auto& tri : m.triangles) {
+  for (std::size_t t = 0; t < m.triangles.size(); ++t) {
+    const auto& tri = m.triangles[t];
     if (!sv[tri[0]].ok || !sv[tri[1]].ok || !sv[tri[2]].ok) {
       ++dropped;
       continue;
     }
     prepared_triangle pt;
     pt.vertex = tri;
+    pt.layer = layer_of(m, t);
     pt.setup = setup_triangle({sv[tri[0]].xy, sv[tri[1]].xy, sv[tri[2]].xy});
     if (!pt.setup.front) {
       ++culled;
@@ -112,6 +116,19 @@ prepared_scene prepare(const scene& s, float yaw_degrees, bool half_vectors) {
   }
   ps.triangles = set_up(s.model, project(s.model, mvp, s.width, s.height), s.normals.width, s.normals.height,
                         ps.culled_back, ps.dropped_outside);
+  const std::size_t n_layers = layers(s.normals);
+  for (std::uint16_t k : s.model.layer)
+    if (k >= n_layers)
+      throw std::invalid_argument("a triangle samples normal-map layer " + std::to_string(k) + " of " +
+                                  std::to_string(n_layers));
+  std::vector<std::uint32_t> count(n_layers + 1, 0);
+  for (const prepared_triangle& t : ps.triangles) ++count[t.layer + 1u];
+  std::stable_sort(ps.triangles.begin(), ps.triangles.end(),
+                   [](const prepared_triangle& a, const prepared_triangle& b) { return a.layer < b.layer; });
+  for (std::size_t k = 0; k < n_layers; ++k) {
+    count[k + 1] += count[k];
+    ps.layers.push_back({count[k], count[k + 1]});
+  }
 
   // Step 5's geometry: Lambert per vertex, as a VU1 lighting program for Gouraud shading would.
   ps.plain_light.assign(s.plain.vertices.size(), glm::vec3(s.ambient[0], s.ambient[1], s.ambient[2]));

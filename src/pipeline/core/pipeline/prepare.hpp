@@ -30,11 +30,20 @@ struct prepared_triangle {
   plane z;                                            // 24-bit depth, larger is nearer
   std::array<std::int32_t, 3> z24{};                  // the vertices' depths the plane is made from (XYZ2.Z)
   std::array<std::array<std::int32_t, 2>, 3> uv16{};  // normal-map texel coordinates in 12.4
+  std::uint16_t layer = 0;                            // the normal map's layer it samples (mesh::layer)
+};
+
+// Triangles [first, end) of a list.
+struct triangle_range {
+  std::uint32_t first = 0, end = 0;
 };
 
 struct prepared_scene {
   int width = 0, height = 0;
-  std::vector<prepared_triangle> triangles;       // front-facing, drawable, in mesh order
+  // Front-facing, drawable, in mesh order by layer: layers[k] holds layer k's (one range, all of
+  // them, for a one-layer map), as a PS2 renderer draws a pass material by material.
+  std::vector<prepared_triangle> triangles;
+  std::vector<triangle_range> layers;
   std::vector<std::vector<light_vertex>> lights;  // [light][mesh vertex]
   std::vector<std::vector<spot_vertex>> spots;    // [light][mesh vertex]: spot lights' (spot.hpp), else empty
   // Step 5 (scene::plain): its front-facing, drawable triangles (uv16 in diffuse-texture texels), and
@@ -44,9 +53,16 @@ struct prepared_scene {
   std::vector<glm::vec3> plain_light;
   // Whether light l is a spot light (a scene prepared by hand may have no `spots` at all).
   bool spot(std::size_t l) const noexcept { return l < spots.size() && !spots[l].empty(); }
+  // The layers, and layer k's triangles (one layer of every triangle when `layers` is empty: a scene
+  // prepared by hand).
+  std::size_t layer_count() const noexcept { return layers.empty() ? 1 : layers.size(); }
+  triangle_range layer(std::size_t k) const noexcept {
+    return layers.empty() ? triangle_range{0, static_cast<std::uint32_t>(triangles.size())} : layers[k];
+  }
   int culled_back = 0, dropped_outside = 0;
 };
 
+// Throws std::invalid_argument when a triangle names a layer the normal map does not have.
 // `yaw_degrees` turns the model about its vertical axis (180 = the back view of figure 7).
 // `half_vectors`: T is the tangent-space half vector normalize(tolight + toeye) instead of the
 // tolight vector (section 3.7, specular); fade_att still uses n·l.

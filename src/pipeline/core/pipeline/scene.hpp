@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -25,7 +26,13 @@ struct vertex {
 struct mesh {
   std::vector<vertex> vertices;
   std::vector<std::array<std::uint32_t, 3>> triangles;  // counter-clockwise seen from outside
+  // Per triangle, the layer of the scene's normal map its material samples (normal_map, "layers");
+  // empty: layer 0 for every triangle.
+  std::vector<std::uint16_t> layer;
 };
+
+// The layer triangle t of m samples.
+inline std::uint16_t layer_of(const mesh& m, std::size_t t) { return m.layer.empty() ? 0 : m.layer[t]; }
 
 // A palettised normal map: `index` is width·height palette indices, `palette` holds up to 2^bits
 // unit tangent-space normals (z towards the viewer of the surface). bits 8: a PSMT8 texture with a
@@ -34,18 +41,40 @@ struct mesh {
 // read at 8 bits per component, section 3.6's "three 8 bit normal maps" (the four-pass method samples
 // one map per axis pass, gs_inputs.hpp), and the float reference reads them (texel_normal); the methods
 // that sample a texel's three components in one pass read the 8-bit map.
+// Layers: a mesh whose materials have different maps (mesh::layer) has one layer per map, all
+// width×height with the same bits, each with its own palette, as a PS2 renderer keeps one texture and
+// CLUT per material: `index` and `unquantised` hold the layers' texels one layer after another,
+// `palette` their palettes one after another, layer k's from palette_start[k] (empty: one layer).
 struct normal_map {
   int width = 0, height = 0;
   std::vector<std::uint8_t> index;
   std::vector<glm::vec3> palette;
   std::vector<glm::vec3> unquantised;
   int bits = 8;
+  std::vector<std::uint32_t> palette_start;
 };
 
-// The unit normal the map holds at texel i (row-major): palette[index[i]], for a 24-bit map unquantised[i].
-inline glm::vec3 texel_normal(const normal_map& m, std::size_t i) {
-  return m.bits == 24 ? m.unquantised[i] : m.palette[m.index[i]];
+inline std::size_t layers(const normal_map& m) { return m.palette_start.empty() ? 1 : m.palette_start.size(); }
+inline std::size_t layer_texels(const normal_map& m) {
+  return static_cast<std::size_t>(m.width) * static_cast<std::size_t>(m.height);
 }
+// The palette entry of texel i (row-major) of layer k: an index into `palette`.
+inline std::size_t palette_entry(const normal_map& m, std::size_t k, std::size_t i) {
+  return (m.palette_start.empty() ? 0 : m.palette_start[k]) + m.index[k * layer_texels(m) + i];
+}
+// The unit normal layer k holds at texel i: its palette entry, for a 24-bit map unquantised.
+inline glm::vec3 texel_normal(const normal_map& m, std::size_t k, std::size_t i) {
+  return m.bits == 24 ? m.unquantised[k * layer_texels(m) + i] : m.palette[palette_entry(m, k, i)];
+}
+// Layer k's palette.
+inline std::vector<glm::vec3> layer_palette(const normal_map& m, std::size_t k) {
+  const std::size_t from = m.palette_start.empty() ? 0 : m.palette_start.at(k);
+  const std::size_t to = k + 1 < m.palette_start.size() ? m.palette_start[k + 1] : m.palette.size();
+  return {m.palette.begin() + static_cast<std::ptrdiff_t>(from), m.palette.begin() + static_cast<std::ptrdiff_t>(to)};
+}
+// Layer k as a map of its own, and layers (same size and bits) as one map.
+normal_map layer_map(const normal_map& m, std::size_t k);
+normal_map stacked(const std::vector<normal_map>& layers);
 
 // An RGB texture (A8B8G8R8 words, alpha 0x80) for the unlit diffuse pass.
 struct texture32 {

@@ -9,6 +9,7 @@
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -60,8 +61,10 @@ class band_renderer {
     if (o_.path == raster_path::cached) {
       frags_.clear();
       tri_frags_.assign(1, 0);
+      tri_runs_.assign(1, 0);
       runs_.clear();
-      for (std::size_t t = 0; t < ps_.triangles.size(); ++t, tri_frags_.push_back(frags_.size())) {
+      for (std::size_t t = 0; t < ps_.triangles.size();
+           ++t, tri_frags_.push_back(frags_.size()), tri_runs_.push_back(runs_.size())) {
         const prepared_triangle& tri = ps_.triangles[t];
         rasterise_triangle(tri.setup, band_, [&](int x, int y) {
           if (!passes_later_depth_test(tri, x, y)) return;
@@ -76,18 +79,16 @@ class band_renderer {
     }
   }
 
-  // A triangle pass with ZTST = GEQUAL and ZMSK = 1; with a piece only its pixels in the piece's
-  // rectangle (SCISSOR_1 of a streamed texture's piece, pipeline/texture_stream.hpp). The scalar loop
-  // is compiled per register set, with one call site of the pixel so that each copy stays small.
+  // A triangle pass (ZTST = GEQUAL, ZMSK = 1) over `tris` (a layer's, or all); a piece's (SCISSOR_1,
+  // texture_stream.hpp) by the scalar loop, compiled per register set with one call site of the pixel.
   template <const pass_regs& Pass, class FB>
   [[gnu::flatten]] void draw(const texture_ref* tex, const std::vector<tri_attr>& attr, const FB& fb,
-                             const stream_piece* piece = nullptr) {
-    // A streamed piece is drawn by the scalar loop below: the span batches know no SCISSOR_1.
-    if (vectorised() && piece == nullptr) return draw_spans(batch_registers<Pass>, tex, attr, fb);
+                             triangle_range tris, const stream_piece* piece = nullptr) {
+    if (vectorised() && piece == nullptr) return draw_spans(batch_registers<Pass>, tex, attr, fb, tris);
     constexpr gs::gs_registers regs = Pass.registers();
     const bool cached = piece == nullptr && o_.path == raster_path::cached;
-    const std::vector<fragment> cut = cached ? std::vector<fragment>{} : fragments_of(piece);
-    const std::vector<fragment>& fs = cached ? frags_ : cut;
+    const std::vector<fragment> cut = cached ? std::vector<fragment>{} : fragments_of(piece, tris);
+    const std::span<const fragment> fs = cached ? of(frags_, tri_frags_, tris) : std::span<const fragment>(cut);
     std::array<pixel_inputs, 64> in;  // the texels and colours of up to 64 fragments, fetched first
     for (std::size_t i = 0; i < fs.size(); i += in.size()) {
       const std::size_t n = std::min(in.size(), fs.size() - i);
@@ -116,14 +117,12 @@ class band_renderer {
       out[k].texel = tex != nullptr ? tex->sample(a.u.at(x, y), a.v.at(x, y)) : gs::rgba8{};
     }
   }
-  // The fragments a triangle pass draws, in draw order: with a piece its triangles' within its
-  // rectangle (from the cached fragments, rows in order within each triangle), on the reference path
-  // every triangle rasterised again and depth-tested against step 1's Z.
-  [[gnu::noinline]] std::vector<fragment> fragments_of(const stream_piece* piece) const {
+  // The fragments a triangle pass draws, in draw order: with a piece its triangles' in its rectangle
+  // (cached, rows in order within each triangle), on the reference path rasterised again and tested.
+  [[gnu::noinline]] std::vector<fragment> fragments_of(const stream_piece* piece, triangle_range tris) const {
     std::vector<fragment> out;
     const scissor* clip = piece != nullptr ? &piece->area : nullptr;
-    const triangle_range range =
-        piece != nullptr ? piece->triangles : triangle_range{0, static_cast<std::uint32_t>(ps_.triangles.size())};
+    const triangle_range range = piece != nullptr ? piece->triangles : tris;  // a piece's: within its layer's
     if (o_.path == raster_path::cached) {
       for (std::uint32_t t = range.first; t < range.end; ++t) {
         const auto end = frags_.begin() + static_cast<std::ptrdiff_t>(tri_frags_[t + 1]);
@@ -329,7 +328,8 @@ class band_renderer {
   // everything it calls inlined into it.
   template <class FB>
   [[gnu::noinline, gnu::flatten]] void draw_spans(const gs::gs_registers& regs, const texture_ref* tex,
-                                                  const std::vector<tri_attr>& attr, const FB& fb) {
+                                                  const std::vector<tri_attr>& attr, const FB& fb,
+                                                  triangle_range tris) {
     span_batch batch(regs, o_.model);
     auto add = [&](gs::attribute_walker& w, int x, int y) {
       const gs::attribute_walker::values a = w.at(x, y);
@@ -338,10 +338,11 @@ class band_renderer {
       ++ops_;
     };
     if (o_.path == raster_path::cached) {
+      const std::span<const run> tri_runs = of(runs_, tri_runs_, tris);
       std::int32_t last = -1;
       std::optional<gs::attribute_walker> w;
       if constexpr (!std::is_same_v<FB, row_view>) {  // the memory path: pixel by pixel
-        for (const run& r : runs_) {
+        for (const run& r : tri_runs) {
           if (r.tri != last) batch.flush(), last = r.tri, w.emplace(attr[static_cast<std::size_t>(r.tri)]);
           for (int k = 0; k < r.n; ++k) add(*w, r.x0 + k, r.y);
         }
@@ -349,7 +350,7 @@ class band_renderer {
         // The runs with texel(u16, v16) as the fetch, instantiated per kind of fetch (no test per
         // pixel); a run's words are adjacent.
         auto runs = [&](auto&& texel) {
-          for (const run& r : runs_) {
+          for (const run& r : tri_runs) {
             if (r.tri != last) batch.flush(), last = r.tri, w.emplace(attr[static_cast<std::size_t>(r.tri)]);
             batch.add_row(&fb(r.x0, r.y), r.x0, r.y, [&](auto&& put) {
               w->row(r.x0, r.y, r.n, [&](int, const gs::attribute_walker::values& a) { put(texel(a.u, a.v), a.cf); });
@@ -368,7 +369,7 @@ class band_renderer {
       }
       return;
     }
-    for (std::size_t t = 0; t < ps_.triangles.size(); ++t) {
+    for (std::size_t t = tris.first; t < tris.end; ++t) {
       gs::attribute_walker w(attr[t]);
       rasterise_triangle(ps_.triangles[t].setup, band_, [&](int x, int y) {
         if (passes_later_depth_test(ps_.triangles[t], x, y)) add(w, x, y);
@@ -392,6 +393,7 @@ class band_renderer {
   std::vector<fragment> frags_;
   std::vector<run> runs_;               // frags_ as runs, in the same order
   std::vector<std::size_t> tri_frags_;  // triangle t's fragments: frags_[tri_frags_[t], tri_frags_[t + 1])
+  std::vector<std::size_t> tri_runs_;   // and its runs: runs_[tri_runs_[t], tri_runs_[t + 1])
   std::size_t ops_ = 0;
 };
 

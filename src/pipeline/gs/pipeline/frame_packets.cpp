@@ -37,10 +37,13 @@ struct encoder {
   const buffer_layout& b;
   gif::stream g;
 
-  std::uint32_t cbp(clut_slot c) const { return in.cbp[static_cast<std::size_t>(c)]; }
+  // Slot c's CBP in layer l (the shared palettes: layer 0's).
+  std::uint32_t cbp(clut_slot c, int l = 0) const {
+    return in.cbp.at(l < 0 ? 0 : static_cast<std::size_t>(l))[static_cast<std::size_t>(c)];
+  }
   bool z_layout(buffer_role r) const { return in_z_layout(r, o.dpb_clear); }
   std::optional<std::uint32_t> palette(const frame_op& op) const {
-    return op.no_clut ? std::nullopt : std::optional<std::uint32_t>(cbp(op.clut));
+    return op.no_clut ? std::nullopt : std::optional<std::uint32_t>(cbp(op.clut, op.layer));
   }
   static gs::rgba8 white_vertex(const prepared_triangle&, int) { return white; }
   static std::array<std::int32_t, 2> nm_uv(const prepared_triangle& t, int k) { return normal_map_uv(t, k); }
@@ -49,7 +52,8 @@ struct encoder {
     const pass_regs& r = *op.regs;
     switch (op.texture) {
       case texture_role::normal_map:
-        return g.texture(r, in.nm_at[op.normal_map], in.nm->width, in.nm->height, palette(op), false, o.bilinear);
+        return g.texture(r, in.nm_at.at(texture_index(in, static_cast<std::size_t>(op.layer), op.normal_map)),
+                         in.nm->width, in.nm->height, palette(op), false, o.bilinear);
       case texture_role::piece: {
         const stream_texture& t = prog.streamed[static_cast<std::size_t>(op.stream)];
         const stream_piece& p = prog.pieces[static_cast<std::size_t>(op.piece)];
@@ -75,7 +79,9 @@ struct encoder {
 
   void triangles(const frame_op& op) {
     const stream_piece* piece = op.piece < 0 ? nullptr : &prog.pieces[static_cast<std::size_t>(op.piece)];
-    if (op.light < 0) return g.triangles(*op.regs, true, white_vertex, nm_uv, piece);
+    const std::optional<triangle_range> range =
+        op.layer < 0 ? std::nullopt : std::optional<triangle_range>(ps.layer(static_cast<std::size_t>(op.layer)));
+    if (op.light < 0) return g.triangles(*op.regs, true, white_vertex, nm_uv, piece, range);
     const std::vector<light_vertex>& lv = ps.lights[static_cast<std::size_t>(op.light)];
     const pass_source src = op.texture == texture_role::sphere_map ? pass_source::sphere_map : pass_source::normal_map;
     g.triangles(
@@ -83,7 +89,7 @@ struct encoder {
         [&](const prepared_triangle& t, int k) {
           return vertex_rgbaq(op.colour_of, lv[t.vertex[static_cast<std::size_t>(k)]], o.s);
         },
-        [&](const prepared_triangle& t, int k) { return vertex_uv(src, t, k, lv); }, piece);
+        [&](const prepared_triangle& t, int k) { return vertex_uv(src, t, k, lv); }, piece, range);
   }
 
   void run(const frame_op& op) {

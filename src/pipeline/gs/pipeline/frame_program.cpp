@@ -111,15 +111,17 @@ frame_program build_frame_program(const scene& s, const prepared_scene& ps, meth
   // A triangle pass drawing a texture into b: its TEX0_1 ... and triangles; a streamed texture (stream
   // k of prog.streamed) per piece: its uploads (and TEXFLUSH), SCISSOR_1 = the piece, TEX0_1 with the
   // piece's TBP0 / TBW (the CLUT loaded by the first) and the triangles that reach the piece.
+  // Layer `layer` of the normal map (−1: the diffuse texture, every triangle).
   auto textured = [&](const pass_regs& r, buffer_role b, std::optional<clut_slot> clut, texture_role t, std::size_t nm,
-                      const stream_texture& texels, int light, vertex_colour c) {
+                      int layer, const stream_texture& texels, int light, vertex_colour c) {
     auto triangles = [&](int piece, int stream) {
       frame_op& d = w.draw(kind::triangles, r, b);
       d.texture = t, d.normal_map = nm, d.clut = clut.value_or(clut_slot::pos), d.no_clut = !clut;
-      d.light = light, d.colour_of = c, d.piece = piece, d.stream = stream;
+      d.light = light, d.colour_of = c, d.piece = piece, d.stream = stream, d.layer = layer;
     };
     if (!in.stream) {
-      w.texture(r, t, clut).normal_map = nm;
+      frame_op& tex = w.texture(r, t, clut);
+      tex.normal_map = nm, tex.layer = layer;
       w.target(b, r);
       return triangles(-1, -1);
     }
@@ -136,7 +138,7 @@ frame_program build_frame_program(const scene& s, const prepared_scene& ps, meth
       if (uploads) w.texflush();
       w.clip(area_role::piece, i);
       frame_op& tex = w.texture(r, texture_role::piece, clut);
-      tex.piece = i, tex.stream = k, tex.load = first;
+      tex.piece = i, tex.stream = k, tex.load = first, tex.layer = layer;
       first = false;
       triangles(i, k);
     }
@@ -151,7 +153,7 @@ frame_program build_frame_program(const scene& s, const prepared_scene& ps, meth
     w.fill(clear, b, 0, area_role::sprite_area);
     w.clip(area_role::frame);
     w.depth(depth_gequal, z_masked);
-    textured(layer, b, std::nullopt, texture_role::diffuse, 0, diffuse_texels, -1, vertex_colour::white);
+    textured(layer, b, std::nullopt, texture_role::diffuse, 0, -1, diffuse_texels, -1, vertex_colour::white);
   };
 
   for (std::size_t l = 0; l < s.lights.size(); ++l) {
@@ -189,9 +191,11 @@ frame_program build_frame_program(const scene& s, const prepared_scene& ps, meth
       if (drawn++ == 1) spot_pass(spot_step::after_first_pass);  // after the first pass, before the second
       const pass_regs& regs = *p.regs;
       switch (p.source) {
-        case pass_source::normal_map: {
+        case pass_source::normal_map: {  // per layer (a material's map): its TEX0, CLUT and triangles
           const std::size_t k = normal_map_of(in, p.clut);
-          textured(regs, DPB, p.clut, texture_role::normal_map, k, normal_map_stream(in, k), li, p.colour);
+          for (std::size_t n = 0; n < ps.layer_count(); ++n)
+            textured(regs, DPB, p.clut, texture_role::normal_map, k, static_cast<int>(n),
+                     normal_map_stream(in, n, k, ps.layer(n)), li, p.colour);
           break;
         }
         case pass_source::sphere_map: {

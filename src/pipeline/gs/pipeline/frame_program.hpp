@@ -89,6 +89,9 @@ struct frame_op {
   int light = -1, piece = -1, stream = -1;
   unsigned channel = 0;
   std::size_t normal_map = 0;  // texture_role::normal_map: which of normal_map_count(in)
+  // texture (normal map) and triangles: the normal map's layer (scene.hpp), its texture and palettes,
+  // and its triangles (prepared_scene::layer); −1: a triangle pass over every triangle.
+  int layer = -1;
   const gs::test_reg* test = nullptr;
   const gs::zbuf_reg* zbuf = nullptr;
   std::string_view label, name;

@@ -5,9 +5,12 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <span>
+#include <vector>
 
 #include "gs_memory/fast_address.hpp"
 #include "gs_memory/swizzle_tables.hpp"
+#include "pipeline/prepare.hpp"
 
 namespace gsdot3::pipeline::detail {
 
@@ -61,5 +64,11 @@ struct run {
   std::int16_t x0, y;
   std::int32_t n;
 };
+
+// Triangles r's records of v (fragments, runs), which `at` indexes per triangle: v[at[t], at[t + 1]).
+template <class T>
+std::span<const T> of(const std::vector<T>& v, const std::vector<std::size_t>& at, triangle_range r) {
+  return std::span<const T>(v).subspan(at[r.first], at[r.end] - at[r.first]);
+}
 
 }  // namespace gsdot3::pipeline::detail

@@ -102,16 +102,18 @@ class stream {
   }
   void texflush() { set(address("TEXFLUSH"), 0); }
 
-  // Every prepared triangle, PACKED {RGBAQ, UV, XYZ2} per vertex, PRE = 1; with `only` just those the
-  // streamed texture's piece draws (stream_piece::draws: the others draw nothing in it).
+  // The prepared triangles `range` (every one by default), PACKED {RGBAQ, UV, XYZ2} per vertex,
+  // PRE = 1; with `only` just those the streamed texture's piece draws (stream_piece::draws: the others
+  // draw nothing in it).
   template <class Colour, class UV>
-  void triangles(const pass_regs& p, bool gouraud, Colour&& colour, UV&& uv, const stream_piece* only = nullptr) {
-    triangles_of(ps_.triangles, p, gouraud, colour, uv, only);
+  void triangles(const pass_regs& p, bool gouraud, Colour&& colour, UV&& uv, const stream_piece* only = nullptr,
+                 std::optional<triangle_range> range = std::nullopt) {
+    triangles_of(ps_.triangles, p, gouraud, colour, uv, only, range);
   }
   // The same for a list of triangles (the DOT3 mesh's, or step 5's).
   template <class Colour, class UV>
   void triangles_of(const std::vector<prepared_triangle>& tris, const pass_regs& p, bool gouraud, Colour&& colour,
-                    UV&& uv, const stream_piece* only = nullptr) {
+                    UV&& uv, const stream_piece* only = nullptr, std::optional<triangle_range> range = std::nullopt) {
     flush();
     const gs::prim_reg prim{gs::prim_type::TRIANGLE, gouraud, p.TME, false, p.ABE, false, true, false, false};
     static constexpr unsigned regs[] = {pk::desc::RGBAQ, pk::desc::UV, pk::desc::XYZ2};
@@ -120,7 +122,8 @@ class stream {
       if (!data.empty()) out.packed(static_cast<std::uint32_t>(gs::encode(prim)), regs, data);
       data.clear();
     };
-    for (std::uint32_t i = 0; i < tris.size(); ++i) {
+    const triangle_range r = range.value_or(triangle_range{0, static_cast<std::uint32_t>(tris.size())});
+    for (std::uint32_t i = r.first; i < r.end; ++i) {
       const prepared_triangle& t = tris[i];
       if (only != nullptr && !only->draws(i, t)) continue;
       for (int k = 0; k < 3; ++k) {

@@ -52,11 +52,13 @@ std::optional<lab_copy> lab_to_output(const buffer_layout& b, const scissor& are
   return c;
 }
 
-std::array<gs::clut_buffer*, 8> palettes(gs_inputs& in) {
-  return {&in.pos, &in.neg, &in.axis[0], &in.axis[1], &in.axis[2], &in.ilp, &in.grey, &in.alpha_index};
+std::array<gs::clut_buffer*, 8> palettes(gs_inputs& in, std::size_t layer) {
+  layer_palettes& p = in.layers.at(layer);
+  return {&p[0], &p[1], &p[2], &p[3], &p[4], &in.ilp, &in.grey, &in.alpha_index};
 }
-std::array<const gs::clut_buffer*, 8> palettes(const gs_inputs& in) {
-  return {&in.pos, &in.neg, &in.axis[0], &in.axis[1], &in.axis[2], &in.ilp, &in.grey, &in.alpha_index};
+std::array<const gs::clut_buffer*, 8> palettes(const gs_inputs& in, std::size_t layer) {
+  const layer_palettes& p = in.layers.at(layer);
+  return {&p[0], &p[1], &p[2], &p[3], &p[4], &in.ilp, &in.grey, &in.alpha_index};
 }
 
 gs::mem::psm index_psm(const normal_map& nm) { return nm.bits == 4 ? gs::mem::psm::PSMT4 : gs::mem::psm::PSMT8; }
@@ -71,9 +73,10 @@ std::size_t normal_map_of(const gs_inputs& in, clut_slot c) {
     default: throw std::logic_error("a 24-bit map's component maps are read through the axis palettes only");
   }
 }
-std::span<const std::uint8_t> normal_map_texels(const gs_inputs& in, std::size_t k) {
-  if (normal_map_count(in) == 1) return in.nm->index;
-  return in.component_maps.at(k);
+std::span<const std::uint8_t> normal_map_texels(const gs_inputs& in, std::size_t layer, std::size_t k) {
+  const std::size_t n = layer_texels(*in.nm);
+  const std::span<const std::uint8_t> all = normal_map_count(in) == 1 ? in.nm->index : in.component_maps.at(k);
+  return all.subspan(layer * n, n);
 }
 
 gs_inputs make_inputs(const scene& s, method m, const render_options& o) {
@@ -83,31 +86,36 @@ gs_inputs make_inputs(const scene& s, method m, const render_options& o) {
   in.ilp = intensity_palette(o.specular_power);
   in.grey = identity_palette();
   in.alpha_index = index_in_alpha();
-  switch (passes::describe(m).palettes) {
-    case passes::palette_kind::two_pass:
-      in.pos = two_pass_palette(s.normals.palette, false);
-      in.neg = two_pass_palette(s.normals.palette, true);
-      break;
-    case passes::palette_kind::three_pass:
-      in.pos = two_pass_palette(s.normals.palette, false);
-      in.neg = two_pass_palette(s.normals.palette, true);
-      in.axis[0] = three_pass_terms_palette(s.normals.palette);
-      break;
-    case passes::palette_kind::none: break;
-    case passes::palette_kind::signed_side:
-      in.pos = signed_side_palette(s.normals.palette, false);
-      in.neg = signed_side_palette(s.normals.palette, true);
-      break;
-    case passes::palette_kind::reordered_axes:
-      for (int a = 0; a < 3; ++a)
-        if (s.normals.bits == 24) {
-          in.component_maps[static_cast<std::size_t>(a)] = component_map(s.normals.unquantised, a);
-          in.axis[a] = component_ramp_palette();
-        } else {
-          in.axis[a] = reordered_palette(s.normals.palette, a);
-        }
-      break;
+  for (std::size_t l = 0; l < layers(s.normals); ++l) {
+    const std::vector<glm::vec3> palette = layer_palette(s.normals, l);
+    layer_palettes& p = in.layers.emplace_back();
+    auto& pos = p[static_cast<std::size_t>(clut_slot::pos)];
+    auto& neg = p[static_cast<std::size_t>(clut_slot::neg)];
+    auto axis = [&](int a) -> gs::clut_buffer& { return p[static_cast<std::size_t>(clut_slot::axis_x) + a]; };
+    switch (passes::describe(m).palettes) {
+      case passes::palette_kind::two_pass:
+        pos = two_pass_palette(palette, false);
+        neg = two_pass_palette(palette, true);
+        break;
+      case passes::palette_kind::three_pass:
+        pos = two_pass_palette(palette, false);
+        neg = two_pass_palette(palette, true);
+        axis(0) = three_pass_terms_palette(palette);
+        break;
+      case passes::palette_kind::none: break;
+      case passes::palette_kind::signed_side:
+        pos = signed_side_palette(palette, false);
+        neg = signed_side_palette(palette, true);
+        break;
+      case passes::palette_kind::reordered_axes:
+        for (int a = 0; a < 3; ++a)
+          axis(a) = s.normals.bits == 24 ? component_ramp_palette() : reordered_palette(palette, a);
+        break;
+    }
   }
+  if (passes::describe(m).palettes == passes::palette_kind::reordered_axes && s.normals.bits == 24)
+    for (int a = 0; a < 3; ++a)
+      in.component_maps[static_cast<std::size_t>(a)] = component_map(s.normals.unquantised, a);
   for (const passes::light_pass& p : passes::describe(m).light)
     if (p.source == passes::pass_source::sphere_map) in.sphere = sphere_map(64, 64);
   if (std::any_of(s.lights.begin(), s.lights.end(), [](const scene_light& l) { return l.kind == light_kind::spot; }))
@@ -128,12 +136,18 @@ gs_inputs place_inputs(const gs_inputs& direct, std::uint32_t first) {
     return b;
   };
   auto palettes_page = [&] {
-    const gs::mem::buffer page = place(64, 32, gs::mem::psm::PSMCT32);  // one page: 8 CLUTs of 4 blocks
-    for (std::size_t k = 0; k < in.cbp.size(); ++k)
-      in.cbp[k] = static_cast<std::uint32_t>(page.BP.value()) + 4 * static_cast<std::uint32_t>(k);
+    in.cbp.assign(in.layers.size(), {});
+    for (std::size_t l = 0; l < in.layers.size(); ++l) {
+      const gs::mem::buffer page = place(64, 32, gs::mem::psm::PSMCT32);  // one page: 8 CLUTs of 4 blocks
+      for (std::size_t k = 0; k < in.cbp[l].size(); ++k)
+        in.cbp[l][k] = k < normal_map_palettes || l == 0
+                           ? static_cast<std::uint32_t>(page.BP.value()) + 4 * static_cast<std::uint32_t>(k)
+                           : in.cbp[0][k];
+    }
   };
-  for (std::size_t k = 0; k < normal_map_count(direct); ++k)
-    in.nm_at[k] = place(direct.nm->width, direct.nm->height, index_psm(*direct.nm));
+  in.nm_at.clear();
+  for (std::size_t t = 0; t < in.layers.size() * normal_map_count(direct); ++t)
+    in.nm_at.push_back(place(direct.nm->width, direct.nm->height, index_psm(*direct.nm)));
   if (!direct.sphere.empty()) in.sphere_at = place(64, 64, gs::mem::psm::PSMCT32);
   if (!direct.spot.empty()) in.spot_at = place(spot_map_size, spot_map_size, gs::mem::psm::PSMCT32);
   in.diffuse_at = place(direct.diffuse->width, direct.diffuse->height, gs::mem::psm::PSMCT32);
@@ -160,35 +174,42 @@ void start_stream(gs_inputs& in, const prepared_scene& ps, const render_options&
   in.stream =
       std::make_shared<texture_streamer>(ps, o.model, filter, area, in.window_first, gs::mem::memory_blocks / 32);
 }
-stream_texture normal_map_stream(const gs_inputs& in, std::size_t k) {
+stream_texture normal_map_stream(const gs_inputs& in, std::size_t layer, std::size_t k, triangle_range tris) {
   static constexpr std::array<const char*, 3> component{"x component map", "y component map", "z component map"};
-  const bool one = normal_map_count(in) == 1;  // ids: 1 the index map, 2 the diffuse texture, 3.. the components
-  return {one ? 1 : 3 + static_cast<int>(k),
+  // ids: 2 the diffuse texture; layer l's 8l + 1 its index map, 8l + 3 .. 8l + 5 its component maps
+  const bool one = normal_map_count(in) == 1;
+  return {8 * static_cast<int>(layer) + (one ? 1 : 3 + static_cast<int>(k)),
           one ? "normal map" : component.at(k),
           index_psm(*in.nm),
           in.nm->width,
           in.nm->height,
-          normal_map_texels(in, k)};
+          normal_map_texels(in, layer, k),
+          tris};
 }
 stream_texture diffuse_stream(const gs_inputs& in) {
-  return {2, "diffuse texture", gs::mem::psm::PSMCT32, in.diffuse->width, in.diffuse->height, in.diffuse_bytes};
+  return {
+      2,           "diffuse texture", gs::mem::psm::PSMCT32, in.diffuse->width, in.diffuse->height, in.diffuse_bytes,
+      std::nullopt};
 }
 
 void add_uploads(gs::packets::packet_builder& b, const gs_inputs& in) {
   const bool resident = in.window_first == 0;
   if (resident)
-    for (std::size_t k = 0; k < normal_map_count(in); ++k)
-      host_transfer(b, in.nm_at[k], in.nm->width, in.nm->height, normal_map_texels(in, k));
+    for (std::size_t l = 0; l < in.layers.size(); ++l)
+      for (std::size_t k = 0; k < normal_map_count(in); ++k)
+        host_transfer(b, in.nm_at[texture_index(in, l, k)], in.nm->width, in.nm->height, normal_map_texels(in, l, k));
   if (!in.sphere.empty()) host_transfer(b, in.sphere_at, 64, 64, bytes_of(in.sphere));
   if (!in.spot.empty()) host_transfer(b, in.spot_at, spot_map_size, spot_map_size, bytes_of(in.spot));
   if (resident) host_transfer(b, in.diffuse_at, in.diffuse->width, in.diffuse->height, bytes_of(in.diffuse->texels));
-  const auto all = palettes(in);
-  for (std::size_t k = 0; k < all.size(); ++k) {
-    std::vector<std::uint32_t> image(256);
-    for (unsigned p = 0; p < 256; ++p) image[p] = (*all[k])[gs::csm1_position(gs::u8::from_wrapped(p))].to_u32();
-    const gs::mem::buffer at{fixed::uint<14>::from_wrapped(in.cbp[k]), fixed::uint<6>::from_wrapped(1),
-                             gs::mem::psm::PSMCT32};
-    host_transfer(b, at, 16, 16, bytes_of(image));
+  for (std::size_t l = 0; l < in.layers.size(); ++l) {
+    const auto all = palettes(in, l);
+    for (std::size_t k = 0; k < (l == 0 ? all.size() : normal_map_palettes); ++k) {
+      std::vector<std::uint32_t> image(256);
+      for (unsigned p = 0; p < 256; ++p) image[p] = (*all[k])[gs::csm1_position(gs::u8::from_wrapped(p))].to_u32();
+      const gs::mem::buffer at{fixed::uint<14>::from_wrapped(in.cbp[l][k]), fixed::uint<6>::from_wrapped(1),
+                               gs::mem::psm::PSMCT32};
+      host_transfer(b, at, 16, 16, bytes_of(image));
+    }
   }
 }
 
@@ -200,8 +221,8 @@ gs_inputs upload_inputs(gs::mem::local_memory& m, const gs_inputs& direct, std::
                                                               static_cast<std::uint32_t>(h));
     };
     if (in.window_first == 0)
-      for (std::size_t k = 0; k < normal_map_count(direct); ++k)
-        in.nm_texels[k] = addresses(in.nm_at[k], direct.nm->width, direct.nm->height);
+      for (const gs::mem::buffer& at : in.nm_at)
+        in.nm_texels.push_back(addresses(at, direct.nm->width, direct.nm->height));
     if (!direct.sphere.empty()) in.sphere_texels = addresses(in.sphere_at, 64, 64);
     if (!direct.spot.empty()) in.spot_texels = addresses(in.spot_at, spot_map_size, spot_map_size);
     if (in.window_first == 0)
@@ -216,13 +237,15 @@ gs_inputs upload_inputs(gs::mem::local_memory& m, const gs_inputs& direct, std::
   add_uploads(b, in);
   interpret(m, b);
   in.memory = &m;
-  const auto all = palettes(in);
-  for (std::size_t k = 0; k < all.size(); ++k) {
-    gs::tex0_reg t;  // the normal map's palettes as its passes load them (16 entries for PSMT4), the rest PSMT8
-    t.PSM = k < normal_map_palettes ? static_cast<gs::tex_psm>(index_psm(*in.nm)) : gs::tex_psm::PSMT8;
-    t.CBP = fixed::uint<14>::from_wrapped(in.cbp[k]);
-    t.CLD = gs::u3::from_wrapped(1);
-    *all[k] = gs::mem::load_clut(m, t, {}).buffer;
+  for (std::size_t l = 0; l < in.layers.size(); ++l) {
+    const auto all = palettes(in, l);
+    for (std::size_t k = 0; k < (l == 0 ? all.size() : normal_map_palettes); ++k) {
+      gs::tex0_reg t;  // the normal map's palettes as its passes load them (16 entries for PSMT4), the rest PSMT8
+      t.PSM = k < normal_map_palettes ? static_cast<gs::tex_psm>(index_psm(*in.nm)) : gs::tex_psm::PSMT8;
+      t.CBP = fixed::uint<14>::from_wrapped(in.cbp[l][k]);
+      t.CLD = gs::u3::from_wrapped(1);
+      *all[k] = gs::mem::load_clut(m, t, {}).buffer;
+    }
   }
   if (helper.joinable()) helper.join();  // before `in` is returned with the helper's tables
   return in;

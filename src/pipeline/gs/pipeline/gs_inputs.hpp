@@ -69,28 +69,34 @@ struct lab_copy {
 };
 std::optional<lab_copy> lab_to_output(const buffer_layout& b, const scissor& area, bool lab_in_z_layout);
 
+// One layer's palettes of its normal map (scene.hpp's layers), by clut_slot pos .. axis_z; axis_x is
+// the three-pass terms palette (clut_slot::terms).
+using layer_palettes = std::array<gs::clut_buffer, 5>;
+
 struct gs_inputs {
   const normal_map* nm = nullptr;
-  // alpha_index: the index in every channel (the memory path's step 4 moves a LAB byte into alpha);
-  // axis[0] is the three-pass terms palette (clut_slot::terms).
-  gs::clut_buffer pos, neg, axis[3], ilp, grey, alpha_index;
+  std::vector<layer_palettes> layers;  // per layer of *nm
+  // alpha_index: the index in every channel (the memory path's step 4 moves a LAB byte into alpha).
+  gs::clut_buffer ilp, grey, alpha_index;
   std::vector<std::uint32_t> sphere;  // 64×64, four-pass only
   std::vector<std::uint32_t> spot;    // encoders.hpp's spot_map, when a light is a spot light
   // A 24-bit map read by four-pass (section 3.6's "three 8 bit normal maps", encoders.hpp's
-  // component_map): axis a's pass samples component_maps[a] through the ramp palette in axis[a].
-  // Empty otherwise: every pass samples nm's index map (normal_map_count, normal_map_of).
+  // component_map): axis a's pass samples component_maps[a] (every layer's, one after another)
+  // through the ramp palette of slot axis_x + a. Empty otherwise: every pass samples nm's index map
+  // (normal_map_count, normal_map_of).
   std::array<std::vector<std::uint8_t>, 3> component_maps;
   const texture32* diffuse = nullptr;
-  // Placed (place_inputs): the textures' TBP0 / TBW / PSM (nm_at: one per normal-map texture) and
-  // each palette's CBP (palettes() order).
-  std::array<gs::mem::buffer, 3> nm_at{};
+  // Placed (place_inputs): the textures' TBP0 / TBW / PSM (nm_at: one per normal-map texture of
+  // each layer, texture_index) and each layer's palettes' CBP (palettes() order; the last three, the
+  // layers' shared palettes, are layer 0's in every layer).
+  std::vector<gs::mem::buffer> nm_at;
   gs::mem::buffer sphere_at, spot_at, diffuse_at;
-  std::array<std::uint32_t, 8> cbp{};
+  std::vector<std::array<std::uint32_t, 8>> cbp;
   // Uploaded (upload_inputs): the memory the texels are read from; the CLUTs above are then the
   // ones TEX0.CLD = 1 loaded back from it.
   const gs::mem::local_memory* memory = nullptr;
   // and the byte address of every texel of the textures (gs_memory/fast_address.hpp).
-  std::array<std::shared_ptr<const gs::mem::texel_addresses>, 3> nm_texels;
+  std::vector<std::shared_ptr<const gs::mem::texel_addresses>> nm_texels;  // as nm_at
   std::shared_ptr<const gs::mem::texel_addresses> sphere_texels, spot_texels, diffuse_texels;
   // Streamed (the normal map and the diffuse texture do not fit beside the frame buffers with the
   // rest, texture_stream.hpp): the window's first page (0: every texture placed above), the diffuse
@@ -110,22 +116,27 @@ inline constexpr std::size_t normal_map_palettes = 5;
 // The normal map's texture format: PSMT4 for a 4-bit map, PSMT8 for an 8-bit one and for a 24-bit
 // map's index map and component maps.
 gs::mem::psm index_psm(const normal_map& nm);
-// The normal-map textures of an input set (1, or 3 component maps), which of them a pass through
-// palette slot c samples (component map a for slot axis_x + a), and texture k's texels (one byte each).
+// The normal-map textures of a layer (1, or 3 component maps), which of them a pass through palette
+// slot c samples (component map a for slot axis_x + a), texture k of layer l's texels (one byte each)
+// and its index in nm_at and nm_texels.
 std::size_t normal_map_count(const gs_inputs& in);
 std::size_t normal_map_of(const gs_inputs& in, clut_slot c);
-std::span<const std::uint8_t> normal_map_texels(const gs_inputs& in, std::size_t k);
-std::array<gs::clut_buffer*, 8> palettes(gs_inputs& in);
-std::array<const gs::clut_buffer*, 8> palettes(const gs_inputs& in);
+std::span<const std::uint8_t> normal_map_texels(const gs_inputs& in, std::size_t layer, std::size_t k);
+inline std::size_t texture_index(const gs_inputs& in, std::size_t layer, std::size_t k) {
+  return layer * normal_map_count(in) + k;
+}
+// Layer l's eight palettes in clut_slot order.
+std::array<gs::clut_buffer*, 8> palettes(gs_inputs& in, std::size_t layer);
+std::array<const gs::clut_buffer*, 8> palettes(const gs_inputs& in, std::size_t layer);
 
 // The renderer's and the packet stream's inputs, for a frame frame_limits.hpp's check accepts.
 gs_inputs make_inputs(const scene& s, method m, const render_options& o);
-// Places the textures from block `first` on: the normal map(s) (index_psm, an even TBW), the sphere map
-// and the diffuse texture (PSMCT32), then one PSMCT32 page holding the eight palettes as 16×16 CSM1
-// images of 4 blocks each. When that passes the end of the 4 MiB: the sphere map and the palettes
-// only, and the normal map(s) and the diffuse texture streamed through the pages after them (the
-// window, window_first); texture_does_not_fit when fewer than 4 pages are left for it (one bilinear
-// pixel fetches up to 4).
+// Places the textures from block `first` on: the normal map(s) of every layer (index_psm, an even
+// TBW), the sphere map and the diffuse texture (PSMCT32), then per layer one PSMCT32 page holding its
+// palettes as 16×16 CSM1 images of 4 blocks each (layer 0's page all eight, the others' their five).
+// When that passes the end of the 4 MiB: the sphere map and the palettes only, and the normal map(s)
+// and the diffuse texture streamed through the pages after them (the window, window_first);
+// texture_does_not_fit when fewer than 4 pages are left for it (one bilinear pixel fetches up to 4).
 gs_inputs place_inputs(const gs_inputs& direct, std::uint32_t first);
 // The streamer of a streamed input set (nothing otherwise): the triangles of ps over the drawn
 // `area`, sampled as o says; the normal map and the diffuse texture as streamed textures.
@@ -135,7 +146,8 @@ void start_stream(gs_inputs& in, const prepared_scene& ps, const render_options&
 inline constexpr const char* plain_needs_resident_texture =
     "step 5 (--floor): the textures stream through a window beside the frame buffers, and step 5's geometry needs "
     "the diffuse texture resident: use a smaller --size or normal map";
-stream_texture normal_map_stream(const gs_inputs& in, std::size_t k);
+// Texture k of the normal map's layer `layer`, which triangles `tris` sample.
+stream_texture normal_map_stream(const gs_inputs& in, std::size_t layer, std::size_t k, triangle_range tris);
 stream_texture diffuse_stream(const gs_inputs& in);
 // The transfers of a placed input set (host_transfer each, the streamed textures left to their
 // passes); palette entry i at gs::csm1_position(i) of its image.

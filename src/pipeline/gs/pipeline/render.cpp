@@ -117,17 +117,18 @@ std::size_t render_band(const prepared_scene& ps, const render_options& o, const
   };
 
   const gs::bilinear_mode filter = o.bilinear ? o.model.bilinear : gs::bilinear_mode::nearest;
-  auto nm_texture = [&](std::size_t k, clut_slot c) {
+  auto nm_texture = [&](std::size_t k, clut_slot c, std::size_t layer) {
+    const std::size_t t = texture_index(in, layer, k);  // placed: the memory path's
     return texture_ref{in.nm->width,
                        in.nm->height,
-                       normal_map_texels(in, k).data(),
-                       palettes(in)[static_cast<std::size_t>(c)],
+                       normal_map_texels(in, layer, k).data(),
+                       palettes(in, layer)[static_cast<std::size_t>(c)],
                        nullptr,
                        false,
                        filter,
                        in.memory,
-                       in.nm_at[k],
-                       in.nm_texels[k].get()};
+                       t < in.nm_at.size() ? in.nm_at[t] : gs::mem::buffer{},
+                       t < in.nm_texels.size() ? in.nm_texels[t].get() : nullptr};
   };
   const texture_ref sphere{64,
                            64,
@@ -169,7 +170,8 @@ std::size_t render_band(const prepared_scene& ps, const render_options& o, const
   auto triangles = [&](const frame_op& op) {
     const std::vector<tri_attr>& a = attributes_of(op);
     const FB& target = view(op.buffer);
-    texture_ref tex = op.texture == texture_role::diffuse ? diffuse : nm_texture(op.normal_map, op.clut);
+    const std::size_t layer = op.layer < 0 ? 0 : static_cast<std::size_t>(op.layer);
+    texture_ref tex = op.texture == texture_role::diffuse ? diffuse : nm_texture(op.normal_map, op.clut, layer);
     const stream_piece* piece = nullptr;
     if (op.piece >= 0) {
       piece = &prog.pieces[static_cast<std::size_t>(op.piece)];
@@ -179,12 +181,14 @@ std::size_t render_band(const prepared_scene& ps, const render_options& o, const
     const texture_ref* t = op.texture == texture_role::none         ? nullptr
                            : op.texture == texture_role::sphere_map ? &sphere
                                                                     : &tex;
-    with_regs<program_regs::triangles>(op.regs, [&]<const pass_regs & R>() { r.draw<R>(t, a, target, piece); });
+    const triangle_range tris =
+        op.layer < 0 ? triangle_range{0, static_cast<std::uint32_t>(ps.triangles.size())} : ps.layer(layer);
+    with_regs<program_regs::triangles>(op.regs, [&]<const pass_regs & R>() { r.draw<R>(t, a, target, tris, piece); });
   };
   auto channel = [&](const frame_op& op) {
     const FB& src = view(op.source);
     const FB& dst = view(op.buffer);
-    const gs::clut_buffer& clut = *palettes(in)[static_cast<std::size_t>(op.clut)];
+    const gs::clut_buffer& clut = *palettes(in, 0)[static_cast<std::size_t>(op.clut)];  // the shared palettes
     if (!in_memory(FB{}) && op.regs == &move_into_alpha) {  // value level: the byte itself (palette i -> i)
       const scissor& area = r.sprite_area();
       for (int y = area.y0; y < area.y1; ++y)
@@ -235,7 +239,7 @@ std::size_t render_band(const prepared_scene& ps, const render_options& o, const
       case kind::buffer_sprite:
         if (op.texture == texture_role::buffer_t8h) {
           with_regs<program_regs::t8h_sprite>(op.regs, [&]<const pass_regs & R>() {
-            alpha_into_rgb<R>(r, fb, view(op.buffer), *palettes(in)[static_cast<std::size_t>(op.clut)]);
+            alpha_into_rgb<R>(r, fb, view(op.buffer), *palettes(in, 0)[static_cast<std::size_t>(op.clut)]);
           });
         } else {
           const FB& src = view(op.source);

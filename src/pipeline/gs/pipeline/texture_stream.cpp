@@ -187,11 +187,12 @@ void texture_streamer::split(const stream_texture& t, const scissor& a, triangle
 
 const std::vector<texture_streamer::leaf>& texture_streamer::leaves(const stream_texture& t) {
   if (auto it = leaves_.find(t.id); it != leaves_.end()) return it->second;
-  std::vector<std::uint32_t> all(ps_.triangles.size());
-  for (std::uint32_t i = 0; i < all.size(); ++i) all[i] = i;
+  const triangle_range range =
+      t.triangles.value_or(triangle_range{0, static_cast<std::uint32_t>(ps_.triangles.size())});
+  std::vector<std::uint32_t> all;
+  for (std::uint32_t i = range.first; i < range.end; ++i) all.push_back(i);
   std::vector<leaf>& out = leaves_[t.id];
-  if (area_.x0 < area_.x1 && area_.y0 < area_.y1)
-    split(t, area_, {0, static_cast<std::uint32_t>(all.size())}, all, out);
+  if (area_.x0 < area_.x1 && area_.y0 < area_.y1) split(t, area_, range, all, out);
   return out;
 }
 

@@ -38,6 +38,7 @@
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <optional>
 #include <span>
 #include <stdexcept>
 #include <vector>
@@ -71,15 +72,12 @@ struct stream_texture {
   gs::mem::psm PSM = gs::mem::psm::PSMT8;
   int width = 0, height = 0;
   std::span<const std::uint8_t> texels;
+  std::optional<triangle_range> triangles;  // the triangles that sample it (a layer's); nullopt: every one
 };
 
 struct cell_upload {
   std::uint32_t page;  // the window page the cell is transferred into
   int c, r;            // the cell: column and row of pages of the texel grid
-};
-// The pass's triangles [first, end) in its order.
-struct triangle_range {
-  std::uint32_t first = 0, end = 0;
 };
 // One piece of a pass: upload `uploads`, then draw the pass's triangles of `triangles` with
 // SCISSOR_1 = area and TEX0 TBP0 / TBW / PSM = at.

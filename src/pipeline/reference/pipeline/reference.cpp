@@ -22,12 +22,12 @@ reference_frame render_reference(const scene& s, const prepared_scene& ps, const
   r.unnormalised = r.renormalised;
 
   const normal_map& nm = s.normals;
-  auto normal_texel = [&](std::int32_t u, std::int32_t v) {
-    return glm::dvec3(texel_normal(nm, wrapped_texel(nm.width, nm.height, u, v)));
-  };
   for_each_covered_pixel(ps, visible, [&](const pixel_sample& p) {
-    const glm::dvec3 N = glm::normalize(filtered(normal_texel, p.u16, p.v16, bilinear));
     const prepared_triangle& tri = ps.triangles[p.triangle];
+    auto normal_texel = [&](std::int32_t u, std::int32_t v) {
+      return glm::dvec3(texel_normal(nm, tri.layer, wrapped_texel(nm.width, nm.height, u, v)));
+    };
+    const glm::dvec3 N = glm::normalize(filtered(normal_texel, p.u16, p.v16, bilinear));
     for (std::size_t l = 0; l < s.lights.size(); ++l) {
       const pixel_light pl = interpolate_light(ps, l, p);
       const double spot = interpolate_spot(ps, l, p);

@@ -209,7 +209,8 @@ report_summary write_staged(const scene& s, const report_request& r, staged_dire
                  {{"width", s.normals.width},
                   {"height", s.normals.height},
                   {"palette", s.normals.palette.size()},
-                  {"index_bits", s.normals.bits}}},
+                  {"index_bits", s.normals.bits},
+                  {"layers", layers(s.normals)}}},
                 {"lights", s.lights.size()},
                 {"step5_triangles", s.plain.triangles.size()},
                 {"drawn_step5_triangles", front.plain.size()}};

@@ -198,14 +198,15 @@ columns pixel_columns(const page_inputs& in, nlohmann::json& passes_of) {
   const std::vector<std::int32_t>& visible = in.frames->front().visible_triangle;
   std::vector<std::uint32_t> pixel;
   std::vector<std::int32_t> triangle, u16, v16;
-  std::vector<std::uint8_t> texel_index;
+  std::vector<std::uint16_t> texel_index;  // the palette entry (layers: of the triangle's layer, scene.hpp)
   for_each_covered_pixel(ps, visible, [&](const pixel_sample& p) {
     pixel.push_back(static_cast<std::uint32_t>(p.index));
     triangle.push_back(static_cast<std::int32_t>(p.triangle));
     u16.push_back(p.u16);
     v16.push_back(p.v16);
     const gs::texel_footprint f = gs::footprint(p.u16, p.v16, gs::bilinear_mode::nearest);
-    texel_index.push_back(s.normals.index[wrapped_texel(s.normals.width, s.normals.height, f.u0, f.v0)]);
+    texel_index.push_back(static_cast<std::uint16_t>(palette_entry(
+        s.normals, ps.triangles[p.triangle].layer, wrapped_texel(s.normals.width, s.normals.height, f.u0, f.v0))));
   });
   columns c;
   c.count = pixel.size();
@@ -213,7 +214,7 @@ columns pixel_columns(const page_inputs& in, nlohmann::json& passes_of) {
   c.add("triangle", "i32", 1, triangle);
   c.add("u16", "i32", 1, u16);
   c.add("v16", "i32", 1, v16);
-  c.add("texel_index", "u8", 1, texel_index);
+  c.add("texel_index", "u16", 1, texel_index);
   auto at_pixels = [&](const auto& frame_sized, std::size_t width) {
     std::vector<std::remove_cvref_t<decltype(frame_sized[0])>> v;
     v.reserve(pixel.size() * width);

@@ -31,7 +31,8 @@ scheme_frame render_stored(ne::method_id id, const scene& s, const prepared_scen
   f.dot.assign(s.lights.size(), std::vector<float>(count, NAN));
   for_each_covered_pixel(ps, visible, [&](const pixel_sample& p) {
     const glm::dvec3 N =
-        decoded[s.normals.index[wrapped_texel(s.normals.width, s.normals.height, p.u16 >> 4, p.v16 >> 4)]];
+        decoded[palette_entry(s.normals, ps.triangles[p.triangle].layer,
+                              wrapped_texel(s.normals.width, s.normals.height, p.u16 >> 4, p.v16 >> 4))];
     for (std::size_t l = 0; l < s.lights.size(); ++l) {
       const pixel_light pl = interpolate_light(ps, l, p);
       f.dot[l][p.index] = static_cast<float>(128.0 * pl.fade * glm::dot(N, glm::normalize(pl.T)));
@@ -80,8 +81,8 @@ std::vector<psnr_row> normal_encoding_psnr(const scene& s, const prepared_scene&
       b += p.lambda[k] * glm::dvec3(v.bitangent);
       n += p.lambda[k] * glm::dvec3(v.normal);
     }
-    const glm::dvec3 tn(
-        s.normals.palette[s.normals.index[wrapped_texel(s.normals.width, s.normals.height, p.u16 >> 4, p.v16 >> 4)]]);
+    const glm::dvec3 tn(s.normals.palette[palette_entry(
+        s.normals, tri.layer, wrapped_texel(s.normals.width, s.normals.height, p.u16 >> 4, p.v16 >> 4))]);
     const glm::dvec3 raw = view * (tn.x * t + tn.y * b + tn.z * n);
     pixels.push_back({raw, glm::normalize(raw), view * n});
   });

@@ -80,8 +80,8 @@ scheme_frame render_with(const scene& s, const prepared_scene& ps, const std::ve
   const std::size_t n = static_cast<std::size_t>(ps.width) * static_cast<std::size_t>(ps.height);
   f.dot.assign(s.lights.size(), std::vector<float>(n, NAN));
   for_each_covered_pixel(ps, visible, [&](const pixel_sample& p) {
-    const auto texel =
-        palette[s.normals.index[wrapped_texel(s.normals.width, s.normals.height, p.u16 >> 4, p.v16 >> 4)]];
+    const auto texel = palette[palette_entry(s.normals, ps.triangles[p.triangle].layer,
+                                             wrapped_texel(s.normals.width, s.normals.height, p.u16 >> 4, p.v16 >> 4))];
     for (std::size_t l = 0; l < s.lights.size(); ++l) {
       const pixel_light pl = interpolate_light(ps, l, p);
       double b = 0;

@@ -46,11 +46,12 @@ scheme_frame render_valve(const scene& s, const prepared_scene& ps, const std::v
   scheme_frame f;
   const std::size_t n = static_cast<std::size_t>(ps.width) * static_cast<std::size_t>(ps.height);
   f.dot.assign(ps.lights.size(), std::vector<float>(n, NAN));
-  auto texel_at = [&](std::int32_t u, std::int32_t vv) {
-    const v::texel& t = texels[s.normals.index[wrapped_texel(s.normals.width, s.normals.height, u, vv)]];
-    return glm::dvec3(t.r, t.g, t.b);
-  };
   for_each_covered_pixel(ps, visible, [&](const pixel_sample& p) {
+    auto texel_at = [&](std::int32_t u, std::int32_t vv) {
+      const v::texel& t = texels[palette_entry(s.normals, ps.triangles[p.triangle].layer,
+                                               wrapped_texel(s.normals.width, s.normals.height, u, vv))];
+      return glm::dvec3(t.r, t.g, t.b);
+    };
     const glm::dvec3 c = filtered(texel_at, p.u16, p.v16, o.bilinear);
     const v::vec3<double> t{a.r(c.x / 255.0), a.r(c.y / 255.0), a.r(c.z / 255.0)};
     const auto& tri = ps.triangles[p.triangle].vertex;
