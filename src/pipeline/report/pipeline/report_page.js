@@ -209,7 +209,6 @@ for (const id of ["scroll-a", "scroll-b", "scroll-d"]) {
   target.addEventListener("click", e => { const [x, y] = at(e); if (x < W && y < H) { pinned = !pinned || selected[0] !== x || selected[1] !== y; inspect(x, y); } });
 }
 
-
 // ---- the overview: the paper's methods' lit frames, the float reference's and A's error map, the pinned pixel ----
 {
   const a = $("pick-a").value, l = Number($("light").value), errorH = a === "reference" ? H : H + 20;
@@ -218,7 +217,7 @@ for (const id of ["scroll-a", "scroll-b", "scroll-d"]) {
                  [imageFor(a, "error", l), errorH, `${a} − float reference, light ${l}`]];
   for (const [src, h, caption] of shown) {
     const img = el("img", {src, alt: caption, title: caption + " (click to inspect a pixel)", style: "width:100%;height:100%"});
-    const pic = el("div", {class: "pic", style: `position:relative;max-width:${250 * W / h}px;aspect-ratio:${W} / ${h}`}, img,
+    const pic = el("div", {style: `position:relative;max-width:${250 * W / h}px;aspect-ratio:${W} / ${h}`}, img,
                    el("span", {class: "pin", "data-h": h, hidden: ""}));
     img.addEventListener("click", e => {
       const b = img.getBoundingClientRect(), x = Math.floor((e.clientX - b.left) / b.width * W), y = Math.floor((e.clientY - b.top) / b.height * h);
