@@ -91,7 +91,8 @@ void add_render_command(CLI::App& app, context& ctx) {
   auto rargs = std::make_shared<render_args>();
   auto* report = app.add_subcommand(
       "report",
-      "Render and compare with the float dot product; writes report.html (+ PNGs, report.json) and prints its path");
+      "Render and compare with the float dot product; writes the PNGs, report.json, report-pixels.js and their "
+      "page report.html (open it in that folder) and prints its path");
   report->add_option("--out", rargs->out, "output directory (created if missing)")->capture_default_str();
   report->add_option("--export-mesh", rargs->export_mesh, export_mesh_help);
   add_options(report, *rargs);

@@ -6,7 +6,8 @@ Chromium (--dump-dom after the page's scripts ran, --screenshot) and checks: no 
 no script error, every image loaded, the method picker switches the views (and its difference map
 has as many non-zero pixels as this script counts), and the inspector shows, for a few fixed pixels
 (set by the URL, and one by a dispatched mouse click), the values this script decodes itself from
-report-pixels.js. The exported data is checked
+report-pixels.js; then (first_screen.py) the first screen of the plain page and of two hash links, from
+screenshots compared with the report's PNGs region by region. The exported data is checked
 independently first: its error statistics against report.json, and per pixel the post filter's
 modulo-256 sums, the ILP entry (section 3.4: level d + 1 for d = 0..127, else 0) and the LAB update
 (MODULATE by the light colour given on the command line, added with a clamp at 255).
@@ -29,6 +30,8 @@ import time
 import urllib.request
 import zlib
 import base64
+
+import first_screen
 
 LIGHTS = [("-2.2,1.4,2.2", (0x10, 0x98, 0x20)), ("2.6,-0.2,0.4", (0x10, 0x38, 0xB0))]
 FLAGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
@@ -266,12 +269,6 @@ class DevTools:
                 fail(f"browser log ({p['entry'].get('level')}): {p['entry'].get('text')} {p['entry'].get('url', '')}")
         return self.evaluate("document.documentElement.outerHTML")
 
-    def screenshot(self, path, width, height):
-        self.call("Emulation.setDeviceMetricsOverride", width=width, height=height, deviceScaleFactor=1, mobile=False)
-        data = self.call("Page.captureScreenshot", format="png")["data"]
-        with open(path, "wb") as f:
-            f.write(base64.b64decode(data))
-
     def close(self):
         self.sock.close()
         self.proc.terminate()
@@ -363,6 +360,7 @@ def main():
         imgs = sc["images"]
         expected_images = sum(1 + 2 * report["scene"]["lights"] for _ in names) + 1 + report["scene"]["lights"] + 2
         expected_images += 1 if page.get("side_by_side") else 0
+        expected_images += len({"two-pass", "four-pass"} & set(names)) + 2  # the overview: + the reference's, an error map
         expected_images += len(report.get("memory", {}).get("pictures", []))  # the GS local-memory section
         expected_images += len(report.get("memory", {}).get("dpb_pictures", {}).get("files", []))  # the rendered DPB
         if imgs["failed"] or imgs["loaded"] != imgs["total"] or imgs["total"] != expected_images:
@@ -415,19 +413,15 @@ def main():
     if "uncovered" not in dom.cells:
         fail(f"pixel {free}: the inspector does not say it is uncovered")
 
-    shot = os.path.join(out, "report-screenshot.png")
-    r = e.index(max(e))  # the screenshot inspects the largest two-pass error
-    x, y = cols["pixel"][r] % width, cols["pixel"][r] // width
-    tab.open(f"{url}#a=two-pass&b=four-pass&zoom=1&x={x}&y={y}")
-    tab.screenshot(shot, 1500, 2600)
-
     # A real click on view A (zoom 1) pins that pixel in the inspector.
     r = n // 3
     x, y = cols["pixel"][r] % width, cols["pixel"][r] // width
-    # Scrolled into the viewport first: with many methods the tables push the views below the window.
-    # DevTools takes whole CSS pixels: the click goes to the first whole position inside the pixel (the image may
-    # sit at a fractional position).
-    rect = tab.evaluate("(() => { const e = document.getElementById('img-a'); e.scrollIntoView({block: 'start'});"
+    # The view scrolled to its top-left corner first (it opens centred on the pinned worst pixel), then into the
+    # viewport. DevTools takes whole CSS pixels: the click goes to the first whole position inside the pixel (the
+    # image may sit at a fractional position).
+    tab.open(f"{url}#a=two-pass&b=four-pass&zoom=1")
+    rect = tab.evaluate("(() => { const s = document.getElementById('scroll-a'); s.scrollLeft = s.scrollTop = 0;"
+                        " const e = document.getElementById('img-a'); e.scrollIntoView({block: 'start'});"
                         " const b = e.getBoundingClientRect(); return [b.left, b.top]; })()")
     for kind in ("mouseMoved", "mousePressed", "mouseReleased"):
         tab.call("Input.dispatchMouseEvent", type=kind, x=math.ceil(rect[0] + x - 1e-9), y=math.ceil(rect[1] + y - 1e-9), button="left", clickCount=1)
@@ -440,12 +434,14 @@ def main():
              f"{[want[k] for k in clicked]}")
     else:
         print(f"click on view A at pixel ({x}, {y}): the inspector shows its values")
+    # The first screen: two-pass's worst pixel over every light (the first of equals in light then raster order).
+    worst = max((abs(signed_dot(cols[f"two-pass/dot{l}"][r]) - cols[f"reference/dot{l}"][r]), -l, -r)
+                for l in range(report["scene"]["lights"]) for r in range(n))
+    wl, wr = -worst[1], -worst[2]
+    other = cols["pixel"][n // 4]
+    first_screen.check(tab, url, out, report_dir, (cols["pixel"][wr] % width, cols["pixel"][wr] // width, wl),
+                       (other % width, other // width), fail)
     tab.close()
-    with open(shot, "rb") as f:
-        png = f.read(24)
-    if png[:8] != b"\x89PNG\r\n\x1a\n" or struct.unpack(">II", png[16:24]) != (1500, 2600):
-        fail(f"screenshot {shot} is not a 1500x2600 PNG")
-    print(f"screenshot: {shot}")
     print("FAILED: %d checks" % len(failures) if failures else "PASSED")
     return 1 if failures else 0
 

@@ -3,6 +3,7 @@
 // the method → claim table naming only claims of the catalogue.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -63,6 +64,35 @@ TEST(ReportPage, PageAndPixelFileAreWritten) {
   EXPECT_EQ(head["count"].get<std::size_t>(), sum.methods[0].vs_renormalised.samples / s.lights.size());
   for (const auto& e : fs::directory_iterator(d)) EXPECT_NE(e.path().extension(), ".tmp") << e.path();
   fs::remove_all(d);
+}
+
+// The page pins each method's worst pixel on opening: its |error| is the method's max |e| in the
+// report's figures, over the lights they count (a --lod-fade Gouraud light is gouraud's, not two-pass's).
+TEST(ReportPage, WorstPixelIsTheFiguresLargestError) {
+  for (const bool fade_light0 : {false, true}) {
+    const fs::path d = gsdot3::test::fresh_temp_dir("gsdot3-report-page-worst");
+    scene s = default_scene(16);
+    s.width = 64;
+    s.height = 56;
+    ASSERT_EQ(s.lights.size(), 2u);
+    s.lights[0].gouraud = fade_light0;
+    report_request r;
+    r.out_dir = d;
+    r.methods = {method::two_pass, method::gouraud};
+    const report_summary sum = write_report(s, r);
+    const std::string html = read(sum.html), open = "id=\"gsdot3-page\">";
+    const std::size_t at = html.find(open) + open.size();
+    const auto page = nlohmann::json::parse(html.substr(at, html.find("</script>", at) - at));
+    for (const method_result& m : sum.methods) {
+      const auto& worst = page["methods"][std::string(name(m.m))]["worst"];
+      ASSERT_TRUE(worst.is_object()) << name(m.m);
+      EXPECT_EQ(std::fabs(worst["error"].get<double>()), m.vs_renormalised.max_abs) << name(m.m) << " " << worst;
+      EXPECT_LT(worst["x"].get<int>(), s.width);
+      EXPECT_LT(worst["y"].get<int>(), s.height);
+      if (fade_light0 && m.m == method::two_pass) { EXPECT_EQ(worst["light"], 1) << worst; }
+    }
+    fs::remove_all(d);
+  }
 }
 
 }  // namespace

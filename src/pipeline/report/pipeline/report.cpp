@@ -284,7 +284,7 @@ report_summary write_staged(const scene& s, const report_request& r, staged_dire
                                          {"verdict", row.verdict}});
 
   // The other seeds' methods on the same geometry (scheme_method.hpp).
-  page_inputs page{&s, &front, r.options, r.methods, &frames, &ref, {}, {}, {}, heat_limit, true};
+  page_inputs page{&s, &front, r.options, r.methods, &frames, &ref, {}, {}, heat_limit, true};
   for (const scheme_method* sm : r.schemes) {
     say(std::string("rendering ") + std::string(sm->name) + " (seed " + std::string(sm->seed) + ")");
     const auto ts = std::chrono::steady_clock::now();
@@ -313,8 +313,7 @@ report_summary write_staged(const scene& s, const report_request& r, staged_dire
                                w, h, [&](std::size_t i) { return static_cast<double>(sf.dot[l][i]); }, against));
     }
     sum.schemes.push_back(sr);
-    page.scheme_dots.emplace_back(nm, sf.dot);
-    page.scheme_seeds.emplace_back(sm->seed);
+    page.schemes.push_back({nm, std::string(sm->seed), sf.dot, sm->non_negative});
   }
 
   // Figure 7: two-pass and four-pass, front and back.

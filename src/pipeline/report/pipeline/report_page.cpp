@@ -16,6 +16,7 @@
 
 #include "gs_arith/bilinear.hpp"
 #include "pipeline/files.hpp"
+#include "pipeline/lod.hpp"
 #include "pipeline/pixel_walk.hpp"
 #include "pipeline/render.hpp"
 #include "proofs/claim.hpp"
@@ -117,6 +118,26 @@ nlohmann::json images_of(const std::string& name, std::size_t lights, bool with_
     if (with_error) im["error"].push_back(name + "-error-light" + std::to_string(l) + ".png");
   }
   return im;
+}
+
+// A method's worst pixel: where |error(light, pixel, reference)| is largest over the covered pixels
+// (the reference is NaN elsewhere) and the lights, the first of equals in light then raster order;
+// error gives NaN for a light the method's figures do not count. Null when nothing is covered.
+template <class Error>
+nlohmann::json worst_pixel(const page_inputs& in, Error error) {
+  const std::vector<std::vector<float>>& ref = in.reference->renormalised;
+  nlohmann::json worst = nullptr;
+  double largest = -1.0;
+  for (std::size_t l = 0; l < ref.size(); ++l)
+    for (std::size_t i = 0; i < ref[l].size(); ++i) {
+      if (std::isnan(ref[l][i])) continue;
+      const double e = error(l, i, static_cast<double>(ref[l][i]));
+      if (!(std::fabs(e) > largest)) continue;
+      largest = std::fabs(e);
+      const auto w = static_cast<std::size_t>(in.s->width);
+      worst = {{"x", i % w}, {"y", i / w}, {"light", l}, {"error", e}};
+    }
+  return worst;
 }
 
 // Column store of the pixel file.
@@ -249,8 +270,9 @@ columns pixel_columns(const page_inputs& in, nlohmann::json& passes_of) {
       c.add(nm + "/dot" + std::to_string(l), "u8", 1, at_pixels(traced.dot[l], 1));
     passes_of[nm] = passes;
   }
-  for (const auto& [nm, dot] : in.scheme_dots)
-    for (std::size_t l = 0; l < dot.size(); ++l) c.add(nm + "/dot" + std::to_string(l), "f32", 1, at_pixels(dot[l], 1));
+  for (const page_scheme& sm : in.schemes)
+    for (std::size_t l = 0; l < sm.dot.size(); ++l)
+      c.add(sm.name + "/dot" + std::to_string(l), "f32", 1, at_pixels(sm.dot[l], 1));
   return c;
 }
 
@@ -281,17 +303,26 @@ page_files write_report_page(const std::filesystem::path& dir, const page_inputs
   page["light_colours"] = nlohmann::json::array();
   for (const scene_light& l : in.s->lights) page["light_colours"].push_back({l.colour[0], l.colour[1], l.colour[2]});
   page["ambient"] = {in.s->ambient[0], in.s->ambient[1], in.s->ambient[2]};
-  for (method m : in.methods) {
+  for (std::size_t k = 0; k < in.methods.size(); ++k) {
+    const method m = in.methods[k];
     const std::string nm(name(m));
-    page["methods"][nm] = {
-        {"kind", "gs"}, {"images", images_of(nm, lights, true)}, {"claims", claims_for_method(nm, "")}};
-  }
-  for (std::size_t k = 0; k < in.scheme_dots.size(); ++k) {
-    const std::string& nm = in.scheme_dots[k].first;
-    page["methods"][nm] = {{"kind", "scheme"},
+    page["methods"][nm] = {{"kind", "gs"},
                            {"images", images_of(nm, lights, true)},
-                           {"claims", claims_for_method(nm, in.scheme_seeds[k])}};
+                           {"claims", claims_for_method(nm, "")},
+                           {"worst", worst_pixel(in, [&](std::size_t l, std::size_t i, double ref) {
+                              // the lights its figures count: --lod-fade's Gouraud halves are gouraud's
+                              return light_method(m, in.s->lights[l]) == m ? dot_value((*in.frames)[k].dot[l][i]) - ref
+                                                                           : NAN;
+                            })}};
   }
+  for (const page_scheme& sm : in.schemes)
+    page["methods"][sm.name] = {{"kind", "scheme"},
+                                {"images", images_of(sm.name, lights, true)},
+                                {"claims", claims_for_method(sm.name, sm.seed)},
+                                {"worst", worst_pixel(in, [&](std::size_t l, std::size_t i, double ref) {
+                                   return static_cast<double>(sm.dot[l][i]) -
+                                          (sm.non_negative ? std::max(ref, 0.0) : ref);
+                                 })}};
   page["reference_images"] = images_of("reference", lights, false);
   std::error_code ec;
   page["side_by_side"] =

@@ -1,8 +1,11 @@
 // pipeline/report_page.hpp — the report as a page (report.html: inline CSS and JavaScript, no
 // network, works from file://) that shows the PNGs of its folder and reads the per-pixel data of its
 // inspector from report-pixels.js beside it: the folder, not the page alone, is what to copy. The
-// page is data-driven: it lists whatever methods report.json holds (GS methods, the other seeds'
-// scheme methods), so a method added to the report appears on the page without changes here.
+// page opens on the pictures: the paper's methods' lit frames beside the float reference and an error
+// map, with each method's worst pixel (the largest |error| against the reference its report.json
+// figures use) in the page's data for the inspector to pin. The page is data-driven: it lists
+// whatever methods report.json holds (GS methods, the other seeds' scheme methods), so a method added
+// to the report appears on the page without changes here.
 //
 // report-pixels.js (format 1) assigns one object to `gsdot3_pixels`:
 //   {"format": 1, "count": N, "columns": [...], "deflate_base64": "..."}
@@ -27,6 +30,13 @@
 
 namespace gsdot3::pipeline {
 
+// A scheme method of the report (scheme_method.hpp) as the page shows it.
+struct page_scheme {
+  std::string name, seed;
+  std::vector<std::vector<float>> dot;  // its dot products [light][pixel], 1/128 units
+  bool non_negative = false;            // compared with max(reference, 0), as report.json says
+};
+
 struct page_inputs {
   const scene* s = nullptr;
   const prepared_scene* front = nullptr;
@@ -34,12 +44,10 @@ struct page_inputs {
   std::vector<method> methods;                 // the GS methods of the report, in its order
   const std::vector<frame>* frames = nullptr;  // their renders (the traced re-render is checked against them)
   const reference_frame* reference = nullptr;
-  // The scheme methods' dot products [light][pixel] by name (scheme_method.hpp), and their seeds.
-  std::vector<std::pair<std::string, std::vector<std::vector<float>>>> scheme_dots;
-  std::vector<std::string> scheme_seeds;
-  std::string report_json;  // the text of report.json (the page embeds it)
-  double heat_limit = 8.0;  // saturation of the error maps, 1/128 units
-  bool pixels = true;       // write report-pixels.js (the inspector's data)
+  std::vector<page_scheme> schemes;  // the other seeds' methods of the report, in its order
+  std::string report_json;           // the text of report.json (the page embeds it)
+  double heat_limit = 8.0;           // saturation of the error maps, 1/128 units
+  bool pixels = true;                // write report-pixels.js (the inspector's data)
 };
 
 struct page_files {

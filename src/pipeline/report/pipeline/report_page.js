@@ -1,11 +1,11 @@
 // pipeline/report_page.js: the report page's script, first half (report_page.cpp puts it and
 // report_page_panels.js, in this order, into one script element of report_page.html): the data, the
-// error tables, the heat colours, the per-pixel data and the picker.
+// error tables, the heat colours, the per-pixel data, the picker and the overview of the first screen.
 "use strict";
 const R = JSON.parse(document.getElementById("gsdot3-report").textContent);
 const P = JSON.parse(document.getElementById("gsdot3-page").textContent);
 const W = R.scene.width, H = R.scene.height, LIGHTS = R.scene.lights;
-const check = {errors: [], images: {total: 0, loaded: 0, failed: []}, pixels: "not loaded", picker: [], inspected: null, ps2_bars: 0};
+const check = {errors: [], images: {total: 0, loaded: 0, failed: []}, pixels: "loading report-pixels.js", picker: [], inspected: null, ps2_bars: 0};
 window.addEventListener("error", e => check.errors.push(String(e.message || e.type)));
 window.addEventListener("unhandledrejection", e => check.errors.push("unhandled rejection: " + String(e.reason)));
 const $ = id => document.getElementById(id);
@@ -18,6 +18,7 @@ const el = (tag, attrs, ...kids) => {
 const hex = (v, digits) => "0x" + (v >>> 0).toString(16).padStart(digits, "0");
 const fixed = (v, d) => Number(v).toFixed(d);
 const methodNames = Object.keys(R.methods);
+const paperMethods = ["two-pass", "four-pass"].filter(n => n in R.methods);  // the paper's, shown first
 const params = new URLSearchParams(location.hash.slice(1));
 
 // ---- scene line and error tables (one row per method, sortable) ----
@@ -95,7 +96,7 @@ function heat(e) {
     }
   }
   g.putImageData(img, 0, 0);
-  $("legend-text").textContent = `−${LIMIT} … 0 … +${LIMIT} (1/128 units, saturating; a tick per unit; dark grey = not covered)`;
+  $("legend-text").textContent = `−${LIMIT} … 0 … +${LIMIT} /128 (saturating; a tick per unit; dark grey: not covered)`;
 }
 
 // ---- per-pixel data (report-pixels.js) ----
@@ -129,10 +130,14 @@ function dotAt(name, r, l) {
 const choices = [...methodNames, "reference"];
 for (const id of ["pick-a", "pick-b"]) for (const n of choices) $(id).append(el("option", {value: n}, n === "reference" ? "float reference" : n));
 for (let l = 0; l < LIGHTS; ++l) $("light").append(el("option", {value: l}, "light " + l));
-$("pick-a").value = params.get("a") || methodNames[0];
+const defaultA = paperMethods[0] || methodNames[0];
+$("pick-a").value = params.get("a") || defaultA;
 $("pick-b").value = params.get("b") || "reference";
+// The pixel pinned on opening: the link's, else the worst of method A against the reference (report_page.cpp).
+const worst = (P.methods[$("pick-a").value] || {}).worst;
+const firstPin = params.has("x") ? [Number(params.get("x")), Number(params.get("y"))] : worst ? [worst.x, worst.y] : null;
 if (params.get("layer")) $("layer").value = params.get("layer");
-if (params.get("light")) $("light").value = params.get("light");
+$("light").value = params.get("light") || (worst && !params.has("x") ? worst.light : 0);
 $("zoom").value = params.get("zoom") || "2";
 function imageFor(name, layer, l) {
   const im = name === "reference" ? P.reference_images : P.methods[name].images;
@@ -148,6 +153,15 @@ function placeMarks() {
     if (!selected) return;
     Object.assign(m.style, {left: selected[0] * z - 1 + "px", top: selected[1] * z - 1 + "px", width: z + "px", height: z + "px"});
   });
+  document.querySelectorAll(".pin").forEach(p => {
+    p.hidden = !selected;
+    if (selected) Object.assign(p.style, {left: 100 * (selected[0] + 0.5) / W + "%", top: 100 * (selected[1] + 0.5) / p.dataset.h + "%"});
+  });
+}
+function centre(x, y) {  // scrolls the views so that pixel (x, y) is in their middle, as far as their edges allow
+  const z = Number($("zoom").value);
+  for (const id of ["scroll-a", "scroll-b", "scroll-d"])
+    Object.assign($(id), {scrollLeft: (x + 0.5) * z - $(id).clientWidth / 2, scrollTop: (y + 0.5) * z - $(id).clientHeight / 2});
 }
 function drawDiff() {
   const a = $("pick-a").value, b = $("pick-b").value, l = Number($("light").value);
@@ -179,7 +193,10 @@ function update() {
   placeMarks();
   return nonzero;
 }
-["pick-a", "pick-b", "layer", "light", "zoom"].forEach(id => $(id).addEventListener("change", () => { update(); if (selected) inspect(...selected); }));
+["pick-a", "pick-b", "layer", "light", "zoom"].forEach(id => $(id).addEventListener("change", () => {
+  update();
+  if (selected) { inspect(...selected); if (id === "zoom") centre(...selected); }
+}));
 for (const id of ["scroll-a", "scroll-b", "scroll-d"]) {
   const s = $(id);
   s.addEventListener("scroll", () => { for (const o of ["scroll-a", "scroll-b", "scroll-d"]) if (o !== id) { $(o).scrollLeft = s.scrollLeft; $(o).scrollTop = s.scrollTop; } });
@@ -192,3 +209,24 @@ for (const id of ["scroll-a", "scroll-b", "scroll-d"]) {
   target.addEventListener("click", e => { const [x, y] = at(e); if (x < W && y < H) { pinned = !pinned || selected[0] !== x || selected[1] !== y; inspect(x, y); } });
 }
 
+// ---- the overview: the paper's methods' lit frames, the float reference's and A's error map, the pinned pixel ----
+{
+  const a = $("pick-a").value, l = Number($("light").value), errorH = a === "reference" ? H : H + 20;
+  const shown = [...(paperMethods.length ? paperMethods : [defaultA]).map(n => [P.methods[n].images.lit, H, n + ": lit frame"]),
+                 [P.reference_images.lit, H, "float reference: lit frame"],
+                 [imageFor(a, "error", l), errorH, `${a} − float reference, light ${l}`]];
+  for (const [src, h, caption] of shown) {
+    const img = el("img", {src, alt: caption, title: caption + " (click to inspect a pixel)", style: "width:100%;height:100%"});
+    const pic = el("div", {style: `position:relative;max-width:${250 * W / h}px;aspect-ratio:${W} / ${h}`}, img,
+                   el("span", {class: "pin", "data-h": h, hidden: ""}));
+    img.addEventListener("click", e => {
+      const b = img.getBoundingClientRect(), x = Math.floor((e.clientX - b.left) / b.width * W), y = Math.floor((e.clientY - b.top) / b.height * h);
+      if (x < W && y < H) { pinned = true; inspect(x, y); centre(x, y); }
+    });
+    $("overview").append(el("figure", {}, pic, el("figcaption", {}, caption)));
+  }
+  if (params.has("x")) $("worst").textContent = `Pixel x ${firstPin[0]}, y ${firstPin[1]} of the link, pinned in the inspector below.`;
+  else if (worst)
+    $("worst").textContent = `Worst pixel of ${a} against the float reference: x ${worst.x}, y ${worst.y}, light ${worst.light}, ` +
+      `error ${worst.error > 0 ? "+" : ""}${fixed(worst.error, 2)}/128, pinned in the inspector below (click a picture or a view to inspect another pixel).`;
+}

@@ -194,11 +194,13 @@ function loadScript(src) {
   return new Promise((ok, fail) => { const s = el("script", {src}); s.onload = ok; s.onerror = () => fail(new Error(src + " did not load")); document.head.append(s); });
 }
 async function start() {
+  update();
+  if (firstPin) { pinned = true; inspect(...firstPin); centre(...firstPin); }
   if (P.pixels_file) {
     try { await loadScript(P.pixels_file); PX = await decodePixels(window.gsdot3_pixels); check.pixels = "loaded " + PX.count + " pixels"; }
     catch (e) { check.pixels = String(e.message || e); }
   } else check.pixels = "the report was written without per-pixel data";
-  update();
+  drawDiff();
   if (params.has("selftest")) {  // the browser test: switch the picker through every pair of neighbours
     for (let i = 0; i < choices.length; ++i) {
       const a = choices[i], b = choices[(i + 1) % choices.length];
@@ -207,10 +209,10 @@ async function start() {
       const nonzero = drawDiff();
       check.picker.push({a, b, src_a: $("img-a").getAttribute("src"), src_b: $("img-b").getAttribute("src"), title_d: $("title-d").textContent, diff_nonzero: nonzero});
     }
-    $("pick-a").value = params.get("a") || methodNames[0]; $("pick-b").value = params.get("b") || "reference";
+    $("pick-a").value = params.get("a") || defaultA; $("pick-b").value = params.get("b") || "reference";
     update();
   }
-  if (params.has("x")) { pinned = true; inspect(Number(params.get("x")), Number(params.get("y"))); }
+  if (firstPin) inspect(...firstPin);
   const imgs = [...document.images];
   await Promise.all(imgs.map(i => i.decode().then(() => ++check.images.loaded, () => check.images.failed.push(i.getAttribute("src")))));
   check.images.total = imgs.length;
