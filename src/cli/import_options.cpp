@@ -14,8 +14,9 @@ void add_import_options(CLI::App* cmd, import_args& a) {
                   "than --crease-angle, as modelling tools do) | flat (each triangle its own)")
       ->capture_default_str();
   cmd->add_option("--crease-angle", a.crease_angle,
-                  "with --normals smooth: faces that meet at more than DEGREES (0..180) get their own normals at the "
-                  "edge (default 60; 180: smooth across every edge)");
+                  "with --normals smooth: an edge whose two faces' normals differ by more than DEGREES (0..180) "
+                  "is hard, each face keeps its own normal there (default 60; 180: smooth across every edge)")
+      ->type_name("DEGREES");
   cmd->add_option("--uv-projection", a.uv_projection,
                   "UVs for a mesh without them: box | sphere | planar (default: chosen for the shape, planar when it "
                   "faces one axis, sphere when it faces away from its centre, else box; named in a notice)");
