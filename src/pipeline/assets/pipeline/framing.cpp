@@ -62,7 +62,10 @@ std::size_t facing(const mesh& m, glm::vec3 eye) {
   std::size_t n = 0;
   for (const auto& t : m.triangles) {
     const glm::vec3 a = m.vertices[t[0]].position, b = m.vertices[t[1]].position, c = m.vertices[t[2]].position;
-    n += glm::dot(glm::cross(b - a, c - a), eye - a) > 0.0f;
+    // Edge-on (within 0.01°) is not facing: a plane through the eye, whose dot rounding may make
+    // positive, covers no pixel and prepare culls it.
+    const glm::vec3 normal = glm::cross(b - a, c - a), to_eye = eye - a;
+    n += glm::dot(normal, to_eye) > 1.75e-4f * glm::length(normal) * glm::length(to_eye);
   }
   return n;
 }

@@ -35,7 +35,8 @@ camera frame_unit_sphere(float azimuth, float elevation, int width, int height, 
                          float margin = 1.1f);
 
 // How many of the mesh's triangles face the eye (front faces are counter-clockwise: the eye lies on
-// the side of the plane that (b − a) × (c − a) points to), as back-face culling sees them.
+// the side of the plane that (b − a) × (c − a) points to, by more than 0.01°), as back-face culling
+// sees them.
 std::size_t facing(const mesh& m, glm::vec3 eye);
 
 struct front_view {

@@ -116,7 +116,8 @@ scene_input make_scene(const scene_request& r, const std::function<void(const st
   if (!r.mesh.empty() && !r.view && !r.eye)
     if (const std::optional<front_view> v = view_of_fronts(s.model, r.width, r.height, s.view.fov_y_degrees);
         v && (v->azimuth != view[0] || v->elevation != view[1])) {
-      say("framing: from the default view (azimuth 0, elevation 0) every triangle faces away; viewed from azimuth " +
+      say("framing: no triangle faces the default view (azimuth 0, elevation 0: they face away or are edge-on); "
+          "viewed from azimuth " +
           degrees(v->azimuth) + ", elevation " + degrees(v->elevation) + " instead, where " +
           std::to_string(v->facing) + " of " + std::to_string(s.model.triangles.size()) +
           " face the camera (--view chooses)");
