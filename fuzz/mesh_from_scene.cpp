@@ -15,7 +15,8 @@
 // Input layout: every value is one byte (or four for a float's bit pattern) taken with
 // FuzzedDataProvider::ConsumeIntegral, which reads from the END of the input; a seed is written as
 // the byte sequence below, reversed (mesh_from_scene_seeds.py writes corpus/mesh_from_scene/).
-//   options  (bit 0 flat normals, bits 1-2 uv projection, bit 3 MikkTSpace always, bit 4 no root)
+//   options  (bit 0 flat normals, bits 1-2 uv projection (0 automatic), bit 3 MikkTSpace always,
+//            bit 4 no root, bits 5-7 the crease angle: 0 the default, k 30·(k − 1)°)
 //   meshes   count % 65, each: attributes (0xff: null; bit 0 no positions, 1 normals, 2 UVs,
 //            3 UVs in channel 1 only, 4 tangents, 5 bitangents), vertices % 65, the present
 //            attributes' floats (all positions, then all normals, UVs (two each), tangents,
@@ -264,6 +265,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   pl::import_options options;
   options.normals = (flags & 1) != 0 ? pl::normals_mode::flat : pl::normals_mode::smooth;
   options.uvs = static_cast<pl::uv_projection>((flags >> 1) & 3);
+  if ((flags >> 5) != 0) options.crease_degrees = static_cast<float>(30u * ((flags >> 5) - 1));
   options.tangents = (flags & 8) != 0 ? pl::tangent_mode::mikktspace : pl::tangent_mode::automatic;
 
   const auto scene = std::make_unique<aiScene>();

@@ -1,8 +1,9 @@
-// cli/import_options.hpp — how a mesh file is imported (--normals, --uv-projection, --tangents,
-// --duplicates): one description for every command that reads a mesh (render, report, dump,
+// cli/import_options.hpp — how a mesh file is imported (--normals, --crease-angle, --uv-projection,
+// --tangents, --duplicates): one description for every command that reads a mesh (render, report, dump,
 // mesh-info).
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include <CLI/CLI.hpp>
@@ -13,6 +14,7 @@ namespace gsdot3::cli {
 
 struct import_args {
   std::string normals = "smooth", uv_projection, tangents = "auto", duplicates = "drop";
+  std::optional<double> crease_angle;  // unset: pipeline::import_options' default
 };
 
 void add_import_options(CLI::App* cmd, import_args& a);

@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -12,6 +13,8 @@
 #include <csignal>
 #include <sys/wait.h>
 #include <unistd.h>
+
+#include <assimp/IOStream.hpp>
 
 #include "common/temp_dir.hpp"
 #include "expect_error.hpp"
@@ -100,6 +103,25 @@ TEST(AssetFolder, AMissingMaterialLibrarysProbesOfThePathDoNotRefuseTheMesh) {
   ASSERT_FALSE(probe.Exists((folder.string() + "//" + piece).c_str()));
   EXPECT_NE(probe.probed().find("outside the file's folder"), std::string::npos);  // a probe, answered "no"
   EXPECT_EQ(import_mesh(folder / "quad.obj").model.triangles.size(), 1u);
+  fs::remove_all(dir);
+}
+
+// LWS names its object files, Ogre its materials, relative to the working directory: a relative
+// name that is not in the working directory's folder is read from the mesh's folder, when it is inside
+// it; one that leads out of the folder stays refused, and so does one assimp composed under it.
+TEST(AssetFolder, ANameRelativeToTheWorkingDirectoryIsReadFromTheMeshFolder) {
+  const fs::path dir = gsdot3::test::fresh_temp_dir("gsdot3-asset-folder");
+  write(dir / "m" / "cube.lwo", "x");
+  write(dir / "secret.lwo", "x");
+  confined_io io(dir / "m");
+  EXPECT_TRUE(io.Exists("cube.lwo"));  // the working directory is the test's, not dir / "m"
+  std::unique_ptr<Assimp::IOStream> opened(io.Open("cube.lwo"));
+  EXPECT_NE(opened, nullptr);
+  EXPECT_FALSE(io.Exists("../secret.lwo"));
+  EXPECT_EQ(io.Open("../secret.lwo"), nullptr);
+  EXPECT_NE(io.refused().find("../secret.lwo: a path outside the file's folder"), std::string::npos) << io.refused();
+  const std::string composed = (dir / "m").string() + "/../secret.lwo";
+  EXPECT_FALSE(io.Exists(composed.c_str()));
   fs::remove_all(dir);
 }
 

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
 #include <random>
 
 #include <glm/ext/matrix_clip_space.hpp>
@@ -110,6 +111,47 @@ TEST(Framing, OutsideTheGuardBandIsDroppedNotWrapped) {
       EXPECT_LT(std::abs(p.x), 16 * xy_offset_pixels);
       EXPECT_LT(std::abs(p.y), 16 * xy_offset_pixels);
     }
+}
+
+// One triangle in the unit sphere, its corners in the order given.
+mesh one_triangle(glm::vec3 a, glm::vec3 b, glm::vec3 c) {
+  mesh m;
+  for (const glm::vec3 p : {a, b, c}) m.vertices.push_back({p, {0, 0, 1}, {1, 0, 0}, {0, 1, 0}, {0, 0}});
+  m.triangles.push_back({0, 1, 2});
+  return m;
+}
+
+// The view that sees the front of the faces: expected views by the triangles' construction, and
+// prepare's back-face culling (the renderer's own test, on screen coordinates) agreeing that it
+// draws the triangle from there.
+TEST(Framing, TheDefaultViewTurnsToTheFrontOfTheFaces) {
+  struct want {
+    mesh m;
+    float azimuth, elevation;
+  };
+  const std::vector<want> cases = {
+      {one_triangle({-0.5f, -0.5f, 0}, {0.5f, -0.5f, 0}, {0, 0.5f, 0}), 0.0f, 0.0f},    // counter-clockwise from +z
+      {one_triangle({-0.5f, -0.5f, 0}, {0, 0.5f, 0}, {0.5f, -0.5f, 0}), 180.0f, 0.0f},  // clockwise: seen from −z
+      {one_triangle({-0.5f, 0, 0.5f}, {0.5f, 0, 0.5f}, {0, 0, -0.5f}), 0.0f, 89.0f},    // faces +y, edge-on to both
+      {one_triangle({-0.5f, 0, 0.5f}, {0, 0, -0.5f}, {0.5f, 0, 0.5f}), 0.0f, -89.0f}};  // faces −y
+  for (const want& w : cases) {
+    const std::optional<front_view> v = view_of_fronts(w.m, 64, 48, 40.0f);
+    ASSERT_TRUE(v.has_value());
+    EXPECT_NEAR(v->azimuth, w.azimuth, 1e-4f);
+    EXPECT_NEAR(v->elevation, w.elevation, 1e-4f);
+    EXPECT_EQ(v->facing, 1u);
+    scene s;
+    s.model = w.m;
+    s.width = 64;
+    s.height = 48;
+    s.normals = procedural_normal_map(8);
+    s.view = frame_unit_sphere(v->azimuth, v->elevation, 64, 48);
+    EXPECT_EQ(prepare(s).culled_back, 0);
+    s.view = frame_unit_sphere(v->azimuth + 180.0f, -v->elevation, 64, 48);  // the opposite side culls it
+    EXPECT_EQ(prepare(s).culled_back, 1);
+  }
+  // A triangle of zero area faces no view.
+  EXPECT_FALSE(view_of_fronts(one_triangle({0, 0, 0}, {1, 0, 0}, {0.5f, 0, 0}), 64, 48, 40.0f).has_value());
 }
 
 }  // namespace

@@ -49,8 +49,10 @@ TEST(BadInput, Obj) {
   expect_error([&] { import_mesh(write(d, "short.obj", "v 0 0\nf 1 1 1\n")); }, "short.obj: ");
   expect_error([&] { import_mesh(write(d, "index.obj", "v 0 0 0\nvt 0 0\nvn 0 0 1\nf 1/1/1 2/1/1 3/1/1\n")); },
                "index.obj: ");
-  expect_error([&] { import_mesh(write(d, "nouv.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\n")); },
-               "--uv-projection");
+  // No UVs is no longer an error (issue 54): the triangle, flat in z, is planar-projected.
+  EXPECT_EQ(import_mesh(write(d, "nouv.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\n"))
+                .report.uvs.rfind("planar projection (chosen for the shape", 0),
+            0u);
   expect_error([&] { import_mesh(write(d, "empty.obj", "# nothing\n")); }, "empty.obj: ");
   expect_error(
       [&] {

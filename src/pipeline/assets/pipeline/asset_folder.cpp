@@ -52,16 +52,35 @@ std::string outside_folder(const std::filesystem::path& folder, const std::strin
   return "";
 }
 
+namespace {
+
+// The path to open for `file`, or "" (with `why`) when it may not be opened. Some importers (LWS's
+// object files, Ogre's materials) name a file relative to the working directory, not composed under
+// the folder as glTF's "folder/" + URI is; such a name that leads out of the folder is taken
+// relative to the folder instead, when that lies inside it.
+std::string confined(const std::filesystem::path& folder, const char* file, std::string& why) {
+  why = outside_folder(folder, file);
+  if (why.empty()) return file;
+  const std::string name = file, prefix = folder.string() + "/";
+  if (folder.empty() || !std::filesystem::path(name).is_relative() || name.starts_with(prefix)) return "";
+  const std::string beside = (folder / file).string();
+  return outside_folder(folder, beside).empty() ? beside : "";
+}
+
+}  // namespace
+
 bool confined_io::Exists(const char* file) const {
-  const std::string why = outside_folder(folder_, file);
-  if (why.empty()) return DefaultIOSystem::Exists(file);
+  std::string why;
+  if (const std::string path = confined(folder_, file, why); !path.empty())
+    return DefaultIOSystem::Exists(path.c_str());
   if (probed_.empty()) probed_ = std::string(file) + ": " + why;
   return false;
 }
 
 Assimp::IOStream* confined_io::Open(const char* file, const char* mode) {
-  const std::string why = outside_folder(folder_, file);
-  if (why.empty()) return DefaultIOSystem::Open(file, mode);
+  std::string why;
+  if (const std::string path = confined(folder_, file, why); !path.empty())
+    return DefaultIOSystem::Open(path.c_str(), mode);
   if (refused_.empty()) refused_ = std::string(file) + ": " + why;
   return nullptr;
 }

@@ -58,6 +58,37 @@ camera frame_unit_sphere(float azimuth, float elevation, int width, int height, 
   return {view_direction(azimuth, elevation) * d, glm::vec3(0.0f), glm::degrees(2.0f * half_y)};
 }
 
+std::size_t facing(const mesh& m, glm::vec3 eye) {
+  std::size_t n = 0;
+  for (const auto& t : m.triangles) {
+    const glm::vec3 a = m.vertices[t[0]].position, b = m.vertices[t[1]].position, c = m.vertices[t[2]].position;
+    // Edge-on (within 0.01°) is not facing: a plane through the eye, whose dot rounding may make
+    // positive, covers no pixel and prepare culls it.
+    const glm::vec3 normal = glm::cross(b - a, c - a), to_eye = eye - a;
+    n += glm::dot(normal, to_eye) > 1.75e-4f * glm::length(normal) * glm::length(to_eye);
+  }
+  return n;
+}
+
+std::optional<front_view> view_of_fronts(const mesh& m, int width, int height, float fov_degrees) {
+  glm::vec3 mean(0.0f);  // Σ (b − a) × (c − a): each unit normal weighted by twice its area
+  for (const auto& t : m.triangles) {
+    const glm::vec3 a = m.vertices[t[0]].position, b = m.vertices[t[1]].position, c = m.vertices[t[2]].position;
+    mean += glm::cross(b - a, c - a);
+  }
+  std::vector<front_view> tries = {{0.0f, 0.0f, 0}, {180.0f, 0.0f, 0}};
+  if (glm::length(mean) > 0.0f) {
+    const glm::vec3 d = glm::normalize(mean);
+    tries.push_back({glm::degrees(std::atan2(d.x, d.z)),
+                     std::clamp(glm::degrees(std::asin(std::clamp(d.y, -1.0f, 1.0f))), -89.0f, 89.0f), 0});
+  }
+  for (front_view v : tries) {
+    v.facing = facing(m, frame_unit_sphere(v.azimuth, v.elevation, width, height, fov_degrees).eye);
+    if (v.facing > 0) return v;
+  }
+  return std::nullopt;
+}
+
 std::vector<scene_light> default_lights(float azimuth, float elevation) {
   std::vector<scene_light> lights = default_scene(8).lights;
   for (scene_light& l : lights) l.position = turn(l.position, azimuth, elevation);

@@ -5,6 +5,8 @@
 // margin, and the default lights are the embedded scene's (whose head has radius ≈ 1) turned with the view.
 #pragma once
 
+#include <cstddef>
+#include <optional>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -31,6 +33,22 @@ void normalise(mesh& m, const bounding_sphere& b);
 // taller than wide, up to 160°).
 camera frame_unit_sphere(float azimuth, float elevation, int width, int height, float fov_degrees = 40.0f,
                          float margin = 1.1f);
+
+// How many of the mesh's triangles face the eye (front faces are counter-clockwise: the eye lies on
+// the side of the plane that (b − a) × (c − a) points to, by more than 0.01°), as back-face culling
+// sees them.
+std::size_t facing(const mesh& m, glm::vec3 eye);
+
+struct front_view {
+  float azimuth = 0.0f, elevation = 0.0f;
+  std::size_t facing = 0;  // triangles that face the camera from there
+};
+
+// For a mesh normalised to the unit sphere, the first view, framed as frame_unit_sphere frames it,
+// that some triangle faces: (0, 0); (180, 0), the default turned about the vertical axis; then
+// looking against the area-weighted mean of the face normals, from where it points. nullopt when
+// no triangle faces any of them.
+std::optional<front_view> view_of_fronts(const mesh& m, int width, int height, float fov_degrees);
 
 // The embedded scene's two lights (green front-left above, blue right), turned with the view.
 std::vector<scene_light> default_lights(float azimuth, float elevation);

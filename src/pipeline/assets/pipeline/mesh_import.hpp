@@ -17,14 +17,15 @@ struct aiScene;  // <assimp/scene.h>
 
 namespace gsdot3::pipeline {
 
-enum class normals_mode { smooth, flat };                // for meshes without normals
-enum class uv_projection { none, box, sphere, planar };  // for meshes without UVs; none: refuse
-enum class tangent_mode { automatic, mikktspace };       // automatic: the file's tangents when it has them
-enum class duplicates_mode { drop, keep };               // triangles drawn twice (mesh_duplicates.hpp)
+enum class normals_mode { smooth, flat };                     // for meshes without normals
+enum class uv_projection { automatic, box, sphere, planar };  // for meshes without UVs (uv_generation.hpp)
+enum class tangent_mode { automatic, mikktspace };            // automatic: the file's tangents when it has them
+enum class duplicates_mode { drop, keep };                    // triangles drawn twice (mesh_duplicates.hpp)
 
 struct import_options {
   normals_mode normals = normals_mode::smooth;
-  uv_projection uvs = uv_projection::none;
+  float crease_degrees = 60.0f;  // smooth: split across edges sharper than this (generated_normals.hpp)
+  uv_projection uvs = uv_projection::automatic;
   tangent_mode tangents = tangent_mode::automatic;
   duplicates_mode duplicates = duplicates_mode::drop;
 };
@@ -55,12 +56,12 @@ struct import_report {
   std::string file, format;
   std::size_t meshes = 0, instances = 0, triangles = 0;  // source meshes, node instances, triangles kept
   std::size_t dropped_points = 0, dropped_lines = 0, dropped_degenerate = 0;
-  std::string normals = "file";  // file | generated smooth | generated flat
+  std::string normals = "file";  // file | generated smooth (… crease angle) | generated flat
   // Normal repairs, counted in distinct vertex positions:
-  std::size_t normals_generated = 0;               // positions that had no normal in the file
-  std::size_t normals_renormalised = 0;            // non-unit normals scaled to unit length
-  std::size_t normals_replaced = 0;                // zero or NaN normals replaced by the generated smooth normal
-  std::string uvs = "file";                        // file | box projection | sphere projection | planar projection
+  std::size_t normals_generated = 0;     // positions that had no normal in the file
+  std::size_t normals_renormalised = 0;  // non-unit normals scaled to unit length
+  std::size_t normals_replaced = 0;      // zero or NaN normals replaced by the generated smooth normal
+  std::string uvs = "file";              // file | box, sphere or planar projection (automatic: why | --uv-projection)
   std::string tangents = "MikkTSpace (computed)";  // or "file (TANGENT)"
   std::size_t zero_uv_area_triangles = 0, fallback_tangent_corners = 0;
   std::size_t duplicate_triangles = 0;  // same positions and winding as an earlier triangle
@@ -79,7 +80,7 @@ struct imported_mesh {
 };
 
 // Reads a mesh file. Throws std::runtime_error "FILE: why" (one line) for an importer error, no
-// triangles, NaN/Inf positions, out-of-range indices, or missing UVs with uv_projection::none.
+// triangles, NaN/Inf positions or out-of-range indices.
 // The import runs in a child process with a 3 GiB address space and 120 s of CPU: an importer that
 // crashes, runs out of memory or loops on a malformed file is an error, not the end (or the hang)
 // of gsdot3 (child_process.hpp).

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
-#include <numbers>
+#include <cstdio>
 #include <stdexcept>
 #include <unordered_map>
 #include <utility>
@@ -13,15 +13,13 @@
 #include <glm/mat3x3.hpp>
 #include <glm/matrix.hpp>
 
+#include "pipeline/generated_normals.hpp"
 #include "pipeline/mesh_duplicates.hpp"
 #include "pipeline/mikktspace.hpp"
+#include "pipeline/uv_generation.hpp"
 #include "pipeline/word_hash.hpp"
 
 namespace gsdot3::pipeline {
-
-const char* const missing_uv_message =
-    "the mesh has no texture coordinates (UVs); a normal map needs them to place its texels on the surface "
-    "(give --uv-projection box|sphere|planar to generate them)";
 
 namespace {
 
@@ -45,10 +43,6 @@ glm::vec3 unit_scaled(glm::vec3 v) {
 
 glm::vec3 face_normal(glm::vec3 a, glm::vec3 b, glm::vec3 c) { return glm::normalize(glm::cross(b - a, c - a)); }
 
-float corner_angle(glm::vec3 p, glm::vec3 a, glm::vec3 b) {
-  return std::acos(std::clamp(glm::dot(glm::normalize(a - p), glm::normalize(b - p)), -1.0f, 1.0f));
-}
-
 struct key3_hash {
   std::size_t operator()(const std::array<std::uint32_t, 3>& k) const {
     return (static_cast<std::size_t>(k[0]) * 73856093u) ^ (static_cast<std::size_t>(k[1]) * 19349663u) ^
@@ -57,73 +51,6 @@ struct key3_hash {
 };
 std::array<std::uint32_t, 3> bits(glm::vec3 v) {
   return {std::bit_cast<std::uint32_t>(v.x), std::bit_cast<std::uint32_t>(v.y), std::bit_cast<std::uint32_t>(v.z)};
-}
-
-// Smooth normals, angle-weighted (Thürmer and Wüthrich 1998): each triangle adds its unit normal
-// times its angle at the vertex; vertices at bit-identical positions share the sum, so UV seams do
-// not crease the shading. A zero sum gives a zero normal (the caller falls back to the face normal).
-std::vector<glm::vec3> smooth_normals(const source_mesh& m, const std::vector<char>& keep) {
-  std::unordered_map<std::array<std::uint32_t, 3>, glm::vec3, key3_hash> sum;
-  for (std::size_t t = 0; t < m.triangles.size(); ++t) {
-    if (!keep[t]) continue;
-    const auto& tri = m.triangles[t];
-    const glm::vec3 p[3] = {m.positions[tri[0]], m.positions[tri[1]], m.positions[tri[2]]};
-    const glm::vec3 n = face_normal(p[0], p[1], p[2]);
-    for (int k = 0; k < 3; ++k) sum[bits(p[k])] += corner_angle(p[k], p[(k + 1) % 3], p[(k + 2) % 3]) * n;
-  }
-  std::vector<glm::vec3> out(m.positions.size(), glm::vec3(0.0f));
-  for (std::size_t i = 0; i < out.size(); ++i) {
-    const auto it = sum.find(bits(m.positions[i]));
-    if (it != sum.end() && glm::length(it->second) > 1e-12f) out[i] = glm::normalize(it->second);
-  }
-  return out;
-}
-
-struct box {
-  glm::vec3 lo{INFINITY}, hi{-INFINITY};
-  float extent() const { return std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z, 1e-30f}); }
-};
-
-// UVs generated from model-space positions, one repeat of the map across the model's largest extent
-// (v runs down the image, so it decreases with height).
-std::array<glm::vec2, 3> project(uv_projection how, const std::array<glm::vec3, 3>& p, const box& b) {
-  const float L = b.extent();
-  std::array<glm::vec2, 3> uv{};
-  auto along = [&](glm::vec3 q, int ua, int va) { return glm::vec2((q[ua] - b.lo[ua]) / L, (b.hi[va] - q[va]) / L); };
-  if (how == uv_projection::sphere) {
-    const glm::vec3 c = 0.5f * (b.lo + b.hi);
-    constexpr float pi = std::numbers::pi_v<float>;
-    for (int k = 0; k < 3; ++k) {
-      const glm::vec3 d = p[k] - c;
-      const float r = glm::length(d);
-      uv[k] = {0.5f + std::atan2(d.x, d.z) / (2 * pi), r > 0 ? std::acos(std::clamp(d.y / r, -1.0f, 1.0f)) / pi : 0.5f};
-    }
-    // A triangle across the back meridian (u jumps from ~1 to ~0) is moved onto one side of it.
-    const float umax = std::max({uv[0].x, uv[1].x, uv[2].x});
-    for (auto& q : uv)
-      if (umax - q.x > 0.5f) q.x += 1.0f;
-  } else if (how == uv_projection::planar) {
-    // The plane of the two largest extents.
-    const glm::vec3 e = b.hi - b.lo;
-    const int drop = e.x <= e.y && e.x <= e.z ? 0 : (e.y <= e.z ? 1 : 2);
-    const int ua = drop == 0 ? 2 : 0, va = drop == 1 ? 2 : 1;
-    for (int k = 0; k < 3; ++k) uv[k] = along(p[k], ua, va);
-  } else {  // box: each triangle onto the side of the box its normal faces most
-    const glm::vec3 n = glm::abs(glm::cross(p[1] - p[0], p[2] - p[0]));
-    const int axis = n.x >= n.y && n.x >= n.z ? 0 : (n.y >= n.z ? 1 : 2);
-    const int ua = axis == 0 ? 2 : 0, va = axis == 1 ? 2 : 1;
-    for (int k = 0; k < 3; ++k) uv[k] = along(p[k], ua, va);
-  }
-  return uv;
-}
-
-const char* projection_name(uv_projection how) {
-  switch (how) {
-    case uv_projection::box: return "box projection";
-    case uv_projection::sphere: return "sphere projection";
-    case uv_projection::planar: return "planar projection";
-    default: return "file";
-  }
 }
 
 struct corner {
@@ -156,14 +83,24 @@ mesh weld(const std::vector<corner>& corners, std::vector<std::uint16_t> layer) 
 
 mesh build_mesh(const std::vector<source_mesh>& meshes, const std::vector<source_instance>& instances,
                 const import_options& options, import_report& report) {
-  // Model-space bounds (for generated UVs).
-  box b;
-  for (const source_instance& in : instances)
-    for (const glm::vec3& p : meshes[in.mesh].positions) {
-      const glm::vec3 q = glm::vec3(in.transform * glm::vec4(p, 1.0f));
+  // Model-space bounds and triangles (for generated UVs).
+  uv_bounds b;
+  std::vector<std::array<glm::vec3, 3>> model_triangles;
+  const bool uvs_missing = std::any_of(instances.begin(), instances.end(),
+                                       [&](const source_instance& in) { return meshes[in.mesh].uvs.empty(); });
+  for (const source_instance& in : instances) {
+    const source_mesh& sm = meshes[in.mesh];
+    auto to_model = [&](std::uint32_t i) { return glm::vec3(in.transform * glm::vec4(sm.positions[i], 1.0f)); };
+    for (std::uint32_t i = 0; i < sm.positions.size(); ++i) {
+      const glm::vec3 q = to_model(i);
       b.lo = glm::min(b.lo, q);
       b.hi = glm::max(b.hi, q);
     }
+    if (uvs_missing && options.uvs == uv_projection::automatic)
+      for (const auto& t : sm.triangles) model_triangles.push_back({to_model(t[0]), to_model(t[1]), to_model(t[2])});
+  }
+  projection_choice projection{options.uvs, "--uv-projection"};
+  if (!model_triangles.empty()) projection = choose_projection(model_triangles, b);
 
   std::vector<char> counted(meshes.size(), 0);
   std::size_t meshes_file_tangents = 0, meshes_mikk = 0, meshes_generated_normals = 0;
@@ -183,21 +120,20 @@ mesh build_mesh(const std::vector<source_mesh>& meshes, const std::vector<source
 
     // Normals per vertex: the file's, repaired, or generated. Repairs are counted per distinct
     // position (importers such as assimp's OBJ reader give every face corner its own vertex).
-    const std::vector<glm::vec3> smooth = smooth_normals(sm, keep);
-    std::vector<glm::vec3> normal(sm.positions.size(), glm::vec3(0.0f));  // zero: take the face normal
+    const std::vector<glm::vec3> generated_normal =
+        crease_normals(sm.positions, sm.triangles, keep, options.crease_degrees);  // per corner
+    std::vector<glm::vec3> normal(sm.positions.size(), glm::vec3(0.0f));           // zero: take the generated normal
     std::unordered_map<std::array<std::uint32_t, 3>, int, key3_hash> generated, replaced, renormalised;
     for (std::size_t i = 0; i < sm.positions.size(); ++i) {
       if (!used[i]) continue;
       const auto at = bits(sm.positions[i]);
       if (sm.normals.empty()) {
-        if (options.normals == normals_mode::smooth) normal[i] = smooth[i];
         generated[at] = 1;
         continue;
       }
       const glm::vec3 n = sm.normals[i];
       const float len = glm::length(n);
       if (!finite(n) || !(len > 1e-6f)) {
-        normal[i] = smooth[i];
         replaced[at] = 1;
       } else {
         normal[i] = n / len;
@@ -231,13 +167,13 @@ mesh build_mesh(const std::vector<source_mesh>& meshes, const std::vector<source
             throw std::runtime_error("vertex " + std::to_string(tri[k]) + " has a non-finite UV (NaN or infinity)");
         }
       } else {
-        if (options.uvs == uv_projection::none) throw std::runtime_error(missing_uv_message);
-        uv = project(options.uvs, world, b);
+        uv = project(projection.how, world, b);
       }
+      const bool flat = sm.normals.empty() && options.normals == normals_mode::flat;
       for (int k = 0; k < 3; ++k) {
-        const glm::vec3 n = normal[tri[k]];
-        const bool flat = sm.normals.empty() && options.normals == normals_mode::flat;
-        tc.push_back({p[k], flat || glm::length(n) == 0.0f ? fn : n, uv[k]});
+        glm::vec3 n = flat ? fn : normal[tri[k]];
+        if (glm::length(n) == 0.0f) n = generated_normal[3 * t + k];
+        tc.push_back({p[k], glm::length(n) == 0.0f ? fn : n, uv[k]});
         source.push_back(tri[k]);
       }
     }
@@ -304,14 +240,18 @@ mesh build_mesh(const std::vector<source_mesh>& meshes, const std::vector<source
   if (all.empty())
     throw std::runtime_error("no triangles (0 faces after dropping points, lines and zero-area triangles)");
 
+  char crease[24];
+  std::snprintf(crease, sizeof crease, "%g", static_cast<double>(options.crease_degrees));
   const std::string gen =
-      options.normals == normals_mode::smooth ? "generated smooth (angle-weighted)" : "generated flat";
+      options.normals == normals_mode::smooth
+          ? std::string("generated smooth (angle-weighted), split across edges sharper than ") + crease + " degrees"
+          : "generated flat";
   report.normals =
       meshes_generated_normals == 0 ? "file" : (meshes_generated_normals == report.meshes ? gen : "file + " + gen);
-  report.uvs =
-      projection_name(std::all_of(meshes.begin(), meshes.end(), [](const source_mesh& m) { return !m.uvs.empty(); })
-                          ? uv_projection::none
-                          : options.uvs);
+  report.uvs = uvs_missing ? std::string(projection_name(projection.how)) +
+                                 (options.uvs == uv_projection::automatic ? " (chosen for the shape: " : " (") +
+                                 projection.why + ")"
+                           : "file";
   report.tangents = meshes_mikk == 0 ? "file (TANGENT)"
                     : meshes_file_tangents == 0
                         ? "MikkTSpace (computed)"

@@ -1,5 +1,6 @@
 // pipeline/mesh_repair.hpp — from the meshes of a file (any importer) to the renderer's mesh:
-// normals generated or repaired, UVs projected when asked, tangents from the file or MikkTSpace,
+// normals generated (generated_normals.hpp) or repaired, UVs projected
+// where the file has none (uv_generation.hpp), tangents from the file or MikkTSpace,
 // instances transformed into one space and merged. Counts go into the import report.
 #pragma once
 
@@ -32,12 +33,8 @@ struct source_instance {
   glm::mat4 transform{1.0f};  // mesh coordinates to the model's
 };
 
-// Throws std::runtime_error (one line, without the file name) when no triangle is left, when a UV is
-// NaN/Inf, or when UVs are missing and options.uvs is uv_projection::none.
+// Throws std::runtime_error (one line, without the file name) when no triangle is left or a UV is NaN/Inf.
 mesh build_mesh(const std::vector<source_mesh>& meshes, const std::vector<source_instance>& instances,
                 const import_options& options, import_report& report);
-
-// The error for a mesh without UVs (also used by the CLI's help).
-extern const char* const missing_uv_message;
 
 }  // namespace gsdot3::pipeline

@@ -164,7 +164,7 @@ scene_input make_scene(const scene_request& r, const std::function<void(const st
 
   s.width = r.width;
   s.height = r.height;
-  const std::array<float, 2> view = r.view.value_or(std::array<float, 2>{0.0f, 0.0f});
+  std::array<float, 2> view = r.view.value_or(std::array<float, 2>{0.0f, 0.0f});
   const bool framed = !r.mesh.empty() || r.view;
   if (framed) {
     const bounding_sphere b = bounds_of(s.model);
@@ -173,6 +173,17 @@ scene_input make_scene(const scene_request& r, const std::function<void(const st
         degrees(b.centre.y) + "," + degrees(b.centre.z) + ", radius " + degrees(b.radius) +
         "): --camera and --light positions are in that frame");
   }
+  // The default view of a mesh sees its faces' fronts, or it is turned to where it does.
+  if (!r.mesh.empty() && !r.view && !r.eye)
+    if (const std::optional<front_view> v = view_of_fronts(s.model, r.width, r.height, s.view.fov_y_degrees);
+        v && (v->azimuth != view[0] || v->elevation != view[1])) {
+      say("framing: no triangle faces the default view (azimuth 0, elevation 0: they face away or are edge-on); "
+          "viewed from azimuth " +
+          degrees(v->azimuth) + ", elevation " + degrees(v->elevation) + " instead, where " +
+          std::to_string(v->facing) + " of " + std::to_string(s.model.triangles.size()) +
+          " face the camera (--view chooses)");
+      view = {v->azimuth, v->elevation};
+    }
   if (r.eye) {
     s.view.eye = *r.eye;
     sum.camera =
