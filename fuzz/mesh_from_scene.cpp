@@ -27,6 +27,7 @@
 //            (compressed), or width and height % 4 + 1 and 4 bytes a texel (raw)
 //   nodes    extra nodes % 34; the root, then each extra node: (parent index, for extra nodes),
 //            transform code and its operands, mesh references % 5, each as a face index is
+//   describe bit 0: import_options::describe_empty (mesh-info's: nothing to draw described, not refused)
 //   transform code % 8: 2 mirror (axis byte), 3 mirror all, 4 scale (3 floats), 5 translate (3 floats),
 //            6 rotate by k·90° (k byte, axis byte), 7 sixteen floats (row by row), else identity
 //   float    code < 8 NaN, < 16 ±infinity, < 24 the next four bytes' bit pattern, < 32 an extreme
@@ -284,6 +285,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   count_instanced(*scene, instanced, e);
 
+  options.describe_empty = (r.byte() & 1) != 0;  // mesh-info's: no triangle to draw is an empty mesh, not an error
+
   pl::imported_mesh m;
   try {
     m = pl::from_scene(*scene, scene_name, {}, "fuzz", options);
@@ -291,6 +294,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const std::string what = error.what(), prefix = std::string(scene_name) + ": ";
     require(what.compare(0, prefix.size(), prefix) == 0 && what.find('\n') == std::string::npos,
             [&] { return "from_scene's error is not one line naming the scene: " + what; });
+    return 0;
+  }
+  if (options.describe_empty && m.model.triangles.empty()) {  // described: the reason among its notices
+    require(std::any_of(m.report.notices.begin(), m.report.notices.end(),
+                        [](const std::string& n) { return n.find("nothing to draw") != std::string::npos; }),
+            [] { return std::string("from_scene described an empty mesh without saying why"); });
     return 0;
   }
   gsdot3::fuzz::check_mesh(m.model);

@@ -30,10 +30,13 @@ void add_mesh_info_command(CLI::App& app, context& ctx) {
       "also write the imported mesh (model space) as OUT.glb: NORMAL, TANGENT (w = handedness) and TEXCOORD_0");
   add_import_options(cmd, a->import);
   cmd->callback([a, &ctx] {
-    const pipeline::import_options options = parse_import_options(a->import);
+    pipeline::import_options options = parse_import_options(a->import);
+    options.describe_empty = true;  // a file with nothing to draw is described all the same
     pipeline::imported_mesh im;
     try {
       im = pipeline::import_mesh(a->file, options);
+      if (!a->export_mesh.empty() && im.model.triangles.empty())
+        throw std::runtime_error(a->file + ": --export-mesh: no triangles to export");
       if (!a->export_mesh.empty()) pipeline::export_mesh_glb(im.model, a->export_mesh);
     } catch (const std::runtime_error& e) { throw usage_error(e.what()); }
     const pipeline::mesh_figures f = pipeline::measure(im.model);

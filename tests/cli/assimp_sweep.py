@@ -4,9 +4,10 @@
 usage: assimp_sweep.py GSDOT3 WORKDIR [--shard I/N] [--models DIR]
 
 For each file (sorted; shard I of N takes every N-th from the I-th, 0-based): `gsdot3 mesh-info FILE`
-describes it, or refuses it with one line `gsdot3: error: ...`: assimp cannot read it, it holds no
-triangle, or it cannot be drawn (NaN positions); then `gsdot3 render --mesh FILE` (64x48, two-pass)
-renders it or refuses it with one line. No reason may be a missing UV set. Images, shaders, text and buffers beside the models are not tried. Prints one line per
+describes it (a file with no triangle to draw too), or refuses it with one line `gsdot3: error: ...`
+only when assimp cannot read it; then `gsdot3 render --mesh FILE` (64x48, two-pass) renders it or
+refuses it with one line ("no triangles" for the files with nothing to draw). No reason may be a
+missing UV set. Images, shaders, text and buffers beside the models are not tried. Prints one line per
 file and a summary table; exit 0 when nothing failed, 1 otherwise, 77 (skipped) without the models.
 """
 import concurrent.futures
@@ -41,11 +42,7 @@ def sweep_one(gsdot3, work, index, path):
         why = errors[-1][len('gsdot3: error: '):] if errors else err.strip()[-200:]
         if code == 2 and len(errors) == 1 and any(s in why for s in NOT_READ):
             return 'not read by assimp', why, None
-        if code == 2 and len(errors) == 1 and 'no triangles' in why:
-            return 'no triangles', why, None
-        if code == 2 and len(errors) == 1 and not NO_UVS.search(why):
-            return 'refused', 'mesh-info: ' + why, None  # a file that cannot be drawn (NaN positions)
-        return 'failed', why, f'mesh-info exit {code} with {len(errors)} error line(s): {why}'
+        return 'failed', why, f'mesh-info refused a file assimp reads (exit {code}): {why}'
     out = os.path.join(work, f'r{index}')
     code, err = run([gsdot3, 'render', '--mesh', path, '--size', '64x48', '--method', 'two-pass', '--out', out])
     shutil.rmtree(out, ignore_errors=True)
@@ -57,6 +54,8 @@ def sweep_one(gsdot3, work, index, path):
         return 'failed', why, f'render exit {code} with {len(errors)} error line(s): {why}'
     if NO_UVS.search(why):
         return 'failed', why, f'refused for missing UVs: {why}'
+    if 'no triangles' in why:  # mesh-info described it: nothing to draw (points, lines, NaN positions)
+        return 'no triangles', why, None
     return 'refused', why, None
 
 

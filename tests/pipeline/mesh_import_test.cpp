@@ -5,6 +5,7 @@
 
 #include "expect_error.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -176,9 +177,24 @@ TEST(MeshImport, ZeroUvAreaTriangleGetsACountedFallbackFrame) {
   fs::remove_all(d);
 }
 
+// A triangle with a NaN or infinite vertex position cannot be drawn; the others can (issue 54: nothing
+// refused that can be drawn): it is dropped and counted, the rest imported.
+TEST(MeshImport, TrianglesWithNonFinitePositionsAreDroppedAndCounted) {
+  const imported_mesh im = import_mesh_from_memory(
+      "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 inf\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/1 2/2 3/3\nf 2/2 4/1 3/3\n", "obj");
+  EXPECT_EQ(im.model.triangles.size(), 1u);
+  EXPECT_EQ(im.report.dropped_non_finite, 1u);
+  for (const vertex& v : im.model.vertices) EXPECT_LE(glm::length(v.position), 1.0f);  // (1, 1, inf) is gone
+  EXPECT_NE(std::find(im.report.notices.begin(), im.report.notices.end(),
+                      "1 triangle(s) with a non-finite position (NaN or infinity) dropped"),
+            im.report.notices.end());
+}
+
 TEST(MeshImport, BadFilesGiveOneLineErrorsNamingTheFile) {
   expect_error([] { import_mesh(data / "missing.obj"); }, "missing.obj: cannot open the mesh");
-  expect_error([] { import_mesh(data / "bad_nan.obj"); }, "bad_nan.obj: mesh 0: vertex 2 has a non-finite position");
+  expect_error([] { import_mesh(data / "bad_nan.obj"); },  // its one triangle has a NaN vertex
+               "bad_nan.obj: no triangles (0 faces after dropping points, lines, zero-area triangles and 1 triangle(s) "
+               "with a non-finite position)");
   expect_error([] { import_mesh(data / "bad_empty.obj"); }, "bad_empty.obj: no triangles");
   expect_error([] { import_mesh(data / "bad_truncated.glb"); }, "bad_truncated.glb: cannot read the mesh");
   // An OFF header promising 2 faces with only 1 present makes assimp 5.2 abort (an ai_assert in its

@@ -40,12 +40,11 @@ source_mesh convert(const aiMesh& am, std::size_t index, unsigned uv_set, import
   const std::string which = "mesh " + std::to_string(index);
   if (am.mVertices == nullptr && am.mNumVertices > 0) throw std::runtime_error(which + " has no positions");
   m.positions.reserve(am.mNumVertices);
+  std::vector<char> non_finite(am.mNumVertices, 0);  // its triangles are dropped, and it is never read
   for (unsigned i = 0; i < am.mNumVertices; ++i) {
     const glm::vec3 p = v3(am.mVertices[i]);
-    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-      throw std::runtime_error(which + ": vertex " + std::to_string(i) +
-                               " has a non-finite position (NaN or infinity)");
-    m.positions.push_back(p);
+    non_finite[i] = !std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z);
+    m.positions.push_back(non_finite[i] ? glm::vec3(0.0f) : p);
   }
   if (am.mNormals != nullptr)
     for (unsigned i = 0; i < am.mNumVertices; ++i) m.normals.push_back(v3(am.mNormals[i]));
@@ -68,6 +67,10 @@ source_mesh convert(const aiMesh& am, std::size_t index, unsigned uv_set, import
       if (face.mIndices[k] >= am.mNumVertices)
         throw std::runtime_error(which + ": face " + std::to_string(f) + " refers to vertex " +
                                  std::to_string(face.mIndices[k]) + " of " + std::to_string(am.mNumVertices));
+    if (std::any_of(face.mIndices, face.mIndices + face.mNumIndices, [&](unsigned v) { return non_finite[v]; })) {
+      report.dropped_non_finite += face.mNumIndices - 2;
+      continue;
+    }
     for (unsigned k = 1; k + 1 < face.mNumIndices; ++k)  // a polygon the triangulation left: a fan
       m.triangles.push_back({face.mIndices[0], face.mIndices[k], face.mIndices[k + 1]});
   }
@@ -162,8 +165,8 @@ std::string serialise(const imported_mesh& m) {
   const import_report& r = m.report;
   for (const std::string* t : {&r.file, &r.format, &r.normals, &r.uvs, &r.tangents}) w.text(*t);
   for (std::size_t n : {r.meshes, r.instances, r.triangles, r.dropped_points, r.dropped_lines, r.dropped_degenerate,
-                        r.normals_generated, r.normals_renormalised, r.normals_replaced, r.zero_uv_area_triangles,
-                        r.fallback_tangent_corners, r.duplicate_triangles})
+                        r.dropped_non_finite, r.normals_generated, r.normals_renormalised, r.normals_replaced,
+                        r.zero_uv_area_triangles, r.fallback_tangent_corners, r.duplicate_triangles})
     w.pod(n);
   w.pod(r.duplicates_dropped);
   w.pod(r.notices.size());
@@ -198,9 +201,10 @@ imported_mesh deserialise(const std::string& bytes) {
   m.model.layer = rd.pods<std::uint16_t>();
   import_report& r = m.report;
   for (std::string* t : {&r.file, &r.format, &r.normals, &r.uvs, &r.tangents}) *t = rd.text();
-  for (std::size_t* n : {&r.meshes, &r.instances, &r.triangles, &r.dropped_points, &r.dropped_lines,
-                         &r.dropped_degenerate, &r.normals_generated, &r.normals_renormalised, &r.normals_replaced,
-                         &r.zero_uv_area_triangles, &r.fallback_tangent_corners, &r.duplicate_triangles})
+  for (std::size_t* n :
+       {&r.meshes, &r.instances, &r.triangles, &r.dropped_points, &r.dropped_lines, &r.dropped_degenerate,
+        &r.dropped_non_finite, &r.normals_generated, &r.normals_renormalised, &r.normals_replaced,
+        &r.zero_uv_area_triangles, &r.fallback_tangent_corners, &r.duplicate_triangles})
     *n = rd.pod<std::size_t>();
   r.duplicates_dropped = rd.pod<bool>();
   for (std::size_t i = 0, n = rd.pod<std::size_t>(); i < n && rd.at < bytes.size(); ++i) r.notices.push_back(rd.text());
@@ -262,6 +266,9 @@ imported_mesh from_scene(const aiScene& s, const std::string& name, const std::f
   } catch (const std::runtime_error& e) { throw std::runtime_error(name + ": " + e.what()); }
   if (r.dropped_degenerate > 0)
     r.notices.push_back(std::to_string(r.dropped_degenerate) + " zero-area triangle(s) dropped");
+  if (r.dropped_non_finite > 0)
+    r.notices.push_back(std::to_string(r.dropped_non_finite) +
+                        " triangle(s) with a non-finite position (NaN or infinity) dropped");
   if (r.normals_generated > 0)
     r.notices.push_back("normals: " + std::to_string(r.normals_generated) + " vertex position(s) had none; " +
                         r.normals);

@@ -28,6 +28,9 @@ struct import_options {
   uv_projection uvs = uv_projection::automatic;
   tangent_mode tangents = tangent_mode::automatic;
   duplicates_mode duplicates = duplicates_mode::drop;
+  // mesh-info: a file with no triangle to draw is described (an empty mesh, the reason in a notice)
+  // instead of refused.
+  bool describe_empty = false;
 };
 
 // A material's normal map: a file beside the mesh, or an image embedded in it (.glb).
@@ -56,7 +59,8 @@ struct import_report {
   std::string file, format;
   std::size_t meshes = 0, instances = 0, triangles = 0;  // source meshes, node instances, triangles kept
   std::size_t dropped_points = 0, dropped_lines = 0, dropped_degenerate = 0;
-  std::string normals = "file";  // file | generated smooth (… crease angle) | generated flat
+  std::size_t dropped_non_finite = 0;  // triangles with a vertex position NaN or infinite
+  std::string normals = "file";        // file | generated smooth (… crease angle) | generated flat
   // Normal repairs, counted in distinct vertex positions:
   std::size_t normals_generated = 0;     // positions that had no normal in the file
   std::size_t normals_renormalised = 0;  // non-unit normals scaled to unit length
@@ -80,7 +84,7 @@ struct imported_mesh {
 };
 
 // Reads a mesh file. Throws std::runtime_error "FILE: why" (one line) for an importer error, no
-// triangles, NaN/Inf positions or out-of-range indices.
+// triangles (none left once those with a NaN/Inf position are dropped) or out-of-range indices.
 // The import runs in a child process with a 3 GiB address space and 120 s of CPU: an importer that
 // crashes, runs out of memory or loops on a malformed file is an error, not the end (or the hang)
 // of gsdot3 (child_process.hpp).

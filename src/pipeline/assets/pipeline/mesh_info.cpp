@@ -72,7 +72,7 @@ std::string mesh_info_text(const imported_mesh& im, const mesh_figures& f) {
     << "read        " << r.meshes << " mesh(es), " << r.instances << " instance(s)\n"
     << "drawn       " << f.triangles << " triangles, " << f.vertices << " vertices\n"
     << "dropped     " << r.dropped_points << " point(s), " << r.dropped_lines << " line(s), " << r.dropped_degenerate
-    << " zero-area triangle(s)\n"
+    << " zero-area triangle(s), " << r.dropped_non_finite << " with a non-finite position\n"
     << "duplicates  " << r.duplicate_triangles << " triangle(s) with the positions and winding of an earlier one, "
     << (r.duplicates_dropped ? "dropped" : "kept") << "\n"
     << "bounds      min " << xyz(f.lo) << "  max " << xyz(f.hi) << "\n"

@@ -237,8 +237,12 @@ mesh build_mesh(const std::vector<source_mesh>& meshes, const std::vector<source
       layer.push_back(sm.layer);
     }
   }
-  if (all.empty())
-    throw std::runtime_error("no triangles (0 faces after dropping points, lines and zero-area triangles)");
+  if (all.empty()) {
+    const std::string why = "no triangles (0 faces after dropping points, lines, zero-area triangles and " +
+                            std::to_string(report.dropped_non_finite) + " triangle(s) with a non-finite position)";
+    if (!options.describe_empty) throw std::runtime_error(why);
+    report.notices.push_back(why + ": nothing to draw");
+  }
 
   char crease[24];
   std::snprintf(crease, sizeof crease, "%g", static_cast<double>(options.crease_degrees));
@@ -261,7 +265,7 @@ mesh build_mesh(const std::vector<source_mesh>& meshes, const std::vector<source
   report.duplicates_dropped = options.duplicates == duplicates_mode::drop;
   report.duplicate_triangles = find_duplicate_triangles(out, report.duplicates_dropped);
   report.triangles = out.triangles.size();
-  validate(out);
+  if (!all.empty()) validate(out);
   return out;
 }
 

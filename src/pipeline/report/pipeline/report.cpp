@@ -135,7 +135,8 @@ std::string normalisation_warning(const error_stats& n, bool four_pass_brighter)
         "unit length");
   text.append(
       ". The usual cause is one smooth normal per corner across hard edges (a cube): give the file split "
-      "normals, or --normals flat when it has none");
+      "normals, or, when it has none, a smaller --crease-angle (the edges sharper than it are split) or "
+      "--normals flat");
   return text;
 }
 
