@@ -3,44 +3,17 @@
 to a 24-bit bottom-up BMP, with one pixel optionally replaced; or `png_to_bmp.py --blank W H OUT.bmp`
 for a black BMP of another size. Standard library only (zlib, struct), so the BMP is made without
 the code under test."""
+import os
 import struct
 import sys
-import zlib
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
+from png_read import read_png  # noqa: E402
 
 
 def read_png_rgb(path):
-    data = open(path, "rb").read()
-    assert data[:8] == b"\x89PNG\r\n\x1a\n", "not a PNG"
-    at, idat, width, height = 8, b"", 0, 0
-    while at < len(data):
-        (n,) = struct.unpack(">I", data[at:at + 4])
-        kind, body = data[at + 4:at + 8], data[at + 8:at + 8 + n]
-        if kind == b"IHDR":
-            width, height, depth, colour, _, _, interlace = struct.unpack(">IIBBBBB", body)
-            assert depth == 8 and colour == 2 and interlace == 0, "only 8-bit RGB, not interlaced"
-        elif kind == b"IDAT":
-            idat += body
-        at += 12 + n
-    raw, stride, rows, prev = zlib.decompress(idat), 1 + 3 * width, [], bytearray(3 * width)
-    for y in range(height):
-        kind, line = raw[y * stride], bytearray(raw[y * stride + 1:(y + 1) * stride])
-        for i in range(len(line)):
-            a = line[i - 3] if i >= 3 else 0
-            b = prev[i]
-            c = prev[i - 3] if i >= 3 else 0
-            if kind == 1:
-                line[i] = (line[i] + a) & 255
-            elif kind == 2:
-                line[i] = (line[i] + b) & 255
-            elif kind == 3:
-                line[i] = (line[i] + (a + b) // 2) & 255
-            elif kind == 4:
-                p = a + b - c
-                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
-                line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
-        rows.append(line)
-        prev = line
-    return width, height, rows
+    rows = read_png(path)
+    return len(rows[0]) if rows else 0, len(rows), [bytearray(b for px in row for b in px) for row in rows]
 
 
 def write_bmp(path, width, height, rows):
