@@ -10,15 +10,20 @@
 // the dumps differ.)
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
+#include <fstream>
 #include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "common/temp_dir.hpp"
 #include "pipeline/default_scene.hpp"
+#include "pipeline/files.hpp"
 #include "pipeline/frame_packets.hpp"
 #include "pipeline/normal_map.hpp"
 #include "pipeline/reference.hpp"
@@ -176,6 +181,47 @@ TEST(Layers, ClearCoatDrawsEachMaterialWithItsOwnMap) {
     EXPECT_EQ(wrong[k], 0u) << "layer " << k;
   }
   EXPECT_GT(differ[2], pixels[2] / 4) << "the ribs would show on the flat layer's pixels";
+}
+
+// glTF's normalTexture.scale and texCoord (a material's own map read as the material says): a triangle
+// whose material's map reads TEXCOORD_1 with scale 0.5, the map one texel (218, 128, 218) = 45° from z
+// in x. Expected: the vertices' UVs are TEXCOORD_1's (not TEXCOORD_0's single point), and the
+// map's normal is normalize(0.5·x, 0.5·y, z) of the texel's (2c/255 − 1) — 26.6° from z, not 45°.
+TEST(Layers, GltfNormalTextureScaleAndTexCoordAreRead) {
+  const std::filesystem::path d = gsdot3::test::fresh_temp_dir("gsdot3-layers-gltf");
+  const float data[] = {0,    0,    0,    1,    0,    0,    0, 1, 0,  // POSITION
+                        0.1f, 0.1f, 0.1f, 0.1f, 0.1f, 0.1f,           // TEXCOORD_0: one point
+                        0,    0,    1,    0,    0,    1};             // TEXCOORD_1: the triangle
+  std::ofstream(d / "t.bin", std::ios::binary).write(reinterpret_cast<const char*>(data), sizeof data);
+  std::ofstream(d / "t.gltf") << R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
+    "nodes": [{"mesh": 0}], "buffers": [{"uri": "t.bin", "byteLength": 84}],
+    "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": 24},
+                    {"buffer": 0, "byteOffset": 60, "byteLength": 24}],
+    "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3", "min": [0, 0, 0], "max": [1, 1, 0]},
+                  {"bufferView": 1, "componentType": 5126, "count": 3, "type": "VEC2"},
+                  {"bufferView": 2, "componentType": 5126, "count": 3, "type": "VEC2"}],
+    "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "TEXCOORD_0": 1, "TEXCOORD_1": 2}, "material": 0}]}],
+    "materials": [{"name": "M", "normalTexture": {"index": 0, "texCoord": 1, "scale": 0.5}}],
+    "textures": [{"source": 0}], "images": [{"uri": "n.png"}]})";
+  image texel{8, 8, 3, {}};
+  for (int i = 0; i < 64; ++i) texel.data.insert(texel.data.end(), {218, 128, 218});
+  write_png(d / "n.png", texel);
+  scene_request r;
+  r.mesh = d / "t.gltf";
+  r.width = 32, r.height = 32;
+  const scene_input in = make_scene(r, [](const std::string&) {});
+  ASSERT_EQ(in.summary.layers.size(), 1u);
+  EXPECT_NE(in.summary.layers[0].find("scale 0.5, UV set 1; materials: M"), std::string::npos) << in.summary.layers[0];
+  std::vector<glm::vec2> uvs;
+  for (const vertex& v : in.s.model.vertices) uvs.push_back(v.uv);
+  std::sort(uvs.begin(), uvs.end(), [](glm::vec2 a, glm::vec2 b) { return a.x != b.x ? a.x < b.x : a.y < b.y; });
+  EXPECT_EQ(uvs, (std::vector<glm::vec2>{{0, 0}, {0, 1}, {1, 0}}));  // glTF's v runs down, as the renderer's
+  const float c = 218 / 127.5f - 1, y = 128 / 127.5f - 1;
+  const glm::vec3 want = glm::normalize(glm::vec3(0.5f * c, -0.5f * y, c));  // glTF's green points up the image
+  ASSERT_FALSE(in.s.normals.unquantised.empty());
+  EXPECT_LT(glm::length(in.s.normals.unquantised[0] - want), 1e-5f);
+  EXPECT_NEAR(std::acos(static_cast<double>(in.s.normals.unquantised[0].z)) * 180 / 3.141592653589793, 26.6, 0.1);
+  std::filesystem::remove_all(d);
 }
 
 TEST(Layers, LayersApartAndTogether) {
