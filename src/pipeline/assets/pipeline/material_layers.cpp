@@ -104,8 +104,7 @@ material_layers layers_of(const aiScene& s, const std::vector<source_instance>& 
     throw std::runtime_error("the materials name " + std::to_string(out.maps.size()) + " normal maps, " +
                              std::to_string(out.count()) + " layers with the flat one; at most " +
                              std::to_string(max_layers) + " layers are drawn");
-  for (unsigned m : flat_meshes) mesh_layer[m] = static_cast<std::uint16_t>(out.maps.size());
-  if (out.maps.empty()) std::fill(mesh_layer.begin(), mesh_layer.end(), 0);
+  for (unsigned m : flat_meshes) mesh_layer[m] = static_cast<std::uint16_t>(out.maps.size());  // 0 without maps
   return out;
 }
 
