@@ -7,7 +7,8 @@
 // - no crash, and the only refusals (std::invalid_argument) are the documented ones: the one-buffer
 //   variant with a z-trick clear or with more than 3 lights (gs_inputs.cpp's make_inputs);
 // - the frame under the chosen options equals the canonical one (value path, explicit clears, two
-//   buffers, SIMD units, cached rasteriser): memory path = value path, scalar (traced or not) = SIMD, reference
+//   buffers, SIMD units and span engine, cached rasteriser): memory path = value path, scalar (traced or not)
+//   = SIMD, the walked SIMD batches (render_options::span_engine off) = the span engine, reference
 //   raster path = cached, one buffer = two, z-trick clears = explicit ones (z-trick-psmz32 under a
 //   texture buffer that holds the page, where section 3.4 claim (e) says it is the same frame);
 // - the frame's GS dump (any DPB clear, either draw-buffer mode) replays to the same colours (frames of
@@ -199,7 +200,8 @@ pl::render_options random_options(FuzzedDataProvider& in) {
 std::string describe(const combination& c, const pl::scene& s, const pl::render_options& o) {
   return std::string(pl::name(c.m)) + ", " + std::string(pl::name(c.clear)) +
          (c.buffers == pl::draw_buffers::one ? ", one buffer" : ", two buffers") +
-         (c.memory_path ? ", memory path" : ", value path") + (o.simd ? ", SIMD" : ", scalar") +
+         (c.memory_path ? ", memory path" : ", value path") +
+         (o.simd ? (o.span_engine ? ", SIMD, span engine" : ", SIMD, walked") : ", scalar") +
          (o.path == pl::raster_path::reference ? ", reference raster" : "") + ", " + std::to_string(c.bits) +
          "-bit map of " + std::to_string(pl::layers(s.normals)) + " layer(s), extra " +
          std::to_string(static_cast<int>(c.e)) + ", " + std::to_string(s.lights.size()) + " lights, " +
@@ -238,6 +240,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   o.spot_after_first_pass = c.e == extra::spot_first_pass && c.m == pl::method::four_pass;
   canonical.spot_after_first_pass = o.spot_after_first_pass;
   o.simd = in.ConsumeBool();
+  o.span_engine = in.ConsumeBool();    // with simd: the value path's triangle passes in the span engine
   std::vector<pl::pass_record> trace;  // as the report traces its DPB pictures (scalar, one band)
   if (!o.simd && in.ConsumeBool()) o.trace = &trace;
   o.path = in.ConsumeBool() ? pl::raster_path::reference : pl::raster_path::cached;

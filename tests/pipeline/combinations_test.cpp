@@ -76,6 +76,9 @@ TEST_P(Combinations, RenderOrRefuseAndAgree) {
     base.model.uv_convert = uv_rules[uv_index].convert;
     const frame expected = render(s, ps, m, base);  // value path, explicit clears, two buffers, SIMD
     ASSERT_EQ(expected.colour.size(), static_cast<std::size_t>(s.width) * static_cast<std::size_t>(s.height));
+    render_options walked = base;
+    walked.span_engine = false;  // every triangle pixel through the attribute walker and span_batch
+    EXPECT_EQ(render(s, ps, m, walked).colour, expected.colour) << name(m) << ": the span engine against the walk";
     std::vector<std::pair<render_options, frame>> memory_frames;  // what each dump must replay to
     for (const dpb_clear_mode clear :
          {dpb_clear_mode::explicit_clear, dpb_clear_mode::z_trick, dpb_clear_mode::z_trick_psmz32})

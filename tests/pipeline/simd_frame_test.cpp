@@ -1,5 +1,6 @@
-// Whole frames through the SIMD pixel pipeline (render_options::simd, gs_simd) equal the frames of the
-// scalar gs::pixel_pipeline (--scalar) bit for bit: every method × rasteriser path × storage (value
+// Whole frames through the SIMD pixel pipeline (render_options::simd, gs_simd; with and without the
+// span engine, render_options::span_engine) equal the frames of the scalar gs::pixel_pipeline
+// (--scalar) bit for bit: every method × rasteriser path × storage (value
 // level, memory path, both z-trick DPB clears) × filter × specular, under every value of the model
 // options the passes' units read (tfx_rounding, gouraud_fraction, blend_shift, uv_convert, uv_plane; gouraud_setup:
 // plane_steps, per_pixel_floor, per_pixel), on the embedded scene at 160×140 and at 1 and 3 threads.
@@ -64,6 +65,9 @@ TEST_P(SimdFrame, EqualsTheScalarFrameUnderEveryPathStorageAndOption) {
         const frame scalar = render(s, ps, GetParam(), o);
         o.simd = true;
         const frame vector = render(s, ps, GetParam(), o);
+        o.span_engine = false;  // the units alone, every pixel walked by gs::attribute_walker
+        const frame batched = render(s, ps, GetParam(), o);
+        EXPECT_EQ(batched.colour, vector.colour) << "the span engine against the walked batches";
         const std::string what = std::string(name(GetParam())) + ", " +
                                  (path == raster_path::cached ? "cached" : "reference") + ", " + st.name +
                                  ", variant " + std::to_string(variant);

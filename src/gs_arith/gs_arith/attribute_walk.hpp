@@ -55,6 +55,16 @@ struct plane_walk {
   constexpr std::int64_t value(const plane& p) const noexcept { return p.den == 0 ? n >> 16 : p.lifted(w.q, w.r); }
 };
 
+// Whether a triangle's colour is one value over the whole plane (the header's reason).
+constexpr bool flat_colour(const triangle_attributes& a) noexcept {
+  if (a.setup == gouraud_setup::pcsx2_rows_4 || a.setup == gouraud_setup::pcsx2_rows_8) return false;
+  for (std::size_t i = 0; i < 4; ++i)
+    if (a.setup == gouraud_setup::plane_steps ? a.colour.dx[i].value() != 0 || a.colour.dy[i].value() != 0
+                                              : a.colour.exact.nx[i] != 0 || a.colour.exact.ny[i] != 0)
+      return false;
+  return true;
+}
+
 class attribute_walker {
  public:
   struct values {
@@ -99,15 +109,6 @@ class attribute_walker {
   }
 
  private:
-  // Whether the colour is one value over the whole plane (the header's reason).
-  static constexpr bool flat_colour(const triangle_attributes& a) noexcept {
-    if (a.setup == gouraud_setup::pcsx2_rows_4 || a.setup == gouraud_setup::pcsx2_rows_8) return false;
-    for (std::size_t i = 0; i < 4; ++i)
-      if (a.setup == gouraud_setup::plane_steps ? a.colour.dx[i].value() != 0 || a.colour.dy[i].value() != 0
-                                                : a.colour.exact.nx[i] != 0 || a.colour.exact.ny[i] != 0)
-        return false;
-    return true;
-  }
   // clamp_distance(k + 1) = clamp_distance(k) + 1 for the plane's pixel distance k (gouraud.hpp).
   constexpr bool steppable(int x) const noexcept {
     const std::int64_t k = a_.setup == gouraud_setup::plane_steps ? std::int64_t{x} + a_.offset_x - a_.colour.x_ref

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "gs_memory/address.hpp"
@@ -17,6 +18,12 @@ namespace gs::mem {
 class local_memory {
  public:
   local_memory() : words_(memory_bytes / 4, 0) {}
+  // The same, zeroed, in `storage`'s memory (a caller that keeps its storage between uses), handed
+  // back by release().
+  explicit local_memory(std::vector<std::uint32_t>&& storage) : words_(std::move(storage)) {
+    words_.assign(memory_bytes / 4, 0);
+  }
+  std::vector<std::uint32_t> release() && noexcept { return std::move(words_); }
 
   // Held as 32-bit words, byte a = bits 8·(a % 4) .. of word a / 4 (little-endian).
   constexpr std::uint8_t byte(std::uint32_t a) const noexcept {

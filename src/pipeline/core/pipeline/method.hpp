@@ -73,6 +73,9 @@ struct render_options {
   bool memory_path = false;                   // frame buffers in the modelled GS local memory (render.cpp)
   dpb_clear_mode dpb_clear = dpb_clear_mode::explicit_clear;
   bool simd = true;  // the SIMD pixel pipeline (gs_simd); false: gs::pixel_pipeline per pixel
+  // With simd, the value path's triangle passes through the span engine (gs_simd/span_draw.hpp) where
+  // it applies; false: every pixel through the attribute walker and span_batch (tests compare both).
+  bool span_engine = true;
   draw_buffers buffers = draw_buffers::two;
   // Section 3.6's spot light in four-pass: its texture over the DPB after the first (sphere-map) pass
   // instead of after all four (pass_table.hpp's spot_step).

@@ -19,6 +19,7 @@
 #include "gs_arith/depth_test.hpp"
 #include "gs_arith/gouraud.hpp"
 #include "gs_arith/perspective.hpp"
+#include "gs_arith/span_raster.hpp"
 #include "gs_memory/fast_address.hpp"
 #include "gs_memory/swizzle_tables.hpp"
 #include "pipeline/frame_views.hpp"
@@ -26,6 +27,7 @@
 #include "pipeline/pass_attributes.hpp"
 #include "pipeline/pass_table.hpp"
 #include "pipeline/prepare.hpp"
+#include "pipeline/scratch.hpp"
 #include "pipeline/method.hpp"
 #include "pipeline/texture_stream.hpp"
 #include "pipeline/span_batch.hpp"
@@ -42,20 +44,21 @@ class band_renderer {
   // Step 1: the LAB's ambient colour and the Z buffer (ZTST = GEQUAL, Z written), after the frame
   // program's clears of both; then, on the cached path, the fragments every later pass draws.
   template <class FB>
-  void depth_and_ambient(const FB& lab, gs::rgba8 ambient) {
+  [[gnu::flatten]] void depth_and_ambient(const FB& lab, gs::rgba8 ambient) {
     constexpr gs::gs_registers regs = passes::step1_ambient.registers();
     const gs::fragment_colour cf = gs::fragment_colour::flat(ambient);
     for (std::size_t t = 0; t < ps_.triangles.size(); ++t) {
       const prepared_triangle& tri = ps_.triangles[t];
-      rasterise_triangle(tri.setup, band_, [&](int x, int y) {
-        const std::size_t i = index(x, y);
-        const gs::depth_result d = gs::depth_test(passes::depth_gequal, passes::z_written,
-                                                  static_cast<std::uint32_t>(tri.z.at(x, y)), z_.read(x, y));
-        if (!d.pass) return;
-        if (d.write_z) z_.write(x, y, d.z);
-        visible_[i] = static_cast<std::int32_t>(t);
-        lab(x, y) = gs_pixel(regs, gs::rgba8{}, cf, lab(x, y), x, y, o_.model);
-        ++ops_;
+      gs::rasterise_spans(tri.setup, band_, [&](int y, int x0, int x1) {
+        for (int x = x0; x < x1; ++x) {
+          const gs::depth_result d = gs::depth_test(passes::depth_gequal, passes::z_written,
+                                                    static_cast<std::uint32_t>(tri.z.at(x, y)), z_.read(x, y));
+          if (!d.pass) continue;
+          if (d.write_z) z_.write(x, y, d.z);
+          visible_[index(x, y)] = static_cast<std::int32_t>(t);
+          lab(x, y) = gs_pixel(regs, gs::rgba8{}, cf, lab(x, y), x, y, o_.model);
+          ++ops_;
+        }
       });
     }
     if (o_.path == raster_path::cached) {
@@ -66,14 +69,16 @@ class band_renderer {
       for (std::size_t t = 0; t < ps_.triangles.size();
            ++t, tri_frags_.push_back(frags_.size()), tri_runs_.push_back(runs_.size())) {
         const prepared_triangle& tri = ps_.triangles[t];
-        rasterise_triangle(tri.setup, band_, [&](int x, int y) {
-          if (!passes_later_depth_test(tri, x, y)) return;
-          frags_.push_back({static_cast<std::int32_t>(t), static_cast<std::int16_t>(x), static_cast<std::int16_t>(y)});
-          if (!runs_.empty() && runs_.back().tri == frags_.back().tri && runs_.back().y == y &&
-              runs_.back().x0 + runs_.back().n == x)
-            ++runs_.back().n;
-          else
-            runs_.push_back({frags_.back().tri, static_cast<std::int16_t>(x), static_cast<std::int16_t>(y), 1});
+        gs::rasterise_spans(tri.setup, band_, [&](int y, int x0, int x1) {
+          for (int x = x0; x < x1; ++x) {
+            if (!passes_later_depth_test(tri, x, y)) continue;
+            frags_.push_back(
+                {static_cast<std::int32_t>(t), static_cast<std::int16_t>(x), static_cast<std::int16_t>(y)});
+            if (runs_.size() > tri_runs_.back() && runs_.back().y == y && runs_.back().x0 + runs_.back().n == x)
+              ++runs_.back().n;
+            else
+              runs_.push_back({x, y, 1});
+          }
         });
       }
     }
@@ -219,15 +224,18 @@ class band_renderer {
     r = {std::max(r.x0, a.x0), std::max(r.y0, a.y0), std::min(r.x1, a.x1), std::min(r.y1, a.y1)};
     if (r.x0 >= r.x1 || r.y0 >= r.y1) return;
     if (vectorised() && !scalar_sprites) {
-      span_batch batch(batch_registers<Pass>, o_.model);
       if constexpr (std::is_same_v<FB, row_view>) {  // rows of adjacent words: the pixels rasterise_sprite visits
-        for (int y = r.y0; y < r.y1; ++y)
-          batch.add_row(&fb(r.x0, y), r.x0, y, [&](auto&& put) {
-            for (int x = r.x0; x < r.x1; ++x) put(texel(x, y).to_u32(), cf);
-          });
-        ops_ += static_cast<std::size_t>(r.x1 - r.x0) * static_cast<std::size_t>(r.y1 - r.y0);
+        const auto n = static_cast<std::size_t>(r.x1 - r.x0);
+        scratch<std::uint32_t> texels(n);
+        texels->resize(n);
+        for (int y = r.y0; y < r.y1; ++y) {
+          for (int x = r.x0; x < r.x1; ++x) (*texels)[static_cast<std::size_t>(x - r.x0)] = texel(x, y).to_u32();
+          simd::span_row(batch_registers<Pass>, o_.model, cf, texels->data(), &fb(r.x0, y), r.x0, y, n);
+        }
+        ops_ += n * static_cast<std::size_t>(r.y1 - r.y0);
         return;
       }
+      span_batch batch(batch_registers<Pass>, o_.model);
       rasterise_sprite({r.x0 * 16, r.y0 * 16}, {r.x1 * 16, r.y1 * 16}, r, [&](int x, int y) {
         batch.add(fb(x, y), texel(x, y), cf, x, y);
         ++ops_;
@@ -289,6 +297,10 @@ class band_renderer {
   const scissor& band() const { return band_; }
   const scissor& sprite_area() const { return sprite_area_; }
   std::size_t pixel_ops() const { return ops_; }
+  void count_ops(std::size_t n) { ops_ += n; }
+  const render_options& options() const { return o_; }
+  // The SIMD pixel pipeline (render_options::simd; a traced render records every pixel, so it is scalar).
+  bool vectorised() const noexcept { return o_.simd && pending == nullptr; }
 
   // Tracing (render_options::trace): the pass being drawn records its inputs here (frame-sized).
   pass_record* pending = nullptr;
@@ -320,63 +332,13 @@ class band_renderer {
   // compile-time `regs` never has its address taken (g++ then folds gs::pixel_pipeline as before).
   template <const pass_regs& Pass>
   static constexpr gs::gs_registers batch_registers = Pass.registers();
-  // The SIMD pixel pipeline (render_options::simd; a traced render records every pixel, so it is scalar).
-  bool vectorised() const noexcept { return o_.simd && pending == nullptr; }
-  // draw() through span_batch: one batch per triangle (the cached fragments are in triangle order),
-  // the attributes stepped along each row (gs::attribute_walker, equal to colour_at and plane::at).
-  // Not inlined into draw<Pass> (whose scalar loop is compiled per register set): one copy per view,
-  // everything it calls inlined into it.
+  // draw() through span_batch and the span engine, and a triangle's runs through the span engine when it is
+  // in its domain (band_spans.hpp).
   template <class FB>
   [[gnu::noinline, gnu::flatten]] void draw_spans(const gs::gs_registers& regs, const texture_ref* tex,
-                                                  const std::vector<tri_attr>& attr, const FB& fb,
-                                                  triangle_range tris) {
-    span_batch batch(regs, o_.model);
-    auto add = [&](gs::attribute_walker& w, int x, int y) {
-      const gs::attribute_walker::values a = w.at(x, y);
-      const gs::rgba8 texel = tex != nullptr ? tex->sample(a.u, a.v) : gs::rgba8{};
-      batch.add(fb(x, y), texel, a.cf, x, y);
-      ++ops_;
-    };
-    if (o_.path == raster_path::cached) {
-      const std::span<const run> tri_runs = of(runs_, tri_runs_, tris);
-      std::int32_t last = -1;
-      std::optional<gs::attribute_walker> w;
-      if constexpr (!std::is_same_v<FB, row_view>) {  // the memory path: pixel by pixel
-        for (const run& r : tri_runs) {
-          if (r.tri != last) batch.flush(), last = r.tri, w.emplace(attr[static_cast<std::size_t>(r.tri)]);
-          for (int k = 0; k < r.n; ++k) add(*w, r.x0 + k, r.y);
-        }
-      } else {
-        // The runs with texel(u16, v16) as the fetch, instantiated per kind of fetch (no test per
-        // pixel); a run's words are adjacent.
-        auto runs = [&](auto&& texel) {
-          for (const run& r : tri_runs) {
-            if (r.tri != last) batch.flush(), last = r.tri, w.emplace(attr[static_cast<std::size_t>(r.tri)]);
-            batch.add_row(&fb(r.x0, r.y), r.x0, r.y, [&](auto&& put) {
-              w->row(r.x0, r.y, r.n, [&](int, const gs::attribute_walker::values& a) { put(texel(a.u, a.v), a.cf); });
-            });
-            ops_ += static_cast<std::size_t>(r.n);
-          }
-        };
-        if (tex == nullptr) {
-          runs([](std::int32_t, std::int32_t) { return 0u; });
-        } else if (nearest_host_fetch::applies(*tex)) {
-          const nearest_host_fetch fetch(*tex);
-          runs([&](std::int32_t u, std::int32_t v) { return fetch.texel(u, v); });
-        } else {
-          runs([&](std::int32_t u, std::int32_t v) { return tex->sample(u, v).to_u32(); });
-        }
-      }
-      return;
-    }
-    for (std::size_t t = tris.first; t < tris.end; ++t) {
-      gs::attribute_walker w(attr[t]);
-      rasterise_triangle(ps_.triangles[t].setup, band_, [&](int x, int y) {
-        if (passes_later_depth_test(ps_.triangles[t], x, y)) add(w, x, y);
-      });
-      batch.flush();
-    }
-  }
+                                                  const std::vector<tri_attr>& attr, const FB& fb, triangle_range tris);
+  bool span_engine(const gs::gs_registers& regs, const tri_attr& a, const simd::nearest_texture& tex,
+                   std::span<const run> rs, const row_view& fb);
 
   // The depth test of every pass after step 1 (GEQUAL, ZMSK = 1: Z is only read).
   bool passes_later_depth_test(const prepared_triangle& tri, int x, int y) const noexcept {
@@ -390,11 +352,17 @@ class band_renderer {
   scissor band_, sprite_area_;
   z_view z_;
   std::vector<std::int32_t>& visible_;
-  std::vector<fragment> frags_;
-  std::vector<run> runs_;               // frags_ as runs, in the same order
-  std::vector<std::size_t> tri_frags_;  // triangle t's fragments: frags_[tri_frags_[t], tri_frags_[t + 1])
-  std::vector<std::size_t> tri_runs_;   // and its runs: runs_[tri_runs_[t], tri_runs_[t + 1])
+  // Triangle t's fragments are frags_[tri_frags_[t], tri_frags_[t + 1]), its runs (frags_ as runs along a row, in the
+  // same order) runs_[tri_runs_[t], tri_runs_[t + 1]); their storage is kept between frames (scratch.hpp).
+  scratch<fragment> frag_store_;
+  scratch<run> run_store_;
+  scratch<std::size_t> tri_frag_store_, tri_run_store_;
+  std::vector<fragment>& frags_ = *frag_store_;
+  std::vector<run>& runs_ = *run_store_;
+  std::vector<std::size_t>&tri_frags_ = *tri_frag_store_, &tri_runs_ = *tri_run_store_;
   std::size_t ops_ = 0;
 };
 
 }  // namespace gsdot3::pipeline::detail
+
+#include "pipeline/band_spans.hpp"  // IWYU pragma: export

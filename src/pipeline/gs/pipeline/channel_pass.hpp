@@ -28,7 +28,6 @@ inline gs::u8 byte(int v) { return gs::u8::from_wrapped(v); }
 
 template <class FB>
 struct frame_buffers {
-  std::vector<std::uint32_t> z;  // the value path's Z buffer storage (zb's rows)
   z_view zb;
   FB lab, dpb, diff, out;
   // draw_buffers::one: the free alphas (method.hpp) that hold light k's dot layer, then the LAB's
@@ -49,11 +48,26 @@ inline constexpr bool in_memory(const memory_view&) { return true; }
 // A sprite pass whose texel is byte `channel` of each pixel of `src` through `clut`, into `dst`.
 // Value level: the byte of the same pixel's word. Memory path: gs_memory's channel-fetch sprites
 // (8×2 tiles per page, the page read as PSMT8 with TBP0 = its base, TBW = 2·FBW, TW = 7, TH = 6).
+// With the SIMD units, the rows go through the span engine's channel row (gs_simd/span_draw.hpp: the
+// same texel, the CLUT's entry i as its word).
 template <const pass_regs& Pass>
 inline void channel_pass(band_renderer& r, const frame_buffers<row_view>&, gs::rgba8 colour,
                          const gs::clut_buffer& clut, unsigned channel, const row_view& src, const row_view& dst) {
-  r.sprite<Pass>(
-      colour, [&](int x, int y) { return gs::clut_t8(clut, byte(static_cast<int>(src(x, y) >> (8 * channel)))); }, dst);
+  const scissor& a = r.sprite_area();
+  if (!r.vectorised() || a.x0 >= a.x1) {
+    r.sprite<Pass>(
+        colour, [&](int x, int y) { return gs::clut_t8(clut, byte(static_cast<int>(src(x, y) >> (8 * channel)))); },
+        dst);
+    return;
+  }
+  static constexpr gs::gs_registers regs = Pass.registers();
+  std::array<std::uint32_t, 256> words{};
+  for (std::size_t i = 0; i < words.size(); ++i) words[i] = clut[i].to_u32();
+  const auto n = static_cast<std::size_t>(a.x1 - a.x0);
+  for (int y = a.y0; y < a.y1; ++y)
+    simd::span_channel_row(regs, r.options().model, gs::fragment_colour::flat(colour), &src(a.x0, y), channel,
+                           words.data(), &dst(a.x0, y), a.x0, y, n);
+  r.count_ops(n * static_cast<std::size_t>(a.y1 - a.y0));
 }
 // The memory path. A source drawn in PSMZ32 (src.z) has logical pixel L in the word of PSMCT32
 // pixel zsigma(L) (gs_memory/overlay.hpp): the tile that fetches PSMCT32 pixel M is drawn at zsigma(M) (the sprites'

@@ -10,9 +10,21 @@
 
 #include "gs_memory/fast_address.hpp"
 #include "gs_memory/swizzle_tables.hpp"
+#include "gs_simd/span_draw.hpp"
 #include "pipeline/prepare.hpp"
 
 namespace gsdot3::pipeline::detail {
+
+// Value-level row loops, each over two distinct rows (restrict, so that the compiler vectorises them).
+inline void low_bytes(const std::uint32_t* __restrict s, std::uint8_t* __restrict d, int n) {
+  for (int k = 0; k < n; ++k) d[k] = static_cast<std::uint8_t>(s[k] & 0xFFu);
+}
+inline void opaque(const std::uint32_t* __restrict s, std::uint32_t* __restrict d, int n) {
+  for (int k = 0; k < n; ++k) d[k] = s[k] | 0xFF000000u;
+}
+inline void byte_into_alpha(const std::uint32_t* __restrict s, std::uint32_t* __restrict d, int n, unsigned shift) {
+  for (int k = 0; k < n; ++k) d[k] = (d[k] & 0x00FFFFFFu) | (((s[k] >> shift) & 0xFFu) << 24);
+}
 
 // Where a frame buffer's pixel (x, y) is: a row-major frame-sized vector (value level, row_view), or
 // a PSMCT32 buffer in the modelled GS local memory (render_options::memory_path, memory_view: `words`
@@ -59,11 +71,7 @@ struct fragment {
   std::int16_t x, y;
 };
 // Fragments (x0 + k, y), k < n, of one triangle: the cached fragments' runs along a row.
-struct run {
-  std::int32_t tri;
-  std::int16_t x0, y;
-  std::int32_t n;
-};
+using run = simd::span_run;
 
 // Triangles r's records of v (fragments, runs), which `at` indexes per triangle: v[at[t], at[t + 1]).
 template <class T>

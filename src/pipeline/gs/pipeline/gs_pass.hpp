@@ -23,6 +23,7 @@
 #include "gs_methods/pass_registers.hpp"
 #include "gs_memory/fast_address.hpp"
 #include "gs_memory/local_memory.hpp"
+#include "gs_simd/span_draw.hpp"
 
 namespace gsdot3::pipeline {
 
@@ -110,6 +111,10 @@ class nearest_host_fetch {
     }
     const std::size_t i = static_cast<std::size_t>(v) << shift_ | static_cast<std::size_t>(u);
     return index_ != nullptr ? words_[index_[i]] : texels_[i];
+  }
+  // The same fetch for the span engine's lanes (gs_simd/span_draw.hpp), valid while this lives.
+  simd::nearest_texture lanes() const noexcept {
+    return {index_, index_ != nullptr ? words_.data() : nullptr, texels_, wmask_, hmask_, shift_, clamp_};
   }
 
  private:

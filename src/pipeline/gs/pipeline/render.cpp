@@ -58,6 +58,7 @@
 #include "pipeline/lod.hpp"
 #include "pipeline/gs_pass.hpp"
 #include "pipeline/pass_table.hpp"
+#include "pipeline/scratch.hpp"
 
 namespace gsdot3::pipeline {
 
@@ -189,13 +190,20 @@ std::size_t render_band(const prepared_scene& ps, const render_options& o, const
     const FB& src = view(op.source);
     const FB& dst = view(op.buffer);
     const gs::clut_buffer& clut = *palettes(in, 0)[static_cast<std::size_t>(op.clut)];  // the shared palettes
-    if (!in_memory(FB{}) && op.regs == &move_into_alpha) {  // value level: the byte itself (palette i -> i)
-      const scissor& area = r.sprite_area();
-      for (int y = area.y0; y < area.y1; ++y)
-        for (int x = area.x0; x < area.x1; ++x)
-          dst(x, y) = (dst(x, y) & 0x00FFFFFFu) | (((src(x, y) >> (8 * op.channel)) & 0xFFu) << 24);
-      return;
-    }
+    if constexpr (!in_memory(FB{}))
+      if (op.regs == &move_into_alpha) {  // value level: the byte itself (palette i -> i)
+        const scissor& area = r.sprite_area();
+        const unsigned shift = 8 * op.channel;
+        for (int y = area.y0; y < area.y1; ++y) {  // rows of adjacent words
+          std::uint32_t* d = &dst(area.x0, y);
+          if (&src(area.x0, y) == d) {  // a buffer's own channel into its alpha
+            for (int k = 0; k < area.x1 - area.x0; ++k) d[k] = (d[k] & 0x00FFFFFFu) | (((d[k] >> shift) & 0xFFu) << 24);
+          } else {
+            byte_into_alpha(&src(area.x0, y), d, area.x1 - area.x0, shift);
+          }
+        }
+        return;
+      }
     with_regs<program_regs::channel>(op.regs, [&]<const pass_regs & R>() {
       if constexpr (in_memory(FB{})) {
         channel_pass<R>(r, fb, op.colour, clut, op.channel, src, dst, op.z_clear,
@@ -255,8 +263,8 @@ std::size_t render_band(const prepared_scene& ps, const render_options& o, const
           copy_lab(fb, r.sprite_area());
         } else {
           const scissor& area = r.sprite_area();
-          for (int y = area.y0; y < area.y1; ++y)
-            for (int x = area.x0; x < area.x1; ++x) fb.out(x, y) = fb.lab(x, y);
+          for (int y = area.y0; y < area.y1 && area.x0 < area.x1; ++y)
+            std::copy_n(&fb.lab(area.x0, y), area.x1 - area.x0, &fb.out(area.x0, y));
         }
         break;
       case kind::plain:
@@ -274,16 +282,27 @@ std::size_t render_band(const prepared_scene& ps, const render_options& o, const
         for (int y = band.y0; y < band.y1; ++y) {
           std::uint8_t* row = &result.dot[static_cast<std::size_t>(op.light)][r.index(band.x0, y)];
           std::fill(row, row + (band.x1 - band.x0), std::uint8_t{0x80});
-          if (y >= drawn.y0 && y < drawn.y1)
-            for (int x = drawn.x0; x < drawn.x1; ++x) row[x - band.x0] = static_cast<std::uint8_t>(dpb(x, y) & 0xFF);
+          if (y >= drawn.y0 && y < drawn.y1) {
+            if constexpr (in_memory(FB{})) {
+              for (int x = drawn.x0; x < drawn.x1; ++x) row[x - band.x0] = static_cast<std::uint8_t>(dpb(x, y) & 0xFF);
+            } else {
+              low_bytes(&dpb(drawn.x0, y), row + (drawn.x0 - band.x0), drawn.x1 - drawn.x0);
+            }
+          }
         }
         break;
       }
       case kind::checkpoint: note(op.label, op.light, op.name, view(op.buffer)); break;
       case kind::display: {
         const FB& out = view(op.buffer);
-        for (int y = band.y0; y < band.y1; ++y)
-          for (int x = band.x0; x < band.x1; ++x) result.colour[r.index(x, y)] = out(x, y) | 0xFF000000u;
+        for (int y = band.y0; y < band.y1; ++y) {
+          std::uint32_t* row = &result.colour[r.index(band.x0, y)];
+          if constexpr (in_memory(FB{})) {
+            for (int x = band.x0; x < band.x1; ++x) row[x - band.x0] = out(x, y) | 0xFF000000u;
+          } else {
+            opaque(&out(band.x0, y), row, band.x1 - band.x0);
+          }
+        }
         break;
       }
     }
@@ -293,9 +312,11 @@ std::size_t render_band(const prepared_scene& ps, const render_options& o, const
 template <class FB>
 void render_bands(const prepared_scene& ps, const render_options& o, const gs_inputs& in, const frame_program& prog,
                   frame_buffers<FB>& fb, frame& result) {
+  const std::size_t pixels = static_cast<std::size_t>(ps.width) * static_cast<std::size_t>(ps.height);
+  scratch<std::uint32_t> z(fb.zb.in_memory ? 0 : pixels);  // the value path's Z buffer
   if (!fb.zb.in_memory) {
-    fb.z.assign(static_cast<std::size_t>(ps.width) * static_cast<std::size_t>(ps.height), 0);
-    fb.zb.rows = row_view{fb.z.data(), ps.width};
+    z->assign(pixels, 0);
+    fb.zb.rows = row_view{z->data(), ps.width};
   }
   const int bands = o.trace != nullptr ? 1 : std::clamp(o.threads, 1, std::max(1, ps.height));
   std::vector<std::thread> workers;
@@ -331,7 +352,8 @@ frame render(const scene& s, const prepared_scene& ps, method m, const render_op
     // (PSMCT32) and the Z buffer (PSMZ24), FBW = ceil(width / 64).
     const buffer_layout layout = buffer_layout_for(ps.width, ps.height);
     const std::uint32_t fbw = layout.fbw;
-    gs::mem::local_memory memory;
+    scratch<std::uint32_t> storage(gs::mem::memory_bytes / 4);
+    gs::mem::local_memory memory(std::move(*storage));
     frame_buffers<memory_view> fb;
     fb.memory = &memory;
     fb.layout = layout;
@@ -362,11 +384,13 @@ frame render(const scene& s, const prepared_scene& ps, method m, const render_op
     if (uploaded.window_first != 0) one.threads = 1;  // the pieces' uploads share the window
     start_stream(uploaded, ps, o, band_renderer::drawn_area(ps, {0, 0, ps.width, ps.height}));
     render_bands(ps, one, uploaded, build_frame_program(s, ps, m, o, uploaded), fb, result);
+    *storage = std::move(memory).release();
   } else {
-    std::vector<std::uint32_t> rows(4 * n, 0);  // value level: DPB, LAB, diffuse, output, frame-sized each
+    scratch<std::uint32_t> rows(4 * n);  // value level: DPB, LAB, diffuse, output, frame-sized each
+    rows->assign(4 * n, 0);
     frame_buffers<row_view> fb;
     row_view* views[4] = {&fb.dpb, &fb.lab, &fb.diff, &fb.out};
-    for (std::size_t k = 0; k < 4; ++k) *views[k] = row_view{rows.data() + k * n, ps.width};
+    for (std::size_t k = 0; k < 4; ++k) *views[k] = row_view{rows->data() + k * n, ps.width};
     fb.alpha_plane[0] = fb.dpb, fb.alpha_plane[1] = fb.lab, fb.alpha_plane[2] = fb.out;
     render_bands(ps, o, in, build_frame_program(s, ps, m, o, in), fb, result);
   }

@@ -1,0 +1,77 @@
+// gs_simd/span_draw.hpp — the span engine: a triangle pass's runs of adjacent pixels drawn in SIMD
+// lanes from end to end. Per triangle the lane offsets of its U and V planes are set up once; per
+// run one division per plane gives the run's first quotient and remainder; then per vector of pixels
+// U and V are stepped in lanes (quotient and remainder, one carry), clamped, turned into texel
+// addresses, fetched (TEX1 nearest: PSMT8 through the CLUT as 32-bit words, or 32-bit texels), sent
+// through the gs_simd units (pixel_units-inl.h) and merged into the frame buffer's row. The scalar
+// path (gs::attribute_walker, gs::sample, gs::pixel_pipeline) stays the reference: span_triangle
+// draws exactly what it draws, checked pixel for pixel on random triangles and whole frames
+// (tests/gs_simd/span_draw_test.cpp, pipeline_simd_frame).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+#include "gs_arith/attribute_setup.hpp"
+#include "gs_arith/options.hpp"
+#include "gs_arith/registers.hpp"
+
+namespace gsdot3::simd {
+
+// TEX1 nearest from host arrays (the renderer's nearest_host_fetch): PSMT8 indices through a CLUT
+// given as 32-bit words (CSA = 0: index i is entry i), or 32-bit texels; REPEAT or CLAMP; the sides
+// powers of two (wmask = width − 1, shift = log2 width), at least 4 texels. No texture at all: both
+// pointers null (the texel word is 0, as PRIM.TME = 0 reads none).
+struct nearest_texture {
+  const std::uint8_t* index = nullptr;
+  const std::uint32_t* words = nullptr;  // 256 CLUT entries as words, with index
+  const std::uint32_t* texels = nullptr;
+  std::int32_t wmask = 0, hmask = 0;
+  int shift = 0;
+  bool clamp = false;
+};
+
+// Pixels (x0 + k, y), 0 <= k < n, of one triangle: a row's run of its fragments.
+struct span_run {
+  std::int32_t x0, y, n;
+};
+
+// Whether span_triangle draws triangle `a` (its runs within window rectangle [x0, x1) × [y0, y1)):
+// exact U and V planes (uv_plane exact) whose denominator is below 2^30 and whose values over the
+// rectangle stay within ±2^30, so that every quotient and remainder fits 32-bit lanes, and a colour
+// that is one value over the plane (gs::flat_colour) or a per_pixel_floor plane (the default) that
+// fits the same way. Otherwise the caller walks it with gs::attribute_walker.
+bool span_applies(const gs::triangle_attributes& a, int x0, int y0, int x1, int y1) noexcept;
+
+// Colour channel i of a triangle under gouraud_setup::per_pixel_floor at window pixel (x, y) is
+// c0 + floor(n / |det|) (gs::attribute_walker's walk) with this numerator n = sign(det)·(nx·px +
+// ny·py)·128, (px, py) the pixel's 12.4 offset from vertex 0 where clamp_distance leaves it alone.
+inline std::int64_t gouraud_numerator(const gs::triangle_attributes& a, std::size_t i, std::int64_t x,
+                                      std::int64_t y) noexcept {
+  const gs::gouraud_exact_plane& e = a.colour.exact;
+  const std::int64_t sign = e.det < 0 ? -1 : 1;
+  return sign * (e.nx[i] * ((x + a.offset_x) * 16 - e.x0) + e.ny[i] * ((y + a.offset_y) * 16 - e.y0)) * 128;
+}
+
+// The runs of one triangle drawn with `regs` into a row-major frame buffer (`words`, `stride` words a
+// row): each pixel's new word is gs::pixel_pipeline(regs, {cf, texel, old, x, y}, o).out with cf =
+// a.colour_at(x, y) and texel = the nearest texel at (a.u.at(x, y), a.v.at(x, y)). Runs are drawn
+// in order, each after the last (a run's pixels are distinct). Requires span_applies.
+void span_triangle(const gs::gs_registers& regs, const gs::model_options& o, const gs::triangle_attributes& a,
+                   const nearest_texture& tex, const span_run* runs, std::size_t count, std::uint32_t* words,
+                   std::size_t stride);
+
+// A sprite's row: pixels (x0 + k, y), k < n, of one flat colour cf with texel words texels[k], into
+// the row's frame-buffer words: words[k] = gs::pixel_pipeline(regs, {cf, texels[k], words[k], x0 + k,
+// y}, o).out. The texels are read before any word is written.
+void span_row(const gs::gs_registers& regs, const gs::model_options& o, const gs::fragment_colour& cf,
+              const std::uint32_t* texels, std::uint32_t* words, int x0, int y, std::size_t n);
+
+// A value-level channel-fetch sprite's row (the post filter, the ILP read): the texel of pixel k is
+// clut[byte `channel` of src[k]] (the CLUT as 32-bit words, CSA = 0), then as span_row. src may be
+// words itself: each pixel reads its own word before it is written.
+void span_channel_row(const gs::gs_registers& regs, const gs::model_options& o, const gs::fragment_colour& cf,
+                      const std::uint32_t* src, unsigned channel, const std::uint32_t* clut, std::uint32_t* words,
+                      int x0, int y, std::size_t n);
+
+}  // namespace gsdot3::simd

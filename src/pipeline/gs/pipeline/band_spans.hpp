@@ -1,0 +1,92 @@
+// pipeline/band_spans.hpp — band_renderer's triangle passes in SIMD lanes (included at the end of
+// band_renderer.hpp): the cached runs through the span engine (gs_simd/span_draw.hpp) where it
+// applies, else walked by gs::attribute_walker into span_batch.
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <type_traits>
+#include <vector>
+
+#include "pipeline/band_renderer.hpp"
+
+namespace gsdot3::pipeline::detail {
+
+// draw() through span_batch: one batch per triangle (the cached fragments are in triangle order),
+// the attributes stepped along each row (gs::attribute_walker, equal to colour_at and plane::at).
+// Not inlined into draw<Pass> (whose scalar loop is compiled per register set): one copy per view,
+// everything it calls inlined into it.
+template <class FB>
+[[gnu::noinline, gnu::flatten]] void band_renderer::draw_spans(const gs::gs_registers& regs, const texture_ref* tex,
+                                                               const std::vector<tri_attr>& attr, const FB& fb,
+                                                               triangle_range tris) {
+  span_batch batch(regs, o_.model);
+  auto add = [&](gs::attribute_walker& w, int x, int y) {
+    const gs::attribute_walker::values a = w.at(x, y);
+    const gs::rgba8 texel = tex != nullptr ? tex->sample(a.u, a.v) : gs::rgba8{};
+    batch.add(fb(x, y), texel, a.cf, x, y);
+    ++ops_;
+  };
+  if (o_.path == raster_path::cached) {
+    auto runs_of = [&](std::uint32_t t) { return of(runs_, tri_runs_, {t, t + 1}); };
+    if constexpr (!std::is_same_v<FB, row_view>) {  // the memory path: pixel by pixel
+      for (std::uint32_t t = tris.first; t < tris.end; ++t, batch.flush()) {
+        gs::attribute_walker w(attr[t]);
+        for (const run& r : runs_of(t))
+          for (int k = 0; k < r.n; ++k) add(w, r.x0 + k, r.y);
+      }
+    } else {
+      // The runs with texel(u16, v16) as the fetch, instantiated per kind of fetch (no test per
+      // pixel); a run's words are adjacent. The span engine takes the triangles in its domain.
+      auto runs = [&](auto&& texel, const simd::nearest_texture* lanes) {
+        for (std::uint32_t t = tris.first; t < tris.end; ++t) {
+          const std::span<const run> rs = runs_of(t);
+          if (lanes != nullptr && span_engine(regs, attr[t], *lanes, rs, fb)) continue;
+          gs::attribute_walker w(attr[t]);
+          for (const run& r : rs) {
+            batch.add_row(&fb(r.x0, r.y), r.x0, r.y, [&](auto&& put) {
+              w.row(r.x0, r.y, r.n, [&](int, const gs::attribute_walker::values& a) { put(texel(a.u, a.v), a.cf); });
+            });
+            ops_ += static_cast<std::size_t>(r.n);
+          }
+          batch.flush();
+        }
+      };
+      if (tex == nullptr) {
+        const simd::nearest_texture none;
+        runs([](std::int32_t, std::int32_t) { return 0u; }, o_.span_engine ? &none : nullptr);
+      } else if (nearest_host_fetch::applies(*tex)) {
+        const nearest_host_fetch fetch(*tex);
+        const simd::nearest_texture lanes = fetch.lanes();
+        const bool four = tex->width * tex->height >= 4;  // the span engine's fetch reads whole words
+        runs([&](std::int32_t u, std::int32_t v) { return fetch.texel(u, v); },
+             o_.span_engine && four ? &lanes : nullptr);
+      } else {
+        runs([&](std::int32_t u, std::int32_t v) { return tex->sample(u, v).to_u32(); }, nullptr);
+      }
+    }
+    return;
+  }
+  for (std::size_t t = tris.first; t < tris.end; ++t) {
+    gs::attribute_walker w(attr[t]);
+    rasterise_triangle(ps_.triangles[t].setup, band_, [&](int x, int y) {
+      if (passes_later_depth_test(ps_.triangles[t], x, y)) add(w, x, y);
+    });
+    batch.flush();
+  }
+}
+
+// A triangle's runs through the span engine (gs_simd/span_draw.hpp) when it is in its domain.
+inline bool band_renderer::span_engine(const gs::gs_registers& regs, const tri_attr& a,
+                                       const simd::nearest_texture& tex, std::span<const run> rs, const row_view& fb) {
+  if (rs.empty()) return true;
+  int x0 = rs.front().x0, x1 = x0;
+  for (const run& r : rs) x0 = std::min(x0, r.x0), x1 = std::max(x1, r.x0 + r.n);
+  if (!simd::span_applies(a, x0, rs.front().y, x1, rs.back().y + 1)) return false;
+  simd::span_triangle(regs, o_.model, a, tex, rs.data(), rs.size(), fb.words, static_cast<std::size_t>(fb.width));
+  for (const run& r : rs) ops_ += static_cast<std::size_t>(r.n);
+  return true;
+}
+}  // namespace gsdot3::pipeline::detail
