@@ -148,6 +148,14 @@ TEST(SpanDraw, TrianglesEqualTheScalarChainOnEveryTarget) {
   });
 }
 
+TEST(SpanDraw, RectanglesWiderThanAChunkAreLeftToTheWalker) {
+  const std::array<gs::xy124, 3> v{{{0, 0}, {16 * 4000, 0}, {0, 16 * 8}}};
+  const gs::triangle_attributes a =
+      gs::setup_attributes(gs::setup_triangle(v), {}, {}, 0, 0, gs::gouraud_setup::per_pixel_floor, {});
+  EXPECT_TRUE(span_applies(a, 0, 0, max_run, 8));
+  EXPECT_FALSE(span_applies(a, 0, 0, max_run + 1, 8));
+}
+
 // A sprite row (span_row) and a channel row (span_channel_row) against the scalar chain.
 void check_rows(const std::string& target) {
   const gs::model_options o = random_options();

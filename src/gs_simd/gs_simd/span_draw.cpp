@@ -167,7 +167,7 @@ HWY_INLINE void draw_runs(const gs::gs_registers& regs, const gs::model_options&
   const plane_lanes pr = channel(0), pg = channel(1), pb = channel(2), pa = channel(3);
   const V iota = hn::Iota(d, 0);
   plane_walk_lanes u, v, r, g, b, al;
-  constexpr std::size_t slots = 4096;  // 16 KiB of texels; a run is at most 2048 pixels (the frame's width)
+  constexpr std::size_t slots = 2 * max_run;  // 16 KiB of texels; a run is at most max_run pixels (span_applies)
   alignas(64) std::int32_t texel[slots];
   auto vectors = [&](const span_run& run) { return (static_cast<std::size_t>(run.n) + lanes - 1) / lanes * lanes; };
   for (std::size_t first = 0, end = 0; first < count; first = end) {
@@ -310,6 +310,7 @@ bool fits_lanes(std::int64_t s, std::int64_t den, Numerator&& n, int x0, int y0,
 
 bool span_applies(const gs::triangle_attributes& a, int x0, int y0, int x1, int y1) noexcept {
   if (x0 >= x1 || y0 >= y1) return true;  // nothing to draw
+  if (x1 - x0 > max_run) return false;    // a run fits draw_runs' chunk
   if (!fits_lanes(
           a.u.dx, a.u.den, [&](int x, int y) { return a.u.base + a.u.dx * x + a.u.dy * y; }, x0, y0, x1, y1) ||
       !fits_lanes(

@@ -36,7 +36,11 @@ struct span_run {
   std::int32_t x0, y, n;
 };
 
-// Whether span_triangle draws triangle `a` (its runs within window rectangle [x0, x1) × [y0, y1)):
+// The widest rectangle span_applies takes (its runs are drawn in chunks of a fixed size).
+inline constexpr int max_run = 2048;
+
+// Whether span_triangle draws triangle `a` (its runs within window rectangle [x0, x1) × [y0, y1), at
+// most max_run wide):
 // exact U and V planes (uv_plane exact) whose denominator is below 2^30 and whose values over the
 // rectangle stay within ±2^30, so that every quotient and remainder fits 32-bit lanes, and a colour
 // that is one value over the plane (gs::flat_colour) or a per_pixel_floor plane (the default) that
