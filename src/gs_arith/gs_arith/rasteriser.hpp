@@ -111,16 +111,23 @@ struct edge {
   std::int64_t bias = 0;
 };
 std::array<edge, 3> edges(const triangle_setup& t);
+// The pixels [x0, x1) × [y0, y1) a triangle's vertices bound, within the clip.
+struct pixel_box {
+  int x0, x1, y0, y1;
+};
+inline pixel_box bounds(const triangle_setup& t, const scissor& clip) {
+  const auto [xmin, xmax] = std::minmax({t.v[0].x, t.v[1].x, t.v[2].x});
+  const auto [ymin, ymax] = std::minmax({t.v[0].y, t.v[1].y, t.v[2].y});
+  return {std::max(ceil_124(xmin), clip.x0), std::min(ceil_124(xmax + 1), clip.x1), std::max(ceil_124(ymin), clip.y0),
+          std::min(ceil_124(ymax + 1), clip.y1)};
+}
 }  // namespace raster_detail
 
 template <class Fn>
 void rasterise_triangle(const triangle_setup& t, const scissor& clip, Fn&& fn) {
   if (t.area2 == 0) return;
   const auto e = raster_detail::edges(t);
-  const auto [xmin, xmax] = std::minmax({t.v[0].x, t.v[1].x, t.v[2].x});
-  const auto [ymin, ymax] = std::minmax({t.v[0].y, t.v[1].y, t.v[2].y});
-  const int x0 = std::max(ceil_124(xmin), clip.x0), x1 = std::min(ceil_124(xmax + 1), clip.x1);
-  const int y0 = std::max(ceil_124(ymin), clip.y0), y1 = std::min(ceil_124(ymax + 1), clip.y1);
+  const auto [x0, x1, y0, y1] = raster_detail::bounds(t, clip);
   for (int y = y0; y < y1; ++y) {
     std::int64_t w0 = e[0].e0 + e[0].step_x * x0 + e[0].step_y * y + e[0].bias;
     std::int64_t w1 = e[1].e0 + e[1].step_x * x0 + e[1].step_y * y + e[1].bias;

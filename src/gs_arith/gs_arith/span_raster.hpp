@@ -23,10 +23,7 @@ template <class Fn>
 void rasterise_spans(const triangle_setup& t, const scissor& clip, Fn&& fn) {
   if (t.area2 == 0) return;
   const auto e = raster_detail::edges(t);
-  const auto [xmin, xmax] = std::minmax({t.v[0].x, t.v[1].x, t.v[2].x});
-  const auto [ymin, ymax] = std::minmax({t.v[0].y, t.v[1].y, t.v[2].y});
-  const int x0 = std::max(ceil_124(xmin), clip.x0), x1 = std::min(ceil_124(xmax + 1), clip.x1);
-  const int y0 = std::max(ceil_124(ymin), clip.y0), y1 = std::min(ceil_124(ymax + 1), clip.y1);
+  const auto [x0, x1, y0, y1] = raster_detail::bounds(t, clip);
   if (x0 >= x1 || y0 >= y1) return;
   std::array<floor_division_walk, 3> w{};
   for (std::size_t i = 0; i < 3; ++i)
