@@ -61,8 +61,7 @@ inline void channel_pass(band_renderer& r, const frame_buffers<row_view>&, gs::r
     return;
   }
   static constexpr gs::gs_registers regs = Pass.registers();
-  std::array<std::uint32_t, 256> words{};
-  for (std::size_t i = 0; i < words.size(); ++i) words[i] = clut[i].to_u32();
+  const std::array<std::uint32_t, 256> words = clut_words(clut);
   const auto n = static_cast<std::size_t>(a.x1 - a.x0);
   for (int y = a.y0; y < a.y1; ++y)
     simd::span_channel_row(regs, r.options().model, gs::fragment_colour::flat(colour), &src(a.x0, y), channel,

@@ -80,6 +80,14 @@ struct texture_ref {
   }
 };
 
+// A CLUT's 256 entries as 32-bit words (rgba8::to_u32): entry i is what clut_t8 looks up for index i
+// with CSA = 0, the form the resolved fetches read.
+inline std::array<std::uint32_t, 256> clut_words(const gs::clut_buffer& clut) noexcept {
+  std::array<std::uint32_t, 256> w{};
+  for (std::size_t i = 0; i < w.size(); ++i) w[i] = clut[i].to_u32();
+  return w;
+}
+
 // The value path's fetch resolved once per draw: TEX1 nearest, from the host arrays (no local
 // memory), REPEAT or CLAMP, CLUT indices (the CLUT's entries converted to 32-bit words here) or 32-bit
 // texels. texel(u16, v16) is texture_ref::sample(u16, v16).to_u32() for every u16, v16 (its fast
@@ -98,8 +106,7 @@ class nearest_host_fetch {
         hmask_(t.height - 1),
         shift_(std::countr_zero(static_cast<unsigned>(t.width))),
         clamp_(t.clamp) {
-    if (index_ != nullptr)
-      for (std::size_t i = 0; i < words_.size(); ++i) words_[i] = (*t.clut)[i].to_u32();
+    if (index_ != nullptr) words_ = clut_words(*t.clut);
   }
   std::uint32_t texel(std::int32_t u16, std::int32_t v16) const noexcept {
     std::int32_t u = u16 >> 4, v = v16 >> 4;
