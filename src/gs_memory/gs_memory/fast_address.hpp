@@ -40,6 +40,10 @@ class row_column_address {
     for (std::uint32_t x = 0; x < width; ++x) column_[x] = (tables::unit_address(l, 0, bw, x, 0) - origin) & mask_;
   }
   std::uint32_t unit(std::uint32_t x, std::uint32_t y) const noexcept { return (row_[y] + column_[x]) & mask_; }
+  // The tables themselves, for loops that combine them in SIMD lanes (gs_simd/span_draw.hpp).
+  const std::uint32_t* rows() const noexcept { return row_.data(); }
+  const std::uint32_t* columns() const noexcept { return column_.data(); }
+  std::uint32_t mask() const noexcept { return mask_; }
 
  private:
   std::uint32_t mask_;
@@ -78,6 +82,11 @@ class texel_addresses {
     const std::uint32_t a = bits_ == 4 ? at_[v * w_ + u] / 2 : at_[v * w_ + u];
     return (a + bp * block_bytes) % memory_bytes;
   }
+  // The table (byte address at BP 0 of texel v·w + u) of an 8- or 32-bit texture, and its texel bits
+  // and width: byte(u, v, bp) is (table()[v·w + u] + 256·bp) mod 4 MiB.
+  const std::uint32_t* table() const noexcept { return at_.data(); }
+  unsigned bits() const noexcept { return bits_; }
+  std::uint32_t width() const noexcept { return w_; }
   // local_memory::read_pixel of texel (u, v) of the texture at bp.
   std::uint32_t read(const local_memory& m, std::uint32_t u, std::uint32_t v, std::uint32_t bp) const noexcept {
     const std::uint32_t a = byte(u, v, bp);

@@ -252,6 +252,22 @@ HWY_INLINE V pixel_pipeline(const gs::gs_registers& regs, const gs::model_option
   return masked_merge(frame_pack(psm, c), dst, keep);
 }
 
+// The first n < lanes words at p replaced by f(their vector): with masked moves where the target has
+// them (AVX2's and AVX-512's touch no memory outside the mask), through a copy elsewhere.
+template <class F>
+HWY_INLINE void part_vector(std::int32_t* p, std::size_t n, F&& f) {
+  const D d;
+#if HWY_TARGET <= HWY_AVX2
+  const M m = hn::FirstN(d, n);
+  hn::BlendedStore(f(hn::MaskedLoad(m, d, p)), m, d, p);
+#else
+  alignas(64) std::int32_t copy[HWY_MAX_BYTES / 4] = {};
+  for (std::size_t j = 0; j < n; ++j) copy[j] = p[j];
+  hn::Store(f(hn::Load(d, copy)), d, copy);
+  for (std::size_t j = 0; j < n; ++j) p[j] = copy[j];
+#endif
+}
+
 }  // namespace gsdot3::simd::HWY_NAMESPACE
 HWY_AFTER_NAMESPACE();
 

@@ -117,7 +117,13 @@ HWY_INLINE V texel_address(const nearest_texture& t, V u16, V v16) {
 // lane gathers of the index and then the CLUT word took a third of the triangle passes (perf, AMD
 // EPYC with AVX-512, 2026-12-07).
 HWY_INLINE void resolve_texels(const nearest_texture& t, std::int32_t* at, std::size_t n) {
-  if (t.index != nullptr) {
+  if (t.memory != nullptr) {  // through the texture's address table into the local memory
+    for (std::size_t k = 0; k < n; ++k) {
+      const std::uint32_t b = (t.address[static_cast<std::uint32_t>(at[k])] + t.base) & t.mask;
+      const std::uint32_t word = t.memory[b >> 2];
+      at[k] = static_cast<std::int32_t>(t.words != nullptr ? t.words[(word >> (8 * (b & 3))) & 0xFF] : word);
+    }
+  } else if (t.index != nullptr) {
     for (std::size_t k = 0; k < n; ++k)
       at[k] = static_cast<std::int32_t>(t.words[t.index[static_cast<std::uint32_t>(at[k])]]);
   } else {
@@ -134,32 +140,46 @@ HWY_INLINE plane_lanes colour_lanes(const gs::triangle_attributes& a, std::size_
                      static_cast<std::int32_t>(e.c0[i].value()), 0, 32767);
 }
 
-// The first n < lanes words at p replaced by f(their vector): with masked moves where the target has
-// them (AVX2's and AVX-512's touch no memory outside the mask), through a copy elsewhere.
-template <class F>
-HWY_INLINE void part_vector(std::int32_t* p, std::size_t n, F&& f) {
+// The n pixels of a run from its k-th (n at most a vector) replaced by f(their vector of words): in a
+// row-major buffer moved directly (part_vector when n is short of a vector); in the local memory
+// (Swizzled) at their words (row[y] + column[x]) & mask, a whole vector by gather and scatter (the
+// pixels of one row have distinct words), a part through a copy.
+template <bool Swizzled, class F>
+HWY_INLINE void merge(const span_target& fb, const span_run& run, std::size_t k, std::size_t n, F&& f) {
   const D d;
-#if HWY_TARGET <= HWY_AVX2
-  const M m = hn::FirstN(d, n);
-  hn::BlendedStore(f(hn::MaskedLoad(m, d, p)), m, d, p);
-#else
-  alignas(64) std::int32_t copy[HWY_MAX_BYTES / 4] = {};
-  for (std::size_t j = 0; j < n; ++j) copy[j] = p[j];
-  hn::Store(f(hn::Load(d, copy)), d, copy);
-  for (std::size_t j = 0; j < n; ++j) p[j] = copy[j];
-#endif
+  const std::size_t lanes = hn::Lanes(d);
+  if constexpr (!Swizzled) {
+    auto* p = reinterpret_cast<std::int32_t*>(fb.words + static_cast<std::size_t>(run.y) * fb.stride +
+                                              static_cast<std::size_t>(run.x0) + k);
+    if (n == lanes) return hn::StoreU(f(hn::LoadU(d, p)), d, p);
+    return part_vector(p, n, f);
+  } else {
+    auto* memory = reinterpret_cast<std::int32_t*>(fb.words);
+    const std::uint32_t row = fb.row[run.y];
+    const std::uint32_t* column = fb.column + static_cast<std::size_t>(run.x0) + k;
+    if (n == lanes) {
+      const V at = hn::And(
+          hn::Add(set(static_cast<std::int32_t>(row)), hn::LoadU(d, reinterpret_cast<const std::int32_t*>(column))),
+          set(static_cast<std::int32_t>(fb.mask)));
+      return hn::ScatterIndex(f(hn::GatherIndex(d, memory, at)), d, memory, at);
+    }
+    alignas(64) std::int32_t copy[HWY_MAX_BYTES / 4] = {};
+    std::uint32_t at[HWY_MAX_BYTES / 4];
+    for (std::size_t j = 0; j < n; ++j) at[j] = (row + column[j]) & fb.mask, copy[j] = memory[at[j]];
+    hn::Store(f(hn::Load(d, copy)), d, copy);
+    for (std::size_t j = 0; j < n; ++j) memory[at[j]] = copy[j];
+  }
 }
 
 // The runs, Gouraud: the four channels stepped in lanes too; else the colour is one value. In chunks of
 // runs whose vectors fit `slots`: their U, V walked and their texel addresses stored, the texels looked
 // up (resolve_texels), then each vector of pixels through the units with its texels read back.
-template <bool Gouraud>
+template <bool Gouraud, bool Swizzled>
 HWY_INLINE void draw_runs(const gs::gs_registers& regs, const gs::model_options& o, const gs::triangle_attributes& a,
-                          const nearest_texture& tex, const span_run* runs, std::size_t count, std::uint32_t* words,
-                          std::size_t stride) {
+                          const nearest_texture& tex, const span_run* runs, std::size_t count, const span_target& fb) {
   const D d;
   const std::size_t lanes = hn::Lanes(d);
-  const bool textured = tex.index != nullptr || tex.texels != nullptr;
+  const bool textured = tex.textured();
   const plane_lanes pu(a.u), pv(a.v);
   const gs::fragment_colour c = a.colour_at(runs[0].x0, runs[0].y);  // a flat plane's one value
   rgba_v cf{set(c.r.value()), set(c.g.value()), set(c.b.value()), set(c.a.value())};
@@ -193,8 +213,6 @@ HWY_INLINE void draw_runs(const gs::gs_registers& regs, const gs::model_options&
     used = 0;
     for (std::size_t i = first; i < end; ++i) {
       const span_run& run = runs[i];
-      auto* row = reinterpret_cast<std::int32_t*>(words + static_cast<std::size_t>(run.y) * stride +
-                                                  static_cast<std::size_t>(run.x0));
       if constexpr (Gouraud) {
         if (i == 0) {
           r.start(pr, gouraud_numerator(a, 0, run.x0, run.y), run.x0, run.y);
@@ -214,68 +232,22 @@ HWY_INLINE void draw_runs(const gs::gs_registers& regs, const gs::model_options&
         const V t = textured ? hn::Load(d, texel + used) : set(0);
         const V x = hn::Add(set(run.x0 + static_cast<std::int32_t>(k)), iota);
         auto pixels = [&](V dst) __attribute__((always_inline)) { return pixel_pipeline(regs, o, t, cf, dst, x, y); };
-        if (n - k >= lanes) {
-          hn::StoreU(pixels(hn::LoadU(d, row + k)), d, row + k);
-        } else {
-          part_vector(row + k, n - k, pixels);
-        }
+        merge<Swizzled>(fb, run, k, std::min(lanes, n - k), pixels);
       }
     }
   }
 }
 
 void span_triangle_lanes(const gs::gs_registers& regs, const gs::model_options& o, const gs::triangle_attributes& a,
-                         const nearest_texture& tex, const span_run* runs, std::size_t count, std::uint32_t* words,
-                         std::size_t stride) {
+                         const nearest_texture& tex, const span_run* runs, std::size_t count, const span_target& fb) {
   if (count == 0) return;
-  if (!gs::flat_colour(a)) return draw_runs<true>(regs, o, a, tex, runs, count, words, stride);
-  draw_runs<false>(regs, o, a, tex, runs, count, words, stride);
-}
-
-void span_row_lanes(const gs::gs_registers& regs, const gs::model_options& o, const gs::fragment_colour& c,
-                    const std::uint32_t* texels, std::uint32_t* words, int x0, int y, std::size_t n) {
-  const D d;
-  const std::size_t lanes = hn::Lanes(d);
-  const rgba_v cf{set(c.r.value()), set(c.g.value()), set(c.b.value()), set(c.a.value())};
-  const V iota = hn::Iota(d, 0), yv = set(y);
-  const auto* t = reinterpret_cast<const std::int32_t*>(texels);
-  auto* row = reinterpret_cast<std::int32_t*>(words);
-  std::size_t k = 0;
-  for (; k + lanes <= n; k += lanes) {
-    const V x = hn::Add(set(x0 + static_cast<std::int32_t>(k)), iota);
-    hn::StoreU(pixel_pipeline(regs, o, hn::LoadU(d, t + k), cf, hn::LoadU(d, row + k), x, yv), d, row + k);
+  const bool gouraud = !gs::flat_colour(a);
+  if (fb.row != nullptr) {
+    if (gouraud) return draw_runs<true, true>(regs, o, a, tex, runs, count, fb);
+    return draw_runs<false, true>(regs, o, a, tex, runs, count, fb);
   }
-  if (k == n) return;
-  const V x = hn::Add(set(x0 + static_cast<std::int32_t>(k)), iota);
-  alignas(64) std::int32_t tex[HWY_MAX_BYTES / 4] = {};
-  for (std::size_t j = 0; j < n - k; ++j) tex[j] = t[k + j];
-  part_vector(row + k, n - k, [&](V dst) { return pixel_pipeline(regs, o, hn::Load(d, tex), cf, dst, x, yv); });
-}
-
-void span_channel_row_lanes(const gs::gs_registers& regs, const gs::model_options& o, const gs::fragment_colour& c,
-                            const std::uint32_t* src, unsigned channel, const std::uint32_t* clut, std::uint32_t* words,
-                            int x0, int y, std::size_t n) {
-  const D d;
-  const std::size_t lanes = hn::Lanes(d);
-  const rgba_v cf{set(c.r.value()), set(c.g.value()), set(c.b.value()), set(c.a.value())};
-  const V iota = hn::Iota(d, 0), yv = set(y);
-  const auto* s = reinterpret_cast<const std::int32_t*>(src);
-  const auto* table = reinterpret_cast<const std::int32_t*>(clut);
-  auto* row = reinterpret_cast<std::int32_t*>(words);
-  const int shift = static_cast<int>(8 * channel);
-  auto texel = [&](V word) { return hn::GatherIndex(d, table, hn::And(hn::ShiftRightSame(word, shift), set(0xFF))); };
-  std::size_t k = 0;
-  for (; k + lanes <= n; k += lanes) {
-    const V x = hn::Add(set(x0 + static_cast<std::int32_t>(k)), iota);
-    const V t = texel(hn::LoadU(d, s + k));  // before the store: s may be row
-    hn::StoreU(pixel_pipeline(regs, o, t, cf, hn::LoadU(d, row + k), x, yv), d, row + k);
-  }
-  if (k == n) return;
-  const V x = hn::Add(set(x0 + static_cast<std::int32_t>(k)), iota);
-  alignas(64) std::int32_t part[HWY_MAX_BYTES / 4] = {};
-  for (std::size_t j = 0; j < n - k; ++j) part[j] = s[k + j];
-  const V t = texel(hn::Load(d, part));
-  part_vector(row + k, n - k, [&](V dst) { return pixel_pipeline(regs, o, t, cf, dst, x, yv); });
+  if (gouraud) return draw_runs<true, false>(regs, o, a, tex, runs, count, fb);
+  draw_runs<false, false>(regs, o, a, tex, runs, count, fb);
 }
 
 }  // namespace gsdot3::simd::HWY_NAMESPACE
@@ -285,8 +257,6 @@ HWY_AFTER_NAMESPACE();
 namespace gsdot3::simd {
 
 HWY_EXPORT(span_triangle_lanes);
-HWY_EXPORT(span_row_lanes);
-HWY_EXPORT(span_channel_row_lanes);
 
 namespace {
 
@@ -332,20 +302,8 @@ bool span_applies(const gs::triangle_attributes& a, int x0, int y0, int x1, int 
 }
 
 void span_triangle(const gs::gs_registers& regs, const gs::model_options& o, const gs::triangle_attributes& a,
-                   const nearest_texture& tex, const span_run* runs, std::size_t count, std::uint32_t* words,
-                   std::size_t stride) {
-  HWY_DYNAMIC_DISPATCH(span_triangle_lanes)(regs, o, a, tex, runs, count, words, stride);
-}
-
-void span_row(const gs::gs_registers& regs, const gs::model_options& o, const gs::fragment_colour& cf,
-              const std::uint32_t* texels, std::uint32_t* words, int x0, int y, std::size_t n) {
-  HWY_DYNAMIC_DISPATCH(span_row_lanes)(regs, o, cf, texels, words, x0, y, n);
-}
-
-void span_channel_row(const gs::gs_registers& regs, const gs::model_options& o, const gs::fragment_colour& cf,
-                      const std::uint32_t* src, unsigned channel, const std::uint32_t* clut, std::uint32_t* words,
-                      int x0, int y, std::size_t n) {
-  HWY_DYNAMIC_DISPATCH(span_channel_row_lanes)(regs, o, cf, src, channel, clut, words, x0, y, n);
+                   const nearest_texture& tex, const span_run* runs, std::size_t count, const span_target& fb) {
+  HWY_DYNAMIC_DISPATCH(span_triangle_lanes)(regs, o, a, tex, runs, count, fb);
 }
 
 }  // namespace gsdot3::simd

@@ -20,15 +20,34 @@ namespace gsdot3::simd {
 
 // TEX1 nearest from host arrays (the renderer's nearest_host_fetch): PSMT8 indices through a CLUT
 // given as 32-bit words (CSA = 0: index i is entry i), or 32-bit texels; REPEAT or CLAMP; the sides
-// powers of two (wmask = width − 1, shift = log2 width), at least 4 texels. No texture at all: both
-// pointers null (the texel word is 0, as PRIM.TME = 0 reads none).
+// powers of two (wmask = width − 1, shift = log2 width), at least 4 texels. No texture at all: every
+// pointer null (the texel word is 0, as PRIM.TME = 0 reads none).
+// Or from the modelled GS local memory (the memory path's nearest_memory_fetch): texel i = v << shift
+// | u is at byte (address[i] + base) & mask of `memory` (the memory as words, byte a = bits 8·(a % 4)
+// of word a / 4; gs_memory's texel_addresses table at the texture's TBP0), an 8-bit index through
+// `words` (the CLUT) or, without a CLUT, the 32-bit word at that byte.
 struct nearest_texture {
   const std::uint8_t* index = nullptr;
-  const std::uint32_t* words = nullptr;  // 256 CLUT entries as words, with index
+  const std::uint32_t* words = nullptr;  // 256 CLUT entries as words, with index or memory
   const std::uint32_t* texels = nullptr;
+  const std::uint32_t* memory = nullptr;
+  const std::uint32_t* address = nullptr;
+  std::uint32_t base = 0, mask = 0;
   std::int32_t wmask = 0, hmask = 0;
   int shift = 0;
   bool clamp = false;
+  bool textured() const noexcept { return index != nullptr || texels != nullptr || memory != nullptr; }
+};
+
+// Where the frame buffer's pixel (x, y) is: word y·stride + x of `words` (row-major), or with `row`
+// set word (row[y] + column[x]) & mask (a PSMCT32 / PSMZ24 buffer of the GS local memory, `words`
+// the memory: gs_memory's row_column_address tables). Distinct pixels of one row have distinct words.
+struct span_target {
+  std::uint32_t* words = nullptr;
+  std::size_t stride = 0;
+  const std::uint32_t* row = nullptr;
+  const std::uint32_t* column = nullptr;
+  std::uint32_t mask = 0;
 };
 
 // Pixels (x0 + k, y), 0 <= k < n, of one triangle: a row's run of its fragments.
@@ -57,13 +76,12 @@ inline std::int64_t gouraud_numerator(const gs::triangle_attributes& a, std::siz
   return sign * (e.nx[i] * ((x + a.offset_x) * 16 - e.x0) + e.ny[i] * ((y + a.offset_y) * 16 - e.y0)) * 128;
 }
 
-// The runs of one triangle drawn with `regs` into a row-major frame buffer (`words`, `stride` words a
-// row): each pixel's new word is gs::pixel_pipeline(regs, {cf, texel, old, x, y}, o).out with cf =
-// a.colour_at(x, y) and texel = the nearest texel at (a.u.at(x, y), a.v.at(x, y)). Runs are drawn
-// in order, each after the last (a run's pixels are distinct). Requires span_applies.
+// The runs of one triangle drawn with `regs` into frame buffer fb: each pixel's new word is
+// gs::pixel_pipeline(regs, {cf, texel, old, x, y}, o).out with cf = a.colour_at(x, y) and texel = the
+// nearest texel at (a.u.at(x, y), a.v.at(x, y)). Runs are drawn in order, each after the last (a
+// run's pixels are distinct); the texture is not the frame buffer. Requires span_applies.
 void span_triangle(const gs::gs_registers& regs, const gs::model_options& o, const gs::triangle_attributes& a,
-                   const nearest_texture& tex, const span_run* runs, std::size_t count, std::uint32_t* words,
-                   std::size_t stride);
+                   const nearest_texture& tex, const span_run* runs, std::size_t count, const span_target& fb);
 
 // A sprite's row: pixels (x0 + k, y), k < n, of one flat colour cf with texel words texels[k], into
 // the row's frame-buffer words: words[k] = gs::pixel_pipeline(regs, {cf, texels[k], words[k], x0 + k,
@@ -77,5 +95,15 @@ void span_row(const gs::gs_registers& regs, const gs::model_options& o, const gs
 void span_channel_row(const gs::gs_registers& regs, const gs::model_options& o, const gs::fragment_colour& cf,
                       const std::uint32_t* src, unsigned channel, const std::uint32_t* clut, std::uint32_t* words,
                       int x0, int y, std::size_t n);
+
+// The memory path's channel-fetch sprites of one page (a buffer read as PSMT8): pixel k, at window
+// (x[k], y[k]), fetches byte read[k] of the local memory `memory` (as words, byte a = bits 8·(a % 4)
+// of word a / 4), its texel is clut[that byte] (the CLUT as words, CSA = 0), and its frame-buffer
+// word is memory[word[k]]: memory[word[k]] = gs::pixel_pipeline(regs, {cf, texel, old, x, y}, o).out.
+// The caller guarantees that no pixel writes a word another pixel reads (each reads a byte of its
+// own word, or of a buffer none of them writes), so the pixels are drawn in lanes in any order.
+void span_fetched(const gs::gs_registers& regs, const gs::model_options& o, const gs::fragment_colour& cf,
+                  std::uint32_t* memory, const std::uint32_t* read, const std::uint32_t* clut,
+                  const std::uint32_t* word, const std::int32_t* x, const std::int32_t* y, std::size_t n);
 
 }  // namespace gsdot3::simd

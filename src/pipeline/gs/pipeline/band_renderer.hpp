@@ -338,7 +338,7 @@ class band_renderer {
   [[gnu::noinline, gnu::flatten]] void draw_spans(const gs::gs_registers& regs, const texture_ref* tex,
                                                   const std::vector<tri_attr>& attr, const FB& fb, triangle_range tris);
   bool span_engine(const gs::gs_registers& regs, const tri_attr& a, const simd::nearest_texture& tex,
-                   std::span<const run> rs, const row_view& fb);
+                   std::span<const run> rs, const simd::span_target& fb);
 
   // The depth test of every pass after step 1 (GEQUAL, ZMSK = 1: Z is only read).
   bool passes_later_depth_test(const prepared_triangle& tri, int x, int y) const noexcept {

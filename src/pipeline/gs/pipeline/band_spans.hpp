@@ -1,6 +1,7 @@
 // pipeline/band_spans.hpp — band_renderer's triangle passes in SIMD lanes (included at the end of
 // band_renderer.hpp): the cached runs through the span engine (gs_simd/span_draw.hpp) where it
-// applies, else walked by gs::attribute_walker into span_batch.
+// applies (on the memory path through the buffers' address tables), else walked by
+// gs::attribute_walker into span_batch.
 #pragma once
 
 #include <algorithm>
@@ -31,8 +32,20 @@ template <class FB>
   };
   if (o_.path == raster_path::cached) {
     auto runs_of = [&](std::uint32_t t) { return of(runs_, tri_runs_, {t, t + 1}); };
-    if constexpr (!std::is_same_v<FB, row_view>) {  // the memory path: pixel by pixel
+    if constexpr (!std::is_same_v<FB, row_view>) {
+      // The memory path: the span engine through the buffer's and the texture's address tables where it
+      // applies, else pixel by pixel.
+      std::optional<nearest_memory_fetch> fetch;
+      simd::nearest_texture lanes;  // no texture: none
+      bool engine = o_.span_engine && fb.address != nullptr;
+      if (tex != nullptr && engine) {
+        if (nearest_memory_fetch::applies(*tex))
+          lanes = fetch.emplace(*tex).lanes();
+        else
+          engine = false;
+      }
       for (std::uint32_t t = tris.first; t < tris.end; ++t, batch.flush()) {
+        if (engine && span_engine(regs, attr[t], lanes, runs_of(t), span_target_of(fb))) continue;
         gs::attribute_walker w(attr[t]);
         for (const run& r : runs_of(t))
           for (int k = 0; k < r.n; ++k) add(w, r.x0 + k, r.y);
@@ -43,7 +56,7 @@ template <class FB>
       auto runs = [&](auto&& texel, const simd::nearest_texture* lanes) {
         for (std::uint32_t t = tris.first; t < tris.end; ++t) {
           const std::span<const run> rs = runs_of(t);
-          if (lanes != nullptr && span_engine(regs, attr[t], *lanes, rs, fb)) continue;
+          if (lanes != nullptr && span_engine(regs, attr[t], *lanes, rs, span_target_of(fb))) continue;
           gs::attribute_walker w(attr[t]);
           for (const run& r : rs) {
             batch.add_row(&fb(r.x0, r.y), r.x0, r.y, [&](auto&& put) {
@@ -80,12 +93,13 @@ template <class FB>
 
 // A triangle's runs through the span engine (gs_simd/span_draw.hpp) when it is in its domain.
 inline bool band_renderer::span_engine(const gs::gs_registers& regs, const tri_attr& a,
-                                       const simd::nearest_texture& tex, std::span<const run> rs, const row_view& fb) {
+                                       const simd::nearest_texture& tex, std::span<const run> rs,
+                                       const simd::span_target& fb) {
   if (rs.empty()) return true;
   int x0 = rs.front().x0, x1 = x0;
   for (const run& r : rs) x0 = std::min(x0, r.x0), x1 = std::max(x1, r.x0 + r.n);
   if (!simd::span_applies(a, x0, rs.front().y, x1, rs.back().y + 1)) return false;
-  simd::span_triangle(regs, o_.model, a, tex, rs.data(), rs.size(), fb.words, static_cast<std::size_t>(fb.width));
+  simd::span_triangle(regs, o_.model, a, tex, rs.data(), rs.size(), fb);
   for (const run& r : rs) ops_ += static_cast<std::size_t>(r.n);
   return true;
 }

@@ -5,6 +5,7 @@
 // output. Internal to render.cpp.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <optional>
@@ -68,6 +69,41 @@ inline void channel_pass(band_renderer& r, const frame_buffers<row_view>&, gs::r
                            words.data(), &dst(a.x0, y), a.x0, y, n);
   r.count_ops(n * static_cast<std::size_t>(a.y1 - a.y0));
 }
+// The memory path's channel-fetch sprites of one page in SIMD lanes (simd::span_fetched), where no
+// pixel of the page writes a word another of its pixels fetches from: each fetches a byte of its own
+// word (a buffer's channel into itself) or of a word none of them writes (another buffer). Then the
+// order of the pixels changes nothing, and they are drawn in lanes; otherwise nothing is drawn and
+// the result is false. fetched[16·k + j]: the page-relative byte sprite k's pixel j (8·dy + dx)
+// fetches, bp the page's TBP0, corner(sprite) where the sprite is drawn; clip: the sprite area.
+template <const pass_regs& Pass, class Corner>
+bool fetched_page(band_renderer& r, gs::rgba8 colour, const std::array<std::uint32_t, 256>& clut,
+                  const gs::mem::channel_fetch& f, const std::array<std::uint32_t, 16 * 128>& fetched, std::uint32_t bp,
+                  const memory_view& dst, Corner&& corner) {
+  static constexpr gs::gs_registers regs = Pass.registers();
+  const scissor& clip = r.sprite_area();
+  std::array<std::uint32_t, 16 * 128> read, word;
+  std::array<std::int32_t, 16 * 128> xs, ys;
+  std::size_t n = 0;
+  for (std::size_t k = 0; k < f.sprites.size(); ++k) {
+    const std::array<int, 2> at = corner(f.sprites[k]);
+    for (std::size_t j = 0; j < 16; ++j) {
+      const int x = at[0] + static_cast<int>(j % 8), y = at[1] + static_cast<int>(j / 8);
+      if (x < clip.x0 || x >= clip.x1 || y < clip.y0 || y >= clip.y1) continue;
+      read[n] = (fetched[16 * k + j] + bp * gs::mem::block_bytes) % gs::mem::memory_bytes;
+      word[n] = static_cast<std::uint32_t>(&dst(x, y) - dst.words);
+      xs[n] = x, ys[n] = y, ++n;
+    }
+  }
+  if (n == 0) return true;
+  const auto [lo, hi] = std::minmax_element(word.begin(), word.begin() + static_cast<std::ptrdiff_t>(n));
+  for (std::size_t i = 0; i < n; ++i)
+    if (const std::uint32_t w = read[i] / 4; w != word[i] && w >= *lo && w <= *hi) return false;
+  simd::span_fetched(regs, r.options().model, gs::fragment_colour::flat(colour), dst.words, read.data(), clut.data(),
+                     word.data(), xs.data(), ys.data(), n);
+  r.count_ops(n);
+  return true;
+}
+
 // The memory path. A source drawn in PSMZ32 (src.z) has logical pixel L in the word of PSMCT32
 // pixel zsigma(L) (gs_memory/overlay.hpp): the tile that fetches PSMCT32 pixel M is drawn at zsigma(M) (the sprites'
 // XYZ in the Z layout). z_clear: the ILP pass of the z-trick modes, also writing Z = 0x00808080 into the DPB as PSMZ24
@@ -90,6 +126,10 @@ inline void channel_pass(band_renderer& r, const frame_buffers<memory_view>& fb,
   // primitives, section 3.3), so that the Z writes clear whole pages.
   const scissor pages = whole_pages(a);
   r.scalar_sprites = true;  // the texel fetches read the memory the sprites write (span_batch.hpp)
+  // In lanes where a page allows (fetched_page): not with the Z clear's writes between the fetches,
+  // nor with a texture buffer that is not the memory itself.
+  const bool lanes = r.vectorised() && !z_clear && (!buffered || tb == gs::texture_buffer::per_fragment);
+  const std::array<std::uint32_t, 256> words = clut_words(clut);
   // The byte of the page (at TBP0 = 0) each sprite pixel fetches, through CLAMP_1 and the PSMT8
   // address: sprite k's pixel (dx, dy) at 16·k + 8·dy + dx. The sprites and their texels are the
   // same on every page, which only moves TBP0 (texel_addresses::byte adds it).
@@ -113,15 +153,18 @@ inline void channel_pass(band_renderer& r, const frame_buffers<memory_view>& fb,
       const std::uint32_t page = static_cast<std::uint32_t>(px) + static_cast<std::uint32_t>(py) * src.bw;
       const gs::mem::buffer tex{fixed::uint<14>::from_wrapped(src.bp + 32 * page),
                                 fixed::uint<6>::from_wrapped(2 * src.bw), gs::mem::psm::PSMT8};
+      // Where sprite k is drawn: the PSMCT32 pixel it fetches, in the Z layout through zsigma.
+      auto corner = [&](const gs::mem::fetch_sprite& sp) {
+        const int mx = px * 64 + static_cast<int>(sp.x0), my = py * 32 + static_cast<int>(sp.y0);
+        return src.z ? gs::mem::zsigma(mx, my) : std::array<int, 2>{mx, my};
+      };
+      if (lanes && fetched_page<Pass>(r, colour, words, f, fetched, tex.BP.value(), dst, corner)) continue;
       gs::mem::texture_page_buffer texels(buffered ? tb : gs::texture_buffer::per_fragment, mem,
                                           (src.bp + 32 * page) * 256, gs::mem::page_bytes);
       for (std::size_t k = 0; k < f.sprites.size(); ++k) {
         const gs::mem::fetch_sprite& sp = f.sprites[k];
         const std::uint32_t* sprite_texels = &fetched[16 * k];
-        const int mx = px * 64 + static_cast<int>(sp.x0),
-                  my = py * 32 + static_cast<int>(sp.y0);  // PSMCT32 pixel fetched
-        const std::array<int, 2> drawn =
-            src.z ? gs::mem::zsigma(mx, my) : std::array<int, 2>{mx, my};  // where it is drawn
+        const std::array<int, 2> drawn = corner(sp);
         const int x0 = drawn[0], y0 = drawn[1];  // plain ints: clang 14 cannot capture structured bindings
         const int w = static_cast<int>(sp.x1 - sp.x0), h = static_cast<int>(sp.y1 - sp.y0);
         r.sprite_rect<Pass>(

@@ -51,6 +51,14 @@ struct memory_view {
   }
 };
 
+// The span engine's view of a frame buffer (gs_simd/span_draw.hpp); a memory_view's needs `address`.
+inline simd::span_target span_target_of(const row_view& v) noexcept {
+  return {v.words, static_cast<std::size_t>(v.width)};
+}
+inline simd::span_target span_target_of(const memory_view& v) noexcept {
+  return {v.words, 0, v.address->rows(), v.address->columns(), v.address->mask()};
+}
+
 // The Z buffer (ZBUF_1, PSMZ24): row-major on the value path, at ZBP in the modelled local memory on
 // the memory path (the word of PSMZ24 pixel (x, y): memory_view in the Z layout). A write keeps the
 // word's top byte (PSMZ24 stores bits 0-23).

@@ -121,7 +121,13 @@ class nearest_host_fetch {
   }
   // The same fetch for the span engine's lanes (gs_simd/span_draw.hpp), valid while this lives.
   simd::nearest_texture lanes() const noexcept {
-    return {index_, index_ != nullptr ? words_.data() : nullptr, texels_, wmask_, hmask_, shift_, clamp_};
+    return {.index = index_,
+            .words = index_ != nullptr ? words_.data() : nullptr,
+            .texels = texels_,
+            .wmask = wmask_,
+            .hmask = hmask_,
+            .shift = shift_,
+            .clamp = clamp_};
   }
 
  private:
@@ -130,6 +136,40 @@ class nearest_host_fetch {
   std::int32_t wmask_, hmask_;
   int shift_;
   bool clamp_;
+  std::array<std::uint32_t, 256> words_{};
+};
+
+// The memory path's fetch for the span engine: TEX1 nearest from the modelled local memory through
+// the texture's tabulated addresses (texel_addresses), REPEAT or CLAMP, PSMT8 / PSMT8H indices through
+// the CLUT (its entries as words) or 32-bit texels: texture_ref::fetch's memory branch, in lanes
+// (tests/gs_simd/span_draw_test.cpp checks the lanes against texel_addresses::read). PSMT4 and
+// bilinear filtering stay with texture_ref::sample.
+class nearest_memory_fetch {
+ public:
+  static bool applies(const texture_ref& t) noexcept {
+    if (t.memory == nullptr || t.texel_at == nullptr || t.filter != gs::bilinear_mode::nearest) return false;
+    if (t.texel_at->bits() != (t.clut != nullptr ? 8u : 32u)) return false;
+    return std::has_single_bit(static_cast<unsigned>(t.width)) &&
+           std::has_single_bit(static_cast<unsigned>(t.height)) &&
+           t.texel_at->width() == static_cast<std::uint32_t>(t.width) && t.width * t.height >= 4;
+  }
+  explicit nearest_memory_fetch(const texture_ref& t) noexcept : t_(t) {
+    if (t.clut != nullptr) words_ = clut_words(*t.clut);
+  }
+  // Valid while this lives.
+  simd::nearest_texture lanes() const noexcept {
+    simd::nearest_texture l;
+    l.words = t_.clut != nullptr ? words_.data() : nullptr;
+    l.memory = t_.memory->words();
+    l.address = t_.texel_at->table();
+    l.base = t_.at.BP.value() * gs::mem::block_bytes, l.mask = gs::mem::memory_bytes - 1;
+    l.wmask = t_.width - 1, l.hmask = t_.height - 1, l.shift = std::countr_zero(static_cast<unsigned>(t_.width));
+    l.clamp = t_.clamp;
+    return l;
+  }
+
+ private:
+  const texture_ref& t_;
   std::array<std::uint32_t, 256> words_{};
 };
 
