@@ -259,35 +259,40 @@ void check_rows(const std::string& target) {
 }
 
 // The memory path's fetched pixels (span_fetched) against the scalar chain pixel by pixel in order:
-// up to 300 pixels with distinct words of a small memory, each reading a byte of its own word or of
-// a word no pixel writes.
+// up to 300 pixels with distinct words of a small memory from a random base, each reading a byte of
+// its own word or of a word no pixel writes, given as random bases plus offsets.
 void check_fetched(const std::string& target) {
   const gs::model_options o = random_options();
   const gs::gs_registers regs = random_registers();
   const gs::fragment_colour cf = gs::fragment_colour::flat(gs::rgba8::from_u32(*rc::gen::arbitrary<std::uint32_t>()));
   std::mt19937 rng(*rc::gen::arbitrary<std::uint32_t>());
-  std::vector<std::uint32_t> memory = words(rng, 1024), want = memory;
+  std::vector<std::uint32_t> memory = words(rng, 2048), want = memory;
   const std::vector<std::uint32_t> clut = words(rng, 256);
   const auto n = static_cast<std::size_t>(*rc::gen::inRange(0, 300));
-  std::vector<std::uint32_t> word(512);  // the written words: a random n of the first 512
+  const std::uint32_t word_base = *rc::gen::inRange(0u, 64u), read_base = 4 * *rc::gen::inRange(0u, word_base + 1);
+  const int x0 = *rc::gen::inRange(0, 2048), y0 = *rc::gen::inRange(0, 2048);
+  std::vector<std::uint32_t> word(512);  // the written words' offsets: a random n of the first 512
   for (std::uint32_t i = 0; i < 512; ++i) word[i] = i;
   std::shuffle(word.begin(), word.end(), rng);
   word.resize(n);
   std::vector<std::uint32_t> read(n);
   std::vector<std::int32_t> x(n), y(n);
   for (std::size_t k = 0; k < n; ++k) {
-    const std::uint32_t w = rng() % 2 == 0 ? word[k] : 512 + static_cast<std::uint32_t>(rng() % 512);
-    read[k] = 4 * w + static_cast<std::uint32_t>(rng() % 4);
+    const std::uint32_t w = rng() % 2 == 0 ? word_base + word[k] : 640 + static_cast<std::uint32_t>(rng() % 1024);
+    read[k] = 4 * w + static_cast<std::uint32_t>(rng() % 4) - read_base;
     x[k] = static_cast<std::int32_t>(rng() % 2048), y[k] = static_cast<std::int32_t>(rng() % 2048);
   }
   for (std::size_t k = 0; k < n; ++k) {
-    const std::uint32_t b = read[k], byte = (want[b / 4] >> (8 * (b % 4))) & 0xFFu;
-    std::uint32_t& w = want[word[k]];
-    w = gs::pixel_pipeline(
-            regs, {cf, gs::rgba8::from_u32(clut[byte]), w, static_cast<unsigned>(x[k]), static_cast<unsigned>(y[k])}, o)
+    const std::uint32_t b = read_base + read[k], byte = (want[b / 4] >> (8 * (b % 4))) & 0xFFu;
+    std::uint32_t& w = want[word_base + word[k]];
+    w = gs::pixel_pipeline(regs,
+                           {cf, gs::rgba8::from_u32(clut[byte]), w, static_cast<unsigned>(x0 + x[k]),
+                            static_cast<unsigned>(y0 + y[k])},
+                           o)
             .out;
   }
-  span_fetched(regs, o, cf, memory.data(), read.data(), clut.data(), word.data(), x.data(), y.data(), n);
+  span_fetched(regs, o, cf, memory.data(), read_base, read.data(), clut.data(), word_base, word.data(), x0, y0,
+               x.data(), y.data(), n);
   for (std::size_t i = 0; i < memory.size(); ++i)
     if (memory[i] != want[i])
       RC_FAIL("span_fetched, " + failure(target, static_cast<int>(i), 0, memory[i], want[i]) + " (word i)");

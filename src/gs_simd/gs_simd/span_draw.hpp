@@ -97,13 +97,15 @@ void span_channel_row(const gs::gs_registers& regs, const gs::model_options& o, 
                       int x0, int y, std::size_t n);
 
 // The memory path's channel-fetch sprites of one page (a buffer read as PSMT8): pixel k, at window
-// (x[k], y[k]), fetches byte read[k] of the local memory `memory` (as words, byte a = bits 8·(a % 4)
-// of word a / 4), its texel is clut[that byte] (the CLUT as words, CSA = 0), and its frame-buffer
-// word is memory[word[k]]: memory[word[k]] = gs::pixel_pipeline(regs, {cf, texel, old, x, y}, o).out.
-// The caller guarantees that no pixel writes a word another pixel reads (each reads a byte of its
-// own word, or of a buffer none of them writes), so the pixels are drawn in lanes in any order.
+// (x0 + x[k], y0 + y[k]), fetches byte read_base + read[k] of the local memory `memory` (as words,
+// byte a = bits 8·(a % 4) of word a / 4), its texel is clut[that byte] (the CLUT as words, CSA = 0),
+// and its frame-buffer word is memory[word_base + word[k]]: that word becomes gs::pixel_pipeline(regs,
+// {cf, texel, old, x, y}, o).out. The caller guarantees that no pixel writes a word another pixel
+// reads (each reads a byte of its own word, or of words none of them writes), so the pixels are drawn
+// in lanes in any order.
 void span_fetched(const gs::gs_registers& regs, const gs::model_options& o, const gs::fragment_colour& cf,
-                  std::uint32_t* memory, const std::uint32_t* read, const std::uint32_t* clut,
-                  const std::uint32_t* word, const std::int32_t* x, const std::int32_t* y, std::size_t n);
+                  std::uint32_t* memory, std::uint32_t read_base, const std::uint32_t* read, const std::uint32_t* clut,
+                  std::uint32_t word_base, const std::uint32_t* word, int x0, int y0, const std::int32_t* x,
+                  const std::int32_t* y, std::size_t n);
 
 }  // namespace gsdot3::simd

@@ -64,19 +64,21 @@ void span_channel_row_lanes(const gs::gs_registers& regs, const gs::model_option
 // The texels and old words are looked up with scalar loads into a chunk and the new words stored
 // the same way: lane gathers and scatters of them were slower on the AMD EPYC (AVX-512) of 2026-12-07.
 void span_fetched_lanes(const gs::gs_registers& regs, const gs::model_options& o, const gs::fragment_colour& c,
-                        std::uint32_t* memory, const std::uint32_t* read, const std::uint32_t* clut,
-                        const std::uint32_t* word, const std::int32_t* x, const std::int32_t* y, std::size_t n) {
+                        std::uint32_t* memory, std::uint32_t read_base, const std::uint32_t* read,
+                        const std::uint32_t* clut, std::uint32_t word_base, const std::uint32_t* word, int x0, int y0,
+                        const std::int32_t* x, const std::int32_t* y, std::size_t n) {
   const D d;
   const std::size_t lanes = hn::Lanes(d);
   const rgba_v cf{set(c.r.value()), set(c.g.value()), set(c.b.value()), set(c.a.value())};
+  std::uint32_t* page = memory + word_base;
   constexpr std::size_t chunk = 256;
   alignas(64) std::int32_t texel[chunk], old[chunk];
   for (std::size_t first = 0; first < n; first += chunk) {
     const std::size_t m = std::min(chunk, n - first);
     for (std::size_t k = 0; k < m; ++k) {
-      const std::uint32_t b = read[first + k];
+      const std::uint32_t b = read_base + read[first + k];
       texel[k] = static_cast<std::int32_t>(clut[(memory[b >> 2] >> (8 * (b & 3))) & 0xFF]);
-      old[k] = static_cast<std::int32_t>(memory[word[first + k]]);
+      old[k] = static_cast<std::int32_t>(page[word[first + k]]);
     }
     const std::size_t padded = (m + lanes - 1) / lanes * lanes;
     for (std::size_t k = m; k < padded; ++k) texel[k] = old[k] = 0;
@@ -89,9 +91,10 @@ void span_fetched_lanes(const gs::gs_registers& regs, const gs::model_options& o
         for (std::size_t j = 0; k + j < m; ++j) cx[j] = x[first + k + j], cy[j] = y[first + k + j];
         px = hn::Load(d, cx), py = hn::Load(d, cy);
       }
+      px = hn::Add(px, set(x0)), py = hn::Add(py, set(y0));
       hn::Store(pixel_pipeline(regs, o, hn::Load(d, texel + k), cf, hn::Load(d, old + k), px, py), d, old + k);
     }
-    for (std::size_t k = 0; k < m; ++k) memory[word[first + k]] = static_cast<std::uint32_t>(old[k]);
+    for (std::size_t k = 0; k < m; ++k) page[word[first + k]] = static_cast<std::uint32_t>(old[k]);
   }
 }
 
@@ -117,9 +120,11 @@ void span_channel_row(const gs::gs_registers& regs, const gs::model_options& o, 
 }
 
 void span_fetched(const gs::gs_registers& regs, const gs::model_options& o, const gs::fragment_colour& cf,
-                  std::uint32_t* memory, const std::uint32_t* read, const std::uint32_t* clut,
-                  const std::uint32_t* word, const std::int32_t* x, const std::int32_t* y, std::size_t n) {
-  HWY_DYNAMIC_DISPATCH(span_fetched_lanes)(regs, o, cf, memory, read, clut, word, x, y, n);
+                  std::uint32_t* memory, std::uint32_t read_base, const std::uint32_t* read, const std::uint32_t* clut,
+                  std::uint32_t word_base, const std::uint32_t* word, int x0, int y0, const std::int32_t* x,
+                  const std::int32_t* y, std::size_t n) {
+  HWY_DYNAMIC_DISPATCH(span_fetched_lanes)
+  (regs, o, cf, memory, read_base, read, clut, word_base, word, x0, y0, x, y, n);
 }
 
 }  // namespace gsdot3::simd

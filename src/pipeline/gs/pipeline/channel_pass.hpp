@@ -69,40 +69,70 @@ inline void channel_pass(band_renderer& r, const frame_buffers<row_view>&, gs::r
                            words.data(), &dst(a.x0, y), a.x0, y, n);
   r.count_ops(n * static_cast<std::size_t>(a.y1 - a.y0));
 }
-// The memory path's channel-fetch sprites of one page in SIMD lanes (simd::span_fetched), where no
-// pixel of the page writes a word another of its pixels fetches from: each fetches a byte of its own
-// word (a buffer's channel into itself) or of a word none of them writes (another buffer). Then the
-// order of the pixels changes nothing, and they are drawn in lanes; otherwise nothing is drawn and
-// the result is false. fetched[16·k + j]: the page-relative byte sprite k's pixel j (8·dy + dx)
-// fetches, bp the page's TBP0, corner(sprite) where the sprite is drawn; clip: the sprite area.
-template <const pass_regs& Pass, class Corner>
-bool fetched_page(band_renderer& r, gs::rgba8 colour, const std::array<std::uint32_t, 256>& clut,
-                  const gs::mem::channel_fetch& f, const std::array<std::uint32_t, 16 * 128>& fetched, std::uint32_t bp,
-                  const memory_view& dst, Corner&& corner) {
-  static constexpr gs::gs_registers regs = Pass.registers();
-  const scissor& clip = r.sprite_area();
-  std::array<std::uint32_t, 16 * 128> read, word;
-  std::array<std::int32_t, 16 * 128> xs, ys;
-  std::size_t n = 0;
-  for (std::size_t k = 0; k < f.sprites.size(); ++k) {
-    const std::array<int, 2> at = corner(f.sprites[k]);
-    for (std::size_t j = 0; j < 16; ++j) {
-      const int x = at[0] + static_cast<int>(j % 8), y = at[1] + static_cast<int>(j / 8);
-      if (x < clip.x0 || x >= clip.x1 || y < clip.y0 || y >= clip.y1) continue;
-      read[n] = (fetched[16 * k + j] + bp * gs::mem::block_bytes) % gs::mem::memory_bytes;
-      word[n] = static_cast<std::uint32_t>(&dst(x, y) - dst.words);
-      xs[n] = x, ys[n] = y, ++n;
+// The memory path's channel-fetch sprites in SIMD lanes (simd::span_fetched), page by page. With the
+// source's and the target's FBP on whole pages every page repeats one pattern: sprite pixel i (16·k +
+// 8·dy + dx of sprite k) is drawn at (x[i], y[i]) from the page's corner, fetches byte read[i] of the
+// source page (8 KiB) and writes word word[i] of the target page (a 32-bit page is 2048 words in a
+// row; gs_memory/fast_address.hpp: the page term is linear). No pixel then writes a word another one
+// fetches, so the order of the pixels changes nothing, when the two pages are different (their words
+// are disjoint) or when they are one and each pixel fetches a byte of the very word it writes (`own`:
+// a buffer's channel into itself).
+class fetch_pages {
+ public:
+  static constexpr std::size_t pixels = 16 * 128;
+  // fetched[i]: the page-relative byte pixel i fetches (texel_addresses at BP 0); corner(sprite): where
+  // the sprite is drawn on page (0, 0).
+  template <class Corner>
+  fetch_pages(const gs::mem::channel_fetch& f, const std::array<std::uint32_t, pixels>& fetched, const memory_view& src,
+              const memory_view& dst, Corner&& corner)
+      : applies_(dst.address != nullptr && src.bp % 32 == 0 && dst.bp % 32 == 0) {
+    for (std::size_t k = 0; k < f.sprites.size() && applies_; ++k) {
+      const std::array<int, 2> at = corner(f.sprites[k]);
+      for (std::size_t j = 0; j < 16; ++j) {
+        const std::size_t i = 16 * k + j;
+        x_[i] = at[0] + static_cast<int>(j % 8), y_[i] = at[1] + static_cast<int>(j / 8);
+        read_[i] = fetched[i], word_[i] = static_cast<std::uint32_t>(&dst(x_[i], y_[i]) - dst.words) % 2048;
+        applies_ = applies_ && read_[i] < gs::mem::page_bytes && x_[i] >= 0 && x_[i] < 64 && y_[i] >= 0 && y_[i] < 32;
+        own_ = own_ && read_[i] / 4 == word_[i];
+      }
     }
   }
-  if (n == 0) return true;
-  const auto [lo, hi] = std::minmax_element(word.begin(), word.begin() + static_cast<std::ptrdiff_t>(n));
-  for (std::size_t i = 0; i < n; ++i)
-    if (const std::uint32_t w = read[i] / 4; w != word[i] && w >= *lo && w <= *hi) return false;
-  simd::span_fetched(regs, r.options().model, gs::fragment_colour::flat(colour), dst.words, read.data(), clut.data(),
-                     word.data(), xs.data(), ys.data(), n);
-  r.count_ops(n);
-  return true;
-}
+  bool applies() const noexcept { return applies_; }
+  // Page (px, py) of the sprites clipped to `clip`, drawn with Pass; false (nothing drawn) when its
+  // pixels may not be drawn in lanes.
+  template <const pass_regs& Pass>
+  bool draw(band_renderer& r, gs::rgba8 colour, const std::array<std::uint32_t, 256>& clut, int px, int py,
+            std::uint32_t src_page, const memory_view& dst, const scissor& clip) const {
+    static constexpr gs::gs_registers regs = Pass.registers();
+    const int x0 = 64 * px, y0 = 32 * py;
+    const auto read_base = src_page * gs::mem::page_bytes % gs::mem::memory_bytes;
+    const auto word_base = static_cast<std::uint32_t>(&dst(x0, y0) - dst.words) / 2048 * 2048;
+    if (read_base / 4 == word_base && !own_) return false;
+    const gs::fragment_colour cf = gs::fragment_colour::flat(colour);
+    auto lanes = [&](const auto& read, const auto& word, const auto& x, const auto& y, std::size_t n) {
+      simd::span_fetched(regs, r.options().model, cf, dst.words, read_base, read.data(), clut.data(), word_base,
+                         word.data(), x0, y0, x.data(), y.data(), n);
+      r.count_ops(n);
+    };
+    if (clip.x0 <= x0 && x0 + 64 <= clip.x1 && clip.y0 <= y0 && y0 + 32 <= clip.y1) {
+      lanes(read_, word_, x_, y_, pixels);
+      return true;
+    }
+    std::array<std::uint32_t, pixels> read, word;  // the page's pixels within the clip
+    std::array<std::int32_t, pixels> x, y;
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < pixels; ++i)
+      if (const int cx = x0 + x_[i], cy = y0 + y_[i]; cx >= clip.x0 && cx < clip.x1 && cy >= clip.y0 && cy < clip.y1)
+        read[n] = read_[i], word[n] = word_[i], x[n] = x_[i], y[n] = y_[i], ++n;
+    lanes(read, word, x, y, n);
+    return true;
+  }
+
+ private:
+  bool applies_, own_ = true;
+  std::array<std::uint32_t, pixels> read_{}, word_{};
+  std::array<std::int32_t, pixels> x_{}, y_{};
+};
 
 // The memory path. A source drawn in PSMZ32 (src.z) has logical pixel L in the word of PSMCT32
 // pixel zsigma(L) (gs_memory/overlay.hpp): the tile that fetches PSMCT32 pixel M is drawn at zsigma(M) (the sprites'
@@ -126,10 +156,9 @@ inline void channel_pass(band_renderer& r, const frame_buffers<memory_view>& fb,
   // primitives, section 3.3), so that the Z writes clear whole pages.
   const scissor pages = whole_pages(a);
   r.scalar_sprites = true;  // the texel fetches read the memory the sprites write (span_batch.hpp)
-  // In lanes where a page allows (fetched_page): not with the Z clear's writes between the fetches,
+  // In lanes where a page allows (fetch_pages): not with the Z clear's writes between the fetches,
   // nor with a texture buffer that is not the memory itself.
   const bool lanes = r.vectorised() && !z_clear && (!buffered || tb == gs::texture_buffer::per_fragment);
-  const std::array<std::uint32_t, 256> words = clut_words(clut);
   // The byte of the page (at TBP0 = 0) each sprite pixel fetches, through CLAMP_1 and the PSMT8
   // address: sprite k's pixel (dx, dy) at 16·k + 8·dy + dx. The sprites and their texels are the
   // same on every page, which only moves TBP0 (texel_addresses::byte adds it).
@@ -148,6 +177,19 @@ inline void channel_pass(band_renderer& r, const frame_buffers<memory_view>& fb,
         const auto v = gs::mem::wrap_texel(f.CLAMP.WMT, sp.v0 + dy, fixed::u4::literal(6), f.CLAMP.MINV, f.CLAMP.MAXV);
         fetched[16 * k + static_cast<std::size_t>(8 * dy + dx)] = fb.page_as_t8->byte(u, v, 0);
       }
+  std::optional<fetch_pages> pattern;
+  std::array<std::uint32_t, 256> words{};
+  if (lanes) {
+    pattern.emplace(f, fetched, src, dst, [&](const gs::mem::fetch_sprite& sp) {
+      const int mx = static_cast<int>(sp.x0), my = static_cast<int>(sp.y0);
+      return src.z ? gs::mem::zsigma(mx, my) : std::array<int, 2>{mx, my};
+    });
+    if (pattern->applies()) {
+      words = clut_words(clut);
+    } else {
+      pattern.reset();
+    }
+  }
   for (int py = a.y0 / 32; py * 32 < a.y1; ++py)
     for (int px = a.x0 / 64; px * 64 < a.x1; ++px) {
       const std::uint32_t page = static_cast<std::uint32_t>(px) + static_cast<std::uint32_t>(py) * src.bw;
@@ -158,7 +200,7 @@ inline void channel_pass(band_renderer& r, const frame_buffers<memory_view>& fb,
         const int mx = px * 64 + static_cast<int>(sp.x0), my = py * 32 + static_cast<int>(sp.y0);
         return src.z ? gs::mem::zsigma(mx, my) : std::array<int, 2>{mx, my};
       };
-      if (lanes && fetched_page<Pass>(r, colour, words, f, fetched, tex.BP.value(), dst, corner)) continue;
+      if (pattern && pattern->draw<Pass>(r, colour, words, px, py, tex.BP.value() / 32, dst, a)) continue;
       gs::mem::texture_page_buffer texels(buffered ? tb : gs::texture_buffer::per_fragment, mem,
                                           (src.bp + 32 * page) * 256, gs::mem::page_bytes);
       for (std::size_t k = 0; k < f.sprites.size(); ++k) {
