@@ -234,6 +234,8 @@ class band_renderer {
         }
         ops_ += n * static_cast<std::size_t>(r.y1 - r.y0);
         return;
+      } else if (fb.address != nullptr) {
+        return memory_rows(batch_registers<Pass>, cf, r, texel, fb);
       }
       span_batch batch(batch_registers<Pass>, o_.model);
       rasterise_sprite({r.x0 * 16, r.y0 * 16}, {r.x1 * 16, r.y1 * 16}, r, [&](int x, int y) {
@@ -359,6 +361,9 @@ class band_renderer {
   template <class FB>
   [[gnu::noinline, gnu::flatten]] void draw_spans(const gs::gs_registers& regs, const texture_ref* tex,
                                                   const std::vector<tri_attr>& attr, const FB& fb, triangle_range tris);
+  template <class Texel>
+  void memory_rows(const gs::gs_registers& regs, const gs::fragment_colour& cf, scissor r, Texel&& texel,
+                   const memory_view& fb);
   bool span_engine(const gs::gs_registers& regs, const tri_attr& a, const simd::nearest_texture& tex,
                    std::span<const run> rs, const simd::span_target& fb);
 

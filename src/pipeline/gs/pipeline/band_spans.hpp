@@ -1,5 +1,6 @@
-// pipeline/band_spans.hpp — band_renderer's triangle passes in SIMD lanes (included at the end of
-// band_renderer.hpp): the cached runs through the span engine (gs_simd/span_draw.hpp) where it
+// pipeline/band_spans.hpp — band_renderer's passes in SIMD lanes (included at the end of
+// band_renderer.hpp): the memory path's sprite rows through the address tables, and a triangle pass's
+// cached runs through the span engine (gs_simd/span_draw.hpp) where it
 // applies (on the memory path through the buffers' address tables), else walked by
 // gs::attribute_walker into span_batch.
 #pragma once
@@ -89,6 +90,27 @@ template <class FB>
     });
     batch.flush();
   }
+}
+
+// A sprite's rectangle r on the memory path, row by row through the span engine's sprite row: each row's
+// words through the buffer's address tables (distinct within a row, read before any is written, as
+// span_batch reads them), drawn and stored back.
+template <class Texel>
+void band_renderer::memory_rows(const gs::gs_registers& regs, const gs::fragment_colour& cf, scissor r, Texel&& texel,
+                                const memory_view& fb) {
+  const auto n = static_cast<std::size_t>(r.x1 - r.x0);
+  scratch<std::uint32_t> store(3 * n);
+  store->resize(3 * n);
+  std::uint32_t *at = store->data(), *words = at + n, *texels = words + n;
+  const std::uint32_t *column = fb.address->columns() + r.x0, mask = fb.address->mask();
+  for (int y = r.y0; y < r.y1; ++y) {
+    const std::uint32_t row = fb.address->rows()[y];
+    for (std::size_t k = 0; k < n; ++k) at[k] = (row + column[k]) & mask, words[k] = fb.words[at[k]];
+    for (int x = r.x0; x < r.x1; ++x) texels[x - r.x0] = texel(x, y).to_u32();
+    simd::span_row(regs, o_.model, cf, texels, words, r.x0, y, n);
+    for (std::size_t k = 0; k < n; ++k) fb.words[at[k]] = words[k];
+  }
+  ops_ += n * static_cast<std::size_t>(r.y1 - r.y0);
 }
 
 // A triangle's runs through the span engine (gs_simd/span_draw.hpp) when it is in its domain.
