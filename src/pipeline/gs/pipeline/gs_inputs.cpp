@@ -13,6 +13,7 @@
 #include "gs_packets/interpreter.hpp"
 #include "pipeline/encoders.hpp"
 #include "pipeline/pass_table.hpp"
+#include "pipeline/table_cache.hpp"
 
 namespace gsdot3::pipeline {
 
@@ -217,8 +218,9 @@ gs_inputs upload_inputs(gs::mem::local_memory& m, const gs_inputs& direct, std::
   gs_inputs in = place_inputs(direct, first);
   auto tables = [&in, &direct] {
     auto addresses = [](const gs::mem::buffer& b, int w, int h) {
-      return std::make_shared<const gs::mem::texel_addresses>(b.PSM, b.BW.value(), static_cast<std::uint32_t>(w),
-                                                              static_cast<std::uint32_t>(h));
+      return detail::cached_table<gs::mem::texel_addresses>(b.PSM, static_cast<std::uint32_t>(b.BW.value()),
+                                                            static_cast<std::uint32_t>(w),
+                                                            static_cast<std::uint32_t>(h));
     };
     if (in.window_first == 0)
       for (const gs::mem::buffer& at : in.nm_at)

@@ -59,6 +59,7 @@
 #include "pipeline/gs_pass.hpp"
 #include "pipeline/pass_table.hpp"
 #include "pipeline/scratch.hpp"
+#include "pipeline/table_cache.hpp"
 
 namespace gsdot3::pipeline {
 
@@ -367,14 +368,16 @@ frame render(const scene& s, const prepared_scene& ps, method m, const render_op
     fb.dpb.z = in_z_layout(buffer_role::dpb, o.dpb_clear);
     fb.lab.z = in_z_layout(buffer_role::lab, o.dpb_clear);
     // The inner loops' addresses tabulated over whole pages (gs_memory/fast_address.hpp).
-    const gs::mem::texel_addresses page_as_t8(gs::mem::psm::PSMT8, 2 * fbw, 128, 64);  // channel_pass's TBW
-    fb.page_as_t8 = &page_as_t8;
+    const auto page_as_t8 = cached_table<gs::mem::texel_addresses>(gs::mem::psm::PSMT8, 2 * fbw, std::uint32_t{128},
+                                                                   std::uint32_t{64});  // channel_pass's TBW
+    fb.page_as_t8 = page_as_t8.get();
     fb.alpha_plane[1] = memory_view{memory.words(), 32 * layout.z(), fbw, false};
-    std::vector<gs::mem::row_column_address> addresses;
-    addresses.reserve(6);
+    std::vector<std::shared_ptr<const gs::mem::row_column_address>> addresses;
+    const auto rows = 32 * static_cast<std::uint32_t>((ps.height + 31) / 32);
     for (memory_view* v : {&fb.dpb, &fb.lab, &fb.diff, &fb.out, &fb.zb.memory, &fb.alpha_plane[1]})
-      v->address = &addresses.emplace_back(v->layout(), v->bp, v->bw, 64 * fbw,
-                                           32 * static_cast<std::uint32_t>((ps.height + 31) / 32));
+      v->address =
+          addresses.emplace_back(cached_table<gs::mem::row_column_address>(v->layout(), v->bp, v->bw, 64 * fbw, rows))
+              .get();
     fb.alpha_plane[0] = fb.dpb, fb.alpha_plane[2] = fb.out;  // with their address tables
     render_options one = o;
     // Draw order is the model's: the z-trick clears; the one-buffer variant's alpha plane in the Z
