@@ -283,33 +283,9 @@ class band_renderer {
     if (z_.in_memory) return fill_band(z_.memory, 0, 0xFF000000u);  // PSMZ24: bits 0-23
     fill_band(z_.rows, 0, 0xFF000000u);
   }
-  // v into the band's pixels of fb, the bits of `keep` kept. A memory buffer's pages that lie wholly in
-  // the band (a 32-bit page is 2048 words in a row, FBP a whole page) are set in memory order.
+  // v into the band's pixels of fb, the bits of `keep` kept (band_spans.hpp).
   template <class FB>
-  void fill_band(const FB& fb, std::uint32_t v, std::uint32_t keep) {
-    auto merge = [&](std::uint32_t& w) { w = (w & keep) | (v & ~keep); };
-    scissor pages{};  // the band's whole pages, in pixels (empty on the value path)
-    if constexpr (std::is_same_v<FB, memory_view>) {
-      if (fb.address != nullptr && fb.bp % 32 == 0)
-        pages = {(band_.x0 + 63) / 64 * 64, (band_.y0 + 31) / 32 * 32, band_.x1 / 64 * 64, band_.y1 / 32 * 32};
-      for (int py = pages.y0; py < pages.y1; py += 32)
-        for (int px = pages.x0; px < pages.x1; px += 64) {
-          std::uint32_t* page = &fb(px, py) - (&fb(px, py) - fb.words) % 2048;
-          for (std::size_t k = 0; k < 2048; ++k) merge(page[k]);
-        }
-    }
-    for (int y = band_.y0; y < band_.y1; ++y) {
-      const bool paged = y >= pages.y0 && y < pages.y1 && pages.x0 < pages.x1;
-      if (std::is_same_v<FB, row_view> && keep == 0 && band_.x0 < band_.x1) {
-        std::fill(&fb(band_.x0, y), &fb(band_.x0, y) + (band_.x1 - band_.x0), v);
-        continue;
-      }
-      for (int x = band_.x0; x < band_.x1; ++x) {
-        if (paged && x == pages.x0) x = pages.x1;
-        if (x < band_.x1) merge(fb(x, y));
-      }
-    }
-  }
+  void fill_band(const FB& fb, std::uint32_t v, std::uint32_t keep);
 
   // Whether (x, y) is a pixel of the frame: sprites clipped to whole pages (the z-trick modes' Z clear,
   // channel_pass.hpp) also draw the buffer's pixels past the frame's right and bottom edges, which the

@@ -1,8 +1,7 @@
 // pipeline/band_spans.hpp — band_renderer's passes in SIMD lanes (included at the end of
-// band_renderer.hpp): the memory path's sprite rows through the address tables, and a triangle pass's
-// cached runs through the span engine (gs_simd/span_draw.hpp) where it
-// applies (on the memory path through the buffers' address tables), else walked by
-// gs::attribute_walker into span_batch.
+// band_renderer.hpp): the fills of a band, the memory path's sprite rows through the address tables, and a triangle
+// pass's cached runs through the span engine (gs_simd/span_draw.hpp) where it applies (on the memory path through the
+// buffers' address tables), else walked by gs::attribute_walker into span_batch.
 #pragma once
 
 #include <algorithm>
@@ -89,6 +88,42 @@ template <class FB>
       if (passes_later_depth_test(ps_.triangles[t], x, y)) add(w, x, y);
     });
     batch.flush();
+  }
+}
+
+// v into the band's pixels of fb, the bits of `keep` kept. A memory buffer's pages that lie wholly in
+// the band (a 32-bit page is 2048 words in a row, FBP a whole page) are set in memory order.
+template <class FB>
+void band_renderer::fill_band(const FB& fb, std::uint32_t v, std::uint32_t keep) {
+  auto merge = [&](std::uint32_t& w) { w = (w & keep) | (v & ~keep); };
+  scissor pages{};  // the band's whole pages, in pixels (empty on the value path)
+  if constexpr (std::is_same_v<FB, memory_view>) {
+    if (fb.address != nullptr && fb.bp % 32 == 0)
+      pages = {(band_.x0 + 63) / 64 * 64, (band_.y0 + 31) / 32 * 32, band_.x1 / 64 * 64, band_.y1 / 32 * 32};
+    for (int py = pages.y0; py < pages.y1; py += 32)
+      for (int px = pages.x0; px < pages.x1; px += 64) {
+        std::uint32_t* page = &fb(px, py) - (&fb(px, py) - fb.words) % 2048;
+        for (std::size_t k = 0; k < 2048; ++k) merge(page[k]);
+      }
+  }
+  for (int y = band_.y0; y < band_.y1; ++y) {
+    const bool paged = y >= pages.y0 && y < pages.y1 && pages.x0 < pages.x1;
+    if (std::is_same_v<FB, row_view> && keep == 0 && band_.x0 < band_.x1) {
+      std::fill(&fb(band_.x0, y), &fb(band_.x0, y) + (band_.x1 - band_.x0), v);
+      continue;
+    }
+    auto part = [&](int x0, int x1) {
+      if constexpr (std::is_same_v<FB, memory_view>) {
+        fb.row(y, x0, x1, [&](int, std::uint32_t& w) { merge(w); });
+      } else {
+        for (int x = x0; x < x1; ++x) merge(fb(x, y));
+      }
+    };
+    if (paged) {
+      part(band_.x0, pages.x0), part(pages.x1, band_.x1);
+    } else {
+      part(band_.x0, band_.x1);
+    }
   }
 }
 

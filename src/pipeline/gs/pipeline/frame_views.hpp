@@ -49,6 +49,19 @@ struct memory_view {
     const auto ux = static_cast<std::uint32_t>(x), uy = static_cast<std::uint32_t>(y);
     return words[address ? address->unit(ux, uy) : gs::mem::tables::unit_address(layout(), bp, bw, ux, uy)];
   }
+  // f(x, word of (x, y)) for x0 <= x < x1: the tables' pointers and row read once, outside the loop
+  // (through operator() every store of f's makes the compiler load them again).
+  template <class F>
+  void row(int y, int x0, int x1, F&& f) const {
+    if (address == nullptr) {
+      for (int x = x0; x < x1; ++x) f(x, (*this)(x, y));
+      return;
+    }
+    const std::uint32_t r = address->rows()[y], m = address->mask();
+    const std::uint32_t* column = address->columns();
+    std::uint32_t* w = words;
+    for (int x = x0; x < x1; ++x) f(x, w[(r + column[x]) & m]);
+  }
 };
 
 // The span engine's view of a frame buffer (gs_simd/span_draw.hpp); a memory_view's needs `address`.

@@ -285,7 +285,8 @@ std::size_t render_band(const prepared_scene& ps, const render_options& o, const
           std::fill(row, row + (band.x1 - band.x0), std::uint8_t{0x80});
           if (y >= drawn.y0 && y < drawn.y1) {
             if constexpr (in_memory(FB{})) {
-              for (int x = drawn.x0; x < drawn.x1; ++x) row[x - band.x0] = static_cast<std::uint8_t>(dpb(x, y) & 0xFF);
+              dpb.row(y, drawn.x0, drawn.x1,
+                      [&](int x, std::uint32_t w) { row[x - band.x0] = static_cast<std::uint8_t>(w & 0xFFu); });
             } else {
               low_bytes(&dpb(drawn.x0, y), row + (drawn.x0 - band.x0), drawn.x1 - drawn.x0);
             }
@@ -299,7 +300,7 @@ std::size_t render_band(const prepared_scene& ps, const render_options& o, const
         for (int y = band.y0; y < band.y1; ++y) {
           std::uint32_t* row = &result.colour[r.index(band.x0, y)];
           if constexpr (in_memory(FB{})) {
-            for (int x = band.x0; x < band.x1; ++x) row[x - band.x0] = out(x, y) | 0xFF000000u;
+            out.row(y, band.x0, band.x1, [&](int x, std::uint32_t w) { row[x - band.x0] = w | 0xFF000000u; });
           } else {
             opaque(&out(band.x0, y), row, band.x1 - band.x0);
           }
