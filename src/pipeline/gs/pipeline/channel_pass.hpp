@@ -5,7 +5,6 @@
 // output. Internal to render.cpp.
 #pragma once
 
-#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <optional>
@@ -177,13 +176,15 @@ inline void channel_pass(band_renderer& r, const frame_buffers<memory_view>& fb,
         const auto v = gs::mem::wrap_texel(f.CLAMP.WMT, sp.v0 + dy, fixed::u4::literal(6), f.CLAMP.MINV, f.CLAMP.MAXV);
         fetched[16 * k + static_cast<std::size_t>(8 * dy + dx)] = fb.page_as_t8->byte(u, v, 0);
       }
+  // Where sprite sp of page (px, py) is drawn: the PSMCT32 pixel it fetches, in the Z layout through zsigma.
+  auto drawn_at = [&](const gs::mem::fetch_sprite& sp, int px, int py) {
+    const int mx = px * 64 + static_cast<int>(sp.x0), my = py * 32 + static_cast<int>(sp.y0);
+    return src.z ? gs::mem::zsigma(mx, my) : std::array<int, 2>{mx, my};
+  };
   std::optional<fetch_pages> pattern;
   std::array<std::uint32_t, 256> words{};
   if (lanes) {
-    pattern.emplace(f, fetched, src, dst, [&](const gs::mem::fetch_sprite& sp) {
-      const int mx = static_cast<int>(sp.x0), my = static_cast<int>(sp.y0);
-      return src.z ? gs::mem::zsigma(mx, my) : std::array<int, 2>{mx, my};
-    });
+    pattern.emplace(f, fetched, src, dst, [&](const gs::mem::fetch_sprite& sp) { return drawn_at(sp, 0, 0); });
     if (pattern->applies()) {
       words = clut_words(clut);
     } else {
@@ -195,18 +196,13 @@ inline void channel_pass(band_renderer& r, const frame_buffers<memory_view>& fb,
       const std::uint32_t page = static_cast<std::uint32_t>(px) + static_cast<std::uint32_t>(py) * src.bw;
       const gs::mem::buffer tex{fixed::uint<14>::from_wrapped(src.bp + 32 * page),
                                 fixed::uint<6>::from_wrapped(2 * src.bw), gs::mem::psm::PSMT8};
-      // Where sprite k is drawn: the PSMCT32 pixel it fetches, in the Z layout through zsigma.
-      auto corner = [&](const gs::mem::fetch_sprite& sp) {
-        const int mx = px * 64 + static_cast<int>(sp.x0), my = py * 32 + static_cast<int>(sp.y0);
-        return src.z ? gs::mem::zsigma(mx, my) : std::array<int, 2>{mx, my};
-      };
       if (pattern && pattern->draw<Pass>(r, colour, words, px, py, tex.BP.value() / 32, dst, a)) continue;
       gs::mem::texture_page_buffer texels(buffered ? tb : gs::texture_buffer::per_fragment, mem,
                                           (src.bp + 32 * page) * 256, gs::mem::page_bytes);
       for (std::size_t k = 0; k < f.sprites.size(); ++k) {
         const gs::mem::fetch_sprite& sp = f.sprites[k];
         const std::uint32_t* sprite_texels = &fetched[16 * k];
-        const std::array<int, 2> drawn = corner(sp);
+        const std::array<int, 2> drawn = drawn_at(sp, px, py);
         const int x0 = drawn[0], y0 = drawn[1];  // plain ints: clang 14 cannot capture structured bindings
         const int w = static_cast<int>(sp.x1 - sp.x0), h = static_cast<int>(sp.y1 - sp.y0);
         r.sprite_rect<Pass>(
