@@ -38,6 +38,15 @@ struct rgba_v {
   V r, g, b, a;
 };
 HWY_INLINE rgba_v unpack(V word) { return {byte_of(word, 0), byte_of(word, 1), byte_of(word, 2), byte_of(word, 3)}; }
+// One colour in every lane: a flat colour's four 8.7 channels.
+HWY_INLINE rgba_v flat(const gs::fragment_colour& c) {
+  return {set(c.r.value()), set(c.g.value()), set(c.b.value()), set(c.a.value())};
+}
+// Byte b of the GS local memory held as 32-bit words (byte b = bits 8·(b % 4) of word b / 4, as
+// gs::mem::local_memory::byte reads it).
+HWY_INLINE std::uint32_t memory_byte(const std::uint32_t* memory, std::uint32_t b) {
+  return (memory[b >> 2] >> (8 * (b & 3))) & 0xFFu;
+}
 // gs::rgba8::to_u32: A8B8G8R8.
 HWY_INLINE V pack32(const rgba_v& c) {
   return hn::Or(hn::Or(c.r, hn::ShiftLeft<8>(c.g)), hn::Or(hn::ShiftLeft<16>(c.b), hn::ShiftLeft<24>(c.a)));

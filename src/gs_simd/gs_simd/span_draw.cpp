@@ -120,8 +120,7 @@ HWY_INLINE void resolve_texels(const nearest_texture& t, std::int32_t* at, std::
   if (t.memory != nullptr) {  // through the texture's address table into the local memory
     for (std::size_t k = 0; k < n; ++k) {
       const std::uint32_t b = (t.address[static_cast<std::uint32_t>(at[k])] + t.base) & t.mask;
-      const std::uint32_t word = t.memory[b >> 2];
-      at[k] = static_cast<std::int32_t>(t.words != nullptr ? t.words[(word >> (8 * (b & 3))) & 0xFF] : word);
+      at[k] = static_cast<std::int32_t>(t.words != nullptr ? t.words[memory_byte(t.memory, b)] : t.memory[b >> 2]);
     }
   } else if (t.index != nullptr) {
     for (std::size_t k = 0; k < n; ++k)
@@ -182,7 +181,7 @@ HWY_INLINE void draw_runs(const gs::gs_registers& regs, const gs::model_options&
   const bool textured = tex.textured();
   const plane_lanes pu(a.u), pv(a.v);
   const gs::fragment_colour c = a.colour_at(runs[0].x0, runs[0].y);  // a flat plane's one value
-  rgba_v cf{set(c.r.value()), set(c.g.value()), set(c.b.value()), set(c.a.value())};
+  rgba_v cf = flat(c);
   auto channel = [&](std::size_t i) { return Gouraud ? colour_lanes(a, i) : pu; };  // unused when flat
   const plane_lanes pr = channel(0), pg = channel(1), pb = channel(2), pa = channel(3);
   const V iota = hn::Iota(d, 0);

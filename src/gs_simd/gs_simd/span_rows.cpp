@@ -19,7 +19,7 @@ void span_row_lanes(const gs::gs_registers& regs, const gs::model_options& o, co
                     const std::uint32_t* texels, std::uint32_t* words, int x0, int y, std::size_t n) {
   const D d;
   const std::size_t lanes = hn::Lanes(d);
-  const rgba_v cf{set(c.r.value()), set(c.g.value()), set(c.b.value()), set(c.a.value())};
+  const rgba_v cf = flat(c);
   const V iota = hn::Iota(d, 0), yv = set(y);
   const auto* t = reinterpret_cast<const std::int32_t*>(texels);
   auto* row = reinterpret_cast<std::int32_t*>(words);
@@ -40,7 +40,7 @@ void span_channel_row_lanes(const gs::gs_registers& regs, const gs::model_option
                             int x0, int y, std::size_t n) {
   const D d;
   const std::size_t lanes = hn::Lanes(d);
-  const rgba_v cf{set(c.r.value()), set(c.g.value()), set(c.b.value()), set(c.a.value())};
+  const rgba_v cf = flat(c);
   const V iota = hn::Iota(d, 0), yv = set(y);
   const auto* s = reinterpret_cast<const std::int32_t*>(src);
   const auto* table = reinterpret_cast<const std::int32_t*>(clut);
@@ -69,7 +69,7 @@ void span_fetched_lanes(const gs::gs_registers& regs, const gs::model_options& o
                         const std::int32_t* x, const std::int32_t* y, std::size_t n) {
   const D d;
   const std::size_t lanes = hn::Lanes(d);
-  const rgba_v cf{set(c.r.value()), set(c.g.value()), set(c.b.value()), set(c.a.value())};
+  const rgba_v cf = flat(c);
   std::uint32_t* page = memory + word_base;
   constexpr std::size_t chunk = 256;
   alignas(64) std::int32_t texel[chunk], old[chunk];
@@ -77,7 +77,7 @@ void span_fetched_lanes(const gs::gs_registers& regs, const gs::model_options& o
     const std::size_t m = std::min(chunk, n - first);
     for (std::size_t k = 0; k < m; ++k) {
       const std::uint32_t b = read_base + read[first + k];
-      texel[k] = static_cast<std::int32_t>(clut[(memory[b >> 2] >> (8 * (b & 3))) & 0xFF]);
+      texel[k] = static_cast<std::int32_t>(clut[memory_byte(memory, b)]);
       old[k] = static_cast<std::int32_t>(page[word[first + k]]);
     }
     const std::size_t padded = (m + lanes - 1) / lanes * lanes;

@@ -102,7 +102,7 @@ void band_renderer::fill_band(const FB& fb, std::uint32_t v, std::uint32_t keep)
       pages = {(band_.x0 + 63) / 64 * 64, (band_.y0 + 31) / 32 * 32, band_.x1 / 64 * 64, band_.y1 / 32 * 32};
     for (int py = pages.y0; py < pages.y1; py += 32)
       for (int px = pages.x0; px < pages.x1; px += 64) {
-        std::uint32_t* page = &fb(px, py) - (&fb(px, py) - fb.words) % 2048;
+        std::uint32_t* page = fb.words + fb.page_of(px, py);
         for (std::size_t k = 0; k < 2048; ++k) merge(page[k]);
       }
   }

@@ -90,7 +90,7 @@ class fetch_pages {
       for (std::size_t j = 0; j < 16; ++j) {
         const std::size_t i = 16 * k + j;
         x_[i] = at[0] + static_cast<int>(j % 8), y_[i] = at[1] + static_cast<int>(j / 8);
-        read_[i] = fetched[i], word_[i] = static_cast<std::uint32_t>(&dst(x_[i], y_[i]) - dst.words) % 2048;
+        read_[i] = fetched[i], word_[i] = dst.word_of(x_[i], y_[i]) - dst.page_of(x_[i], y_[i]);
         applies_ = applies_ && read_[i] < gs::mem::page_bytes && x_[i] >= 0 && x_[i] < 64 && y_[i] >= 0 && y_[i] < 32;
         own_ = own_ && read_[i] / 4 == word_[i];
       }
@@ -105,7 +105,7 @@ class fetch_pages {
     static constexpr gs::gs_registers regs = Pass.registers();
     const int x0 = 64 * px, y0 = 32 * py;
     const auto read_base = src_page * gs::mem::page_bytes % gs::mem::memory_bytes;
-    const auto word_base = static_cast<std::uint32_t>(&dst(x0, y0) - dst.words) / 2048 * 2048;
+    const std::uint32_t word_base = dst.page_of(x0, y0);
     if (read_base / 4 == word_base && !own_) return false;
     const gs::fragment_colour cf = gs::fragment_colour::flat(colour);
     auto lanes = [&](const auto& read, const auto& word, const auto& x, const auto& y, std::size_t n) {

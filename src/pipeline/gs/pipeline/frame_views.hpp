@@ -49,6 +49,10 @@ struct memory_view {
     const auto ux = static_cast<std::uint32_t>(x), uy = static_cast<std::uint32_t>(y);
     return words[address ? address->unit(ux, uy) : gs::mem::tables::unit_address(layout(), bp, bw, ux, uy)];
   }
+  // The word of (x, y) (its index in `words`), and the first word of its page: with bp on a whole
+  // page, a 32-bit layout's 8 KiB page is 2048 words in a row (fill_band, fetch_pages).
+  std::uint32_t word_of(int x, int y) const noexcept { return static_cast<std::uint32_t>(&(*this)(x, y) - words); }
+  std::uint32_t page_of(int x, int y) const noexcept { return word_of(x, y) / 2048 * 2048; }
   // f(x, word of (x, y)) for x0 <= x < x1: the tables' pointers and row read once, outside the loop
   // (through operator() every store of f's makes the compiler load them again).
   template <class F>
