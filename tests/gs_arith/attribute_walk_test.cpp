@@ -14,6 +14,7 @@
 
 #include "gs_arith/attribute_walk.hpp"
 #include "gs_arith/rasteriser.hpp"
+#include "gs_arith/span_raster.hpp"
 
 namespace {
 
@@ -188,6 +189,25 @@ TEST(AttributeWalk, RowsAcrossTheDistanceClamp) {
       EXPECT_EQ(red_changes[1], 0);  // ... and not after it
     }
   }
+}
+
+// plane_walk::at along each row a triangle covers against plane::at, for the depth plane of the
+// renderer's set-up (make_plane, 16 fraction bits, clamped to 24 bits) and an exact plane: random
+// triangles in a 1024² window, random vertex depths from the whole 32-bit range (so the clamp acts).
+RC_GTEST_PROP(AttributeWalk, PlaneWalkAlongRowsIsPlaneAt, ()) {
+  const auto coordinate = rc::gen::inRange(0, 16 * 1024);
+  std::array<gs::xy124, 3> v;
+  for (gs::xy124& p : v) p = {*coordinate, *coordinate};
+  const gs::triangle_setup t = gs::setup_triangle(v);
+  if (t.area2 == 0) return;
+  std::array<std::int32_t, 3> z;
+  for (std::int32_t& k : z) k = *rc::gen::arbitrary<std::int32_t>();
+  for (const gs::plane& p : {gs::make_plane(v, z, 0, 0xFFFFFF), gs::make_exact_plane(v, z, -4096, 4096)})
+    gs::rasterise_spans(t, {0, 0, 1024, 1024}, [&](int y, int x0, int x1) {
+      gs::plane_walk w;
+      w.start(p, x0, y);
+      for (int x = x0; x < x1; ++x, w.step(p)) RC_ASSERT(w.at(p) == p.at(x, y));
+    });
 }
 
 }  // namespace

@@ -53,6 +53,11 @@ struct plane_walk {
     if (p.den != 0) w.step();
   }
   constexpr std::int64_t value(const plane& p) const noexcept { return p.den == 0 ? n >> 16 : p.lifted(w.q, w.r); }
+  // plane::at from the walked value.
+  constexpr std::int32_t at(const plane& p) const noexcept {
+    const std::int64_t v = value(p);
+    return static_cast<std::int32_t>(v < p.lo ? p.lo : v > p.hi ? p.hi : v);
+  }
 };
 
 // Whether a triangle's colour is one value over the whole plane (the header's reason).
@@ -83,7 +88,7 @@ class attribute_walker {
       started_ = true;
     }
     x_ = x, y_ = y;
-    return {flat_ ? cf_ : colour(x, y), clamped(a_.u, u_), clamped(a_.v, v_)};
+    return {flat_ ? cf_ : colour(x, y), u_.at(a_.u), v_.at(a_.v)};
   }
 
   // at(x0 + k, y) for k = 0 .. n − 1, in that order, as f(k, values): at()'s fast path for a run of a
@@ -101,8 +106,8 @@ class attribute_walker {
     const bool inside = unclamped(a_.u, u_, n - 1) && unclamped(a_.v, v_, n - 1);
     for (int k = 1; k < n; ++k) {
       step();
-      const std::int32_t u = inside ? static_cast<std::int32_t>(u_.value(a_.u)) : clamped(a_.u, u_);
-      const std::int32_t v = inside ? static_cast<std::int32_t>(v_.value(a_.v)) : clamped(a_.v, v_);
+      const std::int32_t u = inside ? static_cast<std::int32_t>(u_.value(a_.u)) : u_.at(a_.u);
+      const std::int32_t v = inside ? static_cast<std::int32_t>(v_.value(a_.v)) : v_.at(a_.v);
       f(k, values{flat_ ? cf_ : colour(x0 + k, y), u, v});
     }
     x_ = x0 + n - 1;
@@ -170,11 +175,6 @@ class attribute_walker {
       }
     }
     return {c[0], c[1], c[2], c[3]};
-  }
-  // plane::at from the walked value.
-  static constexpr std::int32_t clamped(const plane& p, const plane_walk& w) noexcept {
-    const std::int64_t v = w.value(p);
-    return static_cast<std::int32_t>(v < p.lo ? p.lo : v > p.hi ? p.hi : v);
   }
   // Whether the value here and `steps` pixels on both lie in [lo, hi] (then every step between does). An
   // exact plane's value k pixels on is q + k·dq + floor((r + k·dr) / den), with 0 <= r, dr < den: within

@@ -42,46 +42,82 @@ class band_renderer {
       : ps_(ps), o_(o), band_(band), sprite_area_(drawn_area(ps, band)), z_(z), visible_(visible) {}
 
   // Step 1: the LAB's ambient colour and the Z buffer (ZTST = GEQUAL, Z written), after the frame
-  // program's clears of both; then, on the cached path, the fragments every later pass draws.
+  // program's clears of both; then, on the cached path, the runs every later pass draws. Depth is
+  // walked along each row (gs::plane_walk, equal to plane::at). On the SIMD path a value-level LAB's
+  // pixels go through simd::span_row, each row's passing pixels at a time (they are distinct pixels,
+  // and the LAB is not the Z buffer).
   template <class FB>
   [[gnu::flatten]] void depth_and_ambient(const FB& lab, gs::rgba8 ambient) {
     constexpr gs::gs_registers regs = passes::step1_ambient.registers();
     const gs::fragment_colour cf = gs::fragment_colour::flat(ambient);
+    constexpr bool rows = std::is_same_v<FB, row_view>;
+    const bool lanes = rows && vectorised();
+    scratch<std::uint32_t> no_texels(lanes ? static_cast<std::size_t>(band_.x1 - band_.x0) : 0);
+    if (lanes) no_texels->assign(static_cast<std::size_t>(band_.x1 - band_.x0), 0);
     for (std::size_t t = 0; t < ps_.triangles.size(); ++t) {
       const prepared_triangle& tri = ps_.triangles[t];
       gs::rasterise_spans(tri.setup, band_, [&](int y, int x0, int x1) {
-        for (int x = x0; x < x1; ++x) {
+        int from = x0;  // the SIMD path's passing pixels [from, x) not yet drawn
+        auto ambient_run = [&](int end) {
+          if constexpr (rows)
+            if (end > from)
+              simd::span_row(batch_registers<passes::step1_ambient>, o_.model, cf, no_texels->data(), &lab(from, y),
+                             from, y, static_cast<std::size_t>(end - from));
+        };
+        gs::plane_walk z;
+        z.start(tri.z, x0, y);
+        for (int x = x0; x < x1; ++x, z.step(tri.z)) {
           const gs::depth_result d = gs::depth_test(passes::depth_gequal, passes::z_written,
-                                                    static_cast<std::uint32_t>(tri.z.at(x, y)), z_.read(x, y));
-          if (!d.pass) continue;
+                                                    static_cast<std::uint32_t>(z.at(tri.z)), z_.read(x, y));
+          if (!d.pass) {
+            if (lanes) ambient_run(x);
+            from = x + 1;
+            continue;
+          }
           if (d.write_z) z_.write(x, y, d.z);
           visible_[index(x, y)] = static_cast<std::int32_t>(t);
-          lab(x, y) = gs_pixel(regs, gs::rgba8{}, cf, lab(x, y), x, y, o_.model);
+          if (!lanes) lab(x, y) = gs_pixel(regs, gs::rgba8{}, cf, lab(x, y), x, y, o_.model);
           ++ops_;
         }
+        if (lanes) ambient_run(x1);
       });
     }
-    if (o_.path == raster_path::cached) {
-      frags_.clear();
-      tri_frags_.assign(1, 0);
-      tri_runs_.assign(1, 0);
-      runs_.clear();
-      for (std::size_t t = 0; t < ps_.triangles.size();
-           ++t, tri_frags_.push_back(frags_.size()), tri_runs_.push_back(runs_.size())) {
-        const prepared_triangle& tri = ps_.triangles[t];
-        gs::rasterise_spans(tri.setup, band_, [&](int y, int x0, int x1) {
-          for (int x = x0; x < x1; ++x) {
-            if (!passes_later_depth_test(tri, x, y)) continue;
-            frags_.push_back(
-                {static_cast<std::int32_t>(t), static_cast<std::int16_t>(x), static_cast<std::int16_t>(y)});
-            if (runs_.size() > tri_runs_.back() && runs_.back().y == y && runs_.back().x0 + runs_.back().n == x)
-              ++runs_.back().n;
-            else
-              runs_.push_back({x, y, 1});
-          }
-        });
-      }
+    if (o_.path != raster_path::cached) return;
+    // The runs: a row's pixels that pass the later passes' depth test, adjacent ones merged.
+    runs_.clear();
+    tri_runs_.assign(1, 0);
+    frags_built_ = false;
+    for (std::size_t t = 0; t < ps_.triangles.size(); ++t, tri_runs_.push_back(runs_.size())) {
+      const prepared_triangle& tri = ps_.triangles[t];
+      gs::rasterise_spans(tri.setup, band_, [&](int y, int x0, int x1) {
+        gs::plane_walk z;
+        z.start(tri.z, x0, y);
+        int from = x0;
+        for (int x = x0; x < x1; ++x, z.step(tri.z)) {
+          if (gs::depth_test(passes::depth_gequal, passes::z_masked, static_cast<std::uint32_t>(z.at(tri.z)),
+                             z_.read(x, y))
+                  .pass)
+            continue;
+          if (x > from) runs_.push_back({from, y, x - from});
+          from = x + 1;
+        }
+        if (x1 > from) runs_.push_back({from, y, x1 - from});
+      });
     }
+  }
+  // The cached fragments (the runs pixel by pixel, in the same order): triangle t's are
+  // frags_[tri_frags_[t], tri_frags_[t + 1]). Built from the runs when first asked for after step 1.
+  const std::vector<fragment>& fragments() {
+    if (frags_built_) return frags_;
+    frags_.clear();
+    tri_frags_.assign(1, 0);
+    for (std::size_t t = 0; t + 1 < tri_runs_.size(); ++t, tri_frags_.push_back(frags_.size()))
+      for (std::size_t i = tri_runs_[t]; i < tri_runs_[t + 1]; ++i)
+        for (int k = 0; k < runs_[i].n; ++k)
+          frags_.push_back({static_cast<std::int32_t>(t), static_cast<std::int16_t>(runs_[i].x0 + k),
+                            static_cast<std::int16_t>(runs_[i].y)});
+    frags_built_ = true;
+    return frags_;
   }
 
   // A triangle pass (ZTST = GEQUAL, ZMSK = 1) over `tris` (a layer's, or all); a piece's (SCISSOR_1,
@@ -93,7 +129,7 @@ class band_renderer {
     constexpr gs::gs_registers regs = Pass.registers();
     const bool cached = piece == nullptr && o_.path == raster_path::cached;
     const std::vector<fragment> cut = cached ? std::vector<fragment>{} : fragments_of(piece, tris);
-    const std::span<const fragment> fs = cached ? of(frags_, tri_frags_, tris) : std::span<const fragment>(cut);
+    const std::span<const fragment> fs = cached ? of(fragments(), tri_frags_, tris) : std::span<const fragment>(cut);
     std::array<pixel_inputs, 64> in;  // the texels and colours of up to 64 fragments, fetched first
     for (std::size_t i = 0; i < fs.size(); i += in.size()) {
       const std::size_t n = std::min(in.size(), fs.size() - i);
@@ -124,11 +160,12 @@ class band_renderer {
   }
   // The fragments a triangle pass draws, in draw order: with a piece its triangles' in its rectangle
   // (cached, rows in order within each triangle), on the reference path rasterised again and tested.
-  [[gnu::noinline]] std::vector<fragment> fragments_of(const stream_piece* piece, triangle_range tris) const {
+  [[gnu::noinline]] std::vector<fragment> fragments_of(const stream_piece* piece, triangle_range tris) {
     std::vector<fragment> out;
     const scissor* clip = piece != nullptr ? &piece->area : nullptr;
     const triangle_range range = piece != nullptr ? piece->triangles : tris;  // a piece's: within its layer's
     if (o_.path == raster_path::cached) {
+      fragments();
       for (std::uint32_t t = range.first; t < range.end; ++t) {
         const auto end = frags_.begin() + static_cast<std::ptrdiff_t>(tri_frags_[t + 1]);
         auto f = std::lower_bound(frags_.begin() + static_cast<std::ptrdiff_t>(tri_frags_[t]), end, clip->y0,
@@ -168,7 +205,7 @@ class band_renderer {
       ++ops_;
     };
     if (o_.path == raster_path::cached) {
-      for (const fragment& f : frags_) shade(static_cast<std::size_t>(f.tri), f.x, f.y);
+      for (const fragment& f : fragments()) shade(static_cast<std::size_t>(f.tri), f.x, f.y);
       return;
     }
     for (std::size_t t = 0; t < ps_.triangles.size(); ++t)
@@ -363,6 +400,7 @@ class band_renderer {
   std::vector<fragment>& frags_ = *frag_store_;
   std::vector<run>& runs_ = *run_store_;
   std::vector<std::size_t>&tri_frags_ = *tri_frag_store_, &tri_runs_ = *tri_run_store_;
+  bool frags_built_ = false;
   std::size_t ops_ = 0;
 };
 

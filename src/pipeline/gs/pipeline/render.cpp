@@ -84,6 +84,10 @@ void with_regs(const pass_regs* r, F&& f) {
 template <class FB>
 std::size_t render_band(const prepared_scene& ps, const render_options& o, const gs_inputs& in,
                         const frame_program& prog, scissor band, frame_buffers<FB>& fb, frame& result) {
+  if constexpr (!in_memory(FB{}))  // the value path's buffers start at 0 (render_bands): the band's rows
+    for (const row_view* v : {&fb.dpb, &fb.lab, &fb.diff, &fb.out, &fb.zb.rows})
+      std::fill(v->words + static_cast<std::ptrdiff_t>(band.y0) * v->width,
+                v->words + static_cast<std::ptrdiff_t>(band.y1) * v->width, 0u);
   band_renderer r(ps, o, band, fb.zb, result.visible_triangle);
   // Tracing (render_options::trace, one band): at each checkpoint, its buffer and the pass's inputs.
   pass_record pending;
@@ -315,9 +319,9 @@ template <class FB>
 void render_bands(const prepared_scene& ps, const render_options& o, const gs_inputs& in, const frame_program& prog,
                   frame_buffers<FB>& fb, frame& result) {
   const std::size_t pixels = static_cast<std::size_t>(ps.width) * static_cast<std::size_t>(ps.height);
-  scratch<std::uint32_t> z(fb.zb.in_memory ? 0 : pixels);  // the value path's Z buffer
+  scratch<std::uint32_t> z(fb.zb.in_memory ? 0 : pixels);  // the value path's Z buffer, zeroed by the bands
   if (!fb.zb.in_memory) {
-    z->assign(pixels, 0);
+    z->resize(pixels);
     fb.zb.rows = row_view{z->data(), ps.width};
   }
   const int bands = o.trace != nullptr ? 1 : std::clamp(o.threads, 1, std::max(1, ps.height));
@@ -390,8 +394,9 @@ frame render(const scene& s, const prepared_scene& ps, method m, const render_op
     render_bands(ps, one, uploaded, build_frame_program(s, ps, m, o, uploaded), fb, result);
     *storage = std::move(memory).release();
   } else {
-    scratch<std::uint32_t> rows(4 * n);  // value level: DPB, LAB, diffuse, output, frame-sized each
-    rows->assign(4 * n, 0);
+    scratch<std::uint32_t> rows(4 *
+                                n);  // value level: DPB, LAB, diffuse, output, frame-sized each, zeroed by the bands
+    rows->resize(4 * n);
     frame_buffers<row_view> fb;
     row_view* views[4] = {&fb.dpb, &fb.lab, &fb.diff, &fb.out};
     for (std::size_t k = 0; k < 4; ++k) *views[k] = row_view{rows->data() + k * n, ps.width};
