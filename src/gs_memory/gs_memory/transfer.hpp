@@ -32,6 +32,7 @@
 
 #include "gs_memory/local_memory.hpp"
 #include "gs_memory/memory_registers.hpp"
+#include "gs_memory/swizzle_tables.hpp"
 
 namespace gs::mem {
 
@@ -40,6 +41,31 @@ constexpr std::uint64_t transfer_bytes(psm p, std::uint32_t rrw, std::uint32_t r
   const unsigned bits = value_bits(p);
   return (std::uint64_t{rrw} * rrh * bits + 7) / 8;
 }
+
+namespace detail {
+// The host -> local transfer of a w × h rectangle at (x0, y0) of a buffer whose pixel is one whole unit of
+// layout L (PSMCT32, PSMZ32: a 32-bit word; PSMT8: a byte), with the layout a constant: local_memory::write of
+// such a location replaces exactly its unit, so each value is stored at tables::unit_address_of directly.
+// tests/gs_memory/transfer_test.cpp checks it against write_pixel on random rectangles, BP and BW.
+template <layout L>
+void store_units(local_memory& m, std::uint32_t bp, std::uint32_t bw, std::uint32_t x0, std::uint32_t y0,
+                 std::uint32_t w, std::uint32_t h, const std::uint8_t* data) {
+  static_assert(unit_bits(L) == 32 || unit_bits(L) == 8);
+  std::uint32_t* words = m.words();
+  for (std::uint32_t y = y0; y < y0 + h; ++y)
+    for (std::uint32_t x = x0; x < x0 + w; ++x) {
+      const std::uint32_t unit = tables::unit_address_of<L>(bp, bw, x, y);
+      if constexpr (unit_bits(L) == 32) {
+        words[unit] = std::uint32_t{data[0]} | std::uint32_t{data[1]} << 8 | std::uint32_t{data[2]} << 16 |
+                      std::uint32_t{data[3]} << 24;
+        data += 4;
+      } else {
+        const unsigned shift = 8 * (unit % 4);
+        words[unit / 4] = (words[unit / 4] & ~(0xFFu << shift)) | std::uint32_t{*data++} << shift;
+      }
+    }
+}
+}  // namespace detail
 
 inline void host_to_local(local_memory& m, const bitbltbuf_reg& b, const trxpos_reg& pos, const trxreg_reg& reg,
                           const trxdir_reg& dir, std::span<const std::uint8_t> data) {
@@ -52,6 +78,13 @@ inline void host_to_local(local_memory& m, const bitbltbuf_reg& b, const trxpos_
     throw std::invalid_argument("transfer: " + std::to_string(data.size()) + " bytes for " + std::to_string(w) + "x" +
                                 std::to_string(h) + " pixels, expected " +
                                 std::to_string(transfer_bytes(b.DPSM, w, h)));
+  const auto bp = static_cast<std::uint32_t>(b.DBP.value()), bw = static_cast<std::uint32_t>(b.DBW.value());
+  switch (b.DPSM) {  // a pixel that is one whole unit of its layout: stored directly
+    case psm::PSMCT32: return detail::store_units<layout::ct32>(m, bp, bw, x0, y0, w, h, data.data());
+    case psm::PSMZ32: return detail::store_units<layout::z32>(m, bp, bw, x0, y0, w, h, data.data());
+    case psm::PSMT8: return detail::store_units<layout::t8>(m, bp, bw, x0, y0, w, h, data.data());
+    default: break;
+  }
   const buffer dst{b.DBP, b.DBW, b.DPSM};
   const unsigned bits = value_bits(b.DPSM);
   std::uint64_t bit = 0;  // position in the host data
