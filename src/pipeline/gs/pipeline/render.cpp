@@ -39,7 +39,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <memory>
 #include <optional>
 #include <span>
 #include <stdexcept>
@@ -57,10 +56,10 @@
 #include "pipeline/frame_program.hpp"
 #include "pipeline/gs_inputs.hpp"
 #include "pipeline/lod.hpp"
+#include "pipeline/memory_buffers.hpp"
 #include "pipeline/gs_pass.hpp"
 #include "pipeline/pass_table.hpp"
 #include "pipeline/scratch.hpp"
-#include "pipeline/table_cache.hpp"
 
 namespace gsdot3::pipeline {
 
@@ -352,41 +351,25 @@ frame render(const scene& s, const prepared_scene& ps, method m, const render_op
   result.width = ps.width;
   result.height = ps.height;
   const std::size_t n = static_cast<std::size_t>(ps.width) * static_cast<std::size_t>(ps.height);
-  result.colour.assign(n, 0);
-  result.visible_triangle.assign(n, -1);
-  result.plain_triangle.assign(n, -1);
-  result.dot.assign(s.lights.size(), std::vector<std::uint8_t>(n, 0));
+  auto start_result = [&] {
+    result.colour.assign(n, 0);
+    result.visible_triangle.assign(n, -1);
+    result.plain_triangle.assign(n, -1);
+    result.dot.assign(s.lights.size(), std::vector<std::uint8_t>(n, 0));
+  };
   if (o.memory_path || o.dpb_clear != dpb_clear_mode::explicit_clear) {
-    // gs_inputs.hpp's buffer layout: the DPB (and in step 3 the diffuse layer), the LAB, the output
-    // (PSMCT32) and the Z buffer (PSMZ24), FBW = ceil(width / 64).
+    // The result's vectors are set by a second thread while this one clears the memory and uploads (neither
+    // reads them); both are done before the bands start.
+    std::jthread result_set;  // joins when it goes out of scope, also when an upload throws
+    if (o.threads > 1)
+      result_set = std::jthread(start_result);
+    else
+      start_result();
     const buffer_layout layout = buffer_layout_for(ps.width, ps.height);
-    const std::uint32_t fbw = layout.fbw;
     scratch<std::uint32_t> storage(gs::mem::memory_bytes / 4);
     gs::mem::local_memory memory(std::move(*storage));
-    frame_buffers<memory_view> fb;
-    fb.memory = &memory;
-    fb.layout = layout;
-    fb.clear = o.dpb_clear;
-    fb.dpb = memory_view{memory.words(), 32 * layout.dpb(), fbw, false};
-    fb.lab = memory_view{memory.words(), 32 * layout.lab(), fbw, false};
-    fb.out = memory_view{memory.words(), 32 * layout.output(), fbw, false};
-    fb.diff = fb.dpb;
-    fb.zb.memory = memory_view{memory.words(), 32 * layout.z(), fbw, true};
-    fb.zb.in_memory = true;
-    fb.dpb.z = in_z_layout(buffer_role::dpb, o.dpb_clear);
-    fb.lab.z = in_z_layout(buffer_role::lab, o.dpb_clear);
-    // The inner loops' addresses tabulated over whole pages (gs_memory/fast_address.hpp).
-    const auto page_as_t8 = cached_table<gs::mem::texel_addresses>(gs::mem::psm::PSMT8, 2 * fbw, std::uint32_t{128},
-                                                                   std::uint32_t{64});  // channel_pass's TBW
-    fb.page_as_t8 = page_as_t8.get();
-    fb.alpha_plane[1] = memory_view{memory.words(), 32 * layout.z(), fbw, false};
-    std::vector<std::shared_ptr<const gs::mem::row_column_address>> addresses;
-    const auto rows = 32 * static_cast<std::uint32_t>((ps.height + 31) / 32);
-    for (memory_view* v : {&fb.dpb, &fb.lab, &fb.diff, &fb.out, &fb.zb.memory, &fb.alpha_plane[1]})
-      v->address =
-          addresses.emplace_back(cached_table<gs::mem::row_column_address>(v->layout(), v->bp, v->bw, 64 * fbw, rows))
-              .get();
-    fb.alpha_plane[0] = fb.dpb, fb.alpha_plane[2] = fb.out;  // with their address tables
+    memory_buffers buffers(memory, layout, o.dpb_clear, ps.height);
+    frame_buffers<memory_view>& fb = buffers.fb;
     render_options one = o;
     // Draw order is the model's: the z-trick clears; the one-buffer variant's alpha plane in the Z
     // buffer's words, whose pixels are not the Z buffer's (another band's depth tests read them).
@@ -394,11 +377,13 @@ frame render(const scene& s, const prepared_scene& ps, method m, const render_op
     gs_inputs uploaded = upload_inputs(memory, in, layout.first_texture_block(), one.threads > 1);
     if (uploaded.window_first != 0) one.threads = 1;  // the pieces' uploads share the window
     start_stream(uploaded, ps, o, band_renderer::drawn_area(ps, {0, 0, ps.width, ps.height}));
+    if (result_set.joinable()) result_set.join();
     render_bands(ps, one, uploaded, build_frame_program(s, ps, m, o, uploaded), fb, result);
     *storage = std::move(memory).release();
   } else {
-    scratch<std::uint32_t> rows(4 *
-                                n);  // value level: DPB, LAB, diffuse, output, frame-sized each, zeroed by the bands
+    start_result();
+    // Value level: DPB, LAB, diffuse, output, frame-sized each, zeroed by the bands.
+    scratch<std::uint32_t> rows(4 * n);
     rows->resize(4 * n);
     frame_buffers<row_view> fb;
     row_view* views[4] = {&fb.dpb, &fb.lab, &fb.diff, &fb.out};
