@@ -4,8 +4,9 @@
 // the pixels the mesh's triangles cover in it, overdraw included (every triangle pass walks them). The split only
 // moves work between threads (Intel Xeon, 2 threads, 2026-12-07: the value path's four-pass frame 2.88 -> 2.81 ms
 // with per_covered 4, 2.79 with 2 and 8; the memory path's 6.33 -> 6.57 ms, so it splits by rows, per_covered 0);
-// every band draws its rows the same way wherever the cuts fall (pipeline_combinations
-// and pipeline_simd_frame compare 1, 2 and 3 threads with one).
+// every band draws its rows the same way wherever the cuts fall (pipeline_unit's scene tests compare frames drawn
+// at 2 to 5 threads with one thread's reference-path frame; pipeline_memory_path compares its frames at 1 to 4
+// threads with the value path's).
 #pragma once
 
 #include <algorithm>
