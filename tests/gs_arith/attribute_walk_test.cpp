@@ -192,17 +192,22 @@ TEST(AttributeWalk, RowsAcrossTheDistanceClamp) {
 }
 
 // plane_walk::at along each row a triangle covers against plane::at, for the depth plane of the
-// renderer's set-up (make_plane, 16 fraction bits, clamped to 24 bits) and an exact plane: random
-// triangles in a 1024² window, random vertex depths from the whole 32-bit range (so the clamp acts).
+// renderer's set-up (make_plane, 16 fraction bits: vertex depths of 24 bits) and an exact plane (vertex
+// values within ±2^20, the UV planes' range and more): random triangles in a 1024² window, each clamped
+// to a random [lo, hi] inside its values' range, so that the clamp acts at either end.
 RC_GTEST_PROP(AttributeWalk, PlaneWalkAlongRowsIsPlaneAt, ()) {
   const auto coordinate = rc::gen::inRange(0, 16 * 1024);
   std::array<gs::xy124, 3> v;
   for (gs::xy124& p : v) p = {*coordinate, *coordinate};
   const gs::triangle_setup t = gs::setup_triangle(v);
   if (t.area2 == 0) return;
-  std::array<std::int32_t, 3> z;
-  for (std::int32_t& k : z) k = *rc::gen::arbitrary<std::int32_t>();
-  for (const gs::plane& p : {gs::make_plane(v, z, 0, 0xFFFFFF), gs::make_exact_plane(v, z, -4096, 4096)})
+  std::array<std::int32_t, 3> z, e;
+  for (std::int32_t& k : z) k = *rc::gen::inRange(0, 0x1000000);
+  for (std::int32_t& k : e) k = *rc::gen::inRange(-(1 << 20), 1 << 20);
+  const std::int32_t zlo = *rc::gen::inRange(0, 1 << 23), elo = *rc::gen::inRange(-(1 << 20), 0);
+  const gs::plane depth = gs::make_plane(v, z, zlo, zlo + *rc::gen::inRange(0, 1 << 23));
+  const gs::plane exact = gs::make_exact_plane(v, e, elo, elo + *rc::gen::inRange(0, 1 << 21));
+  for (const gs::plane& p : {depth, exact})
     gs::rasterise_spans(t, {0, 0, 1024, 1024}, [&](int y, int x0, int x1) {
       gs::plane_walk w;
       w.start(p, x0, y);
