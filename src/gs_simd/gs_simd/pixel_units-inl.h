@@ -15,6 +15,7 @@
 
 #include <cstdint>
 
+#include "gs_arith/depth_test.hpp"
 #include "gs_arith/pixel_pipeline.hpp"
 #include "hwy/highway.h"
 
@@ -228,6 +229,30 @@ HWY_INLINE V frame_mask(gs::frame_psm psm, V fbmsk) {
 }
 // gs::masked_merge: a 1 in keep keeps the old bit.
 HWY_INLINE V masked_merge(V fresh, V old, V keep) { return hn::Or(hn::AndNot(keep, fresh), hn::And(old, keep)); }
+
+// gs::depth_test per lane: z the source depths (bits as unsigned), zd the stored words; zs the clamped
+// depths the Z buffer takes where `write`.
+struct depth_lanes {
+  M pass, write;
+  V zs;
+};
+HWY_INLINE depth_lanes depth_test(const gs::test_reg& t, const gs::zbuf_reg& zbuf, V z, V zd) {
+  const D d;
+  const hn::RebindToUnsigned<D> du;
+  const unsigned bits = gs::z_bits(zbuf.PSM);
+  const auto max = hn::Set(du, bits == 32 ? 0xFFFFFFFFu : (std::uint32_t{1} << bits) - 1);
+  const auto zs = hn::Min(hn::BitCast(du, z), max), stored = hn::And(hn::BitCast(du, zd), max);
+  M pass = hn::Eq(z, z);
+  if (t.ZTE) {
+    switch (t.ZTST) {
+      case gs::ztst::NEVER: pass = hn::FirstN(d, 0); break;
+      case gs::ztst::ALWAYS: break;
+      case gs::ztst::GEQUAL: pass = hn::RebindMask(d, hn::Not(hn::Lt(zs, stored))); break;
+      case gs::ztst::GREATER: pass = hn::RebindMask(d, hn::Gt(zs, stored)); break;
+    }
+  }
+  return {pass, zbuf.ZMSK ? hn::FirstN(d, 0) : pass, hn::BitCast(d, zs)};
+}
 
 // gs::pixel_pipeline's `out` for one vector of pixels: texel and dst are words, cf the four 8.7
 // channels, x and y the window coordinates.

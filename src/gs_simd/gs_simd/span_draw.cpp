@@ -237,6 +237,54 @@ HWY_INLINE void draw_runs(const gs::gs_registers& regs, const gs::model_options&
   }
 }
 
+// depth_rows (span_draw.hpp): a fixed-point plane's value n >> 16 is floor(n / 65536), the exact form's
+// lanes with den 65536 and no lift. The lanes are set up once for all rows; each row moves the walk from
+// the last. Lanes divide 64, so a vector's pass bits never straddle two words.
+std::size_t depth_rows_lanes(const gs::test_reg& test, const gs::zbuf_reg& zbuf, const gs::plane& p, std::uint32_t keep,
+                             const span_run* rows, std::size_t count, std::uint32_t* z, std::size_t stride,
+                             std::uint64_t* pass) {
+  const D d;
+  const std::size_t lanes = hn::Lanes(d);
+  const plane_lanes l = p.den == 0 ? plane_lanes(p.dx, p.dy, 65536, false, 0, p.lo, p.hi) : plane_lanes(p);
+  const V kept = set(static_cast<std::int32_t>(keep));
+  plane_walk_lanes walk;
+  std::size_t passed = 0;
+  for (std::size_t i = 0; i < count; ++i) {
+    const span_run& row = rows[i];
+    const auto n = static_cast<std::size_t>(row.n);
+    if (i == 0)
+      walk.start(l, p.base + p.dx * row.x0 + p.dy * row.y, row.x0, row.y);
+    else
+      walk.move(l, row.x0, row.y);
+    for (std::size_t w = 0; w < (n + 63) / 64; ++w) pass[w] = 0;
+    auto* words = reinterpret_cast<std::int32_t*>(z + static_cast<std::size_t>(row.y) * stride +
+                                                  static_cast<std::size_t>(row.x0));
+    for (std::size_t k = 0; k < n; k += lanes) {
+      if (k != 0) walk.step(l);
+      M tested = hn::FirstN(d, 0);
+      auto test_and_write = [&](V old) __attribute__((always_inline)) {
+        const depth_lanes t = depth_test(test, zbuf, walk.value(l), old);
+        tested = t.pass;
+        return hn::IfThenElse(t.write, masked_merge(t.zs, old, kept), old);
+      };
+      const std::size_t m = std::min(lanes, n - k);
+      if (m == lanes)
+        hn::StoreU(test_and_write(hn::LoadU(d, words + k)), d, words + k);
+      else
+        part_vector(words + k, m, test_and_write);
+      const M in = hn::And(tested, hn::FirstN(d, m));
+      std::uint8_t bytes[8] = {};
+      hn::StoreMaskBits(d, in, bytes);
+      std::uint64_t bits = 0;
+      for (std::size_t b = 0; b < (lanes + 7) / 8; ++b) bits |= std::uint64_t{bytes[b]} << (8 * b);
+      pass[k / 64] |= bits << (k % 64);
+      passed += hn::CountTrue(d, in);
+    }
+    pass += (n + 63) / 64;
+  }
+  return passed;
+}
+
 void span_triangle_lanes(const gs::gs_registers& regs, const gs::model_options& o, const gs::triangle_attributes& a,
                          const nearest_texture& tex, const span_run* runs, std::size_t count, const span_target& fb) {
   if (count == 0) return;
@@ -256,6 +304,7 @@ HWY_AFTER_NAMESPACE();
 namespace gsdot3::simd {
 
 HWY_EXPORT(span_triangle_lanes);
+HWY_EXPORT(depth_rows_lanes);
 
 namespace {
 
@@ -298,6 +347,18 @@ bool span_applies(const gs::triangle_attributes& a, int x0, int y0, int x1, int 
     if (!fits_lanes(sign * e.nx[i] * 2048, sign * e.det, n, x0, y0, x1, y1)) return false;
   }
   return true;
+}
+
+bool depth_row_applies(const gs::plane& p, int x0, int y0, int x1, int y1) noexcept {
+  if (x0 >= x1 || y0 >= y1) return true;
+  return fits_lanes(
+      p.dx, p.den == 0 ? 65536 : p.den, [&](int x, int y) { return p.base + p.dx * x + p.dy * y; }, x0, y0, x1, y1);
+}
+
+std::size_t depth_rows(const gs::test_reg& test, const gs::zbuf_reg& zbuf, const gs::plane& p, std::uint32_t keep,
+                       const span_run* rows, std::size_t count, std::uint32_t* z, std::size_t stride,
+                       std::uint64_t* pass) {
+  return HWY_DYNAMIC_DISPATCH(depth_rows_lanes)(test, zbuf, p, keep, rows, count, z, stride, pass);
 }
 
 void span_triangle(const gs::gs_registers& regs, const gs::model_options& o, const gs::triangle_attributes& a,

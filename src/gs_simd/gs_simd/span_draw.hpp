@@ -13,6 +13,7 @@
 #include <cstdint>
 
 #include "gs_arith/attribute_setup.hpp"
+#include "gs_arith/depth_test.hpp"
 #include "gs_arith/options.hpp"
 #include "gs_arith/registers.hpp"
 
@@ -95,6 +96,20 @@ void span_row(const gs::gs_registers& regs, const gs::model_options& o, const gs
 void span_channel_row(const gs::gs_registers& regs, const gs::model_options& o, const gs::fragment_colour& cf,
                       const std::uint32_t* src, unsigned channel, const std::uint32_t* clut, std::uint32_t* words,
                       int x0, int y, std::size_t n);
+
+// A depth pass over rows of one plane (step 1's, or the later passes' test): row i is pixels (rows[i].x0
+// + k, rows[i].y), k < rows[i].n, whose stored words are z[y·stride + x] (a row-major Z buffer). Pixel
+// k's source depth is p.at(x, y) (a fixed-point plane, den 0, or an exact one) and d =
+// gs::depth_test(test, zbuf, that depth, its word). Row i's pass bits start at word w_i of `pass`
+// (w_0 = 0, w_i+1 = w_i + ceil(n_i / 64)), bit k % 64 of word w_i + k / 64 set to d.pass (all its
+// words overwritten); where d.write_z, the word becomes (word & keep) | (d.z & ~keep). Rows are done in
+// order. Returns how many pixels pass. Requires depth_row_applies(p, ...) on a rectangle holding them.
+std::size_t depth_rows(const gs::test_reg& test, const gs::zbuf_reg& zbuf, const gs::plane& p, std::uint32_t keep,
+                       const span_run* rows, std::size_t count, std::uint32_t* z, std::size_t stride,
+                       std::uint64_t* pass);
+// Whether the plane's numerator and quotients fit depth_rows' 32-bit lanes on the rectangle [x0, x1) ×
+// [y0, y1) (as span_applies' planes).
+bool depth_row_applies(const gs::plane& p, int x0, int y0, int x1, int y1) noexcept;
 
 // The memory path's channel-fetch sprites of one page (a buffer read as PSMT8): pixel k, at window
 // (x0 + x[k], y0 + y[k]), fetches byte read_base + read[k] of the local memory `memory` (as words,
