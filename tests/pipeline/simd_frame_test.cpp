@@ -79,6 +79,7 @@ TEST_P(SimdFrame, EqualsTheScalarFrameUnderEveryPathStorageAndOption) {
         EXPECT_EQ(differing, 0) << what;
         EXPECT_EQ(scalar.dot, vector.dot) << what;
         EXPECT_EQ(scalar.pixel_ops, vector.pixel_ops) << what;
+        EXPECT_EQ(scalar.visible_triangle, vector.visible_triangle) << what;  // step 1's, in lanes or not
         for (std::int32_t t : scalar.visible_triangle) covered += t >= 0;
         ++frames;
       }

@@ -43,68 +43,12 @@ class band_renderer {
 
   // Step 1: the LAB's ambient colour and the Z buffer (ZTST = GEQUAL, Z written), after the frame
   // program's clears of both; then, on the cached path, the runs every later pass draws. Depth is
-  // walked along each row (gs::plane_walk, equal to plane::at). On the SIMD path a value-level LAB's
-  // pixels go through simd::span_row, each row's passing pixels at a time (they are distinct pixels,
-  // and the LAB is not the Z buffer).
+  // walked along each row (gs::plane_walk, equal to plane::at). On the SIMD path with the Z buffer in
+  // rows, a row's depth test is done in lanes (simd::depth_row, where the plane fits them) and its
+  // passing pixels go by runs: the LAB's through simd::span_row (they are distinct pixels, and the LAB
+  // is not the Z buffer).
   template <class FB>
-  [[gnu::flatten]] void depth_and_ambient(const FB& lab, gs::rgba8 ambient) {
-    constexpr gs::gs_registers regs = passes::step1_ambient.registers();
-    const gs::fragment_colour cf = gs::fragment_colour::flat(ambient);
-    constexpr bool rows = std::is_same_v<FB, row_view>;
-    const bool lanes = rows && vectorised();
-    scratch<std::uint32_t> no_texels(lanes ? static_cast<std::size_t>(band_.x1 - band_.x0) : 0);
-    if (lanes) no_texels->assign(static_cast<std::size_t>(band_.x1 - band_.x0), 0);
-    for (std::size_t t = 0; t < ps_.triangles.size(); ++t) {
-      const prepared_triangle& tri = ps_.triangles[t];
-      gs::rasterise_spans(tri.setup, band_, [&](int y, int x0, int x1) {
-        int from = x0;  // the SIMD path's passing pixels [from, x) not yet drawn
-        auto ambient_run = [&](int end) {
-          if constexpr (rows)
-            if (end > from)
-              simd::span_row(batch_registers<passes::step1_ambient>, o_.model, cf, no_texels->data(), &lab(from, y),
-                             from, y, static_cast<std::size_t>(end - from));
-        };
-        gs::plane_walk z;
-        z.start(tri.z, x0, y);
-        for (int x = x0; x < x1; ++x, z.step(tri.z)) {
-          const gs::depth_result d = gs::depth_test(passes::depth_gequal, passes::z_written,
-                                                    static_cast<std::uint32_t>(z.at(tri.z)), z_.read(x, y));
-          if (!d.pass) {
-            if (lanes) ambient_run(x);
-            from = x + 1;
-            continue;
-          }
-          if (d.write_z) z_.write(x, y, d.z);
-          visible_[index(x, y)] = static_cast<std::int32_t>(t);
-          if (!lanes) lab(x, y) = gs_pixel(regs, gs::rgba8{}, cf, lab(x, y), x, y, o_.model);
-          ++ops_;
-        }
-        if (lanes) ambient_run(x1);
-      });
-    }
-    if (o_.path != raster_path::cached) return;
-    // The runs: a row's pixels that pass the later passes' depth test, adjacent ones merged.
-    runs_.clear();
-    tri_runs_.assign(1, 0);
-    frags_built_ = false;
-    for (std::size_t t = 0; t < ps_.triangles.size(); ++t, tri_runs_.push_back(runs_.size())) {
-      const prepared_triangle& tri = ps_.triangles[t];
-      gs::rasterise_spans(tri.setup, band_, [&](int y, int x0, int x1) {
-        gs::plane_walk z;
-        z.start(tri.z, x0, y);
-        int from = x0;
-        for (int x = x0; x < x1; ++x, z.step(tri.z)) {
-          if (gs::depth_test(passes::depth_gequal, passes::z_masked, static_cast<std::uint32_t>(z.at(tri.z)),
-                             z_.read(x, y))
-                  .pass)
-            continue;
-          if (x > from) runs_.push_back({from, y, x - from});
-          from = x + 1;
-        }
-        if (x1 > from) runs_.push_back({from, y, x1 - from});
-      });
-    }
-  }
+  [[gnu::flatten]] void depth_and_ambient(const FB& lab, gs::rgba8 ambient);
   // The cached fragments (the runs pixel by pixel, in the same order): triangle t's are
   // frags_[tri_frags_[t], tri_frags_[t + 1]). Built from the runs when first asked for after step 1.
   const std::vector<fragment>& fragments() {
@@ -380,11 +324,20 @@ class band_renderer {
   bool span_engine(const gs::gs_registers& regs, const tri_attr& a, const simd::nearest_texture& tex,
                    std::span<const run> rs, const simd::span_target& fb);
 
-  // The depth test of every pass after step 1 (GEQUAL, ZMSK = 1: Z is only read).
+  // The pixels a triangle can cover within the band: its vertices' bounding box, rounded out.
+  scissor covered_rectangle(const gs::triangle_setup& s) const noexcept {
+    const auto [xs0, xs1] = std::minmax({s.v[0].x, s.v[1].x, s.v[2].x});
+    const auto [ys0, ys1] = std::minmax({s.v[0].y, s.v[1].y, s.v[2].y});
+    return {std::max(band_.x0, (xs0 >> 4) - 1), std::max(band_.y0, (ys0 >> 4) - 1), std::min(band_.x1, (xs1 >> 4) + 2),
+            std::min(band_.y1, (ys1 >> 4) + 2)};
+  }
+  // The depth test of every pass after step 1 (GEQUAL, ZMSK = 1: Z is only read), of a fragment's depth z
+  // at (x, y), or of triangle tri's there.
+  bool passes_later_depth_test(std::uint32_t z, int x, int y) const noexcept {
+    return gs::depth_test(passes::depth_gequal, passes::z_masked, z, z_.read(x, y)).pass;
+  }
   bool passes_later_depth_test(const prepared_triangle& tri, int x, int y) const noexcept {
-    return gs::depth_test(passes::depth_gequal, passes::z_masked, static_cast<std::uint32_t>(tri.z.at(x, y)),
-                          z_.read(x, y))
-        .pass;
+    return passes_later_depth_test(static_cast<std::uint32_t>(tri.z.at(x, y)), x, y);
   }
 
   const prepared_scene& ps_;
@@ -407,3 +360,4 @@ class band_renderer {
 }  // namespace gsdot3::pipeline::detail
 
 #include "pipeline/band_spans.hpp"  // IWYU pragma: export
+#include "pipeline/band_step1.hpp"  // IWYU pragma: export

@@ -85,9 +85,10 @@ struct z_view {
   bool in_memory = false;
   std::uint32_t& operator()(int x, int y) const noexcept { return in_memory ? memory(x, y) : rows(x, y); }
   std::uint32_t read(int x, int y) const noexcept { return (*this)(x, y); }
+  static constexpr std::uint32_t kept_bits = 0xFF000000u;  // a write's: the 24-bit depth leaves the top byte
   void write(int x, int y, std::uint32_t z) const noexcept {
     std::uint32_t& w = (*this)(x, y);
-    w = (w & 0xFF000000u) | (z & 0x00FFFFFFu);
+    w = (w & kept_bits) | (z & ~kept_bits);
   }
 };
 
