@@ -319,7 +319,8 @@ template <class FB>
 void render_bands(const prepared_scene& ps, const render_options& o, const gs_inputs& in, const frame_program& prog,
                   frame_buffers<FB>& fb, frame& result) {
   const std::size_t pixels = static_cast<std::size_t>(ps.width) * static_cast<std::size_t>(ps.height);
-  scratch<std::uint32_t> z(fb.zb.in_memory ? 0 : pixels);  // the value path's Z buffer, zeroed by the bands
+  // The value path's Z buffer, zeroed by the bands (the resize leaves a kept vector's words as they were).
+  scratch<std::uint32_t> z(fb.zb.in_memory ? 0 : pixels);
   if (!fb.zb.in_memory) {
     z->resize(pixels);
     fb.zb.rows = row_view{z->data(), ps.width};

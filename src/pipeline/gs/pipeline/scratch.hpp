@@ -4,7 +4,10 @@
 // the system when they are freed, so the next frame's first write to each 4 KiB page is a page fault
 // (perf on an AMD EPYC virtual machine, 2026-12-07: page faults and the zeroing memset were 45 % of a
 // four-pass frame's time). A pool per element type keeps released vectors, up to `kept_bytes` in all;
-// a taken vector comes back empty (size 0) with its capacity, the smallest that holds `need` if any.
+// a taken vector comes back as it was given, size and elements, the smallest that holds `need` if any.
+// So a resize to the size it had costs nothing (a frame's buffers were zeroed twice a frame, serially
+// by the resize and by the bands): whoever takes one sets what it reads (clear, assign, or writes after
+// a resize).
 #pragma once
 
 #include <cstddef>
@@ -49,7 +52,6 @@ class scratch {
     std::vector<T> v = std::move(p.free[best]);
     p.free.erase(p.free.begin() + static_cast<std::ptrdiff_t>(best));
     p.bytes -= bytes_of(v);
-    v.clear();
     return v;
   }
   static void give(std::vector<T>&& v) noexcept {
