@@ -3,8 +3,10 @@
 // coordinates. Internal to render.cpp.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "gs_arith/attribute_setup.hpp"
@@ -17,14 +19,24 @@ namespace gsdot3::pipeline::detail {
 // Per-triangle attributes of one pass: the Gouraud plane and the UV planes (gs::setup_attributes).
 using tri_attr = gs::triangle_attributes;
 
+// Whether a triangle can cover a pixel of rows [y0, y1): its vertices' rows, rounded out, meet them.
+constexpr bool may_cover_rows(const gs::triangle_setup& s, int y0, int y1) noexcept {
+  const auto [lo, hi] = std::minmax({s.v[0].y, s.v[1].y, s.v[2].y});
+  return (lo >> 4) - 1 < y1 && (hi >> 4) + 2 > y0;
+}
+
 // Vertex colours → per-triangle attributes of `triangles` (the DOT3 mesh's, or step 5's); `uv` picks
-// the 12.4 texture coordinates per corner.
+// the 12.4 texture coordinates per corner. Only a band's rows [y0, y1) (all rows if not given) are drawn with them: a
+// triangle that cannot cover one of its pixels keeps default attributes (no pass of the band reads them, as it
+// rasterises nothing of that triangle), which halves each band's set-up at 2 threads.
 template <class Colour, class UV>
 std::vector<tri_attr> attributes(const std::vector<prepared_triangle>& triangles, const gs::model_options& model,
-                                 Colour&& colour, UV&& uv) {
+                                 Colour&& colour, UV&& uv, int y0 = std::numeric_limits<int>::min(),
+                                 int y1 = std::numeric_limits<int>::max()) {
   std::vector<tri_attr> out(triangles.size());
   for (std::size_t t = 0; t < triangles.size(); ++t) {
     const prepared_triangle& tri = triangles[t];
+    if (!may_cover_rows(tri.setup, y0, y1)) continue;
     std::array<gs::rgba8, 3> c{};
     std::array<std::array<std::int32_t, 2>, 3> uv16{};
     for (int k = 0; k < 3; ++k) {
@@ -38,8 +50,9 @@ std::vector<tri_attr> attributes(const std::vector<prepared_triangle>& triangles
   return out;
 }
 template <class Colour, class UV>
-std::vector<tri_attr> attributes(const prepared_scene& ps, const gs::model_options& model, Colour&& colour, UV&& uv) {
-  return attributes(ps.triangles, model, colour, uv);
+std::vector<tri_attr> attributes(const prepared_scene& ps, const gs::model_options& model, Colour&& colour, UV&& uv,
+                                 int y0 = std::numeric_limits<int>::min(), int y1 = std::numeric_limits<int>::max()) {
+  return attributes(ps.triangles, model, colour, uv, y0, y1);
 }
 
 }  // namespace gsdot3::pipeline::detail

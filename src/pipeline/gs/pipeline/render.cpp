@@ -166,12 +166,12 @@ std::size_t render_band(const prepared_scene& ps, const render_options& o, const
     if (!a.empty() || ps.triangles.empty()) return a;
     if (op.light < 0)
       return a = attributes(
-                 ps, o.model, [](std::uint32_t) { return white; }, normal_map_uv);
+                 ps, o.model, [](std::uint32_t) { return white; }, normal_map_uv, band.y0, band.y1);
     const std::vector<light_vertex>& lv = ps.lights[static_cast<std::size_t>(op.light)];
     const pass_source src = sphere_uv ? pass_source::sphere_map : pass_source::normal_map;
     return a = attributes(
                ps, o.model, [&](std::uint32_t v) { return vertex_rgbaq(op.colour_of, lv[v], o.s); },
-               [&](const prepared_triangle& t, int k) { return vertex_uv(src, t, k, lv); });
+               [&](const prepared_triangle& t, int k) { return vertex_uv(src, t, k, lv); }, band.y0, band.y1);
   };
   auto triangles = [&](const frame_op& op) {
     const std::vector<tri_attr>& a = attributes_of(op);
@@ -274,11 +274,11 @@ std::size_t render_band(const prepared_scene& ps, const render_options& o, const
         break;
       case kind::plain:
         with_regs<program_regs::plain>(op.regs, [&]<const pass_regs & R>() {
-          r.draw_plain<R>(
-              diffuse,
-              attributes(
-                  ps.plain, o.model, [&](std::uint32_t v) { return plain_colour(ps.plain_light[v]); }, normal_map_uv),
-              view(op.buffer), result.plain_triangle);
+          r.draw_plain<R>(diffuse,
+                          attributes(
+                              ps.plain, o.model, [&](std::uint32_t v) { return plain_colour(ps.plain_light[v]); },
+                              normal_map_uv, band.y0, band.y1),
+                          view(op.buffer), result.plain_triangle);
         });
         break;
       case kind::dot_ready: {  // outside the sprite area no pass draws: 0x80, the two-buffer DPB's clear
