@@ -326,10 +326,8 @@ class band_renderer {
 
   // The pixels a triangle can cover within the band: its vertices' bounding box, rounded out.
   scissor covered_rectangle(const gs::triangle_setup& s) const noexcept {
-    const auto [xs0, xs1] = std::minmax({s.v[0].x, s.v[1].x, s.v[2].x});
-    const auto [ys0, ys1] = std::minmax({s.v[0].y, s.v[1].y, s.v[2].y});
-    return {std::max(band_.x0, (xs0 >> 4) - 1), std::max(band_.y0, (ys0 >> 4) - 1), std::min(band_.x1, (xs1 >> 4) + 2),
-            std::min(band_.y1, (ys1 >> 4) + 2)};
+    const scissor b = vertex_bounds(s);
+    return {std::max(band_.x0, b.x0), std::max(band_.y0, b.y0), std::min(band_.x1, b.x1), std::min(band_.y1, b.y1)};
   }
   // The depth test of every pass after step 1 (GEQUAL, ZMSK = 1: Z is only read), of a fragment's depth z
   // at (x, y), or of triangle tri's there.

@@ -19,10 +19,16 @@ namespace gsdot3::pipeline::detail {
 // Per-triangle attributes of one pass: the Gouraud plane and the UV planes (gs::setup_attributes).
 using tri_attr = gs::triangle_attributes;
 
-// Whether a triangle can cover a pixel of rows [y0, y1): its vertices' rows, rounded out, meet them.
+// The pixels a triangle can cover: its vertices' bounding box (12.4), rounded out by a pixel each side.
+constexpr scissor vertex_bounds(const gs::triangle_setup& s) noexcept {
+  const auto [x0, x1] = std::minmax({s.v[0].x, s.v[1].x, s.v[2].x});
+  const auto [y0, y1] = std::minmax({s.v[0].y, s.v[1].y, s.v[2].y});
+  return {(x0 >> 4) - 1, (y0 >> 4) - 1, (x1 >> 4) + 2, (y1 >> 4) + 2};
+}
+// Whether a triangle can cover a pixel of rows [y0, y1).
 constexpr bool may_cover_rows(const gs::triangle_setup& s, int y0, int y1) noexcept {
-  const auto [lo, hi] = std::minmax({s.v[0].y, s.v[1].y, s.v[2].y});
-  return (lo >> 4) - 1 < y1 && (hi >> 4) + 2 > y0;
+  const scissor b = vertex_bounds(s);
+  return b.y0 < y1 && b.y1 > y0;
 }
 
 // Vertex colours → per-triangle attributes of `triangles` (the DOT3 mesh's, or step 5's); `uv` picks
